@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Character classes and small integer helpers. Locale-free and constexpr, unlike <cctype>.
+
+#include <cstdint>
+
+namespace seawire::detail {
+
+[[nodiscard]] constexpr bool is_digit(char c) noexcept { return c >= '0' && c <= '9'; }
+[[nodiscard]] constexpr bool is_upper(char c) noexcept { return c >= 'A' && c <= 'Z'; }
+[[nodiscard]] constexpr bool is_printable(char c) noexcept { return c >= 0x20 && c <= 0x7E; }
+
+/// Value of a hex digit, or -1. Accepts both cases; callers decide whether lower case is allowed.
+[[nodiscard]] constexpr int hex_value(char c) noexcept {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  return -1;
+}
+
+[[nodiscard]] constexpr char hex_digit_upper(unsigned nibble) noexcept {
+  return "0123456789ABCDEF"[nibble & 0xFu];
+}
+
+/// Characters NMEA 0183 reserves for framing; never data in a sentence seawire writes.
+[[nodiscard]] constexpr bool is_reserved(char c) noexcept {
+  switch (c) {
+    case '$':
+    case ',':
+    case '*':
+    case '!':
+    case '\\':
+    case '^':
+    case '~':
+      return true;
+    default:
+      return false;
+  }
+}
+
+inline constexpr std::uint64_t pow10_table[20] = {1ull,
+                                                  10ull,
+                                                  100ull,
+                                                  1000ull,
+                                                  10000ull,
+                                                  100000ull,
+                                                  1000000ull,
+                                                  10000000ull,
+                                                  100000000ull,
+                                                  1000000000ull,
+                                                  10000000000ull,
+                                                  100000000000ull,
+                                                  1000000000000ull,
+                                                  10000000000000ull,
+                                                  100000000000000ull,
+                                                  1000000000000000ull,
+                                                  10000000000000000ull,
+                                                  100000000000000000ull,
+                                                  1000000000000000000ull,
+                                                  10000000000000000000ull};
+
+/// Number of decimal digits of v (1 for 0).
+[[nodiscard]] constexpr unsigned digit_count(std::uint64_t v) noexcept {
+  unsigned n = 1;
+  while (n < 20 && v >= pow10_table[n]) ++n;
+  return n;
+}
+
+}  // namespace seawire::detail
