@@ -1,0 +1,738 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Field values as the wire has them, and the codec that reads and writes each one.
+//
+// Every value type here keeps enough of the text to write it back exactly ("4.50" stays
+// "4.50", an unpadded longitude stays unpadded) and rejects values outside its domain.
+// A codec reads `width` wire fields from a field_reader and writes them to a writer; the
+// message layer (message.hpp) handles blanks, optionals, units and ranges around it.
+
+#include <array>
+#include <chrono>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/detail/ascii.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+namespace seawire::nmea {
+
+// ---------------------------------------------------------------------------------------------
+// decimal
+
+/// A decimal number exactly as written: digits, number of fraction digits, sign.
+/// "-0.0" keeps its sign and "4.50" its trailing zero. Equality compares the written form;
+/// `compare()` compares values. At most 19 significant digits and 19 fraction digits.
+struct decimal {
+  std::uint64_t mantissa = 0;  ///< all digits as one integer: "4.50" -> 450
+  std::uint8_t places = 0;     ///< digits after the point: "4.50" -> 2
+  bool negative = false;
+
+  constexpr decimal() noexcept = default;
+  /// An integer value: decimal{45} is "45".
+  // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
+  constexpr decimal(std::int64_t integer) noexcept
+      : mantissa(integer < 0 ? 0 - static_cast<std::uint64_t>(integer)
+                             : static_cast<std::uint64_t>(integer)),
+        negative(integer < 0) {}
+  /// `scaled` / 10^places: decimal{450, 2} is "4.50".
+  constexpr decimal(std::int64_t scaled, std::uint8_t fraction_digits) noexcept
+      : decimal(scaled) {
+    places = fraction_digits;
+  }
+
+  /// The value rounded to `places` fraction digits; refuses NaN/inf and what 19 digits cannot
+  /// hold.
+  [[nodiscard]] static constexpr result<decimal> from_double(double v, unsigned places) noexcept {
+    result<decimal> r;
+    if (!(v == v) || v > std::numeric_limits<double>::max() ||
+        v < -std::numeric_limits<double>::max()) {
+      r.ec = errc::not_finite;
+      return r;
+    }
+    if (places > 18) {
+      r.ec = errc::value_too_large;
+      return r;
+    }
+    const double mag = (v < 0 ? -v : v) * static_cast<double>(seawire::detail::pow10_table[places]);
+    if (mag >= 1e19) {
+      r.ec = errc::value_too_large;
+      return r;
+    }
+    r.value.mantissa = static_cast<std::uint64_t>(mag + 0.5);
+    r.value.places = static_cast<std::uint8_t>(places);
+    r.value.negative = v < 0 && r.value.mantissa != 0;
+    return r;
+  }
+
+  [[nodiscard]] constexpr double to_double() const noexcept {
+    // Both operands are exact doubles for mantissa < 2^53 and places <= 19, so the one
+    // division is correctly rounded.
+    double d = static_cast<double>(mantissa) / static_cast<double>(seawire::detail::pow10_table[places]);
+    return negative ? -d : d;
+  }
+
+  [[nodiscard]] constexpr bool is_zero() const noexcept { return mantissa == 0; }
+
+  /// Numeric comparison: -1, 0 or 1. "-0" equals "0"; "4.5" equals "4.50".
+  [[nodiscard]] constexpr int compare(const decimal& o) const noexcept {
+    const bool n1 = negative && mantissa != 0;
+    const bool n2 = o.negative && o.mantissa != 0;
+    if (n1 != n2) return n1 ? -1 : 1;
+    const int mag = compare_magnitude(o);
+    return n1 ? -mag : mag;
+  }
+
+  friend constexpr bool operator==(const decimal&, const decimal&) noexcept = default;
+
+ private:
+  [[nodiscard]] constexpr int compare_magnitude(const decimal& o) const noexcept {
+    // Compare integer parts, then fraction parts aligned to the longer fraction.
+    const std::uint64_t ia = mantissa / seawire::detail::pow10_table[places];
+    const std::uint64_t ib = o.mantissa / seawire::detail::pow10_table[o.places];
+    if (ia != ib) return ia < ib ? -1 : 1;
+    std::uint64_t fa = mantissa % seawire::detail::pow10_table[places];
+    std::uint64_t fb = o.mantissa % seawire::detail::pow10_table[o.places];
+    // A fraction below 10^places scaled by at most 10^(19-places) stays below 10^19 < 2^64.
+    if (places < o.places) fa *= seawire::detail::pow10_table[o.places - places];
+    if (o.places < places) fb *= seawire::detail::pow10_table[places - o.places];
+    return fa == fb ? 0 : (fa < fb ? -1 : 1);
+  }
+};
+
+namespace detail {
+
+/// Parse [sign] digits [. digits]. '+' only when allowed (receivers accept it, senders never
+/// write it). No exponent, no spaces.
+[[nodiscard]] constexpr errc parse_decimal(std::string_view s, bool allow_plus,
+                                           decimal& out) noexcept {
+  std::size_t i = 0;
+  const std::size_t n = s.size();
+  bool neg = false;
+  if (i < n && (s[i] == '-' || s[i] == '+')) {
+    if (s[i] == '+' && !allow_plus) return errc::bad_number;
+    neg = s[i] == '-';
+    ++i;
+  }
+  std::uint64_t m = 0;
+  unsigned significant = 0;
+  unsigned places = 0;
+  bool point = false;
+  bool any = false;
+  for (; i < n; ++i) {
+    const char c = s[i];
+    if (seawire::detail::is_digit(c)) {
+      any = true;
+      if (point) ++places;
+      if (m != 0 || c != '0') {
+        if (++significant > 19) return errc::number_too_long;
+        m = m * 10 + static_cast<std::uint64_t>(c - '0');
+      }
+    } else if (c == '.' && !point) {
+      point = true;
+    } else {
+      return errc::bad_number;
+    }
+  }
+  if (!any) return errc::bad_number;
+  if (places > 19) return errc::number_too_long;
+  out.mantissa = m;
+  out.places = static_cast<std::uint8_t>(places);
+  out.negative = neg;
+  return errc::ok;
+}
+
+constexpr void write_decimal(writer& w, const decimal& d) noexcept {
+  if (d.negative) w.put('-');
+  const std::uint64_t p = seawire::detail::pow10_table[d.places];
+  w.put_uint(d.mantissa / p);
+  if (d.places > 0) {
+    w.put('.');
+    w.put_uint(d.mantissa % p, d.places);
+  }
+}
+
+/// Parse an unsigned run of digits of exactly `len` characters at s[pos].
+[[nodiscard]] constexpr bool parse_fixed_digits(std::string_view s, std::size_t pos,
+                                                std::size_t len, unsigned& out) noexcept {
+  if (pos + len > s.size()) return false;
+  unsigned v = 0;
+  for (std::size_t k = pos; k < pos + len; ++k) {
+    if (!seawire::detail::is_digit(s[k])) return false;
+    v = v * 10 + static_cast<unsigned>(s[k] - '0');
+  }
+  out = v;
+  return true;
+}
+
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// positions
+
+enum class hemisphere : char { north = 'N', south = 'S', east = 'E', west = 'W' };
+
+namespace detail {
+template <char Pos, char Neg, unsigned MaxDegrees, unsigned Width, errc Error>
+struct axis {
+  static constexpr char positive = Pos;
+  static constexpr char negative = Neg;
+  static constexpr unsigned max_degrees = MaxDegrees;
+  static constexpr unsigned width = Width;  // degree digits in the canonical form
+  static constexpr errc error = Error;
+};
+using lat_axis = axis<'N', 'S', 90, 2, errc::bad_latitude>;
+using lon_axis = axis<'E', 'W', 180, 3, errc::bad_longitude>;
+}  // namespace detail
+
+/// A position in NMEA form: whole degrees, decimal minutes, hemisphere letter (two wire fields,
+/// DDMM.mmm,N or DDDMM.mmm,E). The wire is split at the decimal point, so unpadded degrees
+/// ("7105.44878") are read correctly and written back as they came (`degree_digits`).
+template <class Axis>
+struct nmea_coordinate {
+  std::uint16_t whole_degrees = 0;
+  decimal minutes;  ///< 0 <= minutes < 60, never negative
+  hemisphere hemi = static_cast<hemisphere>(Axis::positive);
+  std::uint8_t degree_digits = Axis::width;  ///< digits the degrees were written with
+
+  /// Signed decimal degrees; the sign comes from the hemisphere letter only (so 0.0 S is -0.0).
+  [[nodiscard]] constexpr double degrees() const noexcept {
+    const double v = static_cast<double>(whole_degrees) + minutes.to_double() / 60.0;
+    return static_cast<char>(hemi) == Axis::negative ? -v : v;
+  }
+
+  /// From signed decimal degrees, minutes rounded to `minute_places` digits.
+  [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
+      double deg, unsigned minute_places = 4) noexcept {
+    result<nmea_coordinate> r;
+    if (!(deg == deg) || deg > 1e300 || deg < -1e300) {
+      r.ec = errc::not_finite;
+      return r;
+    }
+    const double mag = deg < 0 ? -deg : deg;
+    if (mag > Axis::max_degrees || minute_places > 12) {
+      r.ec = errc::out_of_range;
+      return r;
+    }
+    auto whole = static_cast<std::uint64_t>(mag);
+    const std::uint64_t scale = seawire::detail::pow10_table[minute_places];
+    auto m = static_cast<std::uint64_t>((mag - static_cast<double>(whole)) * 60.0 *
+                                            static_cast<double>(scale) +
+                                        0.5);
+    if (m >= 60 * scale) {  // 59.99999 rounded up to 60: carry into the degrees
+      m -= 60 * scale;
+      ++whole;
+    }
+    if (whole > Axis::max_degrees || (whole == Axis::max_degrees && m != 0)) {
+      r.ec = errc::out_of_range;
+      return r;
+    }
+    r.value.whole_degrees = static_cast<std::uint16_t>(whole);
+    r.value.minutes.mantissa = m;
+    r.value.minutes.places = static_cast<std::uint8_t>(minute_places);
+    r.value.hemi = static_cast<hemisphere>(deg < 0 ? Axis::negative : Axis::positive);
+    return r;
+  }
+
+  friend constexpr bool operator==(const nmea_coordinate&, const nmea_coordinate&) noexcept =
+      default;
+};
+using latitude = nmea_coordinate<detail::lat_axis>;
+using longitude = nmea_coordinate<detail::lon_axis>;
+
+/// A position in decimal degrees with a hemisphere letter (RobotX: "21.31198,N"). The number
+/// is unsigned on the wire; the sign comes from the letter.
+template <class Axis>
+struct decimal_coordinate {
+  decimal value;  ///< unsigned decimal degrees
+  hemisphere hemi = static_cast<hemisphere>(Axis::positive);
+
+  [[nodiscard]] constexpr double degrees() const noexcept {
+    const double v = value.to_double();
+    return static_cast<char>(hemi) == Axis::negative ? -v : v;
+  }
+  [[nodiscard]] static constexpr result<decimal_coordinate> from_degrees(
+      double deg, unsigned places = 5) noexcept {
+    result<decimal_coordinate> r;
+    const auto d = decimal::from_double(deg < 0 ? -deg : deg, places);
+    if (!d) {
+      r.ec = d.ec;
+      return r;
+    }
+    if (d.value.compare(decimal(Axis::max_degrees)) > 0) {
+      r.ec = errc::out_of_range;
+      return r;
+    }
+    r.value.value = d.value;
+    r.value.hemi = static_cast<hemisphere>(deg < 0 ? Axis::negative : Axis::positive);
+    return r;
+  }
+  friend constexpr bool operator==(const decimal_coordinate&,
+                                   const decimal_coordinate&) noexcept = default;
+};
+using decimal_latitude = decimal_coordinate<detail::lat_axis>;
+using decimal_longitude = decimal_coordinate<detail::lon_axis>;
+
+// ---------------------------------------------------------------------------------------------
+// time and date
+
+/// Time of day hhmmss[.f], 0 to 9 fraction digits kept as written. Second 60 is accepted only
+/// as 23:59:60, the one place a UTC leap second can stand.
+struct time_of_day {
+  std::uint8_t hour = 0;
+  std::uint8_t minute = 0;
+  std::uint8_t second = 0;
+  std::uint32_t fraction = 0;  ///< the fraction digits as an integer: ".980" -> 980
+  std::uint8_t places = 0;     ///< number of fraction digits: ".980" -> 3
+
+  [[nodiscard]] constexpr std::chrono::nanoseconds since_midnight() const noexcept {
+    using namespace std::chrono;
+    return hours(hour) + minutes(minute) + seconds(second) +
+           nanoseconds(static_cast<std::int64_t>(fraction) *
+                       static_cast<std::int64_t>(seawire::detail::pow10_table[9 - places]));
+  }
+  /// The fraction of the second in nanoseconds.
+  [[nodiscard]] constexpr std::uint32_t fraction_ns() const noexcept {
+    return static_cast<std::uint32_t>(fraction * seawire::detail::pow10_table[9 - places]);
+  }
+  /// From a duration since midnight (0 <= d < 24 h), truncated to `places` fraction digits
+  /// (truncated, not rounded, so 23:59:59.9999 never becomes 24:00).
+  [[nodiscard]] static constexpr result<time_of_day> from_since_midnight(
+      std::chrono::nanoseconds d, unsigned places = 3) noexcept {
+    result<time_of_day> r;
+    const std::int64_t ns = d.count();
+    if (ns < 0 || ns >= 86'400'000'000'000 || places > 9) {
+      r.ec = errc::out_of_range;
+      return r;
+    }
+    const std::int64_t s = ns / 1'000'000'000;
+    r.value.hour = static_cast<std::uint8_t>(s / 3600);
+    r.value.minute = static_cast<std::uint8_t>(s / 60 % 60);
+    r.value.second = static_cast<std::uint8_t>(s % 60);
+    r.value.fraction = static_cast<std::uint32_t>(
+        static_cast<std::uint64_t>(ns % 1'000'000'000) / seawire::detail::pow10_table[9 - places]);
+    r.value.places = static_cast<std::uint8_t>(places);
+    return r;
+  }
+  friend constexpr bool operator==(const time_of_day&, const time_of_day&) noexcept = default;
+};
+
+/// A ddmmyy date. Two-digit years are read as 1980..2079 (GPS time began in 1980).
+struct date {
+  std::uint16_t year = 2000;
+  std::uint8_t month = 1;
+  std::uint8_t day = 1;
+
+  [[nodiscard]] constexpr std::chrono::year_month_day ymd() const noexcept {
+    return std::chrono::year_month_day{std::chrono::year{year}, std::chrono::month{month},
+                                       std::chrono::day{day}};
+  }
+  [[nodiscard]] static constexpr date from(std::chrono::year_month_day d) noexcept {
+    return {static_cast<std::uint16_t>(static_cast<int>(d.year())),
+            static_cast<std::uint8_t>(static_cast<unsigned>(d.month())),
+            static_cast<std::uint8_t>(static_cast<unsigned>(d.day()))};
+  }
+  friend constexpr bool operator==(const date&, const date&) noexcept = default;
+};
+
+namespace detail {
+[[nodiscard]] constexpr unsigned days_in_month(unsigned month, unsigned year) noexcept {
+  constexpr unsigned days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+  return month == 2 && leap ? 29 : days[month - 1];
+}
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// text
+
+/// Text held inline, at most N bytes: no allocation, no view into the input that could dangle.
+template <std::size_t N>
+class text {
+ public:
+  static_assert(N > 0 && N <= 0xFFFF);
+  static constexpr std::size_t capacity = N;
+
+  constexpr text() noexcept = default;
+  /// From a literal that fits (checked at compile time).
+  template <std::size_t M>
+  // NOLINTNEXTLINE(google-explicit-constructor): text<5> team = "AUVSI";
+  constexpr text(const char (&s)[M]) noexcept {
+    static_assert(M - 1 <= N, "literal longer than the text's capacity");
+    for (std::size_t i = 0; i + 1 < M; ++i) data_[i] = s[i];
+    size_ = static_cast<std::uint16_t>(M - 1);
+  }
+  /// Replace the content; false (and unchanged) when `s` does not fit.
+  constexpr bool assign(std::string_view s) noexcept {
+    if (s.size() > N) return false;
+    for (std::size_t i = 0; i < s.size(); ++i) data_[i] = s[i];
+    size_ = static_cast<std::uint16_t>(s.size());
+    return true;
+  }
+  [[nodiscard]] constexpr std::string_view view() const noexcept { return {data_, size_}; }
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return size_ == 0; }
+
+  friend constexpr bool operator==(const text& a, const text& b) noexcept {
+    return a.view() == b.view();
+  }
+  friend constexpr bool operator==(const text& a, std::string_view b) noexcept {
+    return a.view() == b;
+  }
+
+ private:
+  char data_[N]{};
+  std::uint16_t size_ = 0;
+};
+
+/// Two-character talker of a standard sentence ("GP", "GN", "II").
+using talker_id = text<2>;
+
+// ---------------------------------------------------------------------------------------------
+// enums
+//
+// A single-letter field is an `enum class E : char` whose enumerators are the letters, with a
+// function found by ADL listing them:   constexpr std::string_view enum_chars(E) { return "AV"; }
+// A word field is an enum whose values index an array of its spellings, with
+//   constexpr std::array<std::string_view, K> enum_words(E) { return {"ON", "OFF"}; }
+// and optionally other spellings accepted on receive:
+//   constexpr std::array<std::pair<std::string_view, E>, K> enum_aliases(E) { ... }
+
+template <class E>
+concept char_enum_like = std::is_enum_v<E> && requires(E e) {
+  { enum_chars(e) } -> std::convertible_to<std::string_view>;
+};
+template <class E>
+concept word_enum_like = std::is_enum_v<E> && requires(E e) { enum_words(e); };
+template <class E>
+concept has_enum_aliases = requires(E e) { enum_aliases(e); };
+
+/// The wire spelling of an enum value ("A", "ON"); empty if the value is not one of its own.
+template <class E>
+  requires char_enum_like<E> || word_enum_like<E>
+[[nodiscard]] constexpr std::string_view to_string(const E& e) noexcept {
+  if constexpr (char_enum_like<E>) {
+    constexpr std::string_view chars = enum_chars(E{});
+    const std::size_t pos = chars.find(static_cast<char>(e));
+    return pos == std::string_view::npos ? std::string_view{} : chars.substr(pos, 1);
+  } else {
+    constexpr auto words = enum_words(E{});
+    const auto i = static_cast<std::size_t>(e);
+    return i < words.size() ? words[i] : std::string_view{};
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// codecs
+
+/// codec<T>: `width` wire fields; read() takes them from the reader (the first is known to be
+/// present and non-blank unless `allows_blank`), check() applies the value's own domain before
+/// writing, write() writes them (the message layer writes the comma before the first).
+template <class T>
+struct codec;
+
+template <>
+struct codec<decimal> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, decimal& v) noexcept {
+    return detail::parse_decimal(r.take().text, !r.policy().strict_values, v);
+  }
+  static constexpr errc check(const decimal& v) noexcept {
+    return v.places > 19 ? errc::value_too_large : errc::ok;
+  }
+  static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
+};
+
+template <std::integral I>
+  requires(!std::same_as<I, bool> && !std::same_as<I, char>)
+struct codec<I> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, I& v) noexcept {
+    decimal d;
+    const errc e = detail::parse_decimal(r.take().text, !r.policy().strict_values, d);
+    if (e != errc::ok) return e;
+    if (d.places != 0) return errc::bad_number;
+    if (d.negative && d.mantissa != 0) {
+      if constexpr (std::is_unsigned_v<I>) {
+        return errc::out_of_range;
+      } else {
+        if (d.mantissa > static_cast<std::uint64_t>(std::numeric_limits<I>::max()) + 1)
+          return errc::out_of_range;
+        v = static_cast<I>(0 - d.mantissa);
+        return errc::ok;
+      }
+    }
+    if (d.mantissa > static_cast<std::uint64_t>(std::numeric_limits<I>::max()))
+      return errc::out_of_range;
+    v = static_cast<I>(d.mantissa);
+    return errc::ok;
+  }
+  static constexpr errc check(const I&) noexcept { return errc::ok; }
+  static constexpr void write(writer& w, const I& v) noexcept {
+    if constexpr (std::is_signed_v<I>) {
+      if (v < 0) {
+        w.put('-');
+        w.put_uint(0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
+        return;
+      }
+    }
+    w.put_uint(static_cast<std::uint64_t>(v));
+  }
+};
+
+/// A 0/1 flag.
+template <>
+struct codec<bool> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, bool& v) noexcept {
+    const std::string_view t = r.take().text;
+    if (t.size() != 1 || (t[0] != '0' && t[0] != '1')) return errc::bad_flag;
+    v = t[0] == '1';
+    return errc::ok;
+  }
+  static constexpr errc check(const bool&) noexcept { return errc::ok; }
+  static constexpr void write(writer& w, const bool& v) noexcept { w.put(v ? '1' : '0'); }
+};
+
+template <class Axis>
+struct codec<nmea_coordinate<Axis>> {
+  using value_type = nmea_coordinate<Axis>;
+  static constexpr unsigned width = 2;
+  static constexpr bool allows_blank = false;
+
+  static constexpr errc read(field_reader& r, value_type& v) noexcept {
+    const std::string_view s = r.take().text;
+    std::size_t point = s.find('.');
+    if (point == std::string_view::npos) point = s.size();
+    // DDMM: at least one degree digit and exactly two minute digits before the point.
+    if (point < 3 || point - 2 > Axis::width) return Axis::error;
+    unsigned deg = 0;
+    if (!detail::parse_fixed_digits(s, 0, point - 2, deg)) return Axis::error;
+    decimal minutes;
+    if (detail::parse_decimal(s.substr(point - 2), false, minutes) != errc::ok ||
+        minutes.negative)
+      return Axis::error;
+    const std::uint64_t sixty = 60 * seawire::detail::pow10_table[minutes.places];
+    if (minutes.mantissa >= sixty) return errc::minute_out_of_range;
+    if (deg > Axis::max_degrees || (deg == Axis::max_degrees && minutes.mantissa != 0))
+      return Axis::error;
+    v.whole_degrees = static_cast<std::uint16_t>(deg);
+    v.minutes = minutes;
+    v.degree_digits = static_cast<std::uint8_t>(point - 2);
+    return read_hemisphere<Axis>(r, v.hemi);
+  }
+  static constexpr errc check(const value_type& v) noexcept {
+    if (v.minutes.negative || v.minutes.places > 12 ||
+        v.minutes.mantissa >= 60 * seawire::detail::pow10_table[v.minutes.places])
+      return errc::minute_out_of_range;
+    if (v.whole_degrees > Axis::max_degrees ||
+        (v.whole_degrees == Axis::max_degrees && v.minutes.mantissa != 0) ||
+        v.degree_digits > Axis::width)
+      return Axis::error;
+    return check_hemisphere<Axis>(v.hemi);
+  }
+  static constexpr void write(writer& w, const value_type& v) noexcept {
+    w.put_uint(v.whole_degrees, v.degree_digits);
+    const std::uint64_t p = seawire::detail::pow10_table[v.minutes.places];
+    w.put_uint(v.minutes.mantissa / p, 2);
+    if (v.minutes.places > 0) {
+      w.put('.');
+      w.put_uint(v.minutes.mantissa % p, v.minutes.places);
+    }
+    w.next_field();
+    w.put(static_cast<char>(v.hemi));
+  }
+
+  template <class A>
+  static constexpr errc read_hemisphere(field_reader& r, hemisphere& h) noexcept {
+    const field_token t = r.take();
+    if (!t.present) return errc::too_few_fields;
+    if (t.text.size() != 1 || (t.text[0] != A::positive && t.text[0] != A::negative))
+      return errc::bad_hemisphere;
+    h = static_cast<hemisphere>(t.text[0]);
+    return errc::ok;
+  }
+  template <class A>
+  static constexpr errc check_hemisphere(hemisphere h) noexcept {
+    const char c = static_cast<char>(h);
+    return c == A::positive || c == A::negative ? errc::ok : errc::bad_hemisphere;
+  }
+};
+
+template <class Axis>
+struct codec<decimal_coordinate<Axis>> {
+  using value_type = decimal_coordinate<Axis>;
+  using nmea = codec<nmea_coordinate<Axis>>;
+  static constexpr unsigned width = 2;
+  static constexpr bool allows_blank = false;
+
+  static constexpr errc read(field_reader& r, value_type& v) noexcept {
+    const std::string_view s = r.take().text;
+    // Unsigned on the wire: a sign would contradict (or duplicate) the hemisphere letter.
+    if (s.empty() || s[0] == '-' || s[0] == '+') return Axis::error;
+    if (detail::parse_decimal(s, false, v.value) != errc::ok) return Axis::error;
+    if (v.value.compare(decimal(Axis::max_degrees)) > 0) return Axis::error;
+    return nmea::template read_hemisphere<Axis>(r, v.hemi);
+  }
+  static constexpr errc check(const value_type& v) noexcept {
+    if (v.value.negative || v.value.compare(decimal(Axis::max_degrees)) > 0) return Axis::error;
+    return nmea::template check_hemisphere<Axis>(v.hemi);
+  }
+  static constexpr void write(writer& w, const value_type& v) noexcept {
+    detail::write_decimal(w, v.value);
+    w.next_field();
+    w.put(static_cast<char>(v.hemi));
+  }
+};
+
+template <>
+struct codec<time_of_day> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
+    const std::string_view s = r.take().text;
+    unsigned h = 0, m = 0, sec = 0;
+    if (!detail::parse_fixed_digits(s, 0, 2, h) || !detail::parse_fixed_digits(s, 2, 2, m) ||
+        !detail::parse_fixed_digits(s, 4, 2, sec))
+      return errc::bad_time;
+    unsigned frac = 0;
+    std::size_t places = 0;
+    if (s.size() > 6) {
+      places = s.size() - 7;
+      if (s[6] != '.' || places > 9 || !detail::parse_fixed_digits(s, 7, places, frac))
+        return errc::bad_time;
+    }
+    v = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m),
+         static_cast<std::uint8_t>(sec), frac, static_cast<std::uint8_t>(places)};
+    return check(v);
+  }
+  static constexpr errc check(const time_of_day& v) noexcept {
+    if (v.hour > 23) return errc::hour_out_of_range;
+    if (v.minute > 59) return errc::minute_out_of_range;
+    if (v.second > 60 || (v.second == 60 && !(v.hour == 23 && v.minute == 59)))
+      return errc::second_out_of_range;
+    if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places])
+      return errc::bad_time;
+    return errc::ok;
+  }
+  static constexpr void write(writer& w, const time_of_day& v) noexcept {
+    w.put_uint(v.hour, 2);
+    w.put_uint(v.minute, 2);
+    w.put_uint(v.second, 2);
+    if (v.places > 0) {
+      w.put('.');
+      w.put_uint(v.fraction, v.places);
+    }
+  }
+};
+
+template <>
+struct codec<date> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, date& v) noexcept {
+    const std::string_view s = r.take().text;
+    unsigned d = 0, m = 0, y = 0;
+    if (s.size() != 6 || !detail::parse_fixed_digits(s, 0, 2, d) ||
+        !detail::parse_fixed_digits(s, 2, 2, m) || !detail::parse_fixed_digits(s, 4, 2, y))
+      return errc::bad_date;
+    v = {static_cast<std::uint16_t>(y < 80 ? 2000 + y : 1900 + y), static_cast<std::uint8_t>(m),
+         static_cast<std::uint8_t>(d)};
+    return check(v);
+  }
+  static constexpr errc check(const date& v) noexcept {
+    if (v.year < 1980 || v.year > 2079) return errc::out_of_range;
+    if (v.month < 1 || v.month > 12) return errc::month_out_of_range;
+    if (v.day < 1 || v.day > detail::days_in_month(v.month, v.year)) return errc::day_out_of_range;
+    return errc::ok;
+  }
+  static constexpr void write(writer& w, const date& v) noexcept {
+    w.put_uint(v.day, 2);
+    w.put_uint(v.month, 2);
+    w.put_uint(v.year % 100u, 2);
+  }
+};
+
+template <std::size_t N>
+struct codec<text<N>> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = true;  // blank text is empty text
+  static constexpr errc read(field_reader& r, text<N>& v) noexcept {
+    const std::string_view s = r.take().text;
+    if (r.policy().strict_values) {
+      const errc e = check_chars(s);
+      if (e != errc::ok) return e;
+    }
+    return v.assign(s) ? errc::ok : errc::text_too_long;
+  }
+  static constexpr errc check(const text<N>& v) noexcept { return check_chars(v.view()); }
+  static constexpr errc check_chars(std::string_view s) noexcept {
+    for (char c : s)
+      if (!seawire::detail::is_printable(c) || seawire::detail::is_reserved(c))
+        return errc::bad_text;
+    return errc::ok;
+  }
+  static constexpr void write(writer& w, const text<N>& v) noexcept { w.put(v.view()); }
+};
+
+template <char_enum_like E>
+struct codec<E> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, E& v) noexcept {
+    const std::string_view s = r.take().text;
+    if (s.size() != 1 || std::string_view(enum_chars(E{})).find(s[0]) == std::string_view::npos)
+      return errc::bad_enum;
+    v = static_cast<E>(s[0]);
+    return errc::ok;
+  }
+  static constexpr errc check(const E& v) noexcept {
+    return to_string(v).empty() ? errc::bad_enum : errc::ok;
+  }
+  static constexpr void write(writer& w, const E& v) noexcept { w.put(static_cast<char>(v)); }
+};
+
+template <word_enum_like E>
+struct codec<E> {
+  static constexpr unsigned width = 1;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, E& v) noexcept {
+    const std::string_view s = r.take().text;
+    constexpr auto words = enum_words(E{});
+    for (std::size_t i = 0; i < words.size(); ++i) {
+      if (words[i] == s) {
+        v = static_cast<E>(i);
+        return errc::ok;
+      }
+    }
+    if constexpr (has_enum_aliases<E>) {
+      for (const auto& [word, value] : enum_aliases(E{})) {
+        if (word == s) {
+          v = value;
+          return errc::ok;
+        }
+      }
+    }
+    return errc::bad_enum;
+  }
+  static constexpr errc check(const E& v) noexcept {
+    return to_string(v).empty() ? errc::bad_enum : errc::ok;
+  }
+  static constexpr void write(writer& w, const E& v) noexcept { w.put(to_string(v)); }
+};
+
+template <class T>
+concept has_codec = requires { codec<T>::width; };
+
+}  // namespace seawire::nmea
