@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Decode by address: a set of message types, and the one a sentence is. Either into a
+// std::variant, or straight into a visitor (no variant, one message type on the stack).
+//
+//   using from_vehicle = message_set<cpnvg, cpnvr, standard::rmc>;
+//   auto r = from_vehicle::decode(line, policy);   // result<from_vehicle::variant>
+//   from_vehicle::visit(sentence, policy, [](const auto& msg) { ... });
+
+#include <cstddef>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+
+#include "seawire/error.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+
+namespace seawire::nmea {
+
+/// A well-formed sentence that no message of the set describes. Views into the input: it is
+/// valid as long as the line it came from.
+struct unknown_sentence {
+  sentence_view sentence;
+};
+
+template <message_like... Ms>
+struct message_set {
+  using variant = std::variant<unknown_sentence, Ms...>;
+  static constexpr std::size_t size = sizeof...(Ms);
+
+  /// Whether some message of the set has this address.
+  [[nodiscard]] static constexpr bool knows(std::string_view address) noexcept {
+    return (Ms::nmea.matches(address) || ...);
+  }
+
+  /// The declared name of wire field `n` of the message with this address ("" if unknown).
+  [[nodiscard]] static constexpr std::string_view field_name(std::string_view address,
+                                                             std::size_t n) noexcept {
+    std::string_view name;
+    (void)((Ms::nmea.matches(address) ? (name = nmea::field_name<Ms>(n), true) : false) || ...);
+    return name;
+  }
+
+  /// Decode into whichever message the address names; an address the set does not know gives
+  /// unknown_sentence (not an error: receivers are told to ignore such messages).
+  [[nodiscard]] static constexpr result<variant> decode(const sentence_view& s,
+                                                        const parse_policy& p = {}) noexcept {
+    result<variant> out;
+    out.value = unknown_sentence{s};
+    (void)((Ms::nmea.matches(s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
+    return out;
+  }
+  [[nodiscard]] static constexpr result<variant> decode(std::string_view line,
+                                                        const parse_policy& p = {}) noexcept {
+    const result<sentence_view> s = parse(line, p);
+    if (!s) {
+      result<variant> out;
+      out.ec = s.ec;
+      out.column = s.column;
+      return out;
+    }
+    return decode(s.value, p);
+  }
+
+  /// Decode and call `on_message(const M&)` for the matching message, or
+  /// `on_message(const unknown_sentence&)`. Returns the decode error (visitor not called) or
+  /// success.
+  template <class F>
+  static constexpr result<bool> visit(const sentence_view& s, const parse_policy& p,
+                                      F&& on_message) {
+    result<bool> out;
+    const bool found =
+        ((Ms::nmea.matches(s.address) ? (visit_one<Ms>(out, s, p, on_message), true) : false) ||
+         ...);
+    if (!found) {
+      on_message(unknown_sentence{s});
+      out.value = false;
+    }
+    return out;
+  }
+
+ private:
+  template <class M>
+  static constexpr void assign(result<variant>& out, const sentence_view& s,
+                               const parse_policy& p) noexcept {
+    result<M> r = nmea::decode<M>(s, p);
+    out.ec = r.ec;
+    out.field = r.field;
+    out.column = r.column;
+    if (r) out.value.template emplace<M>(r.value);
+  }
+  template <class M, class F>
+  static constexpr void visit_one(result<bool>& out, const sentence_view& s,
+                                  const parse_policy& p, F& on_message) {
+    const result<M> r = nmea::decode<M>(s, p);
+    out.ec = r.ec;
+    out.field = r.field;
+    out.column = r.column;
+    out.value = true;
+    if (r) on_message(r.value);
+  }
+};
+
+/// The union of several sets (a decoder for every family at once).
+template <class... Sets>
+struct merge_sets;
+template <message_like... A>
+struct merge_sets<message_set<A...>> {
+  using type = message_set<A...>;
+};
+template <message_like... A, message_like... B, class... Rest>
+struct merge_sets<message_set<A...>, message_set<B...>, Rest...> {
+  using type = typename merge_sets<message_set<A..., B...>, Rest...>::type;
+};
+
+}  // namespace seawire::nmea

@@ -1,0 +1,484 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The message description: one declaration per message, from which decode, encode, field
+// names and validation all follow. A message is a plain struct with a static `nmea` member:
+//
+//   // $PYDIR,<thrust_left>,<thrust_right>*hh
+//   struct pydir {
+//     decimal thrust_left;   // 1 percent, -100..100
+//     decimal thrust_right;  // 2 percent, -100..100
+//     static constexpr auto nmea = sentence<"PYDIR">(
+//         field<&pydir::thrust_left>("thrust_left", in_range(-100, 100)),
+//         field<&pydir::thrust_right>("thrust_right", in_range(-100, 100)));
+//   };
+//
+// Member types pick their codec (fields.hpp); std::optional<T> marks a field that may be
+// blank. Options after the name add a range, a unit letter field, or say when a field may be
+// absent. An address starting with "--" ("--RMC") matches any talker; such a message has a
+// `talker_id talker` member that decode fills and encode writes.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/detail/fixed_string.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+namespace seawire::nmea {
+
+// ---------------------------------------------------------------------------------------------
+// field options
+
+/// Everything a field declaration can add to its codec. Built from the option helpers below.
+struct field_options {
+  decimal min{};
+  decimal max{};
+  bool has_min = false;
+  bool has_max = false;
+  bool max_exclusive = false;
+  std::int8_t max_places = -1;      ///< fraction digits allowed (decimal, time); -1 = any
+  char unit = 0;                    ///< unit letter in the following wire field, e.g. 'N'
+  std::uint16_t when_count = 0;     ///< present only when the sentence has this many fields
+  bool may_be_absent = false;       ///< trailing: a nullopt value is not written at all
+  std::uint16_t min_length = 0;     ///< text: fewest characters
+  std::uint16_t max_length = 0xFFFF;  ///< text: most characters
+  std::uint8_t zero_pad = 0;        ///< integers: write at least this many digits ("06")
+};
+
+namespace option {
+struct range {
+  decimal lo, hi;
+  bool has_lo, has_hi, hi_open;
+  constexpr void apply(field_options& o) const noexcept {
+    o.min = lo;
+    o.has_min = has_lo;
+    o.max = hi;
+    o.has_max = has_hi;
+    o.max_exclusive = hi_open;
+  }
+};
+struct places {
+  std::int8_t n;
+  constexpr void apply(field_options& o) const noexcept { o.max_places = n; }
+};
+struct unit_letter {
+  char c;
+  constexpr void apply(field_options& o) const noexcept { o.unit = c; }
+};
+struct when_count {
+  std::uint16_t n;
+  constexpr void apply(field_options& o) const noexcept { o.when_count = n; }
+};
+struct absent_ok {
+  constexpr void apply(field_options& o) const noexcept { o.may_be_absent = true; }
+};
+struct pad {
+  std::uint8_t n;
+  constexpr void apply(field_options& o) const noexcept { o.zero_pad = n; }
+};
+struct length {
+  std::uint16_t lo, hi;
+  constexpr void apply(field_options& o) const noexcept {
+    o.min_length = lo;
+    o.max_length = hi;
+  }
+};
+}  // namespace option
+
+/// lo <= value <= hi.
+[[nodiscard]] constexpr option::range in_range(decimal lo, decimal hi) noexcept {
+  return {lo, hi, true, true, false};
+}
+/// lo <= value < hi (headings: [0, 360)).
+[[nodiscard]] constexpr option::range in_range_below(decimal lo, decimal hi) noexcept {
+  return {lo, hi, true, true, true};
+}
+/// lo <= value.
+[[nodiscard]] constexpr option::range at_least(decimal lo) noexcept {
+  return {lo, {}, true, false, false};
+}
+/// At most n fraction digits (0: whole numbers or whole seconds only).
+[[nodiscard]] constexpr option::places max_places(int n) noexcept {
+  return {static_cast<std::int8_t>(n)};
+}
+/// The value is followed by a field holding this unit letter ("5.2,N"). On receive the letter
+/// may also be blank; seawire always writes it.
+[[nodiscard]] constexpr option::unit_letter unit(char c) noexcept { return {c}; }
+/// The field exists only in the form of the sentence that has `n` fields (an optional member;
+/// written only when it has a value).
+[[nodiscard]] constexpr option::when_count only_with_field_count(int n) noexcept {
+  return {static_cast<std::uint16_t>(n)};
+}
+/// A trailing optional field that senders may leave out entirely; when the value is nullopt
+/// it is not written (nor any comma for it).
+inline constexpr option::absent_ok may_be_absent{};
+/// Integers written with at least n digits ("06" satellites). Any width is accepted on receive.
+[[nodiscard]] constexpr option::pad zero_pad(int n) noexcept {
+  return {static_cast<std::uint8_t>(n)};
+}
+/// Text length bounds.
+[[nodiscard]] constexpr option::length length_between(int lo, int hi) noexcept {
+  return {static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(hi)};
+}
+[[nodiscard]] constexpr option::length exact_length(int n) noexcept {
+  return {static_cast<std::uint16_t>(n), static_cast<std::uint16_t>(n)};
+}
+
+// ---------------------------------------------------------------------------------------------
+// descriptors
+
+namespace detail {
+template <class T>
+struct optional_traits {
+  static constexpr bool is_optional = false;
+  using value_type = T;
+};
+template <class T>
+struct optional_traits<std::optional<T>> {
+  static constexpr bool is_optional = true;
+  using value_type = T;
+};
+template <class M>
+struct member_pointer_traits;
+template <class C, class T>
+struct member_pointer_traits<T C::*> {
+  using class_type = C;
+  using member_type = T;
+};
+}  // namespace detail
+
+/// One field of a message: which member, its name in JSON/fmt, its options.
+template <auto Member>
+struct field_desc {
+  using class_type = typename detail::member_pointer_traits<decltype(Member)>::class_type;
+  using member_type = typename detail::member_pointer_traits<decltype(Member)>::member_type;
+  using value_type = typename detail::optional_traits<member_type>::value_type;
+  static constexpr bool is_optional = detail::optional_traits<member_type>::is_optional;
+  static constexpr auto member = Member;
+  static_assert(has_codec<value_type>, "no codec for this member type");
+
+  std::string_view name;
+  field_options opts;
+
+  /// Wire fields this declaration spans.
+  [[nodiscard]] constexpr unsigned width() const noexcept {
+    return codec<value_type>::width + (opts.unit != 0 ? 1u : 0u);
+  }
+};
+
+template <auto Member, class... Options>
+[[nodiscard]] constexpr field_desc<Member> field(std::string_view name,
+                                                 Options... options) noexcept {
+  field_desc<Member> f{name, {}};
+  (options.apply(f.opts), ...);
+  return f;
+}
+
+/// A message's wire layout: its address and its fields in wire order.
+template <seawire::detail::fixed_string Address, class... Fields>
+struct sentence_desc {
+  static constexpr std::string_view address = Address.view();
+  /// "--RMC": any two-character talker followed by RMC.
+  static constexpr bool any_talker = Address.size() > 2 && address[0] == '-' && address[1] == '-';
+  std::tuple<Fields...> fields;
+
+  [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
+    if constexpr (any_talker) {
+      return a.size() == address.size() && a.substr(2) == address.substr(2);
+    } else {
+      return a == address;
+    }
+  }
+  [[nodiscard]] static constexpr std::size_t size() noexcept { return sizeof...(Fields); }
+};
+
+template <seawire::detail::fixed_string Address, class... Fields>
+[[nodiscard]] constexpr sentence_desc<Address, Fields...> sentence(Fields... fields) noexcept {
+  static_assert(Address.size() >= 1 && Address.size() <= 15, "addresses are 1-15 characters");
+  return {std::tuple<Fields...>{fields...}};
+}
+
+/// A type with a sentence description.
+template <class T>
+concept message_like = requires { T::nmea.fields; T::nmea.address; };
+
+// ---------------------------------------------------------------------------------------------
+// decode
+
+namespace detail {
+
+[[nodiscard]] constexpr errc check_options(const decimal& v, const field_options& o) noexcept {
+  if (o.max_places >= 0 && v.places > o.max_places) return errc::out_of_range;
+  if (o.has_min && v.compare(o.min) < 0) return errc::out_of_range;
+  if (o.has_max) {
+    const int c = v.compare(o.max);
+    if (c > 0 || (c == 0 && o.max_exclusive)) return errc::out_of_range;
+  }
+  return errc::ok;
+}
+template <class T>
+[[nodiscard]] constexpr errc check_options(const T& v, const field_options& o) noexcept {
+  if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+    return check_options(decimal(static_cast<std::int64_t>(v)), o);
+  } else if constexpr (std::is_same_v<T, time_of_day>) {
+    return o.max_places >= 0 && v.places > o.max_places ? errc::bad_time : errc::ok;
+  } else if constexpr (requires { v.view(); T::capacity; }) {
+    return v.size() < o.min_length || v.size() > o.max_length ? errc::bad_length : errc::ok;
+  } else {
+    return errc::ok;
+  }
+}
+
+[[nodiscard]] constexpr errc read_unit(field_reader& r, const field_options& o,
+                                       bool value_present) noexcept {
+  if (o.unit == 0) return errc::ok;
+  const field_token t = r.take();
+  if (!t.present) return value_present ? errc::too_few_fields : errc::ok;
+  if (t.text.empty()) return errc::ok;
+  return t.text.size() == 1 && t.text[0] == o.unit ? errc::ok : errc::bad_unit;
+}
+
+template <class F, class T>
+[[nodiscard]] constexpr errc read_field(const F& f, field_reader& r, T& msg) noexcept {
+  using V = typename F::value_type;
+  auto& m = msg.*F::member;
+  const field_options& o = f.opts;
+  if constexpr (F::is_optional) {
+    if (o.when_count != 0 && r.field_count() != o.when_count) {
+      m.reset();
+      return errc::ok;
+    }
+    const field_token t = r.peek();
+    // Blank means "no value", except for text, where blank is the empty string and only a
+    // field that is not there at all is nullopt.
+    if (!t.present || (t.blank() && !codec<V>::allows_blank)) {
+      for (unsigned k = 0; k < codec<V>::width; ++k) (void)r.take();
+      m.reset();
+      return read_unit(r, o, false);
+    }
+    V v{};
+    errc e = codec<V>::read(r, v);
+    if (e == errc::ok) e = check_options(v, o);
+    if (e == errc::ok) e = read_unit(r, o, true);
+    if (e == errc::ok) m = v;
+    return e;
+  } else {
+    const field_token t = r.peek();
+    if (!t.present) {
+      (void)r.take();
+      return errc::too_few_fields;
+    }
+    if (t.blank() && (!codec<V>::allows_blank || o.min_length > 0)) {
+      (void)r.take();
+      return errc::missing_field;
+    }
+    errc e = codec<V>::read(r, m);
+    if (e == errc::ok) e = check_options(m, o);
+    if (e == errc::ok) e = read_unit(r, o, true);
+    return e;
+  }
+}
+
+template <class T>
+[[nodiscard]] constexpr result<T> fail(errc e, const field_reader& r) noexcept {
+  result<T> out;
+  out.ec = e;
+  out.field = r.index();
+  out.column = r.column();
+  return out;
+}
+
+}  // namespace detail
+
+/// Decode a message from a sentence already split by parse().
+template <message_like T>
+[[nodiscard]] constexpr result<T> decode(const sentence_view& s,
+                                         const parse_policy& policy = {}) noexcept {
+  result<T> out;
+  if (!T::nmea.matches(s.address)) {
+    out.ec = errc::wrong_address;
+    return out;
+  }
+  if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
+    (void)out.value.talker.assign(s.address.substr(0, 2));
+  }
+  field_reader r(s, policy);
+  errc e = errc::ok;
+  std::apply(
+      [&](const auto&... f) {
+        (void)(((e = detail::read_field(f, r, out.value)) == errc::ok) && ...);
+      },
+      T::nmea.fields);
+  if (e != errc::ok) return detail::fail<T>(e, r);
+  if (!r.at_end() && !policy.extra_fields) {
+    (void)r.take();
+    return detail::fail<T>(errc::too_many_fields, r);
+  }
+  return out;
+}
+
+/// Parse and decode one line.
+template <message_like T>
+[[nodiscard]] constexpr result<T> decode(std::string_view line,
+                                         const parse_policy& policy = {}) noexcept {
+  const result<sentence_view> s = parse(line, policy);
+  if (!s) {
+    result<T> out;
+    out.ec = s.ec;
+    out.column = s.column;
+    return out;
+  }
+  return decode<T>(s.value, policy);
+}
+
+// ---------------------------------------------------------------------------------------------
+// encode
+
+namespace detail {
+
+template <class F, class T>
+[[nodiscard]] constexpr bool skipped(const F& f, const T& msg) noexcept {
+  if constexpr (F::is_optional) {
+    return (f.opts.when_count != 0 || f.opts.may_be_absent) && !(msg.*F::member).has_value();
+  } else {
+    return false;
+  }
+}
+
+template <class F, class T>
+[[nodiscard]] constexpr errc write_field(const F& f, writer& w, const T& msg,
+                                         bool& skip_rest) noexcept {
+  using V = typename F::value_type;
+  const auto& m = msg.*F::member;
+  const field_options& o = f.opts;
+  if (skip_rest) return errc::ok;
+  const V* v = nullptr;
+  bool has = true;
+  if constexpr (F::is_optional) {
+    has = m.has_value();
+    if (!has && o.when_count != 0) return errc::ok;  // the shorter form has no such field
+    if (has) v = &*m;
+  } else {
+    v = &m;
+  }
+  if (has) {
+    errc e = codec<V>::check(*v);
+    if (e == errc::ok) e = check_options(*v, o);
+    if (e != errc::ok) return e;
+  }
+  w.next_field();
+  if (has) {
+    if constexpr (std::is_integral_v<V> && std::is_unsigned_v<V> && !std::is_same_v<V, bool>) {
+      w.put_uint(*v, o.zero_pad);
+    } else {
+      codec<V>::write(w, *v);
+    }
+  } else {
+    for (unsigned k = 1; k < codec<V>::width; ++k) w.next_field();
+  }
+  if (o.unit != 0) {
+    w.next_field();
+    w.put(o.unit);
+  }
+  return errc::ok;
+}
+
+}  // namespace detail
+
+/// Write a message as a sealed sentence into `out`. Values outside their field's domain are
+/// refused with the field number; nothing partial is reported as success.
+template <message_like T>
+[[nodiscard]] constexpr result<std::size_t> encode_to(const T& msg, std::span<char> out) noexcept {
+  writer w(out);
+  constexpr auto& desc = T::nmea;
+  if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
+    const std::string_view t = msg.talker.view();
+    if (t.size() != 2 || !seawire::detail::is_upper(t[0]) ||
+        !(seawire::detail::is_upper(t[1]) || seawire::detail::is_digit(t[1]))) {
+      result<std::size_t> r;
+      r.ec = errc::bad_address;
+      return r;
+    }
+    w.begin(t);
+    w.put(desc.address.substr(2));
+  } else {
+    w.begin(desc.address);
+  }
+  // Trailing fields that may be absent and have no value are left out, with their commas.
+  constexpr std::size_t n = std::tuple_size_v<decltype(desc.fields)>;
+  std::size_t keep = n;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    const bool skips[] = {detail::skipped(std::get<I>(desc.fields), msg)..., false};
+    while (keep > 0 && skips[keep - 1]) --keep;
+  }(std::make_index_sequence<n>{});
+
+  errc e = errc::ok;
+  std::uint16_t wire_field = 0;  // spec number of the first wire field of the current one
+  std::size_t index = 0;
+  bool skip_rest = false;
+  const auto one = [&](const auto& f) {
+    if (index++ >= keep) skip_rest = true;
+    ++wire_field;
+    e = detail::write_field(f, w, msg, skip_rest);
+    if (e == errc::ok) wire_field = static_cast<std::uint16_t>(wire_field + f.width() - 1);
+    return e == errc::ok;
+  };
+  std::apply([&](const auto&... f) { (void)(one(f) && ...); }, desc.fields);
+  result<std::size_t> r;
+  if (e != errc::ok) {
+    r.ec = e;
+    r.field = wire_field;
+    return r;
+  }
+  return w.seal();
+}
+
+/// Encode into a buffer held by value (256 bytes unless asked otherwise).
+template <std::size_t N = 256, message_like T>
+[[nodiscard]] constexpr sentence_buffer<N> encode(const T& msg) noexcept {
+  sentence_buffer<N> b;
+  const result<std::size_t> r = encode_to(msg, std::span<char>(b.data, N));
+  b.ec = r.ec;
+  b.field = r.field;
+  b.size = r ? r.value : 0;
+  return b;
+}
+
+// ---------------------------------------------------------------------------------------------
+// reflection
+
+/// Calls f(name, member) for each field in wire order (name as declared: snake_case).
+template <message_like T, class F>
+constexpr void for_each_field(const T& msg, F&& f) {
+  std::apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); }, T::nmea.fields);
+}
+/// The same with mutable members, to fill a message field by field.
+template <message_like T, class F>
+constexpr void for_each_field(T& msg, F&& f) {
+  std::apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); }, T::nmea.fields);
+}
+
+/// The declared name of the field that holds wire field `n` (1-based), or "" if none.
+template <message_like T>
+[[nodiscard]] constexpr std::string_view field_name(std::size_t n) noexcept {
+  std::string_view name;
+  std::size_t first = 1;
+  std::apply(
+      [&](const auto&... d) {
+        (void)((n >= first && n < first + d.width() ? (name = d.name, true)
+                                                    : (first += d.width(), false)) ||
+               ...);
+      },
+      T::nmea.fields);
+  return name;
+}
+
+}  // namespace seawire::nmea
