@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// $--GGA: GPS fix data, from any talker.
+//
+//   $GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C
+//          1         2          3 4           5 6 7  8    9    10 11  12 13 14
+//
+// Fields 9-10 and 11-12 are value + unit letter pairs ('M'): one declaration each.
+
+#include <optional>
+#include <string_view>
+
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::standard {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+/// GGA field 6.
+enum class gps_quality : char {
+  invalid = '0',
+  gps = '1',
+  dgps = '2',
+  pps = '3',
+  rtk = '4',
+  float_rtk = '5',
+  estimated = '6',
+  manual = '7',
+  simulation = '8',
+};
+constexpr std::string_view enum_chars(gps_quality) noexcept { return "012345678"; }
+
+struct gga {
+  talker_id talker = "GP";
+  std::optional<time_of_day> time;              // 1  UTC time of the fix
+  std::optional<latitude> lat;                  // 2,3
+  std::optional<longitude> lon;                 // 4,5
+  gps_quality quality = gps_quality::invalid;   // 6
+  std::optional<std::uint8_t> satellites;       // 7  in use, written with two digits
+  std::optional<decimal> hdop;                  // 8  horizontal dilution of precision
+  std::optional<decimal> altitude_m;            // 9,10  antenna altitude above MSL, metres
+  std::optional<decimal> geoid_separation_m;    // 11,12 geoid above the WGS84 ellipsoid, metres
+  std::optional<decimal> dgps_age_s;            // 13 seconds since the last DGPS update
+  std::optional<std::uint16_t> dgps_station;    // 14 station id 0000-1023
+
+  static constexpr auto nmea = sentence<"--GGA">(
+      field<&gga::time>("time"), field<&gga::lat>("latitude"), field<&gga::lon>("longitude"),
+      field<&gga::quality>("quality"),
+      field<&gga::satellites>("satellites", zero_pad(2)),
+      field<&gga::hdop>("hdop", at_least(0)),
+      field<&gga::altitude_m>("altitude_m", unit('M')),
+      field<&gga::geoid_separation_m>("geoid_separation_m", unit('M')),
+      field<&gga::dgps_age_s>("dgps_age_s", at_least(0)),
+      field<&gga::dgps_station>("dgps_station", in_range(0, 1023), zero_pad(4)));
+};
+
+}  // namespace seawire::standard

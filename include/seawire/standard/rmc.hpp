@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// $--RMC: recommended minimum navigation information, from any talker.
+//
+//   $GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70
+//          1         2 3          4 5           6 7     8      9      10,11 12 [13]
+//
+// 11 fields in NMEA 0183 before 2.3; 2.3 adds the mode indicator (12), 4.1 the navigational
+// status (13). All three forms are accepted and each is written back in the form it came in.
+// Receivers without a fix send the sentence with blank fields; every field but the status may
+// be blank.
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::standard {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+/// RMC field 2.
+enum class rmc_status : char { active = 'A', warning = 'V' };
+constexpr std::string_view enum_chars(rmc_status) noexcept { return "AV"; }
+
+/// Positioning mode (RMC 12, GNS, VTG): NMEA 2.3 and later.
+enum class mode_indicator : char {
+  autonomous = 'A',
+  differential = 'D',
+  estimated = 'E',
+  float_rtk = 'F',
+  manual = 'M',
+  not_valid = 'N',
+  precise = 'P',
+  rtk = 'R',
+  simulator = 'S',
+};
+constexpr std::string_view enum_chars(mode_indicator) noexcept { return "ADEFMNPRS"; }
+
+/// Navigational status (RMC 13): NMEA 4.1 and later.
+enum class nav_status : char { safe = 'S', caution = 'C', unsafe = 'U', not_valid = 'V' };
+constexpr std::string_view enum_chars(nav_status) noexcept { return "SCUV"; }
+
+struct rmc {
+  talker_id talker = "GP";
+  std::optional<time_of_day> time;            // 1  UTC time of the fix
+  rmc_status status = rmc_status::active;     // 2  A active, V receiver warning
+  std::optional<latitude> lat;                // 3,4  DDMM.m, N/S
+  std::optional<longitude> lon;               // 5,6  DDDMM.m, E/W
+  std::optional<decimal> speed_knots;         // 7  speed over ground, knots
+  std::optional<decimal> course_true;         // 8  track made good, degrees true
+  std::optional<nmea::date> date;             // 9  ddmmyy
+  std::optional<decimal_longitude> magnetic_variation;  // 10,11 degrees, E/W (W is negative)
+  std::optional<mode_indicator> mode;         // 12 NMEA 2.3+
+  std::optional<standard::nav_status> navigational_status;  // 13 NMEA 4.1+
+
+  static constexpr auto nmea = sentence<"--RMC">(
+      field<&rmc::time>("time"), field<&rmc::status>("status"),
+      field<&rmc::lat>("latitude"), field<&rmc::lon>("longitude"),
+      field<&rmc::speed_knots>("speed_knots", at_least(0)),
+      field<&rmc::course_true>("course_true", in_range(0, 360)),
+      field<&rmc::date>("date"),
+      field<&rmc::magnetic_variation>("magnetic_variation"),
+      field<&rmc::mode>("mode", may_be_absent),
+      field<&rmc::navigational_status>("navigational_status", may_be_absent));
+};
+
+}  // namespace seawire::standard
