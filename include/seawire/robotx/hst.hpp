@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Hawaii Standard Time, the clock every RobotX date and time field is read on: UTC-10 all year
+// (Hawaii keeps no daylight saving), so the conversion is a fixed offset and needs no time zone
+// database. The library never reads a clock: pass it system_clock::now() or a simulated time.
+//
+// system_clock counts no leap seconds, so a stamp made here never reads hh:mm:60.
+
+#include <chrono>
+#include <cstdint>
+
+#include "seawire/error.hpp"
+#include "seawire/nmea/fields.hpp"
+
+namespace seawire::robotx {
+
+/// The time points this family takes: UTC, as std::chrono::system_clock keeps it. A
+/// system_clock::time_point or any sys_time of a coarser duration converts implicitly.
+using time_point = std::chrono::sys_time<std::chrono::nanoseconds>;
+
+/// HST = UTC + hst_offset.
+inline constexpr std::chrono::hours hst_offset{-10};
+
+/// A report's date and time fields.
+struct hst_stamp {
+  nmea::date date;
+  nmea::time_of_day time;  ///< whole seconds (places == 0), as RobotX writes it
+  friend constexpr bool operator==(const hst_stamp&, const hst_stamp&) noexcept = default;
+};
+
+/// The wall-clock reading in Hawaii at `utc`, truncated to the second (floor, also before 1970).
+template <class Duration>
+[[nodiscard]] constexpr std::chrono::local_seconds to_hst_local(
+    std::chrono::sys_time<Duration> utc) noexcept {
+  using namespace std::chrono;
+  return local_seconds{(floor<seconds>(utc) + hst_offset).time_since_epoch()};
+}
+
+/// The HST date and time fields for `utc`. out_of_range when the HST year is outside the
+/// 1980..2079 a two-digit year can name.
+template <class Duration>
+[[nodiscard]] constexpr result<hst_stamp> to_hst(std::chrono::sys_time<Duration> utc) noexcept {
+  using namespace std::chrono;
+  const local_seconds local = to_hst_local(utc);
+  const local_days day = floor<days>(local);
+  const year_month_day ymd{day};
+  const hh_mm_ss<seconds> hms{local - day};
+  result<hst_stamp> r;
+  const int y = static_cast<int>(ymd.year());
+  if (y < 1980 || y > 2079) {
+    r.ec = errc::out_of_range;
+    return r;
+  }
+  r.value.date = nmea::date::from(ymd);
+  r.value.time.hour = static_cast<std::uint8_t>(hms.hours().count());
+  r.value.time.minute = static_cast<std::uint8_t>(hms.minutes().count());
+  r.value.time.second = static_cast<std::uint8_t>(hms.seconds().count());
+  return r;
+}
+
+/// The UTC instant an HST date and time name (the time's fraction included). Refuses a date or
+/// time the field codecs would refuse, with their errc.
+[[nodiscard]] constexpr result<time_point> from_hst(const nmea::date& d,
+                                                    const nmea::time_of_day& t) noexcept {
+  using namespace std::chrono;
+  result<time_point> r;
+  r.ec = nmea::codec<nmea::date>::check(d);
+  if (r.ec == errc::ok) r.ec = nmea::codec<nmea::time_of_day>::check(t);
+  if (r.ec != errc::ok) return r;
+  const local_days day{d.ymd()};
+  r.value = time_point{(day + t.since_midnight()).time_since_epoch()} - hst_offset;
+  return r;
+}
+[[nodiscard]] constexpr result<time_point> from_hst(const hst_stamp& s) noexcept {
+  return from_hst(s.date, s.time);
+}
+
+/// Write the HST date and time of `utc` into a report (any message with `date` and `time`).
+/// Leaves the message unchanged and returns the error when `utc` cannot be stamped.
+template <class M, class Duration>
+requires requires(M m) {
+  m.date = nmea::date{};
+  m.time = nmea::time_of_day{};
+}
+constexpr errc stamp(M& msg, std::chrono::sys_time<Duration> utc) noexcept {
+  const result<hst_stamp> s = to_hst(utc);
+  if (s) {
+    msg.date = s.value.date;
+    msg.time = s.value.time;
+  }
+  return s.ec;
+}
+
+}  // namespace seawire::robotx
