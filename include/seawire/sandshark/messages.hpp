@@ -1,0 +1,332 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Bluefin Sandshark Standard Payload Interface (SPI): BF* from the vehicle (the BAM), BP* from
+// the payload, one NMEA-style sentence per line over TCP port 29500.
+//
+// Receive liberally (SPI 4.2): unknown addresses are unknown_sentence, extra trailing fields are
+// ignored, every BP* field after the timestamp may be blank. The vehicle always sends a
+// checksum, so from_vehicle_policy requires one; the payload may omit it, so to_vehicle_policy
+// accepts a missing checksum but never a wrong one. Encoding follows the spec strictly.
+//
+// Field numbers below count as the spec does: 1 is the first field after the address.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <utility>
+
+#include "seawire/bluefin/navigation.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+
+namespace seawire::sandshark {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+// ---------------------------------------------------------------------------------------------
+// from the vehicle: commands (SPI 5), always sent
+
+/// BFSHT: the payload loses power in one minute or more; clean up now.
+///
+///   $BFSHT,081025.987*hh
+///          1
+struct bfsht {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+
+  static constexpr auto nmea = sentence<"BFSHT">(field<&bfsht::timestamp>("timestamp"));
+};
+
+/// BFVER: the SPI version the vehicle speaks; sent at the start of communications.
+///
+///   $BFVER,081025.987,1.0*hh
+///          1          2
+struct bfver {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  text<32> version;       // 2 [v-v] Version number
+
+  static constexpr auto nmea =
+      sentence<"BFVER">(field<&bfver::timestamp>("timestamp"),
+                        field<&bfver::version>("version", length_between(1, 32)));
+};
+
+// ---------------------------------------------------------------------------------------------
+// from the vehicle: status (SPI 6), sent only after BPLOG asks for them
+
+/// BFNVG: navigation update (the layout Kingfisher's CPNVG copies; the seed's format line is
+/// garbled, the example line is right).
+using bfnvg = bluefin::nav_update<"BFNVG">;
+/// BFNVR: velocity and rate update.
+using bfnvr = bluefin::velocity_update<"BFNVR">;
+
+/// Mission states the spec names for BFMIS field 3; the list is open ("include, but are not
+/// limited to"), so the wire keeps the text and this is only an interpretation of it.
+enum class mission_state : std::uint8_t {
+  unknown,  ///< a status the spec does not name (or a blank one)
+  offline,
+  waiting,
+  invalid_dive_file,
+  invalid_wrapup_file,
+  ready,
+  running,  ///< "Running", possibly followed by the mission's log directory
+  wrapping_up,
+  aborting,
+  completed,
+  aborted,
+  stopped,
+};
+
+/// BFMIS: mission status, sent when it changes.
+///
+///   $BFMIS,081025.987,dive1.xml,Running /var/log/mission_12,*hh
+///          1          2         3                           4
+struct bfmis {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  text<128> dive_file;    // 2 [d--d] current dive file; blank when no mission plan asked for one
+  text<128> status;       // 3 [t--t] Offline, Waiting, Ready, Running [log dir], Aborted ...
+  text<200> details;      // 4 [a--a] human-readable details (abort reasons); not for parsing
+
+  /// The status text starts with "Running" (it may carry the log directory after it).
+  [[nodiscard]] constexpr bool running() const noexcept {
+    return status.view().starts_with("Running");
+  }
+  /// What follows "Running" with leading blanks and ':' removed; empty when not running.
+  [[nodiscard]] constexpr std::string_view log_directory() const noexcept {
+    if (!running()) return {};
+    std::string_view rest = status.view().substr(7);
+    while (!rest.empty() && (rest.front() == ' ' || rest.front() == ':')) rest.remove_prefix(1);
+    return rest;
+  }
+  /// The status as one of the states the spec names, or unknown.
+  [[nodiscard]] constexpr mission_state state() const noexcept {
+    if (running()) return mission_state::running;
+    constexpr std::array<std::pair<std::string_view, mission_state>, 10> names{{
+        {"Offline", mission_state::offline},
+        {"Waiting", mission_state::waiting},
+        {"Invalid Dive File", mission_state::invalid_dive_file},
+        {"Invalid Wrapup File", mission_state::invalid_wrapup_file},
+        {"Ready", mission_state::ready},
+        {"WrappingUp", mission_state::wrapping_up},
+        {"Aborting", mission_state::aborting},
+        {"Completed", mission_state::completed},
+        {"Aborted", mission_state::aborted},
+        {"Stopped", mission_state::stopped},
+    }};
+    for (const auto& [name, state] : names)
+      if (status.view() == name) return state;
+    return mission_state::unknown;
+  }
+
+  static constexpr auto nmea = sentence<"BFMIS">(
+      field<&bfmis::timestamp>("timestamp"), field<&bfmis::dive_file>("dive_file"),
+      field<&bfmis::status>("status"), field<&bfmis::details>("details"));
+};
+
+/// BFACK field 5: what became of the acknowledged command.
+enum class ack_status : char {
+  invalid = '0',  ///< unknown message, or improper parameters
+  failed = '1',   ///< recognised, but processing failed
+  ok = '2',       ///< processed successfully
+  pending = '3',  ///< processing started; the final ack follows within 2 s
+};
+constexpr std::string_view enum_chars(ack_status) noexcept { return "0123"; }
+
+/// BFACK: acknowledgement of a payload message (only after BPLOG,ACK,ON).
+///
+///   $BFACK,081025.990,RMB,081025.950,,2,0,,*1E     the spec's form: 8 fields, field 8 empty
+///          1          2   3          4 5 6 7 8
+///   $BFACK,081025.990,RMB,081025.950,,2,0,*32      Goby's: 7 fields, no field 8
+///   $BFACK,081025.990,RMB,081025.950,,2,0*1E       also seen: no description at all
+///
+/// Fields 7 and 8 may each be absent. Text keeps blank (empty text) apart from absent
+/// (nullopt), so each form is written back as it came; a new bfack has the spec's form.
+struct bfack {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  text<16> command;       // 2 [c-c] command acknowledged, by 3-letter id ("RMB") or address
+  std::optional<time_of_day> command_timestamp;  // 3 [hhmmss.ss] the command's own field 1;
+                                                 //   blank for commands without one (BPLOG)
+  std::optional<std::int32_t> behavior_id;       // 4 [iiii] payload-assigned id of a new behaviour
+  ack_status status = ack_status::ok;            // 5 [s] Acknowledgement Status Code
+  std::optional<std::int32_t> future_use = 0;    // 6 [c] always 0 in this revision
+  std::optional<text<96>> description = text<96>{};  // 7 [m-m] details, for people only
+  std::optional<text<32>> trailing = text<32>{};     // 8 the spec's final, empty field
+
+  /// Whether this acknowledges `address` ("BPRMB"): the vehicle names commands by their
+  /// 3-letter id ("RMB"); the full address is accepted too.
+  [[nodiscard]] constexpr bool names(std::string_view address) const noexcept {
+    const std::string_view c = command.view();
+    return c == address || (address.size() == 5 && c == address.substr(2));
+  }
+
+  static constexpr auto nmea =
+      sentence<"BFACK">(field<&bfack::timestamp>("timestamp"),
+                        field<&bfack::command>("command", length_between(1, 16)),
+                        field<&bfack::command_timestamp>("command_timestamp"),
+                        field<&bfack::behavior_id>("behavior_id"), field<&bfack::status>("status"),
+                        field<&bfack::future_use>("future_use"),
+                        field<&bfack::description>("description", may_be_absent),
+                        field<&bfack::trailing>("trailing", may_be_absent));
+};
+
+/// BFCTL: backseat control handed over (1) or taken back (0). The seed prints its format line
+/// with the BFVER address by mistake.
+///
+///   $BFCTL,081025.987,1*78
+///          1          2
+struct bfctl {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  bool control = false;   // 2 [c] 1 = the payload (backseat) has control, 0 = it has not
+
+  static constexpr auto nmea =
+      sentence<"BFCTL">(field<&bfctl::timestamp>("timestamp"), field<&bfctl::control>("control"));
+};
+
+// ---------------------------------------------------------------------------------------------
+// to the vehicle (SPI 7)
+
+/// BPLOG field 2.
+enum class log_state : std::uint8_t { on, off };
+constexpr std::array<std::string_view, 2> enum_words(log_state) noexcept { return {"ON", "OFF"}; }
+
+/// BPLOG: turn one status message (or ALL of them) on or off for this payload. No timestamp.
+/// ALL never includes ACK, which must be asked for by name.
+///
+///   $BPLOG,ACK,ON*1E
+///          1   2
+struct bplog {
+  text<3> code;                     // 1 [rrr] 3-letter message id (NVG, NVR, MIS, CTL, ACK) or ALL
+  log_state state = log_state::on;  // 2 [a-a] ON or OFF
+
+  [[nodiscard]] constexpr bool is_all() const noexcept { return code == "ALL"; }
+
+  static constexpr auto nmea = sentence<"BPLOG">(field<&bplog::code>("code", exact_length(3)),
+                                                 field<&bplog::state>("state"));
+};
+
+/// BPSTS: payload status (the payload's heartbeat).
+///
+///   $BPSTS,231133.12,1,BWSI Autonomy OK*46
+///          1         2 3
+struct bpsts {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  bool all_ok = true;     // 2 [f] Status flag: 1 = all OK, 0 = failed
+  text<128> message;      // 3 [m--m] status text; spaces allowed ("Variable Text")
+
+  static constexpr auto nmea =
+      sentence<"BPSTS">(field<&bpsts::timestamp>("timestamp"), field<&bpsts::all_ok>("all_ok"),
+                        field<&bpsts::message>("message"));
+};
+
+/// BPRMB field 4: what field 3 holds.
+enum class depth_mode : char { depth = '0', altitude = '1', pitch = '2', elevator = '3' };
+constexpr std::string_view enum_chars(depth_mode) noexcept { return "0123"; }
+/// BPRMB field 6: what field 5 holds.
+enum class speed_mode : char { rpm = '0', meters_per_second = '1' };
+constexpr std::string_view enum_chars(speed_mode) noexcept { return "01"; }
+/// BPRMB field 7: what field 2 holds.
+enum class horizontal_mode : char { heading = '0', rudder = '1' };
+constexpr std::string_view enum_chars(horizontal_mode) noexcept { return "01"; }
+
+/// BPRMB: modify the current behaviour. Blank fields leave that aspect as the mission has it.
+/// Must be repeated at least every 5 s, or the vehicle takes control back. The meaning (and unit)
+/// of fields 2, 3 and 5 comes from the mode fields, so no range is imposed on them here.
+///
+///   $BPRMB,231204.72,-15,,,750,0,1*54
+///          1         2   3 4 5   6 7
+struct bprmb {
+  time_of_day timestamp;           // 1 [hhmmss.ss] Timestamp
+  std::optional<decimal> heading;  // 2 [h.h] heading deg true, or rudder deg (field 7)
+  std::optional<decimal> depth;    // 3 [d.d] depth/altitude m, pitch deg or elevator deg
+  std::optional<sandshark::depth_mode>
+      depth_mode;                // 4 [dm] 0 depth, 1 altitude, 2 pitch, 3 elevator
+  std::optional<decimal> speed;  // 5 [v.v] thruster RPM or m/s (field 6)
+  std::optional<sandshark::speed_mode> speed_mode;            // 6 [vm] 0 RPM, 1 m/s
+  std::optional<sandshark::horizontal_mode> horizontal_mode;  // 7 [hm] 0 heading, 1 rudder
+
+  static constexpr auto nmea =
+      sentence<"BPRMB">(field<&bprmb::timestamp>("timestamp"), field<&bprmb::heading>("heading"),
+                        field<&bprmb::depth>("depth"), field<&bprmb::depth_mode>("depth_mode"),
+                        field<&bprmb::speed>("speed"), field<&bprmb::speed_mode>("speed_mode"),
+                        field<&bprmb::horizontal_mode>("horizontal_mode"));
+};
+
+/// BPABT field 3.
+enum class abort_reason : char { success = '0', with_errors = '1' };
+constexpr std::string_view enum_chars(abort_reason) noexcept { return "01"; }
+
+/// BPABT: end the mission and run its wrap-up (e.g. a powered ascent).
+///
+///   $BPABT,081025.987,leak detected,1*hh
+///          1          2             3
+struct bpabt {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp (when sent)
+  text<128> message;      // 2 [c--c] shown to the operator to explain the abort
+  std::optional<abort_reason> reason = abort_reason::with_errors;  // 3 [a] blank = with errors
+
+  /// Field 3 as the vehicle reads it: blank means "with errors", the spec's default.
+  [[nodiscard]] constexpr abort_reason effective_reason() const noexcept {
+    return reason.value_or(abort_reason::with_errors);
+  }
+
+  static constexpr auto nmea =
+      sentence<"BPABT">(field<&bpabt::timestamp>("timestamp"), field<&bpabt::message>("message"),
+                        field<&bpabt::reason>("reason"));
+};
+
+/// BPVER: the SPI version the payload speaks; the payload must send it first.
+///
+///   $BPVER,081025.987,1.0*hh
+///          1          2
+struct bpver {
+  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  text<32> version;       // 2 [v-v] Version number
+
+  static constexpr auto nmea =
+      sentence<"BPVER">(field<&bpver::timestamp>("timestamp"),
+                        field<&bpver::version>("version", length_between(1, 32)));
+};
+
+// ---------------------------------------------------------------------------------------------
+// roles
+
+/// Everything the vehicle sends. Decode with from_vehicle_policy.
+using from_vehicle = message_set<bfsht, bfver, bfnvg, bfnvr, bfmis, bfack, bfctl>;
+/// Everything the payload sends. Decode with to_vehicle_policy.
+using to_vehicle = message_set<bplog, bpsts, bprmb, bpabt, bpver>;
+
+/// A payload receiving BF*: the vehicle always sends a checksum (SPI 4.2), so one is required.
+inline constexpr parse_policy from_vehicle_policy{.checksum = checksum_policy::required};
+/// A vehicle receiving BP*: the payload may leave the checksum out; a wrong one never passes.
+inline constexpr parse_policy to_vehicle_policy{.checksum = checksum_policy::verify_if_present};
+
+/// Decode a line the vehicle sent; an address the set does not know is unknown_sentence.
+[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
+    std::string_view line) noexcept {
+  return from_vehicle::decode(line, from_vehicle_policy);
+}
+[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
+    const sentence_view& s) noexcept {
+  return from_vehicle::decode(s, from_vehicle_policy);
+}
+/// Decode a line the payload sent.
+[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
+    std::string_view line) noexcept {
+  return to_vehicle::decode(line, to_vehicle_policy);
+}
+[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
+    const sentence_view& s) noexcept {
+  return to_vehicle::decode(s, to_vehicle_policy);
+}
+
+/// The 3-letter id the SPI uses for a message in BPLOG and BFACK: "BFNVG" -> "NVG". Other
+/// addresses are returned unchanged.
+[[nodiscard]] constexpr std::string_view message_code(std::string_view address) noexcept {
+  if (address.size() == 5 && (address.starts_with("BF") || address.starts_with("BP")))
+    return address.substr(2);
+  return address;
+}
+
+}  // namespace seawire::sandshark
