@@ -10,52 +10,52 @@ namespace seawire {
 
 /// Why a decode or encode failed. Values are stable; `name()` gives the identifier as text.
 enum class errc : std::uint8_t {
-  ok = 0,                 ///< no error
+  ok = 0,  ///< no error
   // -- sentence framing --
-  empty_input,            ///< nothing to decode
-  missing_start,          ///< the line does not begin with '$'
-  bad_address,            ///< the address is empty, too long, or not upper-case letters/digits
-  bad_character,          ///< a byte outside printable ASCII 0x20..0x7E, or a reserved '$' inside
-  missing_checksum,       ///< the policy requires a checksum and none was sent
-  bad_checksum_format,    ///< the checksum is not exactly two hex digits (or lower-case when refused)
-  checksum_mismatch,      ///< the checksum does not match the XOR of the sentence
-  bad_line_ending,        ///< bytes after the checksum other than the allowed CR/LF endings
-  too_long,               ///< the sentence is longer than the policy's maximum length
+  empty_input,          ///< nothing to decode
+  missing_start,        ///< the line does not begin with '$'
+  bad_address,          ///< the address is empty, too long, or not upper-case letters/digits
+  bad_character,        ///< a byte outside printable ASCII 0x20..0x7E, or a reserved '$' inside
+  missing_checksum,     ///< the policy requires a checksum and none was sent
+  bad_checksum_format,  ///< the checksum is not exactly two hex digits (or lower-case when refused)
+  checksum_mismatch,    ///< the checksum does not match the XOR of the sentence
+  bad_line_ending,      ///< bytes after the checksum other than the allowed CR/LF endings
+  too_long,             ///< the sentence is longer than the policy's maximum length
   // -- message selection --
-  unknown_address,        ///< no message of the requested set has this address
-  wrong_address,          ///< the sentence is not the message that was asked for
+  unknown_address,  ///< no message of the requested set has this address
+  wrong_address,    ///< the sentence is not the message that was asked for
   // -- field layout --
-  too_few_fields,         ///< the sentence ends before a required field
-  too_many_fields,        ///< extra trailing fields and the policy does not allow them
-  missing_field,          ///< a required field is blank
+  too_few_fields,   ///< the sentence ends before a required field
+  too_many_fields,  ///< extra trailing fields and the policy does not allow them
+  missing_field,    ///< a required field is blank
   // -- field values --
-  bad_number,             ///< not a number: stray characters, exponent, lone sign or point
-  number_too_long,        ///< more digits than the codec holds (19 significant digits)
-  out_of_range,           ///< a number outside the range the spec allows for this field
-  bad_time,               ///< not hhmmss[.f...]
-  hour_out_of_range,      ///< hour >= 24
-  minute_out_of_range,    ///< minute >= 60 (in a time, or the minutes of a position)
-  second_out_of_range,    ///< second >= 60 (60 only at 23:59:60, a leap second)
-  bad_date,               ///< not ddmmyy
-  month_out_of_range,     ///< month 0 or > 12
-  day_out_of_range,       ///< day 0 or past the end of its month
-  bad_latitude,           ///< latitude not DDMM.m..., or above 90 degrees
-  bad_longitude,          ///< longitude not DDDMM.m..., or above 180 degrees
-  bad_hemisphere,         ///< hemisphere letter other than N/S (latitude) or E/W (longitude)
-  bad_enum,               ///< a letter or word that is not one of the field's values
-  bad_flag,               ///< a flag that is not 0 or 1
-  bad_unit,               ///< a unit letter other than the one the field requires
-  bad_text,               ///< text with a character the field may not carry
-  text_too_long,          ///< text longer than the field's capacity
-  bad_length,             ///< a field or frame of the wrong length
+  bad_number,           ///< not a number: stray characters, exponent, lone sign or point
+  number_too_long,      ///< more digits than the codec holds (19 significant digits)
+  out_of_range,         ///< a number outside the range the spec allows for this field
+  bad_time,             ///< not hhmmss[.f...]
+  hour_out_of_range,    ///< hour >= 24
+  minute_out_of_range,  ///< minute >= 60 (in a time, or the minutes of a position)
+  second_out_of_range,  ///< second >= 60 (60 only at 23:59:60, a leap second)
+  bad_date,             ///< not ddmmyy
+  month_out_of_range,   ///< month 0 or > 12
+  day_out_of_range,     ///< day 0 or past the end of its month
+  bad_latitude,         ///< latitude not DDMM.m..., or above 90 degrees
+  bad_longitude,        ///< longitude not DDDMM.m..., or above 180 degrees
+  bad_hemisphere,       ///< hemisphere letter other than N/S (latitude) or E/W (longitude)
+  bad_enum,             ///< a letter or word that is not one of the field's values
+  bad_flag,             ///< a flag that is not 0 or 1
+  bad_unit,             ///< a unit letter other than the one the field requires
+  bad_text,             ///< text with a character the field may not carry
+  text_too_long,        ///< text longer than the field's capacity
+  bad_length,           ///< a field or frame of the wrong length
   // -- encoding --
-  not_finite,             ///< NaN or infinity given to an encoder
-  value_too_large,        ///< a value that does not fit its wire field
-  buffer_too_small,       ///< the output buffer cannot hold the sentence or frame
+  not_finite,        ///< NaN or infinity given to an encoder
+  value_too_large,   ///< a value that does not fit its wire field
+  buffer_too_small,  ///< the output buffer cannot hold the sentence or frame
   // -- binary frames --
-  bad_frame_id,           ///< a binary frame whose identifier is not the expected one
-  crc_mismatch,           ///< a binary frame whose CRC does not match its payload
-  truncated,              ///< input ends before the frame or message does
+  bad_frame_id,  ///< a binary frame whose identifier is not the expected one
+  crc_mismatch,  ///< a binary frame whose CRC does not match its payload
+  truncated,     ///< input ends before the frame or message does
 };
 
 /// The identifier of an errc as text ("checksum_mismatch"), for logs and JSON.

@@ -20,17 +20,17 @@ using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message
 ///          1          2          3 4           5 6 7    8    9     10   11  12
 template <seawire::detail::fixed_string Address>
 struct nav_update {
-  time_of_day timestamp;                 // 1  [Timestamp] when the sentence was made
-  latitude lat;                          // 2,3 [Lat_NMEA] [LatNS_NMEA]
-  longitude lon;                         // 4,5 [Lon_NMEA] [LonEW_NMEA] (unpadded degrees accepted)
-  bool gps = false;                      // 6  [PosQual] 1 = solution includes GPS, 0 = no GPS
-  std::optional<decimal> altitude_m;     // 7  [AltBottom] metres above the bottom; blank (or 0) on
-                                         //    surface vehicles
-  std::optional<decimal> depth_m;        // 8  [DepthTop] metres below the surface; blank (or 0)
-                                         //    on surface vehicles
-  std::optional<decimal> heading_deg;    // 9  [Heading] degrees clockwise from true north
-  std::optional<decimal> roll_deg;       // 10 [Roll] degrees, positive port side up
-  std::optional<decimal> pitch_deg;      // 11 [Pitch] degrees, positive bow up
+  time_of_day timestamp;               // 1  [Timestamp] when the sentence was made
+  latitude lat;                        // 2,3 [Lat_NMEA] [LatNS_NMEA]
+  longitude lon;                       // 4,5 [Lon_NMEA] [LonEW_NMEA] (unpadded degrees accepted)
+  bool gps = false;                    // 6  [PosQual] 1 = solution includes GPS, 0 = no GPS
+  std::optional<decimal> altitude_m;   // 7  [AltBottom] metres above the bottom; blank (or 0) on
+                                       //    surface vehicles
+  std::optional<decimal> depth_m;      // 8  [DepthTop] metres below the surface; blank (or 0)
+                                       //    on surface vehicles
+  std::optional<decimal> heading_deg;  // 9  [Heading] degrees clockwise from true north
+  std::optional<decimal> roll_deg;     // 10 [Roll] degrees, positive port side up
+  std::optional<decimal> pitch_deg;    // 11 [Pitch] degrees, positive bow up
   std::optional<time_of_day> nav_timestamp;  // 12 [NavTimestamp] when the solution was computed;
                                              //    blank means "the same as field 1"
 
@@ -63,14 +63,14 @@ struct velocity_update {
   std::optional<decimal> roll_rate_dps;   // 6 [Rate_Roll] deg/s
   std::optional<decimal> yaw_rate_dps;    // 7 [Rate_Yaw] deg/s, positive clockwise
 
-  static constexpr auto nmea = sentence<Address>(
-      field<&velocity_update::timestamp>("timestamp"),
-      field<&velocity_update::vel_east_mps>("vel_east_mps"),
-      field<&velocity_update::vel_north_mps>("vel_north_mps"),
-      field<&velocity_update::vel_down_mps>("vel_down_mps"),
-      field<&velocity_update::pitch_rate_dps>("pitch_rate_dps"),
-      field<&velocity_update::roll_rate_dps>("roll_rate_dps"),
-      field<&velocity_update::yaw_rate_dps>("yaw_rate_dps"));
+  static constexpr auto nmea =
+      sentence<Address>(field<&velocity_update::timestamp>("timestamp"),
+                        field<&velocity_update::vel_east_mps>("vel_east_mps"),
+                        field<&velocity_update::vel_north_mps>("vel_north_mps"),
+                        field<&velocity_update::vel_down_mps>("vel_down_mps"),
+                        field<&velocity_update::pitch_rate_dps>("pitch_rate_dps"),
+                        field<&velocity_update::roll_rate_dps>("roll_rate_dps"),
+                        field<&velocity_update::yaw_rate_dps>("yaw_rate_dps"));
 };
 
 }  // namespace seawire::bluefin

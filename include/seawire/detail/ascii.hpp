@@ -31,10 +31,8 @@ namespace seawire::detail {
     case '!':
     case '\\':
     case '^':
-    case '~':
-      return true;
-    default:
-      return false;
+    case '~': return true;
+    default: return false;
   }
 }
 

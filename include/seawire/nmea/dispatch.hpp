@@ -91,8 +91,8 @@ struct message_set {
     if (r) out.value.template emplace<M>(r.value);
   }
   template <class M, class F>
-  static constexpr void visit_one(result<bool>& out, const sentence_view& s,
-                                  const parse_policy& p, F& on_message) {
+  static constexpr void visit_one(result<bool>& out, const sentence_view& s, const parse_policy& p,
+                                  F& on_message) {
     const result<M> r = nmea::decode<M>(s, p);
     out.ec = r.ec;
     out.field = r.field;

@@ -35,6 +35,9 @@ struct decimal {
   std::uint64_t mantissa = 0;  ///< all digits as one integer: "4.50" -> 450
   std::uint8_t places = 0;     ///< digits after the point: "4.50" -> 2
   bool negative = false;
+  /// Integer digits as written when the sender zero-padded them ("000.0" -> 3, "011.3" -> 3);
+  /// 0 when written naturally. Only the text form depends on it.
+  std::uint8_t int_width = 0;
 
   constexpr decimal() noexcept = default;
   /// An integer value: decimal{45} is "45".
@@ -44,8 +47,7 @@ struct decimal {
                              : static_cast<std::uint64_t>(integer)),
         negative(integer < 0) {}
   /// `scaled` / 10^places: decimal{450, 2} is "4.50".
-  constexpr decimal(std::int64_t scaled, std::uint8_t fraction_digits) noexcept
-      : decimal(scaled) {
+  constexpr decimal(std::int64_t scaled, std::uint8_t fraction_digits) noexcept : decimal(scaled) {
     places = fraction_digits;
   }
 
@@ -76,7 +78,8 @@ struct decimal {
   [[nodiscard]] constexpr double to_double() const noexcept {
     // Both operands are exact doubles for mantissa < 2^53 and places <= 19, so the one
     // division is correctly rounded.
-    double d = static_cast<double>(mantissa) / static_cast<double>(seawire::detail::pow10_table[places]);
+    double d =
+        static_cast<double>(mantissa) / static_cast<double>(seawire::detail::pow10_table[places]);
     return negative ? -d : d;
   }
 
@@ -125,13 +128,18 @@ namespace detail {
   std::uint64_t m = 0;
   unsigned significant = 0;
   unsigned places = 0;
+  unsigned int_written = 0;
   bool point = false;
   bool any = false;
   for (; i < n; ++i) {
     const char c = s[i];
     if (seawire::detail::is_digit(c)) {
       any = true;
-      if (point) ++places;
+      if (point) {
+        ++places;
+      } else {
+        ++int_written;
+      }
       if (m != 0 || c != '0') {
         if (++significant > 19) return errc::number_too_long;
         m = m * 10 + static_cast<std::uint64_t>(c - '0');
@@ -147,13 +155,16 @@ namespace detail {
   out.mantissa = m;
   out.places = static_cast<std::uint8_t>(places);
   out.negative = neg;
+  const unsigned natural = seawire::detail::digit_count(m / seawire::detail::pow10_table[places]);
+  out.int_width =
+      static_cast<std::uint8_t>(int_written > natural && int_written <= 20 ? int_written : 0);
   return errc::ok;
 }
 
 constexpr void write_decimal(writer& w, const decimal& d) noexcept {
   if (d.negative) w.put('-');
   const std::uint64_t p = seawire::detail::pow10_table[d.places];
-  w.put_uint(d.mantissa / p);
+  w.put_uint(d.mantissa / p, d.int_width);
   if (d.places > 0) {
     w.put('.');
     w.put_uint(d.mantissa % p, d.places);
@@ -224,9 +235,8 @@ struct nmea_coordinate {
     }
     auto whole = static_cast<std::uint64_t>(mag);
     const std::uint64_t scale = seawire::detail::pow10_table[minute_places];
-    auto m = static_cast<std::uint64_t>((mag - static_cast<double>(whole)) * 60.0 *
-                                            static_cast<double>(scale) +
-                                        0.5);
+    auto m = static_cast<std::uint64_t>(
+        (mag - static_cast<double>(whole)) * 60.0 * static_cast<double>(scale) + 0.5);
     if (m >= 60 * scale) {  // 59.99999 rounded up to 60: carry into the degrees
       m -= 60 * scale;
       ++whole;
@@ -242,8 +252,8 @@ struct nmea_coordinate {
     return r;
   }
 
-  friend constexpr bool operator==(const nmea_coordinate&, const nmea_coordinate&) noexcept =
-      default;
+  friend constexpr bool operator==(const nmea_coordinate&,
+                                   const nmea_coordinate&) noexcept = default;
 };
 using latitude = nmea_coordinate<detail::lat_axis>;
 using longitude = nmea_coordinate<detail::lon_axis>;
@@ -317,8 +327,8 @@ struct time_of_day {
     r.value.hour = static_cast<std::uint8_t>(s / 3600);
     r.value.minute = static_cast<std::uint8_t>(s / 60 % 60);
     r.value.second = static_cast<std::uint8_t>(s % 60);
-    r.value.fraction = static_cast<std::uint32_t>(
-        static_cast<std::uint64_t>(ns % 1'000'000'000) / seawire::detail::pow10_table[9 - places]);
+    r.value.fraction = static_cast<std::uint32_t>(static_cast<std::uint64_t>(ns % 1'000'000'000) /
+                                                  seawire::detail::pow10_table[9 - places]);
     r.value.places = static_cast<std::uint8_t>(places);
     return r;
   }
@@ -387,6 +397,10 @@ class text {
   friend constexpr bool operator==(const text& a, std::string_view b) noexcept {
     return a.view() == b;
   }
+  template <std::size_t M>
+  friend constexpr bool operator==(const text& a, const char (&b)[M]) noexcept {
+    return a.view() == std::string_view(b, M - 1);
+  }
 
  private:
   char data_[N]{};
@@ -411,13 +425,17 @@ concept char_enum_like = std::is_enum_v<E> && requires(E e) {
   { enum_chars(e) } -> std::convertible_to<std::string_view>;
 };
 template <class E>
-concept word_enum_like = std::is_enum_v<E> && requires(E e) { enum_words(e); };
+concept word_enum_like = std::is_enum_v<E> && requires(E e) {
+  enum_words(e);
+};
 template <class E>
-concept has_enum_aliases = requires(E e) { enum_aliases(e); };
+concept has_enum_aliases = requires(E e) {
+  enum_aliases(e);
+};
 
 /// The wire spelling of an enum value ("A", "ON"); empty if the value is not one of its own.
 template <class E>
-  requires char_enum_like<E> || word_enum_like<E>
+requires char_enum_like<E> || word_enum_like<E>
 [[nodiscard]] constexpr std::string_view to_string(const E& e) noexcept {
   if constexpr (char_enum_like<E>) {
     constexpr std::string_view chars = enum_chars(E{});
@@ -453,8 +471,7 @@ struct codec<decimal> {
 };
 
 template <std::integral I>
-  requires(!std::same_as<I, bool> && !std::same_as<I, char>)
-struct codec<I> {
+requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
   static constexpr unsigned width = 1;
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, I& v) noexcept {
@@ -520,9 +537,9 @@ struct codec<nmea_coordinate<Axis>> {
     unsigned deg = 0;
     if (!detail::parse_fixed_digits(s, 0, point - 2, deg)) return Axis::error;
     decimal minutes;
-    if (detail::parse_decimal(s.substr(point - 2), false, minutes) != errc::ok ||
-        minutes.negative)
+    if (detail::parse_decimal(s.substr(point - 2), false, minutes) != errc::ok || minutes.negative)
       return Axis::error;
+    minutes.int_width = 0;  // minutes are always written with two digits
     const std::uint64_t sixty = 60 * seawire::detail::pow10_table[minutes.places];
     if (minutes.mantissa >= sixty) return errc::minute_out_of_range;
     if (deg > Axis::max_degrees || (deg == Axis::max_degrees && minutes.mantissa != 0))
@@ -613,8 +630,8 @@ struct codec<time_of_day> {
       if (s[6] != '.' || places > 9 || !detail::parse_fixed_digits(s, 7, places, frac))
         return errc::bad_time;
     }
-    v = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m),
-         static_cast<std::uint8_t>(sec), frac, static_cast<std::uint8_t>(places)};
+    v = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(sec),
+         frac, static_cast<std::uint8_t>(places)};
     return check(v);
   }
   static constexpr errc check(const time_of_day& v) noexcept {
@@ -622,8 +639,7 @@ struct codec<time_of_day> {
     if (v.minute > 59) return errc::minute_out_of_range;
     if (v.second > 60 || (v.second == 60 && !(v.hour == 23 && v.minute == 59)))
       return errc::second_out_of_range;
-    if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places])
-      return errc::bad_time;
+    if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places]) return errc::bad_time;
     return errc::ok;
   }
   static constexpr void write(writer& w, const time_of_day& v) noexcept {
@@ -733,6 +749,8 @@ struct codec<E> {
 };
 
 template <class T>
-concept has_codec = requires { codec<T>::width; };
+concept has_codec = requires {
+  codec<T>::width;
+};
 
 }  // namespace seawire::nmea

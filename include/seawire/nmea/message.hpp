@@ -44,13 +44,13 @@ struct field_options {
   bool has_min = false;
   bool has_max = false;
   bool max_exclusive = false;
-  std::int8_t max_places = -1;      ///< fraction digits allowed (decimal, time); -1 = any
-  char unit = 0;                    ///< unit letter in the following wire field, e.g. 'N'
-  std::uint16_t when_count = 0;     ///< present only when the sentence has this many fields
-  bool may_be_absent = false;       ///< trailing: a nullopt value is not written at all
-  std::uint16_t min_length = 0;     ///< text: fewest characters
+  std::int8_t max_places = -1;        ///< fraction digits allowed (decimal, time); -1 = any
+  char unit = 0;                      ///< unit letter in the following wire field, e.g. 'N'
+  std::uint16_t when_count = 0;       ///< present only when the sentence has this many fields
+  bool may_be_absent = false;         ///< trailing: a nullopt value is not written at all
+  std::uint16_t min_length = 0;       ///< text: fewest characters
   std::uint16_t max_length = 0xFFFF;  ///< text: most characters
-  std::uint8_t zero_pad = 0;        ///< integers: write at least this many digits ("06")
+  std::uint8_t zero_pad = 0;          ///< integers: write at least this many digits ("06")
 };
 
 namespace option {
@@ -208,7 +208,10 @@ template <seawire::detail::fixed_string Address, class... Fields>
 
 /// A type with a sentence description.
 template <class T>
-concept message_like = requires { T::nmea.fields; T::nmea.address; };
+concept message_like = requires {
+  T::nmea.fields;
+  T::nmea.address;
+};
 
 // ---------------------------------------------------------------------------------------------
 // decode
@@ -230,7 +233,10 @@ template <class T>
     return check_options(decimal(static_cast<std::int64_t>(v)), o);
   } else if constexpr (std::is_same_v<T, time_of_day>) {
     return o.max_places >= 0 && v.places > o.max_places ? errc::bad_time : errc::ok;
-  } else if constexpr (requires { v.view(); T::capacity; }) {
+  } else if constexpr (requires {
+                         v.view();
+                         T::capacity;
+                       }) {
     return v.size() < o.min_length || v.size() > o.max_length ? errc::bad_length : errc::ok;
   } else {
     return errc::ok;
@@ -418,7 +424,8 @@ template <message_like T>
   [&]<std::size_t... I>(std::index_sequence<I...>) {
     const bool skips[] = {detail::skipped(std::get<I>(desc.fields), msg)..., false};
     while (keep > 0 && skips[keep - 1]) --keep;
-  }(std::make_index_sequence<n>{});
+  }
+  (std::make_index_sequence<n>{});
 
   errc e = errc::ok;
   std::uint16_t wire_field = 0;  // spec number of the first wire field of the current one

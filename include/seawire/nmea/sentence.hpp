@@ -24,10 +24,10 @@ enum class checksum_policy : std::uint8_t {
 /// How liberal a receiver is. Each protocol role starts from its spec's defaults.
 struct parse_policy {
   checksum_policy checksum = checksum_policy::verify_if_present;
-  bool lowercase_hex = true;   ///< accept "*4e" as well as "*4E"
-  bool extra_fields = true;    ///< ignore fields past the last one a message defines (SPI 4.2)
-  bool require_crlf = false;   ///< otherwise CR LF, LF, CR or no ending at all are accepted
-  bool strict_values = false;  ///< send-side rules on values too: no '+' signs, no reserved text
+  bool lowercase_hex = true;      ///< accept "*4e" as well as "*4E"
+  bool extra_fields = true;       ///< ignore fields past the last one a message defines (SPI 4.2)
+  bool require_crlf = false;      ///< otherwise CR LF, LF, CR or no ending at all are accepted
+  bool strict_values = false;     ///< send-side rules on values too: no '+' signs, no reserved text
   std::size_t max_length = 1024;  ///< bytes from '$' to the end of the checksum
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.

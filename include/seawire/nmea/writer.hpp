@@ -79,9 +79,7 @@ class writer {
 
   [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
   [[nodiscard]] constexpr bool failed() const noexcept { return failed_; }
-  [[nodiscard]] constexpr std::string_view view() const noexcept {
-    return {out_.data(), size_};
-  }
+  [[nodiscard]] constexpr std::string_view view() const noexcept { return {out_.data(), size_}; }
 
  private:
   std::span<char> out_;

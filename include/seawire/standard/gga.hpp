@@ -33,23 +33,21 @@ constexpr std::string_view enum_chars(gps_quality) noexcept { return "012345678"
 
 struct gga {
   talker_id talker = "GP";
-  std::optional<time_of_day> time;              // 1  UTC time of the fix
-  std::optional<latitude> lat;                  // 2,3
-  std::optional<longitude> lon;                 // 4,5
-  gps_quality quality = gps_quality::invalid;   // 6
-  std::optional<std::uint8_t> satellites;       // 7  in use, written with two digits
-  std::optional<decimal> hdop;                  // 8  horizontal dilution of precision
-  std::optional<decimal> altitude_m;            // 9,10  antenna altitude above MSL, metres
-  std::optional<decimal> geoid_separation_m;    // 11,12 geoid above the WGS84 ellipsoid, metres
-  std::optional<decimal> dgps_age_s;            // 13 seconds since the last DGPS update
-  std::optional<std::uint16_t> dgps_station;    // 14 station id 0000-1023
+  std::optional<time_of_day> time;             // 1  UTC time of the fix
+  std::optional<latitude> lat;                 // 2,3
+  std::optional<longitude> lon;                // 4,5
+  gps_quality quality = gps_quality::invalid;  // 6
+  std::optional<std::uint8_t> satellites;      // 7  in use, written with two digits
+  std::optional<decimal> hdop;                 // 8  horizontal dilution of precision
+  std::optional<decimal> altitude_m;           // 9,10  antenna altitude above MSL, metres
+  std::optional<decimal> geoid_separation_m;   // 11,12 geoid above the WGS84 ellipsoid, metres
+  std::optional<decimal> dgps_age_s;           // 13 seconds since the last DGPS update
+  std::optional<std::uint16_t> dgps_station;   // 14 station id 0000-1023
 
   static constexpr auto nmea = sentence<"--GGA">(
       field<&gga::time>("time"), field<&gga::lat>("latitude"), field<&gga::lon>("longitude"),
-      field<&gga::quality>("quality"),
-      field<&gga::satellites>("satellites", zero_pad(2)),
-      field<&gga::hdop>("hdop", at_least(0)),
-      field<&gga::altitude_m>("altitude_m", unit('M')),
+      field<&gga::quality>("quality"), field<&gga::satellites>("satellites", zero_pad(2)),
+      field<&gga::hdop>("hdop", at_least(0)), field<&gga::altitude_m>("altitude_m", unit('M')),
       field<&gga::geoid_separation_m>("geoid_separation_m", unit('M')),
       field<&gga::dgps_age_s>("dgps_age_s", at_least(0)),
       field<&gga::dgps_station>("dgps_station", in_range(0, 1023), zero_pad(4)));

@@ -45,23 +45,21 @@ constexpr std::string_view enum_chars(nav_status) noexcept { return "SCUV"; }
 
 struct rmc {
   talker_id talker = "GP";
-  std::optional<time_of_day> time;            // 1  UTC time of the fix
-  rmc_status status = rmc_status::active;     // 2  A active, V receiver warning
-  std::optional<latitude> lat;                // 3,4  DDMM.m, N/S
-  std::optional<longitude> lon;               // 5,6  DDDMM.m, E/W
-  std::optional<decimal> speed_knots;         // 7  speed over ground, knots
-  std::optional<decimal> course_true;         // 8  track made good, degrees true
-  std::optional<nmea::date> date;             // 9  ddmmyy
-  std::optional<decimal_longitude> magnetic_variation;  // 10,11 degrees, E/W (W is negative)
-  std::optional<mode_indicator> mode;         // 12 NMEA 2.3+
+  std::optional<time_of_day> time;                          // 1  UTC time of the fix
+  rmc_status status = rmc_status::active;                   // 2  A active, V receiver warning
+  std::optional<latitude> lat;                              // 3,4  DDMM.m, N/S
+  std::optional<longitude> lon;                             // 5,6  DDDMM.m, E/W
+  std::optional<decimal> speed_knots;                       // 7  speed over ground, knots
+  std::optional<decimal> course_true;                       // 8  track made good, degrees true
+  std::optional<nmea::date> date;                           // 9  ddmmyy
+  std::optional<decimal_longitude> magnetic_variation;      // 10,11 degrees, E/W (W is negative)
+  std::optional<mode_indicator> mode;                       // 12 NMEA 2.3+
   std::optional<standard::nav_status> navigational_status;  // 13 NMEA 4.1+
 
   static constexpr auto nmea = sentence<"--RMC">(
-      field<&rmc::time>("time"), field<&rmc::status>("status"),
-      field<&rmc::lat>("latitude"), field<&rmc::lon>("longitude"),
-      field<&rmc::speed_knots>("speed_knots", at_least(0)),
-      field<&rmc::course_true>("course_true", in_range(0, 360)),
-      field<&rmc::date>("date"),
+      field<&rmc::time>("time"), field<&rmc::status>("status"), field<&rmc::lat>("latitude"),
+      field<&rmc::lon>("longitude"), field<&rmc::speed_knots>("speed_knots", at_least(0)),
+      field<&rmc::course_true>("course_true", in_range(0, 360)), field<&rmc::date>("date"),
       field<&rmc::magnetic_variation>("magnetic_variation"),
       field<&rmc::mode>("mode", may_be_absent),
       field<&rmc::navigational_status>("navigational_status", may_be_absent));

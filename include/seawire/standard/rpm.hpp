@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// $--RPM: revolutions of a shaft or engine, from any talker.
+//
+//   $IIRPM,S,1,1200.5,12.5,A*40
+//          1 2 3      4    5
+//
+// Source and number say which shaft or engine the speed belongs to, so both are required: a
+// speed that cannot be attributed is of no use to a twin-screw vessel's speed aiding. Speed,
+// pitch and status may be blank ("no data"). The status is required by the spec, but senders
+// without a valid reading leave it blank as often as they write V: blank decodes as nullopt and
+// is written back blank.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::standard {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+/// RPM field 1.
+enum class rpm_source : char { shaft = 'S', engine = 'E' };
+constexpr std::string_view enum_chars(rpm_source) noexcept { return "SE"; }
+
+/// RPM field 5.
+enum class rpm_status : char { valid = 'A', invalid = 'V' };
+constexpr std::string_view enum_chars(rpm_status) noexcept { return "AV"; }
+
+struct rpm {
+  talker_id talker = "II";
+  rpm_source source = rpm_source::shaft;  // 1 [Source] S shaft, E engine
+  std::uint8_t number = 0;                // 2 [Engine or shaft number] 0 single or on the
+                                          //   centreline, odd starboard, even port
+  std::optional<decimal> speed_rpm;       // 3 [Speed] rev/min; negative = counter-clockwise
+  std::optional<decimal> pitch_percent;   // 4 [Propeller pitch] % of maximum, negative = astern
+  std::optional<rpm_status> status;       // 5 [Status] A data valid, V invalid
+
+  static constexpr auto nmea =
+      sentence<"--RPM">(field<&rpm::source>("source"), field<&rpm::number>("number"),
+                        field<&rpm::speed_rpm>("speed_rpm"),
+                        field<&rpm::pitch_percent>("pitch_percent", in_range(-100, 100)),
+                        field<&rpm::status>("status"));
+};
+
+}  // namespace seawire::standard

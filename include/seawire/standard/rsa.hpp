@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// $--RSA: rudder sensor angle, from any talker.
+//
+//   $AGRSA,-5.2,A,-4.8,A*4D
+//          1    2 3    4
+//
+// A single-rudder vessel fills fields 1-2 and leaves 3-4 blank (or writes V in 4). NMEA calls the
+// value a relative measure, proportional to the rudder angle but not necessarily in degrees;
+// nearly every sensor writes degrees. Every field may be blank; a blank status decodes as nullopt
+// (senders leave it blank as often as they write V) and is written back blank.
+
+#include <optional>
+#include <string_view>
+
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::standard {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+/// RSA fields 2 and 4.
+enum class rsa_status : char { valid = 'A', invalid = 'V' };
+constexpr std::string_view enum_chars(rsa_status) noexcept { return "AV"; }
+
+struct rsa {
+  talker_id talker = "II";
+  std::optional<decimal> starboard_angle;      // 1 [Starboard (or single) rudder sensor]
+                                               //   degrees, negative = turn to port
+  std::optional<rsa_status> starboard_status;  // 2 [Status] A data valid, V invalid
+  std::optional<decimal> port_angle;           // 3 [Port rudder sensor] degrees, as field 1
+  std::optional<rsa_status> port_status;       // 4 [Status] A data valid, V invalid
+
+  static constexpr auto nmea =
+      sentence<"--RSA">(field<&rsa::starboard_angle>("starboard_angle", in_range(-180, 180)),
+                        field<&rsa::starboard_status>("starboard_status"),
+                        field<&rsa::port_angle>("port_angle", in_range(-180, 180)),
+                        field<&rsa::port_status>("port_status"));
+};
+
+}  // namespace seawire::standard

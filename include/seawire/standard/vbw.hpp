@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// $--VBW: dual ground/water speed along and across the hull, knots, from any talker.
+//
+//   $VDVBW,4.91,-0.12,A,5.02,0.08,A*7C
+//          1    2     3 4    5    6   [7 8 9 10]
+//
+// Fields 1-6 are the sentence as the ANELLO spec (and NMEA 0183 before 3.0) has it. NMEA 3.0
+// adds stern transverse speeds, water (7, status 8) and ground (9, status 10); a Doppler log
+// may send them. Both forms are accepted, and each is written back in the form it came in: the
+// stern fields are written only when one of them has a value.
+//
+// A sender with no ground track writes its water speeds and leaves 4-5 blank with status V.
+// Every field may be blank; a blank status decodes as nullopt (senders leave it blank as often
+// as they write V) and is written back blank.
+
+#include <optional>
+#include <string_view>
+
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::standard {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+/// VBW fields 3, 6, 8 and 10.
+enum class vbw_status : char { valid = 'A', invalid = 'V' };
+constexpr std::string_view enum_chars(vbw_status) noexcept { return "AV"; }
+
+struct vbw {
+  talker_id talker = "VW";
+  std::optional<decimal> longitudinal_water_knots;       // 1 [Longitudinal water speed] knots,
+                                                         //   negative = astern
+  std::optional<decimal> transverse_water_knots;         // 2 [Transverse water speed] knots,
+                                                         //   negative = port
+  std::optional<vbw_status> water_status;                // 3 [Status] A data valid, V invalid
+  std::optional<decimal> longitudinal_ground_knots;      // 4 [Longitudinal ground speed] knots,
+                                                         //   negative = astern
+  std::optional<decimal> transverse_ground_knots;        // 5 [Transverse ground speed] knots,
+                                                         //   negative = port
+  std::optional<vbw_status> ground_status;               // 6 [Status] A data valid, V invalid
+  std::optional<decimal> stern_transverse_water_knots;   // 7 NMEA 3.0+, knots, negative = port
+  std::optional<vbw_status> stern_water_status;          // 8 NMEA 3.0+
+  std::optional<decimal> stern_transverse_ground_knots;  // 9 NMEA 3.0+, knots, negative = port
+  std::optional<vbw_status> stern_ground_status;         // 10 NMEA 3.0+
+
+  static constexpr auto nmea = sentence<"--VBW">(
+      field<&vbw::longitudinal_water_knots>("longitudinal_water_knots"),
+      field<&vbw::transverse_water_knots>("transverse_water_knots"),
+      field<&vbw::water_status>("water_status"),
+      field<&vbw::longitudinal_ground_knots>("longitudinal_ground_knots"),
+      field<&vbw::transverse_ground_knots>("transverse_ground_knots"),
+      field<&vbw::ground_status>("ground_status"),
+      field<&vbw::stern_transverse_water_knots>("stern_transverse_water_knots", may_be_absent),
+      field<&vbw::stern_water_status>("stern_water_status", may_be_absent),
+      field<&vbw::stern_transverse_ground_knots>("stern_transverse_ground_knots", may_be_absent),
+      field<&vbw::stern_ground_status>("stern_ground_status", may_be_absent));
+};
+
+}  // namespace seawire::standard

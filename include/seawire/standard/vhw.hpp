@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// $--VHW: heading and speed through the water, from any talker.
+//
+//   $VWVHW,045.0,T,031.3,M,5.20,N,9.63,K*5F
+//          1     2 3     4 5    6 7    8
+//
+// Four value + unit letter pairs, one declaration each. A speed log without a compass sends
+// blank headings ("$IIVHW,,T,,M,5.2,N,9.6,K"); some senders blank the unit letters too. Every
+// value may be blank and a blank unit letter is accepted; seawire always writes the letters.
+// Speed through water is a magnitude here: the signed, two-axis form is VBW.
+
+#include <optional>
+
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::standard {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+struct vhw {
+  talker_id talker = "VW";
+  std::optional<decimal> heading_true_deg;      // 1,2 [Degrees, T] heading, degrees true
+  std::optional<decimal> heading_magnetic_deg;  // 3,4 [Degrees Magnetic, M] heading, degrees
+  std::optional<decimal> speed_knots;           // 5,6 [Knots, N] speed through water, knots
+  std::optional<decimal> speed_kmh;             // 7,8 [Kilometers, K] speed through water, km/h
+
+  static constexpr auto nmea = sentence<"--VHW">(
+      field<&vhw::heading_true_deg>("heading_true_deg", in_range(0, 360), unit('T')),
+      field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", in_range(0, 360), unit('M')),
+      field<&vhw::speed_knots>("speed_knots", at_least(0), unit('N')),
+      field<&vhw::speed_kmh>("speed_kmh", at_least(0), unit('K')));
+};
+
+}  // namespace seawire::standard

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// $--VWR: relative (apparent) wind speed and angle, from any talker.
+//
+//   $WIVWR,045.0,L,12.6,N,6.5,M,23.3,K*4C
+//          1     2 3    4 5   6 7    8
+//
+// The angle is a magnitude, 0-180 degrees off the bow, and field 2 says to which side. The
+// three speeds are value + unit letter pairs, one declaration each; senders often fill only
+// one of them. Every field may be blank and a blank unit letter is accepted; seawire always
+// writes the letters.
+
+#include <optional>
+#include <string_view>
+
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::standard {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+/// VWR field 2: which side of the bow the wind comes from.
+enum class bow_side : char { left = 'L', right = 'R' };
+constexpr std::string_view enum_chars(bow_side) noexcept { return "LR"; }
+
+struct vwr {
+  talker_id talker = "WI";
+  std::optional<decimal> angle_deg;    // 1 [Wind direction magnitude] degrees off the bow, 0-180
+  std::optional<bow_side> side;        // 2 [Left/Right of bow] L port, R starboard
+  std::optional<decimal> speed_knots;  // 3,4 [Speed, N] knots
+  std::optional<decimal> speed_mps;    // 5,6 [Speed, M] metres per second
+  std::optional<decimal> speed_kmh;    // 7,8 [Speed, K] kilometres per hour
+
+  /// The angle signed the usual way for relative bearings: negative to port (L). nullopt
+  /// without an angle; an angle without a side is taken as given.
+  [[nodiscard]] constexpr std::optional<double> signed_angle_deg() const noexcept {
+    if (!angle_deg) return std::nullopt;
+    const double a = angle_deg->to_double();
+    return side == bow_side::left ? -a : a;
+  }
+
+  static constexpr auto nmea = sentence<"--VWR">(
+      field<&vwr::angle_deg>("angle_deg", in_range(0, 180)), field<&vwr::side>("side"),
+      field<&vwr::speed_knots>("speed_knots", at_least(0), unit('N')),
+      field<&vwr::speed_mps>("speed_mps", at_least(0), unit('M')),
+      field<&vwr::speed_kmh>("speed_kmh", at_least(0), unit('K')));
+};
+
+}  // namespace seawire::standard
