@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: BSL-1.0
+// The sentence layer: checksum, parse() under each policy, the field reader, the writer.
+
+#include <catch2/catch.hpp>
+#include <string>
+#include <string_view>
+
+#include "seawire/nmea/checksum.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+using namespace seawire;
+using namespace seawire::nmea;
+
+namespace {
+constexpr std::string_view kGga =
+    "$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C\r\n";
+// The seed's two BFNVG examples carry wrong checksums (really *4E).
+constexpr std::string_view kSeedBfnvgUpper =
+    "$BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,-3.4,4.5,081025.980*5B";
+constexpr std::string_view kSeedBfnvgLower =
+    "$BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,-3.4,4.5,081025.980*5b";
+
+constexpr parse_policy with_checksum(checksum_policy c) {
+  parse_policy p;
+  p.checksum = c;
+  return p;
+}
+}  // namespace
+
+static_assert(checksum("GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,") ==
+              0x5C);
+static_assert(parse(kGga).value.field_count == 14);
+static_assert(parse(kGga).value.address == "GPGGA");
+
+TEST_CASE("checksum is the XOR of the bytes between $ and *") {
+  CHECK(checksum("") == 0);
+  CHECK(checksum("PYDIR,0,0") == 0x56);
+  CHECK(checksum("PAPGPSCTRL,1") == 0x11);
+  CHECK(checksum("A") == 'A');
+}
+
+TEST_CASE("parse splits address, body and fields") {
+  const auto r = parse(kGga);
+  REQUIRE(r);
+  CHECK(r.value.address == "GPGGA");
+  CHECK(r.value.field_count == 14);
+  CHECK(r.value.checksum == checksum_state::valid);
+  CHECK(r.value.received_checksum == 0x5C);
+  CHECK(r.value.body.substr(0, 9) == "164959.00");
+  CHECK(r.value.line.back() == 'C');  // ending stripped
+  CHECK(field(r.value, 1).text == "164959.00");
+  CHECK(field(r.value, 14).text.empty());
+  CHECK(field(r.value, 14).present);
+  CHECK_FALSE(field(r.value, 15).present);
+}
+
+TEST_CASE("addresses longer or shorter than five characters") {
+  auto r = parse("$PAPGPSCTRL,1*11");
+  REQUIRE(r);
+  CHECK(r.value.address == "PAPGPSCTRL");
+  CHECK(r.value.field_count == 1);
+  r = parse("$BPLOG*00", with_checksum(checksum_policy::ignore));
+  REQUIRE(r);
+  CHECK(r.value.address == "BPLOG");
+  CHECK(r.value.field_count == 0);
+  r = parse("$BPLOG,*7A");  // one blank field
+  REQUIRE(r);
+  CHECK(r.value.field_count == 1);
+}
+
+TEST_CASE("line endings CRLF, LF, CR and none are accepted by default") {
+  for (std::string_view end : {"\r\n", "\n", "\r", ""}) {
+    const std::string line = std::string("$PYDIR,45,55*57") + std::string(end);
+    const auto r = parse(line);
+    INFO(line);
+    REQUIRE(r);
+    CHECK(r.value.line == "$PYDIR,45,55*57");
+  }
+  parse_policy crlf;
+  crlf.require_crlf = true;
+  CHECK(parse("$PYDIR,45,55*57\r\n", crlf));
+  CHECK(parse("$PYDIR,45,55*57\n", crlf).ec == errc::bad_line_ending);
+  CHECK(parse("$PYDIR,45,55*57", crlf).ec == errc::bad_line_ending);
+}
+
+TEST_CASE("checksum policies") {
+  const auto required = with_checksum(checksum_policy::required);
+  const auto verify = with_checksum(checksum_policy::verify_if_present);
+  const auto ignore = with_checksum(checksum_policy::ignore);
+
+  SECTION("the seed's BFNVG examples are checksum mismatches, accepted only under ignore") {
+    for (auto line : {kSeedBfnvgUpper, kSeedBfnvgLower}) {
+      CHECK(parse(line, required).ec == errc::checksum_mismatch);
+      CHECK(parse(line, verify).ec == errc::checksum_mismatch);
+      const auto r = parse(line, ignore);
+      REQUIRE(r);
+      CHECK(r.value.checksum == checksum_state::mismatch);
+      CHECK(r.value.computed_checksum == 0x4E);
+      CHECK(r.value.address == "BFNVG");
+      CHECK(r.value.field_count == 12);
+    }
+  }
+  SECTION("missing checksum: '*' with nothing after it, or no '*' at all") {
+    for (std::string_view line : {"$PYDIR,12.5,-3*\r\n", "$PYDIR,12.5,-3\r\n"}) {
+      CHECK(parse(line, required).ec == errc::missing_checksum);
+      const auto r = parse(line, verify);
+      REQUIRE(r);
+      CHECK(r.value.checksum == checksum_state::absent);
+      CHECK(r.value.field_count == 2);
+    }
+  }
+  SECTION("lower-case hex is accepted unless refused") {
+    CHECK(parse("$BPLOG,ACK,ON*1e", required));
+    parse_policy upper_only = required;
+    upper_only.lowercase_hex = false;
+    CHECK(parse("$BPLOG,ACK,ON*1e", upper_only).ec == errc::bad_checksum_format);
+    CHECK(parse("$BPLOG,ACK,ON*1E", upper_only));
+  }
+}
+
+TEST_CASE("malformed sentences: each failure class gives its errc and column") {
+  struct row {
+    std::string_view line;
+    errc expected;
+    std::uint16_t column;
+  };
+  const row rows[] = {
+      {"", errc::empty_input, 0},
+      {"\r\n", errc::empty_input, 0},
+      {"GPGGA,1*00", errc::missing_start, 0},
+      {"!AIVDM,1*00", errc::missing_start, 0},
+      {"$", errc::bad_address, 1},
+      {"$*00", errc::bad_address, 1},
+      {"$,1,2*00", errc::bad_address, 1},
+      {"$gprmc,1*00", errc::bad_address, 1},
+      {"$GP RMC,1*00", errc::bad_address, 3},
+      {"$1GPRM,1*00", errc::bad_address, 1},
+      {"$ABCDEFGHIJKLMNOP,1*00", errc::bad_address, 1},
+      {"$PYDIR,4\x01,5", errc::bad_character, 8},
+      {"$PYDIR,4\x80,5", errc::bad_character, 8},
+      {"$PYDIR,4$,5", errc::bad_character, 8},
+      {"$PYDIR,45,55*5", errc::bad_checksum_format, 13},
+      {"$PYDIR,45,55*577", errc::bad_checksum_format, 13},
+      {"$PYDIR,45,55*G7", errc::bad_checksum_format, 13},
+      {"$PYDIR,45,55*57 ", errc::bad_checksum_format, 13},
+      {"$PYDIR,45,55*58", errc::checksum_mismatch, 13},
+      {"$PYDIR,45,55*57\r\r\n", errc::bad_checksum_format, 13},
+  };
+  for (const auto& r : rows) {
+    INFO(r.line);
+    const auto p = parse(r.line);
+    CHECK(p.ec == r.expected);
+    CHECK(p.column == r.column);
+    CHECK_FALSE(p);
+  }
+}
+
+TEST_CASE("maximum length is enforced") {
+  parse_policy p;
+  p.max_length = 82;
+  std::string line = "$GPTXT," + std::string(80, 'A');
+  CHECK(parse(line, p).ec == errc::too_long);
+  line.resize(82);
+  CHECK(parse(line, p));
+  const std::string huge = "$GPTXT," + std::string(1 << 20, ',');
+  CHECK(parse(huge).ec == errc::too_long);
+}
+
+TEST_CASE("field_reader walks fields, marks blanks and the end, tracks columns") {
+  const auto s = parse("$XXABC,a,,ccc,*00", with_checksum(checksum_policy::ignore));
+  REQUIRE(s);
+  parse_policy p;
+  field_reader r(s.value, p);
+  CHECK(r.field_count() == 4);
+  auto t = r.take();
+  CHECK((t.present && t.text == "a" && r.index() == 1 && r.column() == 7));
+  t = r.take();
+  CHECK((t.present && t.blank() && r.index() == 2 && r.column() == 9));
+  CHECK(r.peek().text == "ccc");
+  t = r.take();
+  CHECK((t.text == "ccc" && r.column() == 10));
+  t = r.take();
+  CHECK((t.present && t.blank() && r.index() == 4 && r.column() == 14));
+  CHECK(r.at_end());
+  t = r.take();
+  CHECK_FALSE(t.present);
+  CHECK(r.index() == 5);
+}
+
+TEST_CASE("writer seals with upper-case checksum and CR LF, and reports overflow") {
+  char buf[64];
+  writer w(buf);
+  w.begin("PYDIR");
+  w.next_field();
+  w.put_uint(45);
+  w.next_field();
+  w.put_uint(55);
+  const auto r = w.seal();
+  REQUIRE(r);
+  CHECK(std::string_view(buf, r.value) == "$PYDIR,45,55*57\r\n");
+
+  char small[10];
+  writer s(small);
+  s.begin("PYDIR");
+  s.next_field();
+  s.put_uint(45);
+  CHECK(s.seal().ec == errc::buffer_too_small);
+
+  char pad[16];
+  writer z(pad);
+  z.begin("X");
+  z.next_field();
+  z.put_uint(6, 2);
+  z.put_uint(0, 4);
+  CHECK(z.view() == "$X,060000");
+}
