@@ -1,0 +1,530 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The vehicle (BAM) side of a Sandshark SPI session, sans I/O: what a simulator or a test
+// double of the vehicle needs. It is fed the payload clients' raw lines and the current time,
+// and hands back sentences for each client and events.
+//
+//   vehicle_session<> v;
+//   auto c = v.connect(now);              // BFVER to the new client
+//   (void)v.receive(*c, line, now);       // BPLOG/BPSTS/BPRMB/BPABT/BPVER: state + BFACK
+//   if (v.should_send(*c, "NVG")) ...     // or v.publish(bfnvg{...}, now) to every subscriber
+//   v.set_control(true, now);             // BFCTL 1: dynamic requests allowed
+//   v.tick(now);                          // BPRMB timeout, pending acks completed
+//   while (auto out = v.poll_send()) write(out->client, out->view());
+//
+// What it carries:
+// - BPLOG per client (subscription_set): codes, ALL, and ACK, which ALL never includes. Command
+//   messages (BFSHT, BFVER) go to every client whatever it asked for.
+// - A BFACK for every line, once the client sent BPLOG,ACK,ON: invalid (0) for an unknown
+//   address or a line that does not decode (the sentence, or failing that its address, is
+//   enough to name the command; a line without even that is not acked), failed (1) when the
+//   command cannot be carried out (BPRMB while dynamic requests are not allowed, a full
+//   subscription table), ok (2) otherwise. BPLOG takes effect before its ack, so ACK ON is
+//   acknowledged and ACK OFF is not. Commands chosen in vehicle_config::pending get a pending (3)
+//   ack at once and the final one from complete(), or automatically after
+//   complete_pending_after. Their effect is applied on receipt; only the ack waits.
+// - Dynamic requests: set_control() sends BFCTL to subscribed clients. An accepted BPRMB holds
+//   the vehicle's behaviour for request_timeout (5 s). The boundary is inclusive: a BPRMB
+//   4.999 s after the previous one keeps the request, at 5.000 s or later the request has
+//   expired (request_expired) and the vehicle has control back.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+
+#include "seawire/error.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+#include "seawire/sandshark/messages.hpp"
+#include "seawire/sandshark/session_common.hpp"
+
+namespace seawire::sandshark {
+
+/// Which payload commands are acknowledged first with pending (3), then with the final status.
+struct pending_commands {
+  bool log = false;
+  bool sts = false;
+  bool rmb = false;
+  bool abt = false;
+  bool ver = false;
+
+  [[nodiscard]] constexpr bool includes(std::string_view address) const noexcept {
+    const std::string_view c = message_code(address);
+    return (c == "LOG" && log) || (c == "STS" && sts) || (c == "RMB" && rmb) ||
+           (c == "ABT" && abt) || (c == "VER" && ver);
+  }
+};
+
+struct vehicle_config {
+  text<32> version = "1.0";  ///< BFVER field 2, sent to each client on connect
+  milliseconds request_timeout = timing::request_timeout;
+  bool control_allowed = false;  ///< "allowDynamicRequests" at start (set_control() changes it)
+  pending_commands pending{};
+  /// When a pending command gets its final ack by itself; nullopt: only complete() sends it.
+  std::optional<milliseconds> complete_pending_after = milliseconds{1000};
+};
+
+using client_id = std::uint8_t;
+
+/// One sentence for one client (CR LF included).
+struct vehicle_line {
+  client_id client = 0;
+  sentence_buffer<512> sentence;
+  [[nodiscard]] constexpr std::string_view view() const noexcept { return sentence.view(); }
+};
+
+enum class vehicle_event_kind : std::uint8_t {
+  request_started,    ///< a BPRMB was accepted while no request was active
+  request_expired,    ///< no BPRMB for request_timeout: the vehicle resumes its behaviour
+  request_cancelled,  ///< dynamic requests were disallowed while a request was active
+  abort_requested,    ///< BPABT
+  command_pending,    ///< a pending ack was sent; complete(ticket, ...) sends the final one
+  invalid_command,    ///< a line that did not decode, or an unknown address (error, field)
+  outbox_overflow,    ///< a sentence did not fit the outbox and was dropped
+  events_lost,        ///< count events were dropped because the queue was full
+};
+
+struct vehicle_event {
+  vehicle_event_kind kind{};
+  client_id client = 0;
+  std::uint32_t ticket = 0;  ///< numbers every line received, for complete()
+  text<16> command;          ///< the address the line carried ("BPRMB")
+  std::optional<time_of_day> command_timestamp;
+  errc error = errc::ok;  ///< invalid_command: why
+  std::uint16_t field = 0;
+  std::uint32_t count = 0;  ///< events_lost: how many
+};
+
+template <std::size_t MaxClients = 4, std::size_t OutboxCapacity = 32,
+          std::size_t EventCapacity = 32>
+class vehicle_session {
+ public:
+  static constexpr std::size_t max_pending = 8;
+
+  constexpr explicit vehicle_session(const vehicle_config& config = {}) noexcept
+      : config_(config), control_allowed_(config.control_allowed) {}
+
+  // -- clients --------------------------------------------------------------------------------
+
+  /// A new payload connection: sends it BFVER. nullopt when MaxClients are connected.
+  [[nodiscard]] constexpr std::optional<client_id> connect(time_point now) noexcept {
+    advance(now);
+    for (std::size_t i = 0; i < MaxClients; ++i) {
+      if (clients_[i].connected) continue;
+      clients_[i] = {};
+      clients_[i].connected = true;
+      const auto id = static_cast<client_id>(i);
+      bfver v;
+      v.timestamp = utc_.at(now);
+      v.version = config_.version;
+      put(id, v);
+      pump(now);
+      return id;
+    }
+    return std::nullopt;
+  }
+  constexpr void disconnect(client_id c) noexcept {
+    if (c < MaxClients) clients_[c] = {};
+  }
+  [[nodiscard]] constexpr bool connected(client_id c) const noexcept {
+    return c < MaxClients && clients_[c].connected;
+  }
+
+  // -- what the payloads say ------------------------------------------------------------------
+
+  /// Decode one line from client `c` (to_vehicle_policy), act on it and acknowledge it. The
+  /// result is the decode, for the caller's own use. A client that is not connected is ignored.
+  [[nodiscard]] constexpr result<to_vehicle::variant> receive(client_id c, std::string_view line,
+                                                              time_point now) noexcept {
+    advance(now);
+    pump(now);  // a request that expired at `now` expires before this line is read
+    result<to_vehicle::variant> r = decode_to_vehicle(line);
+    if (!connected(c)) return r;
+    const std::uint32_t ticket = next_ticket_++;
+    if (!r) {
+      reject(c, line, r.ec, r.field, ticket, now);
+      return r;
+    }
+    std::visit([&](const auto& m) { on_message(c, m, ticket, now); }, r.value);
+    return r;
+  }
+
+  // -- what the vehicle does ------------------------------------------------------------------
+
+  /// Allow or disallow dynamic requests ("allowDynamicRequests"), with BFCTL to subscribers.
+  /// Disallowing ends an active request.
+  constexpr void set_control(bool allowed, time_point now) noexcept {
+    advance(now);
+    pump(now);
+    if (allowed == control_allowed_) return;
+    control_allowed_ = allowed;
+    if (!allowed && request_) {
+      request_.reset();
+      event(vehicle_event_kind::request_cancelled, request_client_);
+    }
+    (void)publish(bfctl{utc_.at(now), allowed}, now);
+  }
+
+  /// BFSHT to every client.
+  constexpr void shutdown(time_point now) noexcept {
+    advance(now);
+    for (std::size_t i = 0; i < MaxClients; ++i)
+      if (clients_[i].connected) put(static_cast<client_id>(i), bfsht{utc_.at(now)});
+  }
+
+  /// Send a status message (BFNVG, BFMIS ...) to every client that asked for it. Returns how
+  /// many clients it was queued for, or the encoder's error.
+  template <message_like M>
+  [[nodiscard]] constexpr result<std::size_t> publish(const M& m, time_point now) noexcept {
+    advance(now);
+    result<std::size_t> r;
+    vehicle_line line;
+    const result<std::size_t> e = encode_to(m, std::span<char>(line.sentence.data));
+    if (!e) {
+      r.ec = e.ec;
+      r.field = e.field;
+      return r;
+    }
+    line.sentence.size = e.value;
+    for (std::size_t i = 0; i < MaxClients; ++i) {
+      if (!should_send(static_cast<client_id>(i), M::nmea.address)) continue;
+      line.client = static_cast<client_id>(i);
+      if (push(line)) ++r.value;
+    }
+    return r;
+  }
+
+  /// Whether client `c` is to be sent the message with this code ("NVG") or address.
+  [[nodiscard]] constexpr bool should_send(client_id c,
+                                           std::string_view code_or_address) const noexcept {
+    if (!connected(c)) return false;
+    const std::string_view code = message_code(code_or_address);
+    if (code == "SHT" || code == "VER") return true;  // commands (SPI 5) are always sent
+    return clients_[c].subscriptions.includes(code);
+  }
+
+  /// Send the final ack of a command acknowledged as pending. False if `ticket` is not pending.
+  constexpr bool complete(std::uint32_t ticket, ack_status status, std::string_view description,
+                          time_point now) noexcept {
+    advance(now);
+    for (pending_ack& p : pending_) {
+      if (!p.active || p.ticket != ticket) continue;
+      p.active = false;
+      ack(p.client, p.address.view(), p.timestamp, status, description, now);
+      return true;
+    }
+    return false;
+  }
+
+  /// Let time pass: request timeout, automatic completion of pending acks.
+  constexpr void tick(time_point now) noexcept {
+    advance(now);
+    pump(now);
+  }
+
+  /// The earliest time at which tick() has something to do, if any.
+  [[nodiscard]] constexpr std::optional<time_point> next_deadline() const noexcept {
+    std::optional<time_point> d;
+    if (request_) d = last_request_ + config_.request_timeout;
+    if (config_.complete_pending_after) {
+      for (const pending_ack& p : pending_) {
+        if (!p.active) continue;
+        const time_point t = p.since + *config_.complete_pending_after;
+        if (!d || t < *d) d = t;
+      }
+    }
+    return d;
+  }
+
+  // -- output ---------------------------------------------------------------------------------
+
+  [[nodiscard]] constexpr std::optional<vehicle_line> poll_send() noexcept {
+    return outbox_.pop_front();
+  }
+  [[nodiscard]] constexpr std::optional<vehicle_event> poll_event() noexcept {
+    return events_.pop();
+  }
+
+  // -- state ----------------------------------------------------------------------------------
+
+  [[nodiscard]] constexpr bool control_allowed() const noexcept { return control_allowed_; }
+  /// Whether a BPRMB holds the vehicle's behaviour at `now`: one was accepted less than
+  /// request_timeout ago (at exactly request_timeout it has expired).
+  [[nodiscard]] constexpr bool request_active(time_point now) const noexcept {
+    return request_.has_value() && now - last_request_ < config_.request_timeout;
+  }
+  /// The request being followed (cleared when it expires, at the next call after expiry).
+  [[nodiscard]] constexpr const std::optional<bprmb>& current_request() const noexcept {
+    return request_;
+  }
+  [[nodiscard]] constexpr const subscription_set<>& subscriptions(client_id c) const noexcept {
+    return clients_[c < MaxClients ? c : 0].subscriptions;
+  }
+  /// The client's last BPSTS, if any.
+  [[nodiscard]] constexpr const std::optional<bpsts>& payload_status(client_id c) const noexcept {
+    return clients_[c < MaxClients ? c : 0].status;
+  }
+  /// The version the client reported in BPVER (empty until then).
+  [[nodiscard]] constexpr std::string_view payload_version(client_id c) const noexcept {
+    return clients_[c < MaxClients ? c : 0].version.view();
+  }
+  /// The vehicle's UTC clock, for the timestamps of what the caller publishes.
+  [[nodiscard]] constexpr const utc_clock& utc() const noexcept { return utc_; }
+  constexpr void set_utc(time_point now, const time_of_day& t) noexcept {
+    advance(now);
+    utc_.set(now, t);
+  }
+  [[nodiscard]] constexpr std::uint64_t events_lost() const noexcept { return events_.lost(); }
+  [[nodiscard]] constexpr std::uint64_t outbox_overflows() const noexcept { return overflows_; }
+
+ private:
+  struct client_state {
+    bool connected = false;
+    subscription_set<> subscriptions;
+    text<32> version;
+    std::optional<bpsts> status;
+  };
+  struct pending_ack {
+    bool active = false;
+    client_id client = 0;
+    std::uint32_t ticket = 0;
+    text<16> address;
+    std::optional<time_of_day> timestamp;
+    ack_status final_status = ack_status::ok;
+    time_point since{};
+  };
+
+  constexpr void advance(time_point& now) noexcept {
+    if (now < now_) now = now_;
+    now_ = now;
+  }
+
+  [[nodiscard]] constexpr bool push(const vehicle_line& line) noexcept {
+    if (outbox_.push_back(line)) return true;
+    ++overflows_;
+    event(vehicle_event_kind::outbox_overflow, line.client);
+    return false;
+  }
+  template <class M>
+  constexpr void put(client_id c, const M& m) noexcept {
+    vehicle_line line;
+    line.client = c;
+    const result<std::size_t> e = encode_to(m, std::span<char>(line.sentence.data));
+    if (!e) return;  // the session only writes messages it built within their fields' domains
+    line.sentence.size = e.value;
+    (void)push(line);
+  }
+
+  constexpr void event(vehicle_event_kind kind, client_id c) noexcept {
+    vehicle_event e;
+    e.kind = kind;
+    e.client = c;
+    events_.push(e);
+  }
+
+  constexpr void ack(client_id c, std::string_view address, std::optional<time_of_day> timestamp,
+                     ack_status status, std::string_view description, time_point now) noexcept {
+    if (!connected(c) || !clients_[c].subscriptions.acks()) return;
+    bfack a;
+    a.timestamp = utc_.at(now);
+    (void)a.command.assign(message_code(address));
+    a.command_timestamp = timestamp;
+    a.status = status;
+    text<96> d;
+    // Keep only what a text field may carry; the description is for people.
+    std::size_t n = 0;
+    char buf[96]{};
+    for (char ch : description) {
+      if (n == sizeof buf) break;
+      if (seawire::detail::is_printable(ch) && !seawire::detail::is_reserved(ch)) buf[n++] = ch;
+    }
+    (void)d.assign(std::string_view(buf, n));
+    a.description = d;
+    put(c, a);
+  }
+
+  /// Acknowledge `address` now, or as pending when the configuration says so.
+  constexpr void acknowledge(client_id c, std::string_view address,
+                             std::optional<time_of_day> timestamp, ack_status status,
+                             std::string_view description, std::uint32_t ticket,
+                             time_point now) noexcept {
+    if (status == ack_status::invalid || !config_.pending.includes(address) ||
+        !clients_[c].subscriptions.acks()) {
+      ack(c, address, timestamp, status, description, now);
+      return;
+    }
+    pending_ack* slot = nullptr;
+    for (pending_ack& p : pending_)
+      if (!p.active) slot = &p;
+    if (slot == nullptr) {  // too many at once: answer finally now rather than not at all
+      ack(c, address, timestamp, status, description, now);
+      return;
+    }
+    *slot = {true, c, ticket, {}, timestamp, status, now};
+    (void)slot->address.assign(address);
+    ack(c, address, timestamp, ack_status::pending, "pending", now);
+    vehicle_event e;
+    e.kind = vehicle_event_kind::command_pending;
+    e.client = c;
+    e.ticket = ticket;
+    e.command = slot->address;
+    e.command_timestamp = timestamp;
+    events_.push(e);
+  }
+
+  /// "bad_enum in field 4 (depth_mode)": the description of an invalid ack.
+  [[nodiscard]] static constexpr text<96> explain(errc error, std::uint16_t field,
+                                                  std::string_view field_name) noexcept {
+    char buf[96]{};
+    std::size_t n = 0;
+    const auto add = [&](std::string_view part) {
+      for (char ch : part)
+        if (n < sizeof buf) buf[n++] = ch;
+    };
+    add(name(error));
+    if (field != 0) {
+      add(" in field ");
+      if (field >= 10) add(std::string_view(&"0123456789"[field / 10 % 10], 1));
+      add(std::string_view(&"0123456789"[field % 10], 1));
+      if (!field_name.empty()) {
+        add(" (");
+        add(field_name);
+        add(")");
+      }
+    }
+    text<96> t;
+    (void)t.assign(std::string_view(buf, n));
+    return t;
+  }
+
+  /// A line that did not decode: ack it invalid if its address can still be read.
+  constexpr void reject(client_id c, std::string_view line, errc error, std::uint16_t field,
+                        std::uint32_t ticket, time_point now) noexcept {
+    vehicle_event e;
+    e.kind = vehicle_event_kind::invalid_command;
+    e.client = c;
+    e.ticket = ticket;
+    e.error = error;
+    e.field = field;
+    parse_policy lenient = to_vehicle_policy;
+    lenient.checksum = checksum_policy::ignore;
+    const result<sentence_view> s = parse(line, lenient);
+    if (s) {
+      (void)e.command.assign(s.value.address);
+      // Echo field 1 when it is a time, so the payload can match the ack to its command.
+      field_reader r(s.value, lenient);
+      time_of_day t;
+      if (r.peek().present && !r.peek().blank() && codec<time_of_day>::read(r, t) == errc::ok)
+        e.command_timestamp = t;
+      const text<96> why = explain(error, field, to_vehicle::field_name(s.value.address, field));
+      ack(c, s.value.address, e.command_timestamp, ack_status::invalid, why.view(), now);
+    }
+    events_.push(e);
+  }
+
+  constexpr void on_message(client_id c, const unknown_sentence& u, std::uint32_t ticket,
+                            time_point now) noexcept {
+    vehicle_event e;
+    e.kind = vehicle_event_kind::invalid_command;
+    e.client = c;
+    e.ticket = ticket;
+    e.error = errc::unknown_address;
+    (void)e.command.assign(u.sentence.address);
+    field_reader r(u.sentence, to_vehicle_policy);
+    time_of_day t;
+    if (r.peek().present && !r.peek().blank() && codec<time_of_day>::read(r, t) == errc::ok)
+      e.command_timestamp = t;
+    events_.push(e);
+    ack(c, u.sentence.address, e.command_timestamp, ack_status::invalid, "unknown message", now);
+  }
+  constexpr void on_message(client_id c, const bplog& m, std::uint32_t ticket,
+                            time_point now) noexcept {
+    if (!valid_log_code(m.code.view())) {
+      vehicle_event e;
+      e.kind = vehicle_event_kind::invalid_command;
+      e.client = c;
+      e.ticket = ticket;
+      e.error = errc::bad_text;
+      e.field = 1;
+      (void)e.command.assign(bplog::nmea.address);
+      events_.push(e);
+      ack(c, bplog::nmea.address, std::nullopt, ack_status::invalid,
+          explain(errc::bad_text, 1, "code").view(), now);
+      return;
+    }
+    const bool applied = clients_[c].subscriptions.apply(m);
+    acknowledge(c, bplog::nmea.address, std::nullopt, applied ? ack_status::ok : ack_status::failed,
+                applied ? "" : "too many subscriptions", ticket, now);
+  }
+  constexpr void on_message(client_id c, const bpsts& m, std::uint32_t ticket,
+                            time_point now) noexcept {
+    clients_[c].status = m;
+    acknowledge(c, bpsts::nmea.address, m.timestamp, ack_status::ok, "", ticket, now);
+  }
+  constexpr void on_message(client_id c, const bprmb& m, std::uint32_t ticket,
+                            time_point now) noexcept {
+    if (!control_allowed_) {
+      acknowledge(c, bprmb::nmea.address, m.timestamp, ack_status::failed,
+                  "dynamic requests not allowed", ticket, now);
+      return;
+    }
+    const bool started = !request_;
+    request_ = m;
+    request_client_ = c;
+    last_request_ = now;
+    if (started) event(vehicle_event_kind::request_started, c);
+    acknowledge(c, bprmb::nmea.address, m.timestamp, ack_status::ok, "", ticket, now);
+  }
+  constexpr void on_message(client_id c, const bpabt& m, std::uint32_t ticket,
+                            time_point now) noexcept {
+    vehicle_event e;
+    e.kind = vehicle_event_kind::abort_requested;
+    e.client = c;
+    e.ticket = ticket;
+    (void)e.command.assign(bpabt::nmea.address);
+    e.command_timestamp = m.timestamp;
+    events_.push(e);
+    acknowledge(c, bpabt::nmea.address, m.timestamp, ack_status::ok, "", ticket, now);
+  }
+  constexpr void on_message(client_id c, const bpver& m, std::uint32_t ticket,
+                            time_point now) noexcept {
+    clients_[c].version = m.version;
+    acknowledge(c, bpver::nmea.address, m.timestamp, ack_status::ok, "", ticket, now);
+  }
+
+  constexpr void pump(time_point now) noexcept {
+    if (request_ && !request_active(now)) {
+      request_.reset();
+      event(vehicle_event_kind::request_expired, request_client_);
+    }
+    if (config_.complete_pending_after) {
+      for (pending_ack& p : pending_) {
+        if (!p.active || now - p.since < *config_.complete_pending_after) continue;
+        p.active = false;
+        ack(p.client, p.address.view(), p.timestamp, p.final_status, "", now);
+      }
+    }
+  }
+
+  vehicle_config config_;
+  utc_clock utc_;
+  time_point now_{};
+  bool control_allowed_ = false;
+  std::uint32_t next_ticket_ = 1;
+  std::array<client_state, MaxClients> clients_{};
+  std::array<pending_ack, max_pending> pending_{};
+  std::optional<bprmb> request_;
+  client_id request_client_ = 0;
+  time_point last_request_{};
+  detail::ring<vehicle_line, OutboxCapacity> outbox_;
+  detail::event_queue<vehicle_event, EventCapacity> events_;
+  std::uint64_t overflows_ = 0;
+};
+
+}  // namespace seawire::sandshark
