@@ -163,6 +163,8 @@ struct rxhrb {
       field<&rxhrb::lat>("latitude"), field<&rxhrb::lon>("longitude"),
       field<&rxhrb::team_id>("team_id", exact_length(5)), field<&rxhrb::system_mode>("system_mode"),
       field<&rxhrb::auv_status>("auv_status"));
+
+  friend constexpr bool operator==(const rxhrb&, const rxhrb&) noexcept = default;
 };
 
 /// Entrance and Exit Gates: the gates in which the AMS detected an active beacon.
@@ -184,6 +186,8 @@ struct rxgat {
       field<&rxgat::entrance_gate>("entrance_gate"), field<&rxgat::exit_gate>("exit_gate"),
       field<&rxgat::light_buoy_active>("light_buoy_active"),
       field<&rxgat::light_pattern>("light_pattern"));
+
+  friend constexpr bool operator==(const rxgat&, const rxgat&) noexcept = default;
 };
 
 /// Scan the Code: the light bar's pattern. The TD echoes it back.
@@ -200,6 +204,8 @@ struct rxcod {
       sentence<"RXCOD">(field<&rxcod::date>("date"), field<&rxcod::time>("time", max_places(0)),
                         field<&rxcod::team_id>("team_id", exact_length(5)),
                         field<&rxcod::light_pattern>("light_pattern"));
+
+  friend constexpr bool operator==(const rxcod&, const rxcod&) noexcept = default;
 };
 
 /// Identify Symbols and Dock: colour and shape of the bay the AMS will dock in. Echoed.
@@ -217,6 +223,8 @@ struct rxdok {
       sentence<"RXDOK">(field<&rxdok::date>("date"), field<&rxdok::time>("time", max_places(0)),
                         field<&rxdok::team_id>("team_id", exact_length(5)),
                         field<&rxdok::shape_color>("shape_color"), field<&rxdok::shape>("shape"));
+
+  friend constexpr bool operator==(const rxdok&, const rxdok&) noexcept = default;
 };
 
 /// Detect and Deliver: colour and shape of the face the AMS will deliver into. Echoed.
@@ -234,6 +242,8 @@ struct rxdel {
       sentence<"RXDEL">(field<&rxdel::date>("date"), field<&rxdel::time>("time", max_places(0)),
                         field<&rxdel::team_id>("team_id", exact_length(5)),
                         field<&rxdel::shape_color>("shape_color"), field<&rxdel::shape>("shape"));
+
+  friend constexpr bool operator==(const rxdel&, const rxdel&) noexcept = default;
 };
 
 // ---------------------------------------------------------------------------------------------
