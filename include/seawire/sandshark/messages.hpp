@@ -37,6 +37,8 @@ using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message
 struct bfsht {
   time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
 
+  friend constexpr bool operator==(const bfsht&, const bfsht&) noexcept = default;
+
   static constexpr auto nmea = sentence<"BFSHT">(field<&bfsht::timestamp>("timestamp"));
 };
 
@@ -47,6 +49,8 @@ struct bfsht {
 struct bfver {
   time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   text<32> version;       // 2 [v-v] Version number
+
+  friend constexpr bool operator==(const bfver&, const bfver&) noexcept = default;
 
   static constexpr auto nmea =
       sentence<"BFVER">(field<&bfver::timestamp>("timestamp"),
@@ -120,6 +124,8 @@ struct bfmis {
     return mission_state::unknown;
   }
 
+  friend constexpr bool operator==(const bfmis&, const bfmis&) noexcept = default;
+
   static constexpr auto nmea = sentence<"BFMIS">(
       field<&bfmis::timestamp>("timestamp"), field<&bfmis::dive_file>("dive_file"),
       field<&bfmis::status>("status"), field<&bfmis::details>("details"));
@@ -161,6 +167,8 @@ struct bfack {
     return c == address || (address.size() == 5 && c == address.substr(2));
   }
 
+  friend constexpr bool operator==(const bfack&, const bfack&) noexcept = default;
+
   static constexpr auto nmea =
       sentence<"BFACK">(field<&bfack::timestamp>("timestamp"),
                         field<&bfack::command>("command", length_between(1, 16)),
@@ -179,6 +187,8 @@ struct bfack {
 struct bfctl {
   time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   bool control = false;   // 2 [c] 1 = the payload (backseat) has control, 0 = it has not
+
+  friend constexpr bool operator==(const bfctl&, const bfctl&) noexcept = default;
 
   static constexpr auto nmea =
       sentence<"BFCTL">(field<&bfctl::timestamp>("timestamp"), field<&bfctl::control>("control"));
@@ -202,6 +212,8 @@ struct bplog {
 
   [[nodiscard]] constexpr bool is_all() const noexcept { return code == "ALL"; }
 
+  friend constexpr bool operator==(const bplog&, const bplog&) noexcept = default;
+
   static constexpr auto nmea = sentence<"BPLOG">(field<&bplog::code>("code", exact_length(3)),
                                                  field<&bplog::state>("state"));
 };
@@ -214,6 +226,8 @@ struct bpsts {
   time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   bool all_ok = true;     // 2 [f] Status flag: 1 = all OK, 0 = failed
   text<128> message;      // 3 [m--m] status text; spaces allowed ("Variable Text")
+
+  friend constexpr bool operator==(const bpsts&, const bpsts&) noexcept = default;
 
   static constexpr auto nmea =
       sentence<"BPSTS">(field<&bpsts::timestamp>("timestamp"), field<&bpsts::all_ok>("all_ok"),
@@ -246,6 +260,8 @@ struct bprmb {
   std::optional<sandshark::speed_mode> speed_mode;            // 6 [vm] 0 RPM, 1 m/s
   std::optional<sandshark::horizontal_mode> horizontal_mode;  // 7 [hm] 0 heading, 1 rudder
 
+  friend constexpr bool operator==(const bprmb&, const bprmb&) noexcept = default;
+
   static constexpr auto nmea =
       sentence<"BPRMB">(field<&bprmb::timestamp>("timestamp"), field<&bprmb::heading>("heading"),
                         field<&bprmb::depth>("depth"), field<&bprmb::depth_mode>("depth_mode"),
@@ -271,6 +287,8 @@ struct bpabt {
     return reason.value_or(abort_reason::with_errors);
   }
 
+  friend constexpr bool operator==(const bpabt&, const bpabt&) noexcept = default;
+
   static constexpr auto nmea =
       sentence<"BPABT">(field<&bpabt::timestamp>("timestamp"), field<&bpabt::message>("message"),
                         field<&bpabt::reason>("reason"));
@@ -283,6 +301,8 @@ struct bpabt {
 struct bpver {
   time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   text<32> version;       // 2 [v-v] Version number
+
+  friend constexpr bool operator==(const bpver&, const bpver&) noexcept = default;
 
   static constexpr auto nmea =
       sentence<"BPVER">(field<&bpver::timestamp>("timestamp"),
