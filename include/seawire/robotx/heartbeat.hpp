@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// robotx::scheduler: when the vehicle may send what, without doing any I/O or reading a clock.
+//
+// The spec asks for an RXHRB every second and for no message type more often than once a
+// second. The scheduler keeps both rules for you: give it the heartbeat's content once
+// (status()), hand it task reports as they come (submit()), and call poll(now) -- at
+// next_due(), or whenever your loop wakes -- sending every sentence it returns:
+//
+//   robotx::scheduler s;
+//   s.status(hrb);                              // position, team, mode, AUV status
+//   s.submit(cod, now);                         // a task report, whenever it is ready
+//   while (auto out = s.poll(now)) send(out->sentence.view());
+//   sleep_until(s.next_due());
+//
+// Rules, all measured on the `now` you pass to poll():
+// - A heartbeat goes out on the first poll after status() is given, then on the first poll at
+//   least `heartbeat_period` after the previous one went out. Measuring from when it went out,
+//   not from when it was due, means a late wake-up delays the next heartbeat instead of letting
+//   two go out less than a second apart: the rate rule wins over the cadence.
+// - A task report goes out no sooner than `min_interval` after the last report of its type.
+//   One that comes too soon is held (the default) or refused, as `when_too_soon` says:
+//   * hold: the report waits in its type's slot and goes out when its second is up. A newer
+//     report of the same type replaces a waiting one (status `replaced`): the judges care about
+//     the vehicle's latest answer, and one slot per type keeps memory fixed.
+//   * refuse: submit() returns `refused` and when the report could go; nothing is kept beyond
+//     one report ready to go. For callers that want to decide themselves (resend, re-detect).
+// - When several sentences are due at once, the heartbeat goes first, then reports in the
+//   order they became due (submission order on a tie). poll() returns one at a time.
+// - With `stamp_reports` (the default) every sentence gets the HST date and time of the poll
+//   that releases it, so a held report is not stamped earlier than it is sent.
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <tuple>
+
+#include "seawire/error.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/writer.hpp"
+#include "seawire/robotx/hst.hpp"
+#include "seawire/robotx/messages.hpp"
+
+namespace seawire::robotx {
+
+/// What submit() does with a report that comes less than min_interval after the last one of its
+/// type.
+enum class too_soon : std::uint8_t {
+  hold,    ///< keep it (newest per type) and release it when allowed
+  refuse,  ///< give it back to the caller, with the time it would be allowed
+};
+
+struct scheduler_config {
+  /// Heartbeat cadence. Raised to min_interval if set below it.
+  std::chrono::nanoseconds heartbeat_period = std::chrono::seconds(1);
+  /// Least time between two sentences of the same type (the spec: 1 Hz).
+  std::chrono::nanoseconds min_interval = std::chrono::seconds(1);
+  too_soon when_too_soon = too_soon::hold;
+  /// Write the HST date and time of release into every sentence sent.
+  bool stamp_reports = true;
+};
+
+enum class submit_status : std::uint8_t {
+  ready,     ///< will go out at the next poll()
+  held,      ///< too soon: will go out at `release_at`
+  replaced,  ///< a waiting report of the same type was dropped for this one
+  refused,   ///< too soon, and the policy is to refuse: it could go at `release_at`
+  invalid,   ///< would not encode: `ec` and `field` say why; nothing changed
+};
+
+struct submit_result {
+  submit_status status = submit_status::ready;
+  instant release_at{};     ///< when it goes (ready/held/replaced) or could go (refused)
+  errc ec = errc::ok;       ///< invalid only
+  std::uint16_t field = 0;  ///< invalid only: the field whose value was refused
+
+  /// The report was taken (ready, held or replaced).
+  [[nodiscard]] constexpr bool accepted() const noexcept {
+    return status == submit_status::ready || status == submit_status::held ||
+           status == submit_status::replaced;
+  }
+};
+
+/// One sentence to send now.
+struct outgoing {
+  report_type type = report_type::heartbeat;
+  /// Sealed sentence with CR LF. Only if stamping failed (a `now` outside 1980..2079 HST) does
+  /// it carry an error instead; its slot is used up either way, so poll() never loops on it.
+  nmea::sentence_buffer<> sentence;
+};
+
+class scheduler {
+ public:
+  constexpr explicit scheduler(const scheduler_config& config = {}) noexcept : config_(config) {
+    if (config_.heartbeat_period < config_.min_interval)
+      config_.heartbeat_period = config_.min_interval;
+  }
+
+  /// Set what the heartbeat says (its date and time are overwritten when stamping). The first
+  /// status() starts the heartbeat. A status that would not encode is refused: the error and
+  /// field come back and the previous status stays.
+  constexpr result<bool> status(const rxhrb& hb) noexcept {
+    result<bool> r;
+    const auto check = trial_encode(hb);
+    r.ec = check.ec;
+    r.field = check.field;
+    if (r.ec != errc::ok) return r;
+    heartbeat_ = hb;
+    r.value = true;
+    return r;
+  }
+  /// The heartbeat content, once status() has been given.
+  [[nodiscard]] constexpr const std::optional<rxhrb>& status() const noexcept { return heartbeat_; }
+
+  constexpr submit_result submit(const rxgat& m, instant now) noexcept {
+    return submit_one(m, now);
+  }
+  constexpr submit_result submit(const rxcod& m, instant now) noexcept {
+    return submit_one(m, now);
+  }
+  constexpr submit_result submit(const rxdok& m, instant now) noexcept {
+    return submit_one(m, now);
+  }
+  constexpr submit_result submit(const rxdel& m, instant now) noexcept {
+    return submit_one(m, now);
+  }
+
+  /// The next sentence to send at `now`, or nullopt when nothing is due. Call until nullopt.
+  constexpr std::optional<outgoing> poll(instant now) noexcept {
+    if (heartbeat_ && heartbeat_due(now)) {
+      std::optional<outgoing> out = release(*heartbeat_, now);
+      next_heartbeat_ = now + config_.heartbeat_period;
+      return out;
+    }
+    std::size_t best = report_type_count;
+    for (std::size_t i = 1; i < report_type_count; ++i) {
+      if (!slot_[i].waiting || slot_[i].release_at > now) continue;
+      if (best == report_type_count || slot_[i].release_at < slot_[best].release_at ||
+          (slot_[i].release_at == slot_[best].release_at && slot_[i].order < slot_[best].order))
+        best = i;
+    }
+    if (best == report_type_count) return std::nullopt;
+    slot_[best].waiting = false;
+    switch (static_cast<report_type>(best)) {
+      case report_type::gates: return release(*std::get<0>(held_), now);
+      case report_type::scan_code: return release(*std::get<1>(held_), now);
+      case report_type::dock: return release(*std::get<2>(held_), now);
+      case report_type::deliver: return release(*std::get<3>(held_), now);
+      case report_type::heartbeat: break;
+    }
+    return std::nullopt;
+  }
+
+  /// Whether the heartbeat is due at `now` (false before the first status()).
+  [[nodiscard]] constexpr bool heartbeat_due(instant now) const noexcept {
+    return heartbeat_ && (!next_heartbeat_ || now >= *next_heartbeat_);
+  }
+
+  /// When poll() next has something to send: instant::min() if it has now (or as soon as
+  /// status() starts the heartbeat), instant::max() if nothing is scheduled.
+  [[nodiscard]] constexpr instant next_due() const noexcept {
+    instant t = instant::max();
+    if (heartbeat_) t = next_heartbeat_ ? *next_heartbeat_ : instant::min();
+    for (std::size_t i = 1; i < report_type_count; ++i)
+      if (slot_[i].waiting && slot_[i].release_at < t) t = slot_[i].release_at;
+    return t;
+  }
+
+  /// Whether a report of this type is waiting to go.
+  [[nodiscard]] constexpr bool waiting(report_type t) const noexcept {
+    const auto i = static_cast<std::size_t>(t);
+    return i < report_type_count && slot_[i].waiting;
+  }
+
+  /// When the last sentence of this type went out, if one has.
+  [[nodiscard]] constexpr std::optional<instant> last_sent(report_type t) const noexcept {
+    const auto i = static_cast<std::size_t>(t);
+    return i < report_type_count ? last_sent_[i] : std::nullopt;
+  }
+
+  [[nodiscard]] constexpr const scheduler_config& config() const noexcept { return config_; }
+
+ private:
+  struct slot {
+    bool waiting = false;
+    instant release_at{};
+    std::uint64_t order = 0;
+  };
+
+  template <class M>
+  [[nodiscard]] static constexpr nmea::sentence_buffer<> trial_encode(const M& m) noexcept {
+    return nmea::encode(m);
+  }
+
+  template <class M>
+  constexpr submit_result submit_one(const M& m, instant now) noexcept {
+    constexpr auto i = static_cast<std::size_t>(report_type_of<M>);
+    submit_result r;
+    const auto check = trial_encode(m);
+    if (!check) {
+      r.status = submit_status::invalid;
+      r.ec = check.ec;
+      r.field = check.field;
+      return r;
+    }
+    slot& s = slot_[i];
+    instant allowed = now;
+    if (last_sent_[i] && *last_sent_[i] + config_.min_interval > now)
+      allowed = *last_sent_[i] + config_.min_interval;
+    if (config_.when_too_soon == too_soon::refuse && (allowed > now || s.waiting)) {
+      r.status = submit_status::refused;
+      r.release_at = s.waiting && s.release_at + config_.min_interval > allowed
+                         ? s.release_at + config_.min_interval
+                         : allowed;
+      return r;
+    }
+    r.status = s.waiting       ? submit_status::replaced
+               : allowed > now ? submit_status::held
+                               : submit_status::ready;
+    std::get<std::optional<M>>(held_) = m;
+    s.waiting = true;
+    s.release_at = allowed;
+    s.order = next_order_++;
+    r.release_at = allowed;
+    return r;
+  }
+
+  template <class M>
+  constexpr std::optional<outgoing> release(M m, instant now) noexcept {
+    outgoing out;
+    out.type = report_type_of<M>;
+    last_sent_[static_cast<std::size_t>(out.type)] = now;
+    if (config_.stamp_reports) {
+      const errc e = stamp(m, now);
+      if (e != errc::ok) {
+        out.sentence.ec = e;
+        out.sentence.field = 1;
+        return out;
+      }
+    }
+    out.sentence = nmea::encode(m);
+    return out;
+  }
+
+  scheduler_config config_;
+  std::optional<rxhrb> heartbeat_;
+  std::optional<instant> next_heartbeat_;
+  std::tuple<std::optional<rxgat>, std::optional<rxcod>, std::optional<rxdok>, std::optional<rxdel>>
+      held_;
+  std::array<slot, report_type_count> slot_{};  // [0] (the heartbeat) unused
+  std::array<std::optional<instant>, report_type_count> last_sent_{};
+  std::uint64_t next_order_ = 0;
+};
+
+}  // namespace seawire::robotx
