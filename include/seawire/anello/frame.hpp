@@ -1,0 +1,543 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The ANELLO Maritime INS custom binary sensor input frame (spec 002, section 2.2), 56 bytes,
+// every field big-endian:
+//
+//   0      2          4               8                                                      56
+//   AB 00 | length=48 | CRC-32 (u32)  | heading | lat | lon | sog | cog | gps time | ... | pressure
+//   frame id  payload   over bytes 8-55 \_______________ payload: 19 fields, 48 bytes ___________/
+//
+// The CRC is zlib's (see detail/crc32.hpp; the spec's "starting value 0xFFFFFFF" is a typo for
+// 0xFFFFFFFF). There is no byte stuffing, so a stream reader resyncs by scanning for AB 00 and
+// letting decode_frame judge: `truncated` always means "a valid beginning, send more bytes".
+//
+// The payload is described once, in `sensor_fields` below: name, offset, scale and allowed range
+// of each field. decode_frame, encode_frame, build_frame, validate, to_values, for_each_field and
+// the accessors of sensor_frame_raw are all loops over that table, so a field cannot be decoded
+// from one offset and encoded at another.
+//
+// Three ways to hold a frame:
+//   raw bytes  <- encode_frame / decode_frame ->  sensor_frame_raw  <- build_frame / to_values ->
+//   sensor_values. The raw struct keeps the wire's integers, so decode -> encode is bit-exact
+//   whatever a sender wrote; sensor_values is what a user has (double metres, degrees, ...), and
+//   build_frame is the strict sender: it rounds to the wire resolution and refuses what the field
+//   cannot carry, with result::field = the payload field's number (heading 1 .. pressure 19, the
+//   spec table's order without its three header rows) and result::column = its byte offset.
+//
+// "Not available" is each type's maximum (0xFF.., or 0x7F.. for signed types), as the spec's note
+// says; accessors turn it into std::nullopt, and a nullopt value is sent as that maximum.
+// Decoding is liberal: a value outside the spec's range (heading 400) is reported as it is;
+// validate() says whether a frame stays inside the ranges build_frame enforces.
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/detail/byte_order.hpp"
+#include "seawire/detail/crc32.hpp"
+#include "seawire/error.hpp"
+
+namespace seawire::anello {
+
+inline constexpr std::uint16_t frame_id = 0xAB00;  ///< the first two bytes of every frame
+inline constexpr std::size_t header_size = 8;      ///< id, length, CRC
+inline constexpr std::size_t payload_size = 48;    ///< the length field's only valid value
+inline constexpr std::size_t frame_size = header_size + payload_size;  ///< 56
+inline constexpr std::size_t sensor_field_count = 19;
+
+using frame_bytes = std::array<std::uint8_t, frame_size>;
+
+/// GPS time as the frame carries it: milliseconds of Unix time (UTC, no leap seconds). The seed
+/// example 0x00000190794363D0 is 2024-07-03 15:42:58.000 UTC read this way, so it is not the GPS
+/// time scale (which would be 18 s ahead).
+using time_ms = std::chrono::sys_time<std::chrono::milliseconds>;
+
+/// The payload in physical units, as a sender has it; nullopt = not available. Member names are
+/// the field names of the table, the accessors of sensor_frame_raw and the JSON keys.
+struct sensor_values {
+  std::optional<double> heading_deg;         ///<  1 IMU compass heading, 0..360 degrees
+  std::optional<double> latitude_deg;        ///<  2 degrees north, -90..90
+  std::optional<double> longitude_deg;       ///<  3 degrees east, -180..180
+  std::optional<double> sog_mps;             ///<  4 speed over ground, m/s
+  std::optional<double> cog_deg;             ///<  5 course over ground, 0..360 degrees
+  std::optional<time_ms> gps_time;           ///<  6 time of the GPS fix
+  std::optional<double> alt_msl_m;           ///<  7 altitude above mean sea level, m
+  std::optional<double> geoid_sep_m;         ///<  8 geoid separation, m
+  std::optional<double> hdop;                ///<  9 horizontal dilution of precision
+  std::optional<int> fix_quality;            ///< 10 GGA quality indicator 0..8 (0 = no fix)
+  std::optional<double> motor_pct;           ///< 11 motor, -100..100 %
+  std::optional<double> rudder_pct;          ///< 12 rudder, -100..100 %, +100 = full starboard
+  std::optional<double> stw_mps;             ///< 13 speed through water, m/s
+  std::optional<double> wind_speed_abs_mps;  ///< 14 true wind speed, m/s
+  std::optional<double> wind_dir_abs_deg;    ///< 15 true wind direction, 0..360 degrees
+  std::optional<double> wind_speed_rel_mps;  ///< 16 apparent wind speed, m/s
+  std::optional<double> wind_dir_rel_deg;    ///< 17 apparent wind angle, 0..360 degrees
+  std::optional<double> air_temp_c;          ///< 18 air temperature, degrees Celsius
+  std::optional<double> pressure_hpa;        ///< 19 barometric pressure, hPa
+
+  [[nodiscard]] constexpr bool operator==(const sensor_values&) const noexcept = default;
+};
+
+namespace detail {
+template <class T>
+inline constexpr T not_available = std::numeric_limits<T>::max();
+}  // namespace detail
+
+/// The payload as the wire carries it. Each member: field number, offset in the frame, spec name,
+/// wire resolution. A default-constructed frame says "nothing available" in every field.
+struct sensor_frame_raw {
+  std::uint16_t heading = detail::not_available<std::uint16_t>;      //  1 @8  IMU heading, 1 deg
+  std::int32_t lat = detail::not_available<std::int32_t>;            //  2 @10 latitude, 1e-6 deg
+  std::int32_t lon = detail::not_available<std::int32_t>;            //  3 @14 longitude, 1e-6 deg
+  std::uint16_t sog = detail::not_available<std::uint16_t>;          //  4 @18 SOG, 0.1 m/s
+  std::uint16_t cog = detail::not_available<std::uint16_t>;          //  5 @20 COG, 1 deg
+  std::uint64_t gps_time_ms = detail::not_available<std::uint64_t>;  //  6 @22 Unix time, 1 ms
+  std::int32_t alt_msl = detail::not_available<std::int32_t>;        //  7 @30 MSL alt, 0.1 m
+  std::int32_t geoid_sep = detail::not_available<std::int32_t>;      //  8 @34 geoid sep, 0.1 m
+  std::uint8_t hdop_tenths = detail::not_available<std::uint8_t>;    //  9 @38 HDOP, 0.1
+  std::uint8_t gga_quality = detail::not_available<std::uint8_t>;    // 10 @39 GGA fix quality
+  std::int8_t motor = detail::not_available<std::int8_t>;            // 11 @40 motor, 1 %
+  std::int8_t rudder = detail::not_available<std::int8_t>;           // 12 @41 rudder, 1 %
+  std::uint16_t stw = detail::not_available<std::uint16_t>;          // 13 @42 STW, 0.1 m/s
+  std::uint16_t wind_speed_abs = detail::not_available<std::uint16_t>;  // 14 @44 0.1 m/s
+  std::uint16_t wind_dir_abs = detail::not_available<std::uint16_t>;    // 15 @46 1 deg
+  std::uint16_t wind_speed_rel = detail::not_available<std::uint16_t>;  // 16 @48 0.1 m/s
+  std::uint16_t wind_dir_rel = detail::not_available<std::uint16_t>;    // 17 @50 1 deg
+  std::int16_t air_temp = detail::not_available<std::int16_t>;          // 18 @52 0.1 degC
+  std::uint16_t pressure = detail::not_available<std::uint16_t>;        // 19 @54 1 hPa
+
+  // Physical values; nullopt when the field says "not available".
+  [[nodiscard]] constexpr std::optional<double> heading_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> latitude_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> longitude_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> sog_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> cog_deg() const noexcept;
+  /// Also nullopt for a time past the year 292 million, which time_ms cannot hold.
+  [[nodiscard]] constexpr std::optional<time_ms> gps_time() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> alt_msl_m() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> geoid_sep_m() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> hdop() const noexcept;
+  [[nodiscard]] constexpr std::optional<int> fix_quality() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> motor_pct() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> rudder_pct() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> stw_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_speed_abs_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_dir_abs_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_speed_rel_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_dir_rel_deg() const noexcept;
+  /// Both 0x7FFF and 0xFFFF are "not available": see the air_temp_c row of sensor_fields.
+  [[nodiscard]] constexpr std::optional<double> air_temp_c() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> pressure_hpa() const noexcept;
+
+  [[nodiscard]] constexpr bool operator==(const sensor_frame_raw&) const noexcept = default;
+};
+
+/// A closed range of physical values, in whole units of the field's physical value.
+struct value_range {
+  std::int64_t lo;
+  std::int64_t hi;
+};
+
+namespace detail {
+
+template <class M>
+struct member_type;
+template <class C, class M>
+struct member_type<M C::*> {
+  using type = M;
+};
+template <auto Member>
+using member_type_t = typename member_type<std::remove_cv_t<decltype(Member)>>::type;
+
+// std::isfinite and std::round are not constexpr before C++23.
+[[nodiscard]] constexpr bool is_finite(double x) noexcept {
+  return x == x && x != std::numeric_limits<double>::infinity() &&
+         x != -std::numeric_limits<double>::infinity();
+}
+
+// Scaled values at or beyond this magnitude fit no field, and stay clear of int64 overflow below.
+inline constexpr double rounding_limit = 9.0e18;
+
+// Nearest integer, halves away from zero. Precondition: |x| < rounding_limit. Taking the fraction
+// by subtraction (exact for doubles) avoids the x + 0.5 trap at 0.49999999999999994.
+[[nodiscard]] constexpr std::int64_t round_half_away(double x) noexcept {
+  auto whole = static_cast<std::int64_t>(x);
+  const double fraction = x - static_cast<double>(whole);
+  if (fraction >= 0.5) ++whole;
+  if (fraction <= -0.5) --whole;
+  return whole;
+}
+
+}  // namespace detail
+
+/// One payload field: where it is, how its integer becomes a physical value and back, and what a
+/// sender may put in it. RawMember is the sensor_frame_raw member, ValueMember the sensor_values
+/// member; their types give the wire type and the physical type (double, int or time_ms).
+template <auto RawMember, auto ValueMember>
+struct sensor_field {
+  using raw_type = detail::member_type_t<RawMember>;
+  using value_type = typename detail::member_type_t<ValueMember>::value_type;
+  static constexpr auto raw_member = RawMember;
+  static constexpr auto value_member = ValueMember;
+
+  std::string_view name;     ///< snake_case; also the sensor_values member, accessor and JSON key
+  std::size_t offset;        ///< of the field's first byte, counted from the frame's first byte
+  std::int64_t divisor = 1;  ///< wire counts per physical unit: physical = raw / divisor
+  /// What the spec allows, in physical units; without it, whatever the wire type holds.
+  std::optional<value_range> allowed = std::nullopt;
+  /// A value read as "not available" besides the type's maximum.
+  std::optional<raw_type> also_not_available = std::nullopt;
+
+  [[nodiscard]] constexpr bool not_available(raw_type raw) const noexcept {
+    return raw == detail::not_available<raw_type> ||
+           (also_not_available && raw == *also_not_available);
+  }
+
+  /// The lowest and highest wire value a sender may write.
+  [[nodiscard]] constexpr value_range wire_limits() const noexcept {
+    if (allowed) return {allowed->lo * divisor, allowed->hi * divisor};
+    constexpr std::int64_t int64_max = std::numeric_limits<std::int64_t>::max();
+    constexpr auto type_hi = detail::not_available<raw_type> - 1;  // the maximum is n/a
+    return {static_cast<std::int64_t>(std::numeric_limits<raw_type>::min()),
+            std::cmp_less(int64_max, type_hi) ? int64_max : static_cast<std::int64_t>(type_hi)};
+  }
+
+  /// The error for a value outside wire_limits(): beyond what the spec allows, or beyond what the
+  /// wire field can carry (for fields whose only limit is their type).
+  [[nodiscard]] constexpr errc refusal() const noexcept {
+    return allowed ? errc::out_of_range : errc::value_too_large;
+  }
+
+  /// Whether a strict sender could have written `raw`: n/a or within wire_limits().
+  [[nodiscard]] constexpr bool acceptable(raw_type raw) const noexcept {
+    const auto [lo, hi] = wire_limits();
+    return not_available(raw) || (!std::cmp_less(raw, lo) && !std::cmp_greater(raw, hi));
+  }
+
+  [[nodiscard]] constexpr std::optional<value_type> to_physical(raw_type raw) const noexcept {
+    if (not_available(raw)) return std::nullopt;
+    if constexpr (std::is_same_v<value_type, time_ms>) {
+      using rep = time_ms::rep;
+      if (std::cmp_greater(raw, std::numeric_limits<rep>::max())) return std::nullopt;
+      return time_ms{time_ms::duration{static_cast<rep>(raw)}};
+    } else if constexpr (std::is_same_v<value_type, double>) {
+      // Dividing by the exact divisor (not multiplying by 0.1) gives the double nearest the
+      // decimal the wire means: 32828671 -> 32.828671 exactly as that literal reads.
+      return static_cast<double>(raw) / static_cast<double>(divisor);
+    } else {
+      return static_cast<value_type>(raw);
+    }
+  }
+
+  /// Rounds `value` to the wire resolution into `out`; nullopt becomes "not available".
+  /// On failure `out` is left alone.
+  [[nodiscard]] constexpr errc to_wire(const std::optional<value_type>& value,
+                                       raw_type& out) const noexcept {
+    if (!value) {
+      out = detail::not_available<raw_type>;
+      return errc::ok;
+    }
+    std::int64_t wire = 0;
+    if constexpr (std::is_same_v<value_type, time_ms>) {
+      wire = value->time_since_epoch().count();
+    } else if constexpr (std::is_same_v<value_type, double>) {
+      if (!detail::is_finite(*value)) return errc::not_finite;
+      const double scaled = *value * static_cast<double>(divisor);
+      if (!(scaled > -detail::rounding_limit && scaled < detail::rounding_limit)) return refusal();
+      wire = detail::round_half_away(scaled);
+    } else {
+      wire = static_cast<std::int64_t>(*value);
+    }
+    const auto [lo, hi] = wire_limits();
+    if (wire < lo || wire > hi) return refusal();
+    const auto raw = static_cast<raw_type>(wire);
+    if (not_available(raw)) return refusal();  // would be read back as "not available"
+    out = raw;
+    return errc::ok;
+  }
+};
+
+namespace detail {
+
+inline constexpr value_range degrees{0, 360};  // "Degrees: 0-360" in the spec, both ends allowed
+
+consteval auto make_sensor_fields() {
+  using r = sensor_frame_raw;
+  using v = sensor_values;
+  constexpr std::int64_t tenths = 10;
+  constexpr std::int64_t millionths = 1'000'000;
+  // Rows follow the spec's table; a row's position (1-based) is the field number in errors.
+  return std::tuple{
+      sensor_field<&r::heading, &v::heading_deg>{"heading_deg", 8, 1, degrees},
+      sensor_field<&r::lat, &v::latitude_deg>{"latitude_deg", 10, millionths, {{-90, 90}}},
+      sensor_field<&r::lon, &v::longitude_deg>{"longitude_deg", 14, millionths, {{-180, 180}}},
+      sensor_field<&r::sog, &v::sog_mps>{"sog_mps", 18, tenths},
+      sensor_field<&r::cog, &v::cog_deg>{"cog_deg", 20, 1, degrees},
+      sensor_field<&r::gps_time_ms, &v::gps_time>{"gps_time", 22},
+      sensor_field<&r::alt_msl, &v::alt_msl_m>{"alt_msl_m", 30, tenths},
+      sensor_field<&r::geoid_sep, &v::geoid_sep_m>{"geoid_sep_m", 34, tenths},
+      // Not enforced, though the spec says it: "HDOP range 0-1; this field range 0-10". Real fixes
+      // often have HDOP above 1, and refusing the whole frame for that would drop good positions.
+      sensor_field<&r::hdop_tenths, &v::hdop>{"hdop", 38, tenths},
+      // "as defined by GPGGA": NMEA 0183 defines qualities 0 (invalid) to 8 (simulation).
+      sensor_field<&r::gga_quality, &v::fix_quality>{"fix_quality", 39, 1, {{0, 8}}},
+      sensor_field<&r::motor, &v::motor_pct>{"motor_pct", 40, 1, {{-100, 100}}},
+      sensor_field<&r::rudder, &v::rudder_pct>{"rudder_pct", 41, 1, {{-100, 100}}},
+      sensor_field<&r::stw, &v::stw_mps>{"stw_mps", 42, tenths},
+      sensor_field<&r::wind_speed_abs, &v::wind_speed_abs_mps>{"wind_speed_abs_mps", 44, tenths},
+      sensor_field<&r::wind_dir_abs, &v::wind_dir_abs_deg>{"wind_dir_abs_deg", 46, 1, degrees},
+      sensor_field<&r::wind_speed_rel, &v::wind_speed_rel_mps>{"wind_speed_rel_mps", 48, tenths},
+      sensor_field<&r::wind_dir_rel, &v::wind_dir_rel_deg>{"wind_dir_rel_deg", 50, 1, degrees},
+      // The spec's note makes 0x7FFF "not available", but its own example sends 0xFFFF for an
+      // air temperature "invalid / not reported". So 0xFFFF (-0.1 degC taken literally) is read
+      // as not available too, and build_frame refuses -0.1 degC rather than send it ambiguously;
+      // nullopt is sent as the spec's 0x7FFF.
+      sensor_field<&r::air_temp, &v::air_temp_c>{"air_temp_c", 52, tenths, {}, std::int16_t{-1}},
+      sensor_field<&r::pressure, &v::pressure_hpa>{"pressure_hpa", 54},
+  };
+}
+
+}  // namespace detail
+
+/// The payload layout, one sensor_field per field in the spec's order. Iterate it with std::apply
+/// to generate docs, dictionaries or schemas; for_each_field pairs it with a frame's values.
+inline constexpr auto sensor_fields = detail::make_sensor_fields();
+
+namespace detail {
+
+// Calls fn(field_number, field) in table order, heading = 1, until fn returns false.
+// Returns whether every call returned true.
+template <class Fn>
+constexpr bool visit_sensor_fields(Fn&& fn) {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return (fn(static_cast<std::uint16_t>(I + 1), std::get<I>(sensor_fields)) && ...);
+  }
+  (std::make_index_sequence<std::tuple_size_v<std::remove_cv_t<decltype(sensor_fields)>>>{});
+}
+
+// The table against the spec: contiguous from byte 8 to byte 56, in order, and no sender range
+// reaching past its wire type.
+consteval bool sensor_fields_match_spec() {
+  std::size_t next = header_size;
+  bool ok = true;
+  visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    using raw_type = typename std::remove_cvref_t<decltype(field)>::raw_type;
+    const auto [lo, hi] = field.wire_limits();
+    ok = ok && field.offset == next && lo <= hi && std::in_range<raw_type>(lo) &&
+         std::in_range<raw_type>(hi) && !field.name.empty();
+    next += sizeof(raw_type);
+    return true;
+  });
+  return ok && next == frame_size &&
+         std::tuple_size_v<std::remove_cv_t<decltype(sensor_fields)>> == sensor_field_count;
+}
+static_assert(sensor_fields_match_spec(), "sensor_fields disagrees with the spec's layout");
+
+template <auto ValueMember>
+[[nodiscard]] constexpr member_type_t<ValueMember> physical_of(
+    const sensor_frame_raw& frame) noexcept {
+  member_type_t<ValueMember> out{};
+  visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    if constexpr (std::is_same_v<std::remove_cv_t<decltype(field_type::value_member)>,
+                                 std::remove_cv_t<decltype(ValueMember)>>) {
+      if constexpr (field_type::value_member == ValueMember) {
+        out = field.to_physical(frame.*field_type::raw_member);
+        return false;
+      }
+    }
+    return true;
+  });
+  return out;
+}
+
+}  // namespace detail
+
+/// Decodes the frame at the start of `bytes` (later bytes are not read). Checks, in this order:
+///   frame id (bad_frame_id, column 0), length field == 48 (bad_length, column 2),
+///   56 bytes present (truncated, column = bytes.size()), CRC (crc_mismatch, column 4).
+/// The header is compared byte by byte, so `truncated` means "every byte so far is right, send
+/// more": a stream reader can drop a false AB as soon as the byte that betrays it arrives.
+/// No range checks here: see validate(). On error `value` is a default (all n/a) frame.
+[[nodiscard]] constexpr result<sensor_frame_raw> decode_frame(
+    std::span<const std::uint8_t> bytes) noexcept {
+  result<sensor_frame_raw> out;
+  const auto fail = [&out](errc ec, std::size_t column) {
+    out.ec = ec;
+    out.column = static_cast<std::uint16_t>(column);
+    return out;
+  };
+  std::array<std::uint8_t, 4> expected{};
+  seawire::detail::store_be(expected, 0, frame_id);
+  seawire::detail::store_be(expected, 2, static_cast<std::uint16_t>(payload_size));
+  for (std::size_t i = 0; i < expected.size() && i < bytes.size(); ++i) {
+    if (bytes[i] != expected[i]) {
+      return i < 2 ? fail(errc::bad_frame_id, 0) : fail(errc::bad_length, 2);
+    }
+  }
+  if (bytes.size() < frame_size) return fail(errc::truncated, bytes.size());
+  if (seawire::detail::load_be<std::uint32_t>(bytes, 4) !=
+      crc32(bytes.subspan(header_size, payload_size))) {
+    return fail(errc::crc_mismatch, 4);
+  }
+  detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    out.value.*field_type::raw_member =
+        seawire::detail::load_be<typename field_type::raw_type>(bytes, field.offset);
+    return true;
+  });
+  return out;
+}
+
+/// Writes `frame` as 56 bytes to the start of `out`, header and CRC included, and returns 56.
+/// Writes the raw integers as they are (so decode -> encode is bit-exact); build_frame is where
+/// values are checked. buffer_too_small (nothing written) if `out` is shorter than 56 bytes.
+[[nodiscard]] constexpr result<std::size_t> encode_frame(const sensor_frame_raw& frame,
+                                                         std::span<std::uint8_t> out) noexcept {
+  if (out.size() < frame_size) return {0, errc::buffer_too_small};
+  seawire::detail::store_be(out, 0, frame_id);
+  seawire::detail::store_be(out, 2, static_cast<std::uint16_t>(payload_size));
+  detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    seawire::detail::store_be(out, field.offset, frame.*field_type::raw_member);
+    return true;
+  });
+  seawire::detail::store_be(out, 4, crc32(out.subspan(header_size, payload_size)));
+  return {frame_size};
+}
+
+/// The 56 bytes of `frame`.
+[[nodiscard]] constexpr frame_bytes encode_frame(const sensor_frame_raw& frame) noexcept {
+  frame_bytes bytes{};
+  (void)encode_frame(frame, bytes);  // cannot fail: the array is exactly a frame long
+  return bytes;
+}
+
+/// The frame a strict sender writes for `values`: each value rounded to its field's resolution
+/// (halves away from zero), nullopt as "not available". Refuses the first field (in table order)
+/// whose value is NaN or infinite (not_finite), outside the spec's range (out_of_range: heading,
+/// course and wind directions 0..360, latitude +-90, longitude +-180, fix quality 0..8, motor and
+/// rudder +-100), or, for fields the spec gives no range, not carried by the wire type or equal
+/// to its "not available" value (value_too_large: SOG -1 or 6553.5 m/s, air temperature -0.1 C).
+/// Ranges apply after rounding, so heading 360.4 is sent as 360. The error's `field` is the
+/// payload field number (heading 1 .. pressure 19) and `column` its offset in the frame.
+[[nodiscard]] constexpr result<sensor_frame_raw> build_frame(const sensor_values& values) noexcept {
+  result<sensor_frame_raw> out;
+  detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    const errc ec =
+        field.to_wire(values.*field_type::value_member, out.value.*field_type::raw_member);
+    if (ec == errc::ok) return true;
+    out = {{}, ec, number, static_cast<std::uint16_t>(field.offset)};
+    return false;
+  });
+  return out;
+}
+
+/// Whether every field of `frame` is "not available" or within what build_frame would send; the
+/// first field that is not gives the error (as build_frame's). For receivers that want to be
+/// strict; decode_frame itself is not.
+[[nodiscard]] constexpr result<sensor_frame_raw> validate(const sensor_frame_raw& frame) noexcept {
+  result<sensor_frame_raw> out{frame};
+  detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    if (field.acceptable(frame.*field_type::raw_member)) return true;
+    out.ec = field.refusal();
+    out.field = number;
+    out.column = static_cast<std::uint16_t>(field.offset);
+    return false;
+  });
+  return out;
+}
+
+/// Every field in physical units. build_frame(to_values(f)) == f for every f that validates.
+[[nodiscard]] constexpr sensor_values to_values(const sensor_frame_raw& frame) noexcept {
+  sensor_values values;
+  detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    values.*field_type::value_member = field.to_physical(frame.*field_type::raw_member);
+    return true;
+  });
+  return values;
+}
+
+/// Calls fn(name, value) for each field in table order: name is the snake_case field name
+/// (std::string_view), value a std::optional of double, int (fix_quality) or time_ms (gps_time),
+/// nullopt when not available. Meant for writers of JSON, CSV or logs.
+template <class Fn>
+constexpr void for_each_field(const sensor_frame_raw& frame, Fn&& fn) {
+  detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    fn(field.name, field.to_physical(frame.*field_type::raw_member));
+    return true;
+  });
+}
+
+// The accessors: each is its table row read through detail::physical_of.
+constexpr std::optional<double> sensor_frame_raw::heading_deg() const noexcept {
+  return detail::physical_of<&sensor_values::heading_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::latitude_deg() const noexcept {
+  return detail::physical_of<&sensor_values::latitude_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::longitude_deg() const noexcept {
+  return detail::physical_of<&sensor_values::longitude_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::sog_mps() const noexcept {
+  return detail::physical_of<&sensor_values::sog_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::cog_deg() const noexcept {
+  return detail::physical_of<&sensor_values::cog_deg>(*this);
+}
+constexpr std::optional<time_ms> sensor_frame_raw::gps_time() const noexcept {
+  return detail::physical_of<&sensor_values::gps_time>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::alt_msl_m() const noexcept {
+  return detail::physical_of<&sensor_values::alt_msl_m>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::geoid_sep_m() const noexcept {
+  return detail::physical_of<&sensor_values::geoid_sep_m>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::hdop() const noexcept {
+  return detail::physical_of<&sensor_values::hdop>(*this);
+}
+constexpr std::optional<int> sensor_frame_raw::fix_quality() const noexcept {
+  return detail::physical_of<&sensor_values::fix_quality>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::motor_pct() const noexcept {
+  return detail::physical_of<&sensor_values::motor_pct>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::rudder_pct() const noexcept {
+  return detail::physical_of<&sensor_values::rudder_pct>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::stw_mps() const noexcept {
+  return detail::physical_of<&sensor_values::stw_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_speed_abs_mps() const noexcept {
+  return detail::physical_of<&sensor_values::wind_speed_abs_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_dir_abs_deg() const noexcept {
+  return detail::physical_of<&sensor_values::wind_dir_abs_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_speed_rel_mps() const noexcept {
+  return detail::physical_of<&sensor_values::wind_speed_rel_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_dir_rel_deg() const noexcept {
+  return detail::physical_of<&sensor_values::wind_dir_rel_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::air_temp_c() const noexcept {
+  return detail::physical_of<&sensor_values::air_temp_c>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::pressure_hpa() const noexcept {
+  return detail::physical_of<&sensor_values::pressure_hpa>(*this);
+}
+
+}  // namespace seawire::anello
