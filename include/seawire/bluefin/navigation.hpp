@@ -39,6 +39,8 @@ struct nav_update {
     return nav_timestamp ? *nav_timestamp : timestamp;
   }
 
+  friend constexpr bool operator==(const nav_update&, const nav_update&) noexcept = default;
+
   static constexpr auto nmea = sentence<Address>(
       field<&nav_update::timestamp>("timestamp"), field<&nav_update::lat>("latitude"),
       field<&nav_update::lon>("longitude"), field<&nav_update::gps>("position_quality"),
@@ -62,6 +64,9 @@ struct velocity_update {
   std::optional<decimal> pitch_rate_dps;  // 5 [Rate_Pitch] deg/s, positive nose rising
   std::optional<decimal> roll_rate_dps;   // 6 [Rate_Roll] deg/s
   std::optional<decimal> yaw_rate_dps;    // 7 [Rate_Yaw] deg/s, positive clockwise
+
+  friend constexpr bool operator==(const velocity_update&,
+                                   const velocity_update&) noexcept = default;
 
   static constexpr auto nmea =
       sentence<Address>(field<&velocity_update::timestamp>("timestamp"),
