@@ -102,12 +102,28 @@ struct message_set {
   }
 };
 
-/// The union of several sets (a decoder for every family at once).
+namespace detail {
+// Appends each of Ms to Set unless it is already there.
+template <class Set, class... Ms>
+struct append_unique {
+  using type = Set;
+};
+template <class... A, class M, class... Rest>
+struct append_unique<message_set<A...>, M, Rest...> {
+  using type = typename append_unique<
+      std::conditional_t<(std::is_same_v<A, M> || ...), message_set<A...>, message_set<A..., M>>,
+      Rest...>::type;
+};
+}  // namespace detail
+
+/// The union of several sets (a decoder for every family at once). A message in more than one
+/// set (standard::rmc is in kingfisher::from_vehicle and anello::nmea_outputs) appears once, at
+/// its first place, so the union can still decode into a variant.
 template <class... Sets>
 struct merge_sets;
 template <message_like... A>
 struct merge_sets<message_set<A...>> {
-  using type = message_set<A...>;
+  using type = typename detail::append_unique<message_set<>, A...>::type;
 };
 template <message_like... A, message_like... B, class... Rest>
 struct merge_sets<message_set<A...>, message_set<B...>, Rest...> {
