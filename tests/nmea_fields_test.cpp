@@ -298,6 +298,17 @@ TEST_CASE("optional fields, units, field-count forms and absent tails") {
     CHECK(*d.value.speed == decimal(52, 1));
     CHECK(encode(d.value).view() == seal("TSOPT,5.2,N,359.9,1.5"));
   }
+  SECTION("a sentence that stops early: blanks when liberal, too_few_fields when strict") {
+    const std::string short_line = seal("TSOPT,5.2,N");
+    const auto liberal = decode<optionals>(short_line);
+    REQUIRE(liberal);
+    CHECK_FALSE(liberal.value.heading);
+    const auto strict = decode<optionals>(short_line, parse_policy::strict());
+    CHECK(strict.ec == errc::too_few_fields);
+    CHECK(strict.field == 3);
+    // Fields declared droppable may still be left out under strict.
+    CHECK(decode<optionals>(seal("TSOPT,5.2,N,1,2"), parse_policy::strict()));
+  }
   SECTION("wrong unit letter") {
     const auto d = decode<optionals>(seal("TSOPT,5.2,K,1,1"));
     CHECK(d.ec == errc::bad_unit);

@@ -336,8 +336,8 @@ TEST_CASE("RSA: malformed input, errc and field number", "[rsa]") {
 }
 
 TEST_CASE("RSA: a sentence that stops early leaves the rest blank", "[rsa]") {
-  // The message layer's rule for optional fields (receive liberally): fields past the end of
-  // the sentence read as blank. Only a value that lost its unit letter is an error (see VHW).
+  // The message layer's rule for optional fields when receiving liberally: fields past the end
+  // of the sentence read as blank. Only a value that lost its unit letter is an error (see VHW).
   const auto r = nmea::decode<rsa>(line("IIRSA,10.5,A"));
   REQUIRE(r.ec == errc::ok);
   CHECK(r.value.starboard_angle == decimal(105, 1));
@@ -345,6 +345,10 @@ TEST_CASE("RSA: a sentence that stops early leaves the rest blank", "[rsa]") {
   CHECK_FALSE(r.value.port_status.has_value());
   // Written back complete.
   CHECK(nmea::encode(r.value).view() == line("IIRSA,10.5,A,,"));
+  // The strict policy (send-side rules) wants all four fields.
+  const auto strict = nmea::decode<rsa>(line("IIRSA,10.5,A"), nmea::parse_policy::strict());
+  CHECK(strict.ec == errc::too_few_fields);
+  CHECK(strict.field == 3);
 }
 
 TEST_CASE("RSA: round trip over generated values", "[rsa][property]") {

@@ -263,6 +263,12 @@ template <class F, class T>
       return errc::ok;
     }
     const field_token t = r.peek();
+    // A sentence that stops before an optional field reads it as blank when receiving
+    // liberally; the strict policy wants every field that is not declared as droppable.
+    if (!t.present && !o.may_be_absent && r.policy().strict_values) {
+      (void)r.take();
+      return errc::too_few_fields;
+    }
     // Blank means "no value", except for text, where blank is the empty string and only a
     // field that is not there at all is nullopt.
     if (!t.present || (t.blank() && !codec<V>::allows_blank)) {
