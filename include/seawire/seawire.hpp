@@ -24,8 +24,9 @@
 //                                                  the heartbeat scheduler
 //   anello              seawire/anello/            seawire::anello -- ANELLO INS inputs:
 //                                                  PAPGPSCTRL, the 0xAB00 binary frame, mixed
-//                                                  NMEA + binary streams; the NMEA 2000
-//                       seawire/nmea2000/          PGNs it takes are seawire::nmea2000
+//                                                  NMEA + binary streams
+//   shared layouts      seawire/bluefin/           seawire::bluefin -- the NVG/NVR layout that
+//                                                  Sandshark and Kingfisher both use
 //
 // Not included here: seawire/fmt.hpp (fmt::formatter for every message; needs {fmt}).
 
@@ -34,3 +35,36 @@
 // errors
 #include "seawire/error.hpp"
 #include "seawire/version.hpp"
+
+// nmea wire layer
+#include "seawire/nmea/checksum.hpp"
+#include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/framer.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+// standard sentences
+#include "seawire/standard/gga.hpp"
+#include "seawire/standard/rmc.hpp"
+#include "seawire/standard/rpm.hpp"
+#include "seawire/standard/rsa.hpp"
+#include "seawire/standard/vbw.hpp"
+#include "seawire/standard/vhw.hpp"
+#include "seawire/standard/vwr.hpp"
+
+// sandshark
+#include "seawire/sandshark/messages.hpp"
+#include "seawire/sandshark/session.hpp"
+
+// robotx
+#include "seawire/robotx/heartbeat.hpp"
+#include "seawire/robotx/hst.hpp"
+#include "seawire/robotx/messages.hpp"
+#include "seawire/robotx/validator.hpp"
+
+// anello
+#include "seawire/anello/frame.hpp"
+#include "seawire/anello/gpsctrl.hpp"
+#include "seawire/anello/inputs.hpp"
