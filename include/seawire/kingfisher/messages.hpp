@@ -1,0 +1,329 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Clearpath Kingfisher USV payload interface: CP* sentences from the vehicle, PY* commands to it.
+// The vehicle is a TCP server (port 29500, many clients, any client may command).
+//
+//   from the vehicle                              to the vehicle
+//   CPNVG  navigation update (Bluefin layout)     PYDEP  desired yaw rate + thrust
+//   CPNVR  velocity and rates (Bluefin layout)    PYDEV  desired heading + speed
+//   CPRCM  raw compass                            PYDIR  thrust per motor
+//   CPRBS  battery bank                           PYCLT  lights on/off (not in the spec)
+//   CPIMU  raw IMU
+//   CPALT  lights state (not in the spec)
+//   GPRMC, GPGGA relayed from the GPS receiver (seawire::standard::rmc / gga)
+//
+// Roles: a payload reads what the vehicle sends with `decode_from_vehicle` (checksum required:
+// the vehicle always sends one); a vehicle, or a simulator of one, reads commands with
+// `decode_to_vehicle` (the spec lets payloads leave the checksum out: "$PYDIR,12.5,-3*" and
+// "$PYDIR,12.5,-3" are accepted, a wrong checksum never). Addresses outside a role's set come
+// back as nmea::unknown_sentence, which the spec asks clients to ignore, not as errors.
+//
+// PYDEP's yaw rate has two units in the field: the spec says rad/s, the Clearpath vehicle code
+// reads deg/s, clockwise positive. seawire carries the number as written and converts nothing;
+// find out which one your vehicle runs before sending a non-zero rate.
+//
+// Encoding refuses what the spec forbids (thrust outside -100..100, a negative speed, a desired
+// heading outside [0, 360)) with errc::out_of_range and the field number. Signs: a '+' is
+// accepted on receive (the spec allows it) and never written.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <variant>
+
+#include "seawire/bluefin/navigation.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/standard/gga.hpp"
+#include "seawire/standard/rmc.hpp"
+
+namespace seawire::kingfisher {
+
+using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
+
+// ---------------------------------------------------------------------------------------------
+// from the vehicle
+
+/// Navigation update. Real vehicles write unpadded longitude degrees ("7105.44878") and 0, not
+/// blank, for altitude and depth; both are kept as sent. `effective_nav_timestamp()` applies
+/// the spec's "blank field 12 means field 1". (The seed's example is a BFNVG line; under CPNVG
+/// its checksum would be *58, not *5B.)
+///
+///   $CPNVG,081025.987,4221.81092,N,7106.84603,W,1,0,0,203.1,-3.4,4.5,081025.980*68
+///          1          2          3 4          5 6 7 8 9     10   11  12
+using cpnvg = bluefin::nav_update<"CPNVG">;
+
+/// Velocity and rate update (m/s east/north/down, deg/s pitch/roll/yaw).
+///
+///   $CPNVR,164959.063,0.02941,-0.068552,0,0.060938,0,-0.061132*59
+///          1          2       3         4 5        6 7
+using cpnvr = bluefin::velocity_update<"CPNVR">;
+
+/// Raw compass reading, repackaged by the vehicle. The real vehicle reports compass id 0 (the
+/// spec numbers compasses from 1).
+///
+///   $CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,164959.060*62
+///          1          2 3          4         5         6
+struct cprcm {
+  time_of_day timestamp;         // 1 [Timestamp] when the sentence was made
+  std::uint16_t compass_id = 0;  // 2 [ID_Compass] which compass
+  decimal heading_deg;           // 3 [Heading] degrees clockwise from true north, 0..360
+  decimal pitch_deg;             // 4 [Pitch] degrees, -90..90, positive bow up
+  decimal roll_deg;              // 5 [Roll] degrees, -180..180; the spec's 2.8 says
+                                 //   positive port side up, its Appendix B starboard
+  std::optional<time_of_day> nav_timestamp;  // 6 [NavTimestamp] when the compass measured;
+                                             //   blank means "the same as field 1"
+
+  /// Field 6, or field 1 when field 6 is blank, as the spec says to read it.
+  [[nodiscard]] constexpr time_of_day effective_nav_timestamp() const noexcept {
+    return nav_timestamp ? *nav_timestamp : timestamp;
+  }
+
+  friend constexpr bool operator==(const cprcm&, const cprcm&) noexcept = default;
+
+  static constexpr auto nmea = sentence<"CPRCM">(
+      field<&cprcm::timestamp>("timestamp"), field<&cprcm::compass_id>("compass_id"),
+      field<&cprcm::heading_deg>("heading_deg", in_range(0, 360)),
+      field<&cprcm::pitch_deg>("pitch_deg", in_range(-90, 90)),
+      field<&cprcm::roll_deg>("roll_deg", in_range(-180, 180)),
+      field<&cprcm::nav_timestamp>("nav_timestamp"));
+};
+
+/// Battery bank voltages, one sentence per bank. The spec has the battery id as field 2 (six
+/// fields); the real vehicle leaves it out (five fields). The two forms are told apart by the
+/// field count. Member comments number the spec's six fields; errors report the position on
+/// the wire, so in the five-field form the stack voltage is field 2.
+///
+///   $CPRBS,105707.24,1,15.2,15.1,15.3,0*67                  spec form, 6 fields
+///          1         2 3    4    5    6
+///   $CPRBS,172909.322,15.121597,15.121597,15.121597,0*76   real vehicle, 5 fields (no id)
+///          1          2         3         4         5
+struct cprbs {
+  time_of_day timestamp;                    // 1 [Timestamp] when the sentence was made
+  std::optional<std::uint16_t> battery_id;  // 2 [ID_Battery] banks numbered from 1; only in the
+                                            //   six-field form, nullopt writes the five-field one
+  decimal stack_voltage_v;                  // 3 [V_Batt_Stack] volts, the whole bank
+  decimal min_cell_voltage_v;               // 4 [V_Batt_Min] volts, lowest cell of the bank
+  decimal max_cell_voltage_v;               // 5 [V_Batt_Max] volts, highest cell of the bank
+  decimal temperature_c;                    // 6 [TemperatureC] degrees Celsius (real vehicle: 0)
+
+  friend constexpr bool operator==(const cprbs&, const cprbs&) noexcept = default;
+
+  static constexpr auto nmea =
+      sentence<"CPRBS">(field<&cprbs::timestamp>("timestamp"),
+                        field<&cprbs::battery_id>("battery_id", only_with_field_count(6)),
+                        field<&cprbs::stack_voltage_v>("stack_voltage_v"),
+                        field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v"),
+                        field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v"),
+                        field<&cprbs::temperature_c>("temperature_c"));
+};
+
+/// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
+/// y starboard, z down; rates by the right-hand rule). The real vehicle sends seven fields, no
+/// nav timestamp; nullopt writes that form. (The seed's sentence id is garbled; it is CPIMU.)
+///
+///   $CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57
+///          1          2         3         4         5         6        7         [8]
+struct cpimu {
+  time_of_day timestamp;                     // 1 [Timestamp] when the sentence was made
+  decimal rate_x_dps;                        // 2 [AngularRate_X] deg/s about x (roll)
+  decimal rate_y_dps;                        // 3 [AngularRate_Y] deg/s about y (pitch)
+  decimal rate_z_dps;                        // 4 [AngularRate_Z] deg/s about z (yaw)
+  decimal accel_x_mps2;                      // 5 [Accel_X] m/s^2, positive forward
+  decimal accel_y_mps2;                      // 6 [Accel_Y] m/s^2, positive to starboard
+  decimal accel_z_mps2;                      // 7 [Accel_Z] m/s^2, positive down
+  std::optional<time_of_day> nav_timestamp;  // 8 [NavTimestamp] when the IMU measured; blank or
+                                             //   absent means "the same as field 1"
+
+  /// Field 8, or field 1 when field 8 is blank or absent.
+  [[nodiscard]] constexpr time_of_day effective_nav_timestamp() const noexcept {
+    return nav_timestamp ? *nav_timestamp : timestamp;
+  }
+
+  friend constexpr bool operator==(const cpimu&, const cpimu&) noexcept = default;
+
+  static constexpr auto nmea = sentence<"CPIMU">(
+      field<&cpimu::timestamp>("timestamp"), field<&cpimu::rate_x_dps>("rate_x_dps"),
+      field<&cpimu::rate_y_dps>("rate_y_dps"), field<&cpimu::rate_z_dps>("rate_z_dps"),
+      field<&cpimu::accel_x_mps2>("accel_x_mps2"), field<&cpimu::accel_y_mps2>("accel_y_mps2"),
+      field<&cpimu::accel_z_mps2>("accel_z_mps2"),
+      field<&cpimu::nav_timestamp>("nav_timestamp", may_be_absent));
+};
+
+/// Lights state. Not in the seed; sent by Clearpath's vehicle code alongside CPNVG.
+///
+///   $CPALT,164959.100,1*62
+///          1          2
+struct cpalt {
+  time_of_day timestamp;   // 1 when the sentence was made
+  bool lights_on = false;  // 2 1 = lights on, 0 = off
+
+  friend constexpr bool operator==(const cpalt&, const cpalt&) noexcept = default;
+
+  static constexpr auto nmea = sentence<"CPALT">(field<&cpalt::timestamp>("timestamp"),
+                                                 field<&cpalt::lights_on>("lights_on"));
+};
+
+// ---------------------------------------------------------------------------------------------
+// to the vehicle
+//
+// The helpers below build a command from doubles, rounding each number to `places` fraction
+// digits (decimal::from_double: NaN and infinities give errc::not_finite with the field
+// number). They do not check the spec's ranges: encode does, once, from the description, and
+// names the field it refused.
+
+namespace detail {
+template <class T>
+[[nodiscard]] constexpr bool convert(result<T>& out, decimal T::*member, std::uint16_t field,
+                                     double v, unsigned places) noexcept {
+  const result<decimal> d = decimal::from_double(v, places);
+  if (!d) {
+    out.ec = d.ec;
+    out.field = field;
+    return false;
+  }
+  out.value.*member = d.value;
+  return true;
+}
+}  // namespace detail
+
+/// Desired yaw rate and thrust.
+///
+///   $PYDEP,-10,50*71
+///          1   2
+struct pydep {
+  decimal yaw_rate;  // 1 [DesYawRate] desired rate of yaw. UNIT CONFLICT: the spec says rad/s;
+                     //   the Clearpath vehicle reads deg/s, positive clockwise. Sent as given.
+  decimal thrust;    // 2 [DesThrustPct] percent of thrust, -100..100; 0 stopped, > 0 forward
+
+  /// Both numbers rounded to `places` fraction digits.
+  [[nodiscard]] static constexpr result<pydep> from_rate(double yaw_rate, double thrust_pct,
+                                                         unsigned places = 2) noexcept {
+    result<pydep> r;
+    (void)(detail::convert(r, &pydep::yaw_rate, 1, yaw_rate, places) &&
+           detail::convert(r, &pydep::thrust, 2, thrust_pct, places));
+    return r;
+  }
+
+  friend constexpr bool operator==(const pydep&, const pydep&) noexcept = default;
+
+  static constexpr auto nmea = sentence<"PYDEP">(
+      field<&pydep::yaw_rate>("yaw_rate"), field<&pydep::thrust>("thrust", in_range(-100, 100)));
+};
+
+/// Desired heading and speed; the vehicle's own controllers hold them.
+///
+///   $PYDEV,90,1.5*7D
+///          1  2
+struct pydev {
+  decimal heading_deg;  // 1 [DesHeading] degrees clockwise from true north, [0, 360). The spec
+                        //   says whole degrees 0..359; real senders send decimals: both accepted
+  decimal speed_mps;    // 2 [DesSpeed] m/s over ground, >= 0 (the vehicle caps it at its max)
+
+  /// Heading wrapped into [0, 360) after rounding (so -90 is 270 and 359.97 at one place is
+  /// 0.0); speed rounded as given. At most 15 places.
+  [[nodiscard]] static constexpr result<pydev> from_heading(double heading_deg, double speed_mps,
+                                                            unsigned places = 1) noexcept {
+    result<pydev> r;
+    if (places > 15) {  // 360 * 10^places must fit the mantissa
+      r.ec = errc::value_too_large;
+      r.field = 1;
+      return r;
+    }
+    if (!detail::convert(r, &pydev::heading_deg, 1, heading_deg, places) ||
+        !detail::convert(r, &pydev::speed_mps, 2, speed_mps, places))
+      return r;
+    decimal& h = r.value.heading_deg;
+    const std::uint64_t turn = 360 * seawire::detail::pow10_table[places];
+    h.mantissa %= turn;
+    if (h.negative && h.mantissa != 0) h.mantissa = turn - h.mantissa;
+    h.negative = false;
+    return r;
+  }
+
+  friend constexpr bool operator==(const pydev&, const pydev&) noexcept = default;
+
+  static constexpr auto nmea =
+      sentence<"PYDEV">(field<&pydev::heading_deg>("heading_deg", in_range_below(0, 360)),
+                        field<&pydev::speed_mps>("speed_mps", at_least(0)));
+};
+
+/// Thrust for each motor of the differential drive.
+///
+///   $PYDIR,45,55*57
+///          1  2
+struct pydir {
+  decimal thrust_left;   // 1 [DesThrustPct_L] percent of thrust, -100..100, port motor
+  decimal thrust_right;  // 2 [DesThrustPct_R] percent of thrust, -100..100, starboard motor
+
+  /// Both percentages rounded to `places` fraction digits.
+  [[nodiscard]] static constexpr result<pydir> from_percent(double left, double right,
+                                                            unsigned places = 1) noexcept {
+    result<pydir> r;
+    (void)(detail::convert(r, &pydir::thrust_left, 1, left, places) &&
+           detail::convert(r, &pydir::thrust_right, 2, right, places));
+    return r;
+  }
+
+  friend constexpr bool operator==(const pydir&, const pydir&) noexcept = default;
+
+  static constexpr auto nmea =
+      sentence<"PYDIR">(field<&pydir::thrust_left>("thrust_left", in_range(-100, 100)),
+                        field<&pydir::thrust_right>("thrust_right", in_range(-100, 100)));
+};
+
+/// Lights control. Not in the seed; Clearpath's vehicle code answers it with CPALT.
+///
+///   $PYCLT,1*4F
+///          1
+struct pyclt {
+  bool lights_on = false;  // 1 1 = switch the lights on, 0 = off
+
+  friend constexpr bool operator==(const pyclt&, const pyclt&) noexcept = default;
+
+  static constexpr auto nmea = sentence<"PYCLT">(field<&pyclt::lights_on>("lights_on"));
+};
+
+// ---------------------------------------------------------------------------------------------
+// roles
+
+/// What a payload hears: the CP* sentences and the relayed GPS sentences (any talker).
+using from_vehicle =
+    nmea::message_set<cpnvg, cpnvr, cprcm, cprbs, cpimu, cpalt, standard::rmc, standard::gga>;
+/// What a vehicle hears: the PY* commands.
+using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
+
+/// How a payload reads the vehicle: "sentences sent FROM the vehicle will always include a
+/// checksum", so one is required. Otherwise the common liberal defaults.
+[[nodiscard]] constexpr nmea::parse_policy payload_policy() noexcept {
+  nmea::parse_policy p;
+  p.checksum = nmea::checksum_policy::required;
+  return p;
+}
+
+/// How a vehicle reads payloads: "sentences sent TO the vehicle may or may not include a
+/// checksum"; one that is present must match.
+[[nodiscard]] constexpr nmea::parse_policy vehicle_policy() noexcept {
+  nmea::parse_policy p;
+  p.checksum = nmea::checksum_policy::verify_if_present;
+  return p;
+}
+
+/// Payload side: one line from the vehicle. Addresses outside `from_vehicle` (PY*, other
+/// GPS sentences) give unknown_sentence, which views into `line`.
+[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
+    std::string_view line, const nmea::parse_policy& policy = payload_policy()) noexcept {
+  return from_vehicle::decode(line, policy);
+}
+
+/// Vehicle side: one command line from a payload. Addresses outside `to_vehicle` give
+/// unknown_sentence, which views into `line`.
+[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
+    std::string_view line, const nmea::parse_policy& policy = vehicle_policy()) noexcept {
+  return to_vehicle::decode(line, policy);
+}
+
+}  // namespace seawire::kingfisher
