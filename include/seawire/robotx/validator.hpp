@@ -303,89 +303,6 @@ class validator {
     return {checksum_policy::ignore, true, true, false, false, p.max_length};
   }
 
-  constexpr void judge(std::string_view line, instant at, verdict& v) noexcept {
-    finding base;
-    base.at = at;
-    const auto add = [&](rule r, std::uint16_t fld, errc e) {
-      finding f = base;
-      f.broken = r;
-      f.field = fld;
-      f.ec = e;
-      v.findings.push(f);
-    };
-
-    // Line ending: judged only when the line has one (reported once the address is known).
-    const std::size_t n = line.size();
-    bool bad_ending = false;
-    if (n >= 1 && (line[n - 1] == '\n' || line[n - 1] == '\r')) {
-      const bool crlf = n >= 2 && line[n - 2] == '\r' && line[n - 1] == '\n';
-      bad_ending = !crlf && config_.flag_line_ending;
-      line.remove_suffix(crlf ? 2 : 1);
-    }
-
-    // Read the sentence with nothing checked but its framing, so every field can be judged.
-    const parse_policy inspect = inspect_policy(config_.policy);
-    result<sentence_view> s = parse(line, inspect);
-    std::string_view digits;  // checksum text when it could not be read as two hex digits
-    if (s.ec == errc::bad_checksum_format) {
-      const std::size_t star = detail::star_of(line);
-      digits = line.substr(star + 1);
-      s = parse(line.substr(0, star), inspect);
-    }
-    if (!s) {
-      if (bad_ending) add(rule::line_ending, 0, errc::bad_line_ending);
-      add(rule::framing, 0, s.ec);
-      return;
-    }
-    const sentence_view& sv = s.value;
-    (void)base.address.assign(sv.address);
-    if (bad_ending) add(rule::line_ending, 0, errc::bad_line_ending);
-    const auto type = report_type_for(sv.address);
-    if (!type) add(rule::unknown_address, 0, errc::unknown_address);
-
-    // Checksum.
-    if (!digits.empty()) {
-      add(decimal_checksum(digits, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
-          0, errc::bad_checksum_format);
-    } else if (sv.checksum == checksum_state::absent) {
-      if (config_.policy.checksum == checksum_policy::required)
-        add(rule::checksum, 0, errc::missing_checksum);
-    } else {
-      const std::string_view hex = line.substr(detail::star_of(line) + 1);
-      if (sv.checksum == checksum_state::mismatch)
-        add(decimal_checksum(hex, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
-            0, errc::checksum_mismatch);
-      if (config_.flag_lowercase_checksum && has_lowercase(hex))
-        add(rule::checksum_lowercase, 0, errc::ok);
-    }
-
-    const result<reports::variant> decoded = reports::decode(line, config_.policy);
-    v.accepted = type && decoded.ok() && decoded.value.index() != 0;
-    if (decoded.ok()) v.message = decoded.value;
-    if (!type) return;
-
-    // Rate, per address, on every transmission.
-    const auto ti = static_cast<std::size_t>(*type);
-    if (last_seen_[ti] && at - *last_seen_[ti] < config_.min_interval) {
-      finding f = base;
-      f.broken = rule::rate;
-      f.elapsed = at - *last_seen_[ti];
-      v.findings.push(f);
-    }
-    last_seen_[ti] = at;
-
-    // Each field on its own, so every bad one is reported.
-    switch (*type) {
-      case report_type::heartbeat: fields<rxhrb>(sv, base, v); break;
-      case report_type::gates: fields<rxgat>(sv, base, v); break;
-      case report_type::scan_code: fields<rxcod>(sv, base, v); break;
-      case report_type::dock: fields<rxdok>(sv, base, v); break;
-      case report_type::deliver: fields<rxdel>(sv, base, v); break;
-    }
-    if (v.accepted && *type == report_type::heartbeat)
-      heartbeat(std::get<rxhrb>(v.message), at, base, v);
-  }
-
   /// Each declared field of M read on its own: a reader is walked to the field's first wire
   /// field and the declaration's own read (codec + options) runs there.
   template <class M>
@@ -505,6 +422,91 @@ class validator {
       }
     }
     last_heartbeat_ = hb;
+  }
+
+  // Defined after the helpers it calls: Clang 14 does not instantiate a member template
+  // defined later in the class in time for a constant expression.
+  constexpr void judge(std::string_view line, instant at, verdict& v) noexcept {
+    finding base;
+    base.at = at;
+    const auto add = [&](rule r, std::uint16_t fld, errc e) {
+      finding f = base;
+      f.broken = r;
+      f.field = fld;
+      f.ec = e;
+      v.findings.push(f);
+    };
+
+    // Line ending: judged only when the line has one (reported once the address is known).
+    const std::size_t n = line.size();
+    bool bad_ending = false;
+    if (n >= 1 && (line[n - 1] == '\n' || line[n - 1] == '\r')) {
+      const bool crlf = n >= 2 && line[n - 2] == '\r' && line[n - 1] == '\n';
+      bad_ending = !crlf && config_.flag_line_ending;
+      line.remove_suffix(crlf ? 2 : 1);
+    }
+
+    // Read the sentence with nothing checked but its framing, so every field can be judged.
+    const parse_policy inspect = inspect_policy(config_.policy);
+    result<sentence_view> s = parse(line, inspect);
+    std::string_view digits;  // checksum text when it could not be read as two hex digits
+    if (s.ec == errc::bad_checksum_format) {
+      const std::size_t star = detail::star_of(line);
+      digits = line.substr(star + 1);
+      s = parse(line.substr(0, star), inspect);
+    }
+    if (!s) {
+      if (bad_ending) add(rule::line_ending, 0, errc::bad_line_ending);
+      add(rule::framing, 0, s.ec);
+      return;
+    }
+    const sentence_view& sv = s.value;
+    (void)base.address.assign(sv.address);
+    if (bad_ending) add(rule::line_ending, 0, errc::bad_line_ending);
+    const auto type = report_type_for(sv.address);
+    if (!type) add(rule::unknown_address, 0, errc::unknown_address);
+
+    // Checksum.
+    if (!digits.empty()) {
+      add(decimal_checksum(digits, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
+          0, errc::bad_checksum_format);
+    } else if (sv.checksum == checksum_state::absent) {
+      if (config_.policy.checksum == checksum_policy::required)
+        add(rule::checksum, 0, errc::missing_checksum);
+    } else {
+      const std::string_view hex = line.substr(detail::star_of(line) + 1);
+      if (sv.checksum == checksum_state::mismatch)
+        add(decimal_checksum(hex, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
+            0, errc::checksum_mismatch);
+      if (config_.flag_lowercase_checksum && has_lowercase(hex))
+        add(rule::checksum_lowercase, 0, errc::ok);
+    }
+
+    const result<reports::variant> decoded = reports::decode(line, config_.policy);
+    v.accepted = type && decoded.ok() && decoded.value.index() != 0;
+    if (decoded.ok()) v.message = decoded.value;
+    if (!type) return;
+
+    // Rate, per address, on every transmission.
+    const auto ti = static_cast<std::size_t>(*type);
+    if (last_seen_[ti] && at - *last_seen_[ti] < config_.min_interval) {
+      finding f = base;
+      f.broken = rule::rate;
+      f.elapsed = at - *last_seen_[ti];
+      v.findings.push(f);
+    }
+    last_seen_[ti] = at;
+
+    // Each field on its own, so every bad one is reported.
+    switch (*type) {
+      case report_type::heartbeat: fields<rxhrb>(sv, base, v); break;
+      case report_type::gates: fields<rxgat>(sv, base, v); break;
+      case report_type::scan_code: fields<rxcod>(sv, base, v); break;
+      case report_type::dock: fields<rxdok>(sv, base, v); break;
+      case report_type::deliver: fields<rxdel>(sv, base, v); break;
+    }
+    if (v.accepted && *type == report_type::heartbeat)
+      heartbeat(std::get<rxhrb>(v.message), at, base, v);
   }
 
   [[nodiscard]] static constexpr bool has_lowercase(std::string_view hex) noexcept {
