@@ -16,7 +16,7 @@ namespace seawire::robotx {
 
 /// The time points this family takes: UTC, as std::chrono::system_clock keeps it. A
 /// system_clock::time_point or any sys_time of a coarser duration converts implicitly.
-using time_point = std::chrono::sys_time<std::chrono::nanoseconds>;
+using instant = std::chrono::sys_time<std::chrono::nanoseconds>;
 
 /// HST = UTC + hst_offset.
 inline constexpr std::chrono::hours hst_offset{-10};
@@ -60,18 +60,18 @@ template <class Duration>
 
 /// The UTC instant an HST date and time name (the time's fraction included). Refuses a date or
 /// time the field codecs would refuse, with their errc.
-[[nodiscard]] constexpr result<time_point> from_hst(const nmea::date& d,
-                                                    const nmea::time_of_day& t) noexcept {
+[[nodiscard]] constexpr result<instant> from_hst(const nmea::date& d,
+                                                 const nmea::time_of_day& t) noexcept {
   using namespace std::chrono;
-  result<time_point> r;
+  result<instant> r;
   r.ec = nmea::codec<nmea::date>::check(d);
   if (r.ec == errc::ok) r.ec = nmea::codec<nmea::time_of_day>::check(t);
   if (r.ec != errc::ok) return r;
   const local_days day{d.ymd()};
-  r.value = time_point{(day + t.since_midnight()).time_since_epoch()} - hst_offset;
+  r.value = instant{(day + t.since_midnight()).time_since_epoch()} - hst_offset;
   return r;
 }
-[[nodiscard]] constexpr result<time_point> from_hst(const hst_stamp& s) noexcept {
+[[nodiscard]] constexpr result<instant> from_hst(const hst_stamp& s) noexcept {
   return from_hst(s.date, s.time);
 }
 
