@@ -153,7 +153,7 @@ struct cpimu {
       field<&cpimu::nav_timestamp>("nav_timestamp", may_be_absent));
 };
 
-/// Lights state. Not in the seed; sent by Clearpath's vehicle code alongside CPNVG.
+/// Lights state. Not in the seed; real vehicles send it (PYCLT switches the lights).
 ///
 ///   $CPALT,164959.100,1*62
 ///          1          2
@@ -275,7 +275,7 @@ struct pydir {
                         field<&pydir::thrust_right>("thrust_right", in_range(-100, 100)));
 };
 
-/// Lights control. Not in the seed; Clearpath's vehicle code answers it with CPALT.
+/// Lights control. Not in the seed; real vehicles accept it and report the state in CPALT.
 ///
 ///   $PYCLT,1*4F
 ///          1
