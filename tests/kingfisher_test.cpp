@@ -353,6 +353,22 @@ TEST_CASE("optional and variant forms") {
     CHECK(m.effective_nav_timestamp() == hms(16, 49, 59, 34, 3));
     CHECK(nmea::encode(m).view() == line);
   }
+  SECTION("CPNVR and CPNVG in their all-blank forms (no estimate yet)") {
+    const std::string nvr = sealed("CPNVR,164959.063,,,,,,");
+    const auto r = kf::decode_from_vehicle(nvr);
+    REQUIRE(r);
+    const auto& m = holds<kf::cpnvr>(r.value);
+    CHECK_FALSE(m.vel_east_mps.has_value());
+    CHECK_FALSE(m.yaw_rate_dps.has_value());
+    CHECK(nmea::encode(m).view() == nvr);
+    const std::string nvg = sealed("CPNVG,164959.034,4221.7,N,7105.4,W,0,,,,,,");
+    const auto g = kf::decode_from_vehicle(nvg);
+    REQUIRE(g);
+    const auto& n = holds<kf::cpnvg>(g.value);
+    CHECK_FALSE(n.heading_deg.has_value());
+    CHECK_FALSE(n.nav_timestamp.has_value());
+    CHECK(nmea::encode(n).view() == nvg);
+  }
   SECTION("CPRBS: an id given in code selects the six-field form") {
     kf::cprbs m;
     m.timestamp = hms(10, 57, 7, 24, 2);
