@@ -8,8 +8,8 @@
 // next_due(), or whenever your loop wakes -- sending every sentence it returns:
 //
 //   robotx::scheduler s;
-//   s.status(hrb);                              // position, team, mode, AUV status
-//   s.submit(cod, now);                         // a task report, whenever it is ready
+//   if (!s.status(hrb)) ...;                    // position, team, mode, AUV status
+//   const auto r = s.submit(cod, now);          // a task report, whenever it is ready
 //   while (auto out = s.poll(now)) send(out->sentence.view());
 //   sleep_until(s.next_due());
 //
@@ -35,7 +35,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <tuple>
 
 #include "seawire/error.hpp"
@@ -102,7 +101,7 @@ class scheduler {
   /// Set what the heartbeat says (its date and time are overwritten when stamping). The first
   /// status() starts the heartbeat. A status that would not encode is refused: the error and
   /// field come back and the previous status stays.
-  constexpr result<bool> status(const rxhrb& hb) noexcept {
+  [[nodiscard]] constexpr result<bool> status(const rxhrb& hb) noexcept {
     result<bool> r;
     const auto check = trial_encode(hb);
     r.ec = check.ec;
@@ -115,21 +114,21 @@ class scheduler {
   /// The heartbeat content, once status() has been given.
   [[nodiscard]] constexpr const std::optional<rxhrb>& status() const noexcept { return heartbeat_; }
 
-  constexpr submit_result submit(const rxgat& m, instant now) noexcept {
+  [[nodiscard]] constexpr submit_result submit(const rxgat& m, instant now) noexcept {
     return submit_one(m, now);
   }
-  constexpr submit_result submit(const rxcod& m, instant now) noexcept {
+  [[nodiscard]] constexpr submit_result submit(const rxcod& m, instant now) noexcept {
     return submit_one(m, now);
   }
-  constexpr submit_result submit(const rxdok& m, instant now) noexcept {
+  [[nodiscard]] constexpr submit_result submit(const rxdok& m, instant now) noexcept {
     return submit_one(m, now);
   }
-  constexpr submit_result submit(const rxdel& m, instant now) noexcept {
+  [[nodiscard]] constexpr submit_result submit(const rxdel& m, instant now) noexcept {
     return submit_one(m, now);
   }
 
   /// The next sentence to send at `now`, or nullopt when nothing is due. Call until nullopt.
-  constexpr std::optional<outgoing> poll(instant now) noexcept {
+  [[nodiscard]] constexpr std::optional<outgoing> poll(instant now) noexcept {
     if (heartbeat_ && heartbeat_due(now)) {
       std::optional<outgoing> out = release(*heartbeat_, now);
       next_heartbeat_ = now + config_.heartbeat_period;

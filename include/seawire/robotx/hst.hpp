@@ -82,7 +82,7 @@ requires requires(M m) {
   m.date = nmea::date{};
   m.time = nmea::time_of_day{};
 }
-constexpr errc stamp(M& msg, std::chrono::sys_time<Duration> utc) noexcept {
+[[nodiscard]] constexpr errc stamp(M& msg, std::chrono::sys_time<Duration> utc) noexcept {
   const result<hst_stamp> s = to_hst(utc);
   if (s) {
     msg.date = s.value.date;

@@ -41,7 +41,6 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
-#include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
@@ -62,7 +61,7 @@ enum class rule : std::uint8_t {
   unknown_address,     ///< a sentence that is none of the five reports
   field,               ///< a field that does not decode (field number, errc)
   unpadded,            ///< a date or time without leading zeros ("29620", "1384")
-  team_id,             ///< a team id that is not exactly five characters
+  team_id,             ///< a team id that is blank, not five characters, or reserved text
   team_mismatch,       ///< a team id other than the expected one
   field_count,         ///< fields missing at the end, or extra fields (accepted)
   rate,                ///< the same report again less than min_interval after the last
@@ -105,7 +104,7 @@ inline constexpr std::size_t rule_count = 15;
     case rule::unknown_address: return "not a RobotX report";
     case rule::field: return "field does not decode";
     case rule::unpadded: return "date or time written without leading zeros";
-    case rule::team_id: return "team id is not exactly five characters";
+    case rule::team_id: return "team id is blank or not five characters";
     case rule::team_mismatch: return "team id is not the expected team";
     case rule::field_count: return "fields missing or extra";
     case rule::rate: return "same report sent more often than once per second";
@@ -169,7 +168,7 @@ class finding_list {
   std::size_t dropped_ = 0;
 };
 
-/// A five-character team id, for validator_config::expected_team.
+/// A five-character team id, for validator_config::expected_team (empty if `id` is longer).
 [[nodiscard]] constexpr nmea::text<5> team(std::string_view id) noexcept {
   nmea::text<5> t;
   (void)t.assign(id);
@@ -219,8 +218,8 @@ struct validator_totals {
 
 namespace detail {
 
-/// Whether all-digit text shorter than `components` x 2 reads as a valid value once each
-/// component is given back its leading zero; `valid(a, b, c)` judges the components.
+/// Whether 3 to 5 digits read as a valid three-part value (ddmmyy, hhmmss) once each part
+/// written with one digit gets its leading zero back; `valid(a, b, c)` judges the parts.
 template <class Valid>
 [[nodiscard]] constexpr bool unpadded_reading(std::string_view s, Valid valid) noexcept {
   if (s.size() < 3 || s.size() > 5) return false;
@@ -266,7 +265,7 @@ class validator {
   }
 
   /// Judge one received line (with or without its line ending) that arrived at `at`.
-  constexpr verdict check(std::string_view line, instant at) noexcept {
+  [[nodiscard]] constexpr verdict check(std::string_view line, instant at) noexcept {
     verdict v;
     ++totals_.lines;
     start(at);
@@ -277,7 +276,7 @@ class validator {
   }
 
   /// Report a heartbeat gap open at `now` (once per gap). Call from a timer in a live tool.
-  constexpr finding_list advance(instant now) noexcept {
+  [[nodiscard]] constexpr finding_list advance(instant now) noexcept {
     finding_list out;
     if (since_heartbeat_ && !gap_reported_ &&
         now - *since_heartbeat_ > config_.heartbeat_gap_limit) {
@@ -293,7 +292,7 @@ class validator {
     return out;
   }
   /// The end of a session: a gap still open is reported.
-  constexpr finding_list finish(instant end) noexcept { return advance(end); }
+  [[nodiscard]] constexpr finding_list finish(instant end) noexcept { return advance(end); }
 
   [[nodiscard]] constexpr const validator_totals& totals() const noexcept { return totals_; }
   [[nodiscard]] constexpr const validator_config& config() const noexcept { return config_; }
