@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -252,6 +253,17 @@ template <class T>
   return t.text.size() == 1 && t.text[0] == o.unit ? errc::ok : errc::bad_unit;
 }
 
+/// Empty an optional member. Not reset(): clang (14, with libstdc++) refuses to copy, in a
+/// constant expression, an optional that was engaged and then reset, which a member with an
+/// engaged default (`std::optional<text<8>> x = text<8>{}`) runs into on decode.
+template <class O>
+constexpr void clear_optional(O& o) noexcept {
+  if (o.has_value()) {
+    std::destroy_at(&o);
+    std::construct_at(&o);
+  }
+}
+
 template <class F, class T>
 [[nodiscard]] constexpr errc read_field(const F& f, field_reader& r, T& msg) noexcept {
   using V = typename F::value_type;
@@ -259,7 +271,7 @@ template <class F, class T>
   const field_options& o = f.opts;
   if constexpr (F::is_optional) {
     if (o.when_count != 0 && r.field_count() != o.when_count) {
-      m.reset();
+      clear_optional(m);
       return errc::ok;
     }
     const field_token t = r.peek();
@@ -273,7 +285,7 @@ template <class F, class T>
     // field that is not there at all is nullopt.
     if (!t.present || (t.blank() && !codec<V>::allows_blank)) {
       for (unsigned k = 0; k < codec<V>::width; ++k) (void)r.take();
-      m.reset();
+      clear_optional(m);
       return read_unit(r, o, false);
     }
     V v{};
