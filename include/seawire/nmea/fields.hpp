@@ -537,7 +537,10 @@ struct codec<nmea_coordinate<Axis>> {
     unsigned deg = 0;
     if (!detail::parse_fixed_digits(s, 0, point - 2, deg)) return Axis::error;
     decimal minutes;
-    if (detail::parse_decimal(s.substr(point - 2), false, minutes) != errc::ok || minutes.negative)
+    // 12 fraction digits of a minute is 2 micrometres: more is noise, and would overflow the
+    // range arithmetic below.
+    if (detail::parse_decimal(s.substr(point - 2), false, minutes) != errc::ok ||
+        minutes.negative || minutes.places > 12)
       return Axis::error;
     minutes.int_width = 0;  // minutes are always written with two digits
     const std::uint64_t sixty = 60 * seawire::detail::pow10_table[minutes.places];

@@ -47,7 +47,7 @@ struct field_options {
   bool max_exclusive = false;
   std::int8_t max_places = -1;        ///< fraction digits allowed (decimal, time); -1 = any
   char unit = 0;                      ///< unit letter in the following wire field, e.g. 'N'
-  std::uint16_t when_count = 0;       ///< present only when the sentence has this many fields
+  std::uint16_t when_count = 0;       ///< present only in sentences of at least this many fields
   bool may_be_absent = false;         ///< trailing: a nullopt value is not written at all
   std::uint16_t min_length = 0;       ///< text: fewest characters
   std::uint16_t max_length = 0xFFFF;  ///< text: most characters
@@ -113,8 +113,8 @@ struct length {
 /// The value is followed by a field holding this unit letter ("5.2,N"). On receive the letter
 /// may also be blank; seawire always writes it.
 [[nodiscard]] constexpr option::unit_letter unit(char c) noexcept { return {c}; }
-/// The field exists only in the form of the sentence that has `n` fields (an optional member;
-/// written only when it has a value).
+/// The field exists only in the longer form of the sentence, the one with at least `n` fields
+/// (an optional member; written only when it has a value).
 [[nodiscard]] constexpr option::when_count only_with_field_count(int n) noexcept {
   return {static_cast<std::uint16_t>(n)};
 }
@@ -270,7 +270,7 @@ template <class F, class T>
   auto& m = msg.*F::member;
   const field_options& o = f.opts;
   if constexpr (F::is_optional) {
-    if (o.when_count != 0 && r.field_count() != o.when_count) {
+    if (o.when_count != 0 && r.field_count() < o.when_count) {
       clear_optional(m);
       return errc::ok;
     }
@@ -451,6 +451,8 @@ template <message_like T>
   bool skip_rest = false;
   const auto one = [&](const auto& f) {
     if (index++ >= keep) skip_rest = true;
+    // A field of the longer form that this message does not have takes no number.
+    if (f.opts.when_count != 0 && detail::skipped(f, msg)) return true;
     ++wire_field;
     e = detail::write_field(f, w, msg, skip_rest);
     if (e == errc::ok) wire_field = static_cast<std::uint16_t>(wire_field + f.width() - 1);
