@@ -54,6 +54,9 @@
 #include "seawire/standard/vhw.hpp"
 #include "seawire/standard/vwr.hpp"
 
+// kingfisher
+#include "seawire/kingfisher/messages.hpp"
+
 // sandshark
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/sandshark/session.hpp"
