@@ -89,6 +89,26 @@ enum class payload_event_kind : std::uint8_t {
   events_lost,                   ///< count events were dropped because the queue was full
 };
 
+/// The identifier of a payload_event_kind as text ("ack_ok"), for logs.
+[[nodiscard]] constexpr std::string_view name(payload_event_kind k) noexcept {
+  switch (k) {
+    case payload_event_kind::ack_ok: return "ack_ok";
+    case payload_event_kind::ack_failed: return "ack_failed";
+    case payload_event_kind::ack_invalid: return "ack_invalid";
+    case payload_event_kind::ack_pending: return "ack_pending";
+    case payload_event_kind::ack_timeout: return "ack_timeout";
+    case payload_event_kind::command_resent: return "command_resent";
+    case payload_event_kind::command_failed_after_retries: return "command_failed_after_retries";
+    case payload_event_kind::unmatched_ack: return "unmatched_ack";
+    case payload_event_kind::control_gained: return "control_gained";
+    case payload_event_kind::control_lost: return "control_lost";
+    case payload_event_kind::shutdown: return "shutdown";
+    case payload_event_kind::outbox_overflow: return "outbox_overflow";
+    case payload_event_kind::events_lost: return "events_lost";
+  }
+  return "unknown_event";
+}
+
 /// What sent the message an event is about.
 enum class message_origin : std::uint8_t {
   command,    ///< send(), subscribe(), abort(), start(): has a ticket
@@ -172,7 +192,8 @@ class payload_session {
     pump(now);
   }
 
-  /// Queue a command. Its timestamp (field 1) is set when it is sent. Returns its ticket, or
+  /// Queue a command; nothing queued is sent before start(). Its timestamp (field 1) is set
+  /// when it is sent. Returns its ticket, or
   /// the encoder's errc and field for a value the spec forbids, or buffer_too_small when the
   /// queue is full.
   [[nodiscard]] constexpr result<std::uint32_t> send(const payload_message& m,
@@ -331,7 +352,7 @@ class payload_session {
     }
     if (started_ && config_.heartbeat_period.count() > 0) consider(next_heartbeat_);
     if (control_ && request_) consider(request_due_ ? now_ : last_request_ + keep_alive_interval());
-    if (!queue_.empty() && !awaiting()) consider(now_);
+    if (started_ && !queue_.empty() && !awaiting()) consider(now_);
     return d;
   }
 
@@ -614,7 +635,8 @@ class payload_session {
       events_.push(about(payload_event_kind::command_resent, f));
     }
 
-    while (!queue_.empty() && awaiting() == nullptr) {
+    // Nothing queued goes out before start(): BPVER must be the first message (SPI 7.5).
+    while (started_ && !queue_.empty() && awaiting() == nullptr) {
       const queued_command c = queue_.front();
       const bool sent = std::visit(
           [&](const auto& m) { return transmit(m, c.ticket, message_origin::command, true, now); },

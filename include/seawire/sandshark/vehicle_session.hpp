@@ -90,6 +90,21 @@ enum class vehicle_event_kind : std::uint8_t {
   events_lost,        ///< count events were dropped because the queue was full
 };
 
+/// The identifier of a vehicle_event_kind as text ("request_expired"), for logs.
+[[nodiscard]] constexpr std::string_view name(vehicle_event_kind k) noexcept {
+  switch (k) {
+    case vehicle_event_kind::request_started: return "request_started";
+    case vehicle_event_kind::request_expired: return "request_expired";
+    case vehicle_event_kind::request_cancelled: return "request_cancelled";
+    case vehicle_event_kind::abort_requested: return "abort_requested";
+    case vehicle_event_kind::command_pending: return "command_pending";
+    case vehicle_event_kind::invalid_command: return "invalid_command";
+    case vehicle_event_kind::outbox_overflow: return "outbox_overflow";
+    case vehicle_event_kind::events_lost: return "events_lost";
+  }
+  return "unknown_event";
+}
+
 struct vehicle_event {
   vehicle_event_kind kind{};
   client_id client = 0;
@@ -387,7 +402,7 @@ class vehicle_session {
       for (char ch : part)
         if (n < sizeof buf) buf[n++] = ch;
     };
-    add(name(error));
+    add(seawire::name(error));
     if (field != 0) {
       add(" in field ");
       if (field >= 10) add(std::string_view(&"0123456789"[field / 10 % 10], 1));

@@ -1,0 +1,954 @@
+// SPDX-License-Identifier: BSL-1.0
+// Sandshark SPI sessions under simulated time: the payload's startup, command queue, ack
+// matching, resends, pending acks, heartbeat and BPRMB keep-alive; the vehicle's subscriptions,
+// acks and request timeout; and the two talking to each other.
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "seawire/nmea/checksum.hpp"
+#include "seawire/sandshark/session.hpp"
+
+using namespace seawire;
+using namespace seawire::sandshark;
+using namespace std::chrono_literals;
+
+namespace {
+
+time_point at(std::chrono::milliseconds ms) { return time_point{} + ms; }
+
+std::string sealed(std::string_view body) {
+  char hex[3];
+  std::snprintf(hex, sizeof hex, "%02X", static_cast<unsigned>(nmea::checksum(body)));
+  return "$" + std::string(body) + "*" + hex + "\r\n";
+}
+
+template <class S>
+std::vector<std::string> sent(S& s) {
+  std::vector<std::string> out;
+  while (auto l = s.poll_send()) out.emplace_back(l->view());
+  return out;
+}
+
+template <class S>
+auto events(S& s) {
+  std::vector<std::remove_reference_t<decltype(*s.poll_event())>> out;
+  while (auto e = s.poll_event()) out.push_back(*e);
+  return out;
+}
+
+std::string address(std::string_view line) { return std::string(line.substr(1, 5)); }
+
+/// Field 1 of a sent sentence ("" for BPLOG, which has no timestamp).
+std::string stamp_of(std::string_view line) {
+  if (address(line) == "BPLOG") return "";
+  const auto s = nmea::parse(line);
+  REQUIRE(s.ok());
+  return std::string(nmea::field(s.value, 1).text);
+}
+
+/// The vehicle's acknowledgement of `command` (a line the payload sent).
+std::string ack_of(std::string_view command, char status, std::string_view description = "") {
+  return sealed("BFACK,120000.000," + address(command).substr(2) + "," + stamp_of(command) + ",," +
+                status + ",0," + std::string(description) + ",");
+}
+
+std::vector<std::string> with_address(const std::vector<std::string>& lines, std::string_view a) {
+  std::vector<std::string> out;
+  for (const auto& l : lines)
+    if (address(l) == a) out.push_back(l);
+  return out;
+}
+
+payload_config quiet() {
+  payload_config c;
+  c.heartbeat_period = 0ms;  // keep the outbox to what a test looks at
+  c.sync_utc_from_vehicle = false;
+  return c;
+}
+
+/// A payload that has started and had BPLOG,ACK,ON acknowledged: nothing in flight.
+template <class S>
+void started_with_acks(S& p, time_point now) {
+  p.start(now);
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 2);
+  REQUIRE(lines[1] == "$BPLOG,ACK,ON*1E\r\n");
+  (void)p.receive(ack_of(lines[1], '2'), now);
+  REQUIRE(p.awaiting() == nullptr);
+  (void)events(p);
+}
+
+bprmb heading_request(int heading) {
+  bprmb r;
+  r.heading = decimal(heading);
+  r.horizontal_mode = horizontal_mode::heading;
+  return r;
+}
+
+}  // namespace
+
+// =============================================================================================
+// payload side
+
+TEST_CASE("payload startup: BPVER, then BPLOG,ACK,ON before any other subscription") {
+  payload_session<> p(quiet());
+  // Asked for before start(): still sent after the handshake.
+  REQUIRE(p.subscribe("NVG", at(0ms)).ok());
+  p.start(at(0ms));
+  auto lines = sent(p);
+  REQUIRE(lines.size() == 2);
+  CHECK(lines[0] == "$BPVER,000000.000,1.0*62\r\n");
+  CHECK(lines[1] == "$BPLOG,ACK,ON*1E\r\n");
+  CHECK(p.acks_enabled());
+  REQUIRE(p.awaiting() != nullptr);
+  CHECK(p.awaiting()->address() == "BPLOG");
+  CHECK(p.queued() == 1);  // NVG waits for the ACK ON ack
+
+  (void)p.receive(ack_of(lines[1], '2'), at(100ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_ok);
+  CHECK(ev[0].command == "BPLOG");
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPLOG,NVG,ON"));
+  CHECK(p.subscriptions().includes("NVG"));
+  CHECK_FALSE(p.subscriptions().includes("NVR"));
+}
+
+TEST_CASE("payload startup without acks: nothing waits") {
+  payload_config c = quiet();
+  c.want_acks = false;
+  c.version = "2.1";
+  payload_session<> p(c);
+  p.start(at(0ms));
+  REQUIRE(p.subscribe("ALL", at(0ms)).ok());
+  REQUIRE(p.subscribe("NVG", at(0ms), log_state::off).ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 3);
+  CHECK(address(lines[0]) == "BPVER");
+  CHECK(lines[0].find(",2.1*") != std::string::npos);
+  CHECK(lines[1] == "$BPLOG,ALL,ON*16\r\n");
+  CHECK(lines[2] == sealed("BPLOG,NVG,OFF"));
+  CHECK_FALSE(p.acks_enabled());
+  CHECK(p.awaiting() == nullptr);
+  CHECK(p.in_flight() == 0);
+  // ALL never includes ACK.
+  CHECK(p.subscriptions().includes("NVR"));
+  CHECK_FALSE(p.subscriptions().includes("NVG"));
+  CHECK_FALSE(p.subscriptions().includes("ACK"));
+}
+
+TEST_CASE("payload: ack before the timeout completes the command, nothing is resent") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  const auto ticket = p.subscribe("MIS", at(1000ms));
+  REQUIRE(ticket.ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  (void)p.receive(ack_of(lines[0], '2', "done"), at(5999ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_ok);
+  CHECK(ev[0].ticket == ticket.value);
+  CHECK(ev[0].detail == "done");
+  CHECK(ev[0].origin == message_origin::command);
+  p.tick(at(30000ms));
+  CHECK(sent(p).empty());
+  CHECK(events(p).empty());
+  CHECK(p.in_flight() == 0);
+}
+
+TEST_CASE("payload: an ack that never comes: 3 resends, 5 s apart, then failure") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  bpabt cmd;
+  (void)cmd.message.assign("test");
+  const auto ticket = p.send(cmd, at(0ms));
+  REQUIRE(ticket.ok());
+  const auto first = sent(p);
+  REQUIRE(first.size() == 1);
+  CHECK(address(first[0]) == "BPABT");
+
+  p.tick(at(4999ms));
+  CHECK(sent(p).empty());
+  CHECK(p.next_deadline() == at(5000ms));
+  for (std::uint32_t n = 2; n <= 4; ++n) {
+    p.tick(at(std::chrono::milliseconds(5000 * (n - 1))));
+    const auto again = sent(p);
+    REQUIRE(again.size() == 1);
+    CHECK(again[0] == first[0]);  // the same bytes: an ack of any copy matches
+    const auto ev = events(p);
+    REQUIRE(ev.size() == 1);
+    CHECK(ev[0].kind == payload_event_kind::command_resent);
+    CHECK(ev[0].count == n);
+    CHECK(ev[0].ticket == ticket.value);
+  }
+  p.tick(at(19999ms));
+  CHECK(events(p).empty());
+  p.tick(at(20000ms));
+  CHECK(sent(p).empty());
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::command_failed_after_retries);
+  CHECK(ev[0].count == 4);
+  CHECK(ev[0].command == "BPABT");
+  CHECK(p.awaiting() == nullptr);
+}
+
+TEST_CASE("payload: the resend count is configurable") {
+  payload_config c = quiet();
+  c.max_resends = 1;
+  c.resend_after = 2000ms;
+  payload_session<> p(c);
+  started_with_acks(p, at(0ms));
+  REQUIRE(p.subscribe("NVG", at(0ms)).ok());
+  CHECK(sent(p).size() == 1);
+  p.tick(at(2000ms));
+  CHECK(sent(p).size() == 1);
+  p.tick(at(4000ms));
+  CHECK(sent(p).empty());
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 2);
+  CHECK(ev[1].kind == payload_event_kind::command_failed_after_retries);
+  CHECK(ev[1].count == 2);
+}
+
+TEST_CASE("payload: pending, then the final ack within 2 s") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  REQUIRE(p.send(bpver{{}, "1.0"}, at(0ms)).ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  (void)p.receive(ack_of(lines[0], '3', "working"), at(4000ms));
+  auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_pending);
+  CHECK(ev[0].detail == "working");
+  // Pending: the vehicle has it, so the 5 s resend no longer applies.
+  p.tick(at(5500ms));
+  CHECK(sent(p).empty());
+  CHECK(events(p).empty());
+  (void)p.receive(ack_of(lines[0], '1', "no"), at(5999ms));
+  ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_failed);
+  CHECK(ev[0].detail == "no");
+  CHECK(p.awaiting() == nullptr);
+}
+
+TEST_CASE("payload: pending, then nothing: ack_timeout 2 s later and the queue moves on") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  REQUIRE(p.subscribe("NVG", at(0ms)).ok());
+  REQUIRE(p.subscribe("NVR", at(0ms)).ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  (void)p.receive(ack_of(lines[0], '3'), at(1000ms));
+  (void)events(p);
+  CHECK(p.next_deadline() == at(3000ms));
+  p.tick(at(2999ms));
+  CHECK(events(p).empty());
+  CHECK(sent(p).empty());
+  p.tick(at(3000ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_timeout);
+  CHECK(ev[0].command == "BPLOG");
+  const auto next = sent(p);
+  REQUIRE(next.size() == 1);
+  CHECK(next[0] == sealed("BPLOG,NVR,ON"));
+}
+
+TEST_CASE("payload: unrelated traffic between a command and its ack") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  bpsts st{{}, false, "sonar fault"};
+  const auto ticket = p.send(st, at(100ms));
+  REQUIRE(ticket.ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  for (const char* body :
+       {"BFNVG,120000.100,4218.0,N,07106.0,W,1,,2.5,45.0,0.1,-0.2,",
+        "BFNVR,120000.110,0.1,0.2,0,0,0,0", "BFMIS,120000.200,dive.xml,Running,",
+        "BFACK,120000.250,LOG,,,2,0,,", "BFVER,120000.300,1.0", "BFXYZ,120000.310,future"}) {
+    REQUIRE(p.receive(sealed(body), at(200ms)).ok());
+  }
+  CHECK(p.vehicle_version() == "1.0");
+  // The LOG ack matched nothing in flight: reported, the STS command still awaits its own.
+  auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::unmatched_ack);
+  REQUIRE(p.awaiting() != nullptr);
+  CHECK(p.awaiting()->ticket == ticket.value);
+  (void)p.receive(ack_of(lines[0], '2'), at(300ms));
+  ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_ok);
+  CHECK(ev[0].ticket == ticket.value);
+  CHECK(ev[0].command == "BPSTS");
+}
+
+TEST_CASE("payload: an ack whose command timestamp matches nothing is reported, queue intact") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  REQUIRE(p.send(bpver{{}, "1.0"}, at(500ms)).ok());
+  REQUIRE(p.subscribe("NVG", at(500ms)).ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(stamp_of(lines[0]) == "000000.500");
+
+  // Right name, wrong timestamp; and right timestamp, wrong name.
+  (void)p.receive(sealed("BFACK,000001.000,VER,000000.400,,2,0,,"), at(600ms));
+  (void)p.receive(sealed("BFACK,000001.000,STS,000000.500,,2,0,,"), at(600ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 2);
+  CHECK(ev[0].kind == payload_event_kind::unmatched_ack);
+  CHECK(ev[0].command == "VER");
+  CHECK(ev[0].command_timestamp == time_of_day{0, 0, 0, 400, 3});
+  CHECK(ev[1].kind == payload_event_kind::unmatched_ack);
+  CHECK(ev[1].command == "STS");
+  REQUIRE(p.awaiting() != nullptr);
+  CHECK(p.awaiting()->address() == "BPVER");
+  CHECK(p.queued() == 1);
+  CHECK(sent(p).empty());
+
+  // The echo may carry fewer digits than were sent: 000000.50 names 000000.500.
+  (void)p.receive(sealed("BFACK,000001.000,VER,000000.50,,2,0,,"), at(700ms));
+  CHECK(events(p).at(0).kind == payload_event_kind::ack_ok);
+  CHECK(sent(p) == std::vector<std::string>{sealed("BPLOG,NVG,ON")});
+}
+
+TEST_CASE("payload: commands wait behind the one awaiting its ack, in order") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  const auto a = p.subscribe("NVG", at(0ms));
+  const auto b = p.subscribe("NVR", at(0ms));
+  const auto c = p.send(bpsts{{}, true, "ready"}, at(0ms));
+  REQUIRE((a.ok() && b.ok() && c.ok()));
+  CHECK(a.value < b.value);
+  CHECK(b.value < c.value);
+  auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPLOG,NVG,ON"));
+  CHECK(p.queued() == 2);
+  p.tick(at(4000ms));
+  CHECK(sent(p).empty());
+
+  (void)p.receive(ack_of(lines[0], '2'), at(4100ms));
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPLOG,NVR,ON"));
+  CHECK(p.queued() == 1);
+  (void)p.receive(ack_of(lines[0], '0', "unknown code"), at(4200ms));
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(address(lines[0]) == "BPSTS");
+  CHECK(stamp_of(lines[0]) == "000004.200");  // stamped when sent, not when queued
+  CHECK(p.queued() == 0);
+
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 2);
+  CHECK(ev[0].kind == payload_event_kind::ack_ok);
+  CHECK(ev[0].ticket == a.value);
+  CHECK(ev[1].kind == payload_event_kind::ack_invalid);
+  CHECK(ev[1].ticket == b.value);
+  CHECK(ev[1].detail == "unknown code");
+}
+
+TEST_CASE("payload: abort goes out at once, ahead of a command awaiting its ack") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  REQUIRE(p.subscribe("NVG", at(0ms)).ok());
+  REQUIRE(p.subscribe("NVR", at(0ms)).ok());
+  (void)sent(p);
+  const auto t = p.abort("leak", at(1000ms), abort_reason::with_errors);
+  REQUIRE(t.ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPABT,000001.000,leak,1"));
+  CHECK(p.queued() == 1);
+  (void)p.receive(ack_of(lines[0], '2'), at(1100ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].ticket == t.value);
+  CHECK(ev[0].command == "BPABT");
+  CHECK(p.awaiting()->address() == "BPLOG");  // the queue is where it was
+}
+
+TEST_CASE("payload: timestamps are distinct, so (name, timestamp) names one message") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  REQUIRE(p.abort("a", at(1000ms)).ok());
+  REQUIRE(p.abort("b", at(1000ms)).ok());
+  const auto lines = sent(p);
+  REQUIRE(lines.size() == 2);
+  CHECK(stamp_of(lines[0]) == "000001.000");
+  CHECK(stamp_of(lines[1]) == "000001.001");
+  (void)p.receive(ack_of(lines[1], '1'), at(1200ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_failed);
+  CHECK(ev[0].command_timestamp == time_of_day{0, 0, 1, 1, 3});
+  CHECK(p.in_flight() == 1);
+}
+
+TEST_CASE("payload: the UTC clock follows the vehicle's timestamps") {
+  payload_config c = quiet();
+  c.sync_utc_from_vehicle = true;
+  payload_session<> p(c);
+  (void)p.receive(sealed("BFCTL,235959.500,0"), at(10000ms));
+  REQUIRE(p.abort("x", at(11000ms)).ok());
+  CHECK(stamp_of(sent(p).at(0)) == "000000.500");  // past midnight
+  p.set_utc(at(12000ms), time_of_day{8, 0, 0, 0, 0});
+  REQUIRE(p.abort("y", at(12250ms)).ok());
+  CHECK(stamp_of(sent(p).at(0)) == "080000.250");
+}
+
+TEST_CASE("payload: BPRMB keep-alive at request_timeout - margin, with a fresh timestamp") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  // Not in control: held, not sent.
+  REQUIRE(p.set_request(heading_request(90), at(1000ms)).ok());
+  CHECK(sent(p).empty());
+  (void)p.receive(sealed("BFCTL,000002.000,1"), at(2000ms));
+  CHECK(p.has_control());
+  CHECK(events(p).at(0).kind == payload_event_kind::control_gained);
+  auto lines = with_address(sent(p), "BPRMB");
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPRMB,000002.000,90,,,,,0"));
+
+  CHECK(p.next_deadline() == at(6000ms));
+  p.tick(at(5999ms));
+  CHECK(sent(p).empty());
+  p.tick(at(6000ms));
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPRMB,000006.000,90,,,,,0"));
+  p.tick(at(9999ms));
+  CHECK(sent(p).empty());
+  p.tick(at(10000ms));
+  CHECK(sent(p).size() == 1);
+
+  // A new request goes out at once and restarts the interval.
+  REQUIRE(p.set_request(heading_request(180), at(11000ms)).ok());
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPRMB,000011.000,180,,,,,0"));
+  p.tick(at(14999ms));
+  CHECK(sent(p).empty());
+  p.tick(at(15000ms));
+  CHECK(sent(p).size() == 1);
+
+  // The keep-alive's own acks are matched quietly.
+  (void)p.receive(ack_of(lines[0], '2'), at(15100ms));
+  CHECK(events(p).empty());
+
+  p.clear_request();
+  p.tick(at(30000ms));
+  CHECK(sent(p).empty());
+}
+
+TEST_CASE("payload: the keep-alive margin is configurable") {
+  payload_config c = quiet();
+  c.keep_alive_margin = 250ms;
+  payload_session<> p(c);
+  p.start(at(0ms));
+  (void)sent(p);
+  (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
+  REQUIRE(p.set_request(heading_request(10), at(0ms)).ok());
+  CHECK(sent(p).size() == 1);
+  p.tick(at(4749ms));
+  CHECK(sent(p).empty());
+  p.tick(at(4750ms));
+  CHECK(sent(p).size() == 1);
+  CHECK(p.keep_alive_interval() == 4750ms);
+}
+
+TEST_CASE("payload: losing control stops the keep-alive and drops the request") {
+  SECTION("BFCTL 0") {
+    payload_session<> p(quiet());
+    started_with_acks(p, at(0ms));
+    (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
+    REQUIRE(p.set_request(heading_request(90), at(0ms)).ok());
+    CHECK(sent(p).size() == 1);
+    (void)p.receive(sealed("BFCTL,000003.000,0"), at(3000ms));
+    CHECK_FALSE(p.has_control());
+    const auto ev = events(p);
+    REQUIRE(ev.size() == 2);
+    CHECK(ev[1].kind == payload_event_kind::control_lost);
+    CHECK(ev[1].detail == "BFCTL 0");
+    CHECK_FALSE(p.current_request().has_value());
+    p.tick(at(4000ms));
+    p.tick(at(60000ms));
+    CHECK(sent(p).empty());
+    // Control comes back: the old request is not revived.
+    (void)p.receive(sealed("BFCTL,000100.000,1"), at(100000ms));
+    p.tick(at(110000ms));
+    CHECK(sent(p).empty());
+  }
+  SECTION("the mission leaves Running") {
+    payload_session<> p(quiet());
+    (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
+    REQUIRE(p.set_request(heading_request(90), at(0ms)).ok());
+    (void)sent(p);
+    // A status starting with "Running" (with its log dir) keeps control.
+    (void)p.receive(sealed("BFMIS,000001.000,d.xml,Running /log/7,"), at(1000ms));
+    CHECK(p.has_control());
+    (void)p.receive(sealed("BFMIS,000002.000,d.xml,Aborting,leak"), at(2000ms));
+    CHECK_FALSE(p.has_control());
+    const auto ev = events(p);
+    REQUIRE(ev.size() == 2);
+    CHECK(ev[1].kind == payload_event_kind::control_lost);
+    CHECK(ev[1].detail == "Aborting");
+    p.tick(at(4000ms));
+    CHECK(sent(p).empty());
+  }
+}
+
+TEST_CASE("payload: a refused keep-alive is reported; BFSHT is a shutdown event") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
+  REQUIRE(p.set_request(heading_request(90), at(0ms)).ok());
+  const auto lines = sent(p);
+  (void)p.receive(ack_of(lines.at(0), '1', "dynamic requests not allowed"), at(100ms));
+  (void)p.receive(sealed("BFSHT,000000.200"), at(200ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 3);
+  CHECK(ev[1].kind == payload_event_kind::ack_failed);
+  CHECK(ev[1].origin == message_origin::request);
+  CHECK(ev[1].ticket == 0);
+  CHECK(ev[1].detail == "dynamic requests not allowed");
+  CHECK(ev[2].kind == payload_event_kind::shutdown);
+}
+
+TEST_CASE("payload: BPSTS heartbeat at the configured period") {
+  payload_config c = quiet();
+  c.heartbeat_period = 2000ms;
+  c.want_acks = false;
+  payload_session<> p(c);
+  REQUIRE(p.set_status(false, "sonar offline"));
+  CHECK_FALSE(p.set_status(true, "bad, text"));
+  p.start(at(0ms));
+  auto lines = sent(p);
+  REQUIRE(lines.size() == 2);
+  CHECK(address(lines[0]) == "BPVER");
+  CHECK(lines[1] == sealed("BPSTS,000000.001,0,sonar offline"));
+  p.tick(at(1999ms));
+  CHECK(sent(p).empty());
+  p.tick(at(2000ms));
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPSTS,000002.000,0,sonar offline"));
+  REQUIRE(p.set_status(true, "all good"));
+  p.tick(at(4100ms));
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0] == sealed("BPSTS,000004.100,1,all good"));
+  // Late: the next one is due on the original grid.
+  CHECK(p.next_deadline() == at(6000ms));
+}
+
+TEST_CASE("payload: full queues are reported, never silent") {
+  SECTION("the command queue refuses") {
+    payload_session<2> p(quiet());
+    started_with_acks(p, at(0ms));
+    REQUIRE(p.subscribe("NVG", at(0ms)).ok());  // in flight
+    REQUIRE(p.subscribe("NVR", at(0ms)).ok());
+    REQUIRE(p.subscribe("MIS", at(0ms)).ok());
+    const auto r = p.subscribe("CTL", at(0ms));
+    CHECK(r.ec == errc::buffer_too_small);
+  }
+  SECTION("bad values are refused when handed in") {
+    payload_session<> p(quiet());
+    const auto r = p.send(bpsts{{}, true, "a*b"}, at(0ms));
+    CHECK(r.ec == errc::bad_text);
+    CHECK(r.field == 3);
+    CHECK(p.subscribe("nvg", at(0ms)).ec == errc::bad_text);
+    CHECK(p.subscribe("NVGS", at(0ms)).ec == errc::bad_text);
+    bprmb bad = heading_request(1);
+    bad.speed_mode = static_cast<speed_mode>('5');
+    const auto s = p.set_request(bad, at(0ms));
+    CHECK(s.ec == errc::bad_enum);
+    CHECK(s.field == 6);
+  }
+  SECTION("the outbox overflows: reported, and sent once there is room") {
+    payload_session<16, 2> p(quiet());
+    p.start(at(0ms));  // BPVER + ACK ON fill the outbox
+    (void)p.receive(sealed("BFACK,000000.000,LOG,,,2,0,,"), at(10ms));
+    REQUIRE(p.subscribe("NVG", at(20ms)).ok());
+    const auto ev = events(p);
+    REQUIRE(ev.size() == 2);
+    CHECK(ev[0].kind == payload_event_kind::ack_ok);
+    CHECK(ev[1].kind == payload_event_kind::outbox_overflow);
+    CHECK(ev[1].command == "BPLOG");
+    CHECK(p.outbox_overflows() == 1);
+    CHECK(sent(p).size() == 2);
+    p.tick(at(30ms));
+    CHECK(sent(p) == std::vector<std::string>{sealed("BPLOG,NVG,ON")});
+  }
+  SECTION("events beyond the queue are counted in one events_lost event") {
+    payload_session<16, 16, 3> p(quiet());
+    for (int i = 0; i < 6; ++i) (void)p.receive(sealed("BFSHT,000000.000"), at(0ms));
+    const auto ev = events(p);
+    REQUIRE(ev.size() == 3);
+    CHECK(ev[0].kind == payload_event_kind::shutdown);
+    CHECK(ev[1].kind == payload_event_kind::shutdown);
+    CHECK(ev[2].kind == payload_event_kind::events_lost);
+    CHECK(ev[2].count == 4);
+    CHECK(p.events_lost() == 4);
+  }
+}
+
+TEST_CASE("payload: time never runs backwards") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(10000ms));
+  REQUIRE(p.abort("x", at(5000ms)).ok());  // taken as 10 s (BPVER already has 10.000)
+  CHECK(stamp_of(sent(p).at(0)) == "000010.001");
+  p.tick(at(14999ms));
+  CHECK(sent(p).empty());
+  p.tick(at(15000ms));
+  CHECK(sent(p).size() == 1);
+}
+
+// =============================================================================================
+// vehicle side
+
+namespace {
+/// A vehicle with one client that asked for acks.
+template <class V>
+client_id connected_with_acks(V& v, time_point now) {
+  const auto c = v.connect(now);
+  REQUIRE(c.has_value());
+  const auto hello = sent(v);
+  REQUIRE(hello.size() == 1);
+  CHECK(address(hello[0]) == "BFVER");
+  REQUIRE(v.receive(*c, "$BPLOG,ACK,ON*1E\r\n", now).ok());
+  const auto ack = sent(v);
+  REQUIRE(ack.size() == 1);
+  CHECK(ack[0].find(",LOG,,,2,0,,*") != std::string::npos);
+  return *c;
+}
+
+bfack decoded_ack(const std::string& line) {
+  const auto r = decode<bfack>(line, from_vehicle_policy);
+  REQUIRE(r.ok());
+  return r.value;
+}
+}  // namespace
+
+TEST_CASE("vehicle: BFVER on connect; no acks until ACK ON; ACK OFF is not acked") {
+  vehicle_session<2> v;
+  const auto c = v.connect(at(1500ms));
+  REQUIRE(c == client_id{0});
+  CHECK(sent(v) == std::vector<std::string>{sealed("BFVER,000001.500,1.0")});
+  REQUIRE(v.receive(*c, sealed("BPVER,000001.600,1.0"), at(1600ms)).ok());
+  CHECK(v.payload_version(*c) == "1.0");
+  CHECK(sent(v).empty());  // acks not asked for
+  REQUIRE(v.receive(*c, "$BPLOG,ACK,ON*1e\r\n", at(1700ms)).ok());
+  auto lines = sent(v);
+  REQUIRE(lines.size() == 1);
+  const bfack on = decoded_ack(lines[0]);
+  CHECK(on.command == "LOG");
+  CHECK_FALSE(on.command_timestamp.has_value());
+  CHECK(on.status == ack_status::ok);
+  REQUIRE(v.receive(*c, sealed("BPLOG,ACK,OFF"), at(1800ms)).ok());
+  CHECK(sent(v).empty());
+  // Two clients at most here.
+  CHECK(v.connect(at(0ms)).has_value());
+  CHECK_FALSE(v.connect(at(0ms)).has_value());
+}
+
+TEST_CASE("vehicle: BPLOG subscriptions per client; ALL does not include ACK") {
+  vehicle_session<> v;
+  const client_id a = connected_with_acks(v, at(0ms));
+  const client_id b = *v.connect(at(0ms));
+  (void)sent(v);
+
+  REQUIRE(v.receive(a, "$BPLOG,ALL,ON*16", at(0ms)).ok());
+  CHECK(v.should_send(a, "NVG"));
+  CHECK(v.should_send(a, "BFNVR"));
+  CHECK(v.should_send(a, "MIS"));
+  CHECK(v.should_send(a, "ACK"));  // asked for by name before
+  CHECK_FALSE(v.should_send(b, "NVG"));
+  CHECK(v.should_send(b, "SHT"));  // commands go to everyone
+  CHECK(v.should_send(b, "VER"));
+  CHECK_FALSE(v.should_send(b, "ACK"));
+
+  REQUIRE(v.receive(b, "$BPLOG,ALL,ON*16", at(0ms)).ok());
+  CHECK(v.should_send(b, "NVG"));
+  CHECK_FALSE(v.should_send(b, "ACK"));  // ALL never includes ACK
+
+  REQUIRE(v.receive(a, sealed("BPLOG,NVG,OFF"), at(0ms)).ok());
+  CHECK_FALSE(v.should_send(a, "NVG"));
+  CHECK(v.should_send(a, "NVR"));
+  REQUIRE(v.receive(a, sealed("BPLOG,ALL,OFF"), at(0ms)).ok());
+  CHECK_FALSE(v.should_send(a, "NVR"));
+  CHECK(v.should_send(a, "ACK"));  // ALL OFF leaves ACK as it was
+  REQUIRE(v.receive(a, sealed("BPLOG,CTL,ON"), at(0ms)).ok());
+  CHECK(v.should_send(a, "CTL"));
+  CHECK_FALSE(v.should_send(a, "NVG"));
+  CHECK_FALSE(v.should_send(7, "NVG"));  // no such client
+
+  (void)sent(v);
+  bfnvg nav;
+  nav.timestamp = time_of_day{1, 0, 0, 0, 3};
+  nav.lat = latitude::from_degrees(42.5).value;
+  nav.lon = longitude::from_degrees(-71.25).value;
+  const auto n = v.publish(nav, at(0ms));
+  REQUIRE(n.ok());
+  CHECK(n.value == 1);  // b only: a turned NVG off
+  const auto out = v.poll_send();
+  REQUIRE(out.has_value());
+  CHECK(out->client == b);
+  CHECK(address(std::string(out->view())) == "BFNVG");
+}
+
+TEST_CASE("vehicle: ack status codes") {
+  vehicle_session<> v;
+  const client_id c = connected_with_acks(v, at(0ms));
+
+  SECTION("ok, echoing the command's timestamp") {
+    REQUIRE(v.receive(c, "$BPSTS,231133.12,1,BWSI Autonomy OK*46", at(10ms)).ok());
+    const bfack a = decoded_ack(sent(v).at(0));
+    CHECK(a.command == "STS");
+    CHECK(a.command_timestamp == time_of_day{23, 11, 33, 12, 2});
+    CHECK(a.status == ack_status::ok);
+    REQUIRE(v.payload_status(c).has_value());
+    CHECK(v.payload_status(c)->message == "BWSI Autonomy OK");
+  }
+  SECTION("failed: BPRMB while dynamic requests are not allowed") {
+    REQUIRE(v.receive(c, "$BPRMB,231204.72,-15,,,750,0,1*54", at(10ms)).ok());
+    const bfack a = decoded_ack(sent(v).at(0));
+    CHECK(a.command == "RMB");
+    CHECK(a.command_timestamp == time_of_day{23, 12, 4, 72, 2});
+    CHECK(a.status == ack_status::failed);
+    CHECK(a.description == text<96>("dynamic requests not allowed"));
+    CHECK_FALSE(v.current_request().has_value());
+  }
+  SECTION("invalid: a field that does not decode, named in the description") {
+    const auto r = v.receive(c, sealed("BPRMB,231204.72,-15,5,7,750,0,1"), at(10ms));
+    CHECK(r.ec == errc::bad_enum);
+    const bfack a = decoded_ack(sent(v).at(0));
+    CHECK(a.command == "RMB");
+    CHECK(a.command_timestamp == time_of_day{23, 12, 4, 72, 2});
+    CHECK(a.status == ack_status::invalid);
+    CHECK(a.description == text<96>("bad_enum in field 4 (depth_mode)"));
+    const auto ev = events(v);
+    REQUIRE(ev.size() == 1);
+    CHECK(ev[0].kind == vehicle_event_kind::invalid_command);
+    CHECK(ev[0].error == errc::bad_enum);
+    CHECK(ev[0].field == 4);
+    CHECK(ev[0].command == "BPRMB");
+  }
+  SECTION("invalid: an unknown message") {
+    REQUIRE(v.receive(c, sealed("BPRTK,120000.00,1,2,3"), at(10ms)).ok());
+    const bfack a = decoded_ack(sent(v).at(0));
+    CHECK(a.command == "RTK");
+    CHECK(a.command_timestamp == time_of_day{12, 0, 0, 0, 2});
+    CHECK(a.status == ack_status::invalid);
+    CHECK(events(v).at(0).error == errc::unknown_address);
+  }
+  SECTION("invalid: a wrong checksum; a BPLOG code that is not letters") {
+    CHECK(v.receive(c, "$BPLOG,NVG,ON*11", at(10ms)).ec == errc::checksum_mismatch);
+    bfack a = decoded_ack(sent(v).at(0));
+    CHECK(a.command == "LOG");
+    CHECK(a.status == ack_status::invalid);
+    CHECK(a.description == text<96>("checksum_mismatch"));
+    CHECK_FALSE(v.should_send(c, "NVG"));
+    REQUIRE(v.receive(c, sealed("BPLOG,n-g,ON"), at(10ms)).ok());
+    a = decoded_ack(sent(v).at(0));
+    CHECK(a.status == ack_status::invalid);
+    CHECK(a.description == text<96>("bad_text in field 1 (code)"));
+  }
+  SECTION("a line without even an address is not acked, but reported") {
+    CHECK(v.receive(c, "hello", at(10ms)).ec == errc::missing_start);
+    CHECK(sent(v).empty());
+    const auto ev = events(v);
+    REQUIRE(ev.size() == 1);
+    CHECK(ev[0].kind == vehicle_event_kind::invalid_command);
+    CHECK(ev[0].error == errc::missing_start);
+  }
+  SECTION("a command without a checksum is fine") {
+    REQUIRE(v.receive(c, "$BPVER,120000.00,1.0\r\n", at(10ms)).ok());
+    CHECK(decoded_ack(sent(v).at(0)).status == ack_status::ok);
+  }
+  SECTION("abort") {
+    REQUIRE(v.receive(c, "$BPABT,081025.987,leak detected,1*6B", at(10ms)).ok());
+    CHECK(decoded_ack(sent(v).at(0)).status == ack_status::ok);
+    const auto ev = events(v);
+    REQUIRE(ev.size() == 1);
+    CHECK(ev[0].kind == vehicle_event_kind::abort_requested);
+    CHECK(ev[0].command_timestamp == time_of_day{8, 10, 25, 987, 3});
+  }
+}
+
+TEST_CASE("vehicle: pending, then the final ack") {
+  SECTION("completed automatically") {
+    vehicle_config cfg;
+    cfg.pending.abt = true;
+    cfg.complete_pending_after = 1500ms;
+    vehicle_session<> v(cfg);
+    const client_id c = connected_with_acks(v, at(0ms));
+    REQUIRE(v.receive(c, "$BPABT,081025.987,leak detected,1*6B", at(100ms)).ok());
+    const bfack first = decoded_ack(sent(v).at(0));
+    CHECK(first.status == ack_status::pending);
+    CHECK(v.next_deadline() == at(1600ms));
+    v.tick(at(1599ms));
+    CHECK(sent(v).empty());
+    v.tick(at(1600ms));
+    const bfack final_ack = decoded_ack(sent(v).at(0));
+    CHECK(final_ack.status == ack_status::ok);
+    CHECK(final_ack.command == "ABT");
+    CHECK(final_ack.command_timestamp == first.command_timestamp);
+  }
+  SECTION("completed by the caller") {
+    vehicle_config cfg;
+    cfg.pending.ver = true;
+    cfg.complete_pending_after = std::nullopt;
+    vehicle_session<> v(cfg);
+    const client_id c = connected_with_acks(v, at(0ms));
+    REQUIRE(v.receive(c, "$BPVER,081025.987,1.0*6A", at(100ms)).ok());
+    CHECK(decoded_ack(sent(v).at(0)).status == ack_status::pending);
+    const auto ev = events(v);
+    REQUIRE(ev.size() == 1);
+    CHECK(ev[0].kind == vehicle_event_kind::command_pending);
+    v.tick(at(60000ms));
+    CHECK(sent(v).empty());
+    CHECK_FALSE(v.complete(ev[0].ticket + 1, ack_status::ok, "", at(60000ms)));
+    CHECK(v.complete(ev[0].ticket, ack_status::failed, "unsupported version", at(60000ms)));
+    const bfack final_ack = decoded_ack(sent(v).at(0));
+    CHECK(final_ack.status == ack_status::failed);
+    CHECK(final_ack.description == text<96>("unsupported version"));
+  }
+}
+
+TEST_CASE("vehicle: BPRMB holds for 5 s; 4.999 s keeps it, 5.000 s loses it") {
+  vehicle_config cfg;
+  cfg.control_allowed = true;
+  vehicle_session<> v(cfg);
+  const client_id c = *v.connect(at(0ms));
+  REQUIRE(v.receive(c, "$BPRMB,000000.00,90,,,,,0", at(1000ms)).ok());
+  CHECK(v.request_active(at(1000ms)));
+  CHECK(v.current_request()->heading == decimal(90));
+  CHECK(events(v).at(0).kind == vehicle_event_kind::request_started);
+
+  // 4.999 s later a BPRMB keeps the request going.
+  CHECK(v.request_active(at(5999ms)));
+  REQUIRE(v.receive(c, "$BPRMB,000005.00,95,,,,,0", at(5999ms)).ok());
+  CHECK(events(v).empty());
+  CHECK(v.current_request()->heading == decimal(95));
+  CHECK(v.next_deadline() == at(10999ms));
+
+  // Then nothing: at exactly 5.000 s the request has expired.
+  v.tick(at(10998ms));
+  CHECK(events(v).empty());
+  CHECK(v.request_active(at(10998ms)));
+  CHECK_FALSE(v.request_active(at(10999ms)));
+  v.tick(at(10999ms));
+  const auto ev = events(v);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == vehicle_event_kind::request_expired);
+  CHECK_FALSE(v.current_request().has_value());
+
+  // A BPRMB arriving exactly at the boundary is a new request, not a continuation.
+  REQUIRE(v.receive(c, "$BPRMB,000011.00,95,,,,,0", at(12000ms)).ok());
+  REQUIRE(v.receive(c, "$BPRMB,000016.00,95,,,,,0", at(17000ms)).ok());
+  const auto again = events(v);
+  REQUIRE(again.size() == 3);
+  CHECK(again[0].kind == vehicle_event_kind::request_started);
+  CHECK(again[1].kind == vehicle_event_kind::request_expired);
+  CHECK(again[2].kind == vehicle_event_kind::request_started);
+}
+
+TEST_CASE("vehicle: control handed over and back with BFCTL; revoking ends the request") {
+  vehicle_session<> v;
+  const client_id c = *v.connect(at(0ms));
+  const client_id quiet_client = *v.connect(at(0ms));
+  REQUIRE(v.receive(c, sealed("BPLOG,CTL,ON"), at(0ms)).ok());
+  (void)sent(v);
+  v.set_control(true, at(1000ms));
+  CHECK(v.control_allowed());
+  auto lines = sent(v);
+  REQUIRE(lines.size() == 1);  // only the client that asked for CTL
+  CHECK(lines[0] == sealed("BFCTL,000001.000,1"));
+  v.set_control(true, at(1100ms));
+  CHECK(sent(v).empty());  // no change, nothing sent
+  REQUIRE(v.receive(c, "$BPRMB,000001.20,90,,,,,0", at(1200ms)).ok());
+  (void)events(v);
+  v.set_control(false, at(2000ms));
+  CHECK(sent(v) == std::vector<std::string>{sealed("BFCTL,000002.000,0")});
+  CHECK(events(v).at(0).kind == vehicle_event_kind::request_cancelled);
+  CHECK_FALSE(v.request_active(at(2000ms)));
+
+  v.shutdown(at(3000ms));
+  const auto down = sent(v);
+  REQUIRE(down.size() == 2);  // commands reach every client
+  CHECK(down[0] == sealed("BFSHT,000003.000"));
+  (void)quiet_client;
+}
+
+// =============================================================================================
+// both sides
+
+TEST_CASE("a payload session driving a vehicle session for a minute") {
+  vehicle_session<> v;
+  payload_config pc;
+  pc.heartbeat_period = 1000ms;
+  payload_session<> p(pc);
+  time_point now = at(0ms);
+  const client_id c = *v.connect(now);
+  p.start(now);
+  REQUIRE(p.subscribe("ALL", now).ok());
+
+  std::vector<payload_event> pev;
+  std::vector<vehicle_event> vev;
+  int rmb_seen = 0;
+  int lost_requests = 0;
+  const auto exchange = [&] {
+    for (int round = 0; round < 3; ++round) {
+      while (auto l = p.poll_send()) {
+        if (address(std::string(l->view())) == "BPRMB") ++rmb_seen;
+        REQUIRE(v.receive(c, l->view(), now).ok());
+      }
+      while (auto l = v.poll_send()) REQUIRE(p.receive(l->view(), now).ok());
+    }
+    while (auto e = p.poll_event()) pev.push_back(*e);
+    while (auto e = v.poll_event()) {
+      if (e->kind == vehicle_event_kind::request_expired) ++lost_requests;
+      vev.push_back(*e);
+    }
+  };
+  exchange();
+  for (int step = 1; step <= 600; ++step) {
+    now = at(std::chrono::milliseconds(step * 100));
+    if (step == 50) v.set_control(true, now);
+    if (step == 60) REQUIRE(p.set_request(heading_request(45), now).ok());
+    if (step == 450) v.set_control(false, now);
+    p.tick(now);
+    v.tick(now);
+    exchange();
+  }
+  // Every command and heartbeat was acknowledged: no unmatched acks, failures or timeouts.
+  for (const auto& e : pev) {
+    INFO(static_cast<int>(e.kind));
+    CHECK((e.kind == payload_event_kind::ack_ok || e.kind == payload_event_kind::control_gained ||
+           e.kind == payload_event_kind::control_lost));
+  }
+  CHECK(p.vehicle_version() == "1.0");
+  CHECK(v.payload_version(c) == "1.0");
+  CHECK(v.should_send(c, "NVG"));
+  CHECK(v.should_send(c, "ACK"));
+  CHECK_FALSE(p.has_control());
+  // Control held from 6 s to 45 s: one BPRMB at once, then one every 4 s; never lost meanwhile.
+  CHECK(rmb_seen == 1 + (45000 - 6000) / 4000);
+  CHECK(lost_requests == 0);
+  CHECK(vev.back().kind == vehicle_event_kind::request_cancelled);
+}
