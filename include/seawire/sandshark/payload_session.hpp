@@ -193,9 +193,8 @@ class payload_session {
   }
 
   /// Queue a command; nothing queued is sent before start(). Its timestamp (field 1) is set
-  /// when it is sent. Returns its ticket, or
-  /// the encoder's errc and field for a value the spec forbids, or buffer_too_small when the
-  /// queue is full.
+  /// when it is sent. Returns its ticket; or the encoder's errc and field for a value the spec
+  /// forbids; or buffer_too_small when the queue is full.
   [[nodiscard]] constexpr result<std::uint32_t> send(const payload_message& m,
                                                      time_point now) noexcept {
     advance(now);
