@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// JSON for the ANELLO 0xAB00 binary frame, by the conventions of nmea/json.hpp:
+//
+//   {"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,"sog_mps":0.0,
+//    "cog_deg":null,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,...}
+//
+// Keys are the field names of anello::sensor_fields, except that the position is "latitude" and
+// "longitude" (signed decimal degrees) as in every other message. Values come from the wire's
+// integers, never through double: a field with resolution 0.1 has one fraction digit, latitude
+// six. "Not available" is null. gps_time is ISO 8601 UTC with milliseconds (a time outside the
+// years 1970..9999 is written as its integer milliseconds).
+//
+// Reading (read_frame_json) is strict like build_frame: a value is rounded to the field's
+// resolution (halves away from zero) and refused, with the field number 1..19, when it is outside
+// the spec's range or not carried by the wire type; null or absent is "not available".
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/anello/frame.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/json.hpp"
+
+namespace seawire::anello {
+
+/// The "type" of a frame in JSON.
+inline constexpr std::string_view frame_json_type = "AB00";
+
+namespace detail {
+
+/// The JSON key of a sensor field: its table name, with the position as latitude/longitude.
+[[nodiscard]] constexpr std::string_view json_key(std::string_view field_name) noexcept {
+  if (field_name == "latitude_deg") return "latitude";
+  if (field_name == "longitude_deg") return "longitude";
+  return field_name;
+}
+
+/// Fraction digits of a power-of-ten divisor (1 -> 0, 10 -> 1, 1'000'000 -> 6).
+[[nodiscard]] constexpr unsigned divisor_places(std::int64_t divisor) noexcept {
+  unsigned n = 0;
+  while (divisor > 1) {
+    divisor /= 10;
+    ++n;
+  }
+  return n;
+}
+
+// Civil date of days since 1970-01-01 (proleptic Gregorian; Howard Hinnant's algorithm).
+struct civil {
+  std::int64_t year;
+  unsigned month, day;
+};
+[[nodiscard]] constexpr civil civil_from_days(std::int64_t z) noexcept {
+  z += 719468;
+  const std::int64_t era = (z >= 0 ? z : z - 146096) / 146097;
+  const auto doe = static_cast<std::uint64_t>(z - era * 146097);
+  const std::uint64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+  const std::int64_t y = static_cast<std::int64_t>(yoe) + era * 400;
+  const std::uint64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+  const std::uint64_t mp = (5 * doy + 2) / 153;
+  const auto d = static_cast<unsigned>(doy - (153 * mp + 2) / 5 + 1);
+  const auto m = static_cast<unsigned>(mp < 10 ? mp + 3 : mp - 9);
+  return {m <= 2 ? y + 1 : y, m, d};
+}
+[[nodiscard]] constexpr std::int64_t days_from_civil(std::int64_t y, unsigned m,
+                                                     unsigned d) noexcept {
+  y -= m <= 2 ? 1 : 0;
+  const std::int64_t era = (y >= 0 ? y : y - 399) / 400;
+  const auto yoe = static_cast<std::uint64_t>(y - era * 400);
+  const std::uint64_t doy = (153 * (m > 2 ? m - 3 : m + 9) + 2) / 5 + d - 1;
+  const std::uint64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+  return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
+}
+
+// Milliseconds of 10000-01-01T00:00:00Z: ISO text is written below it.
+inline constexpr std::uint64_t iso_limit_ms = 253402300800000ULL;
+
+template <nmea::json_sink Sink>
+constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
+  if (ms >= iso_limit_ms) {
+    nmea::detail::json_uint(s, ms);
+    return;
+  }
+  const auto days = static_cast<std::int64_t>(ms / 86'400'000);
+  const std::uint64_t in_day = ms % 86'400'000;
+  const civil c = civil_from_days(days);
+  s.put('"');
+  nmea::detail::json_uint(s, static_cast<std::uint64_t>(c.year), 4);
+  s.put('-');
+  nmea::detail::json_uint(s, c.month, 2);
+  s.put('-');
+  nmea::detail::json_uint(s, c.day, 2);
+  s.put('T');
+  nmea::detail::json_uint(s, in_day / 3'600'000, 2);
+  s.put(':');
+  nmea::detail::json_uint(s, in_day / 60'000 % 60, 2);
+  s.put(':');
+  nmea::detail::json_uint(s, in_day / 1000 % 60, 2);
+  s.put('.');
+  nmea::detail::json_uint(s, in_day % 1000, 3);
+  s.put("Z\"");
+}
+
+/// "YYYY-MM-DDThh:mm:ss[.fff]Z" (0 to 3 fraction digits; "Z" or "+00:00" optional) or integer
+/// milliseconds, to milliseconds since 1970.
+[[nodiscard]] constexpr errc read_time_ms(const nmea::json_value& v, std::uint64_t& out) noexcept {
+  if (v.kind == nmea::json_kind::number) {
+    nmea::decimal d;
+    const errc e = nmea::detail::parse_decimal(v.text, false, d);
+    if (e != errc::ok || d.places != 0 || d.negative) return errc::bad_number;
+    out = d.mantissa;
+    return errc::ok;
+  }
+  if (v.kind != nmea::json_kind::string) return errc::bad_time;
+  std::string_view s = v.text;
+  if (s.ends_with('Z')) {
+    s.remove_suffix(1);
+  } else if (s.ends_with("+00:00")) {
+    s.remove_suffix(6);
+  }
+  unsigned y = 0, mo = 0, d = 0;
+  if (s.size() < 19 || s[4] != '-' || s[7] != '-' || (s[10] != 'T' && s[10] != ' ') ||
+      !nmea::detail::parse_fixed_digits(s, 0, 4, y) ||
+      !nmea::detail::parse_fixed_digits(s, 5, 2, mo) ||
+      !nmea::detail::parse_fixed_digits(s, 8, 2, d))
+    return errc::bad_date;
+  if (y < 1970 || mo < 1 || mo > 12) return errc::month_out_of_range;
+  if (d < 1 || d > nmea::detail::days_in_month(mo, y)) return errc::day_out_of_range;
+  const result<nmea::time_of_day> t = nmea::parse_time_text(s.substr(11));
+  if (!t) return t.ec;
+  if (t.value.places > 3 || t.value.second > 59) return errc::bad_time;
+  const std::uint64_t ms_of_day =
+      ((t.value.hour * 60ULL + t.value.minute) * 60ULL + t.value.second) * 1000ULL +
+      t.value.fraction * seawire::detail::pow10_table[3 - t.value.places];
+  out = static_cast<std::uint64_t>(days_from_civil(y, mo, d)) * 86'400'000ULL + ms_of_day;
+  return errc::ok;
+}
+
+/// A decimal at `places` fraction digits as an integer: round(value * 10^places), halves away
+/// from zero. value_too_large when it does not fit 63 bits.
+[[nodiscard]] constexpr errc scale_decimal(const nmea::decimal& d, unsigned places,
+                                           std::int64_t& out) noexcept {
+  std::uint64_t m = d.mantissa;
+  if (d.places > places) {
+    const std::uint64_t div = seawire::detail::pow10_table[d.places - places];
+    m = m / div + (m % div >= div / 2 ? 1 : 0);
+  } else {
+    for (unsigned k = d.places; k < places; ++k) {
+      if (m > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()) / 10)
+        return errc::value_too_large;
+      m *= 10;
+    }
+  }
+  if (m > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+    return errc::value_too_large;
+  out = d.negative ? -static_cast<std::int64_t>(m) : static_cast<std::int64_t>(m);
+  return errc::ok;
+}
+
+}  // namespace detail
+
+/// Whether `key` is a JSON key of the frame (for reporting unknown keys).
+[[nodiscard]] constexpr bool has_json_field(std::string_view key) noexcept {
+  bool found = false;
+  detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    found = found || detail::json_key(field.name) == key;
+    return !found;
+  });
+  return found;
+}
+
+/// A frame as one JSON object (no newline): "type":"AB00", then the 19 fields in table order.
+template <nmea::json_sink Sink>
+constexpr void write_json(Sink& s, const sensor_frame_raw& frame) noexcept {
+  s.put("{\"type\":\"");
+  s.put(frame_json_type);
+  s.put('"');
+  detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    using raw_type = typename field_type::raw_type;
+    const raw_type raw = frame.*field_type::raw_member;
+    s.put(",\"");
+    s.put(detail::json_key(field.name));
+    s.put("\":");
+    if (field.not_available(raw)) {
+      s.put("null");
+    } else if constexpr (std::is_same_v<typename field_type::value_type, time_ms>) {
+      detail::write_time_ms(s, static_cast<std::uint64_t>(raw));
+    } else {
+      nmea::decimal d;
+      d.negative = raw < 0;
+      d.mantissa = raw < 0 ? 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(raw))
+                           : static_cast<std::uint64_t>(raw);
+      d.places = static_cast<std::uint8_t>(detail::divisor_places(field.divisor));
+      nmea::write_json_value(s, d);
+    }
+    return true;
+  });
+  s.put('}');
+}
+
+/// Reads a frame from a JSON object: `lookup(object, key)` as for nmea::read_json (only
+/// object == "" is asked for). Errors as build_frame's: field = 1..19, column = its offset.
+template <class Lookup>
+[[nodiscard]] constexpr result<sensor_frame_raw> read_frame_json(Lookup&& lookup) noexcept {
+  result<sensor_frame_raw> out;
+  detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    using raw_type = typename field_type::raw_type;
+    raw_type& raw = out.value.*field_type::raw_member;
+    const nmea::json_value v = lookup(std::string_view{}, detail::json_key(field.name));
+    errc e = errc::ok;
+    if (v.blank()) {
+      raw = detail::not_available<raw_type>;
+      return true;
+    }
+    std::int64_t wire = 0;
+    if constexpr (std::is_same_v<typename field_type::value_type, time_ms>) {
+      std::uint64_t ms = 0;
+      e = detail::read_time_ms(v, ms);
+      if (e == errc::ok &&
+          ms > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+        e = errc::value_too_large;
+      wire = static_cast<std::int64_t>(ms);
+    } else {
+      nmea::decimal d;
+      e = nmea::detail::json_number(v, d);
+      if (e == errc::ok) e = detail::scale_decimal(d, detail::divisor_places(field.divisor), wire);
+      if (e == errc::value_too_large) e = field.refusal();
+    }
+    if (e == errc::ok) {
+      const auto [lo, hi] = field.wire_limits();
+      if (wire < lo || wire > hi || field.not_available(static_cast<raw_type>(wire))) {
+        e = field.refusal();
+      } else {
+        raw = static_cast<raw_type>(wire);
+      }
+    }
+    if (e == errc::ok) return true;
+    out.value = {};
+    out.ec = e;
+    out.field = number;
+    out.column = static_cast<std::uint16_t>(field.offset);
+    return false;
+  });
+  return out;
+}
+
+}  // namespace seawire::anello

@@ -1,0 +1,683 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// JSON for messages: write any message (anything with a description) as one JSON object, and
+// read a message back from the values of a JSON object. No JSON parser here: the reading side
+// takes values already tokenised (kind + text), so a program can use any JSON library that hands
+// out a number's text. Nothing goes through double, so numbers keep the digits the wire had.
+//
+//   $CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,...,164959.006*78
+//   {"type":"CPNVG","timestamp":"16:49:59.034","latitude":42.36185237,"longitude":-71.0908130,
+//    "position_quality":true,"altitude_m":0,"depth_m":0,"heading_deg":234.32964,...}
+//
+// The conventions, value type by value type (the same for fmt.hpp):
+//   "type"            the address as on the wire; talker + type for talker-agnostic messages
+//                     ("GPRMC", "IIRPM"); then every field under its declared name, wire order
+//   decimal           a JSON number with exactly the wire's digits: 203.10 stays 203.10, -0.0
+//                     stays -0.0. Zero-padded integer digits ("011.3") are not valid JSON and
+//                     are dropped (11.3): the value is kept, the padding is not.
+//   integers, flags   JSON numbers; 0/1 flags (bool) as false/true
+//   nmea_coordinate   (DDMM.mmm + hemisphere) signed decimal degrees, S and W negative, with
+//                     two more fraction digits than the wire's minutes: "4221.71114,N" (5
+//                     minute places) is 42.3618523 (7 places). Exact integer arithmetic both
+//                     ways, so reading that number back with minute places = its fraction digits
+//                     - 2 gives the wire's minutes digit for digit. 0.0 S prints as -0.0000...
+//   decimal_coordinate (RobotX "21.31198,N") signed decimal degrees, the wire's digits
+//   time_of_day       "hh:mm:ss" plus the wire's fraction digits: "08:10:25.987", "16:49:59.00"
+//   date              ISO "YYYY-MM-DD"
+//   enums             their wire spelling as a string: "A", "ON", "TRIAN"
+//   text<N>           a JSON string (quotes, backslashes and control characters escaped)
+//   std::optional     null when blank or absent on the wire
+//   anything else     with a codec: its wire text as a string (RobotX light pattern: "RGB")
+//
+// Reading (read_json<T>): each field from a json_value (kind + text, strings unescaped); absent
+// or null is "blank" (nullopt; an error for a required field except text, where it is ""). Numbers
+// may also come as strings, booleans as 0/1, times also as "hhmmss.sss", dates as "ddmmyy". The
+// wire precision of a position is taken from the number's digits (documented at
+// from_decimal_degrees) unless the object has "precision": {"<field>": n}.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/detail/ascii.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+namespace seawire::nmea {
+
+// ---------------------------------------------------------------------------------------------
+// sinks
+
+/// Where JSON text goes: anything with put(char) and put(std::string_view). The writers never
+/// check for room; a sink that can fill up remembers that it did (json_buffer::overflow()).
+template <class S>
+concept json_sink = requires(S& s, char c, std::string_view v) {
+  s.put(c);
+  s.put(v);
+};
+
+/// A sink of fixed capacity held by value. Text past the capacity is dropped and remembered.
+template <std::size_t N>
+class json_buffer {
+ public:
+  constexpr void put(char c) noexcept {
+    if (size_ < N) {
+      data_[size_++] = c;
+    } else {
+      overflow_ = true;
+    }
+  }
+  constexpr void put(std::string_view s) noexcept {
+    for (const char c : s) put(c);
+  }
+  constexpr void clear() noexcept {
+    size_ = 0;
+    overflow_ = false;
+  }
+  [[nodiscard]] constexpr std::string_view view() const noexcept { return {data_, size_}; }
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
+  /// Some text did not fit: view() holds a truncated, invalid document.
+  [[nodiscard]] constexpr bool overflow() const noexcept { return overflow_; }
+
+ private:
+  char data_[N]{};
+  std::size_t size_ = 0;
+  bool overflow_ = false;
+};
+
+/// How values are written: as JSON, or plain for people (fmt.hpp's default): times, dates,
+/// enums and other wire words without quotes; text still quoted and escaped, since it may hold
+/// spaces.
+enum class json_style : std::uint8_t { json, plain };
+
+// ---------------------------------------------------------------------------------------------
+// value conversions (both directions; not JSON-specific)
+
+namespace detail {
+
+template <class T>
+struct coordinate_traits;
+template <class A>
+struct coordinate_traits<nmea_coordinate<A>> {
+  using axis = A;
+  static constexpr bool nmea_form = true;
+};
+template <class A>
+struct coordinate_traits<decimal_coordinate<A>> {
+  using axis = A;
+  static constexpr bool nmea_form = false;
+};
+
+/// Rounds a decimal to at most `places` fraction digits (halves away from zero).
+[[nodiscard]] constexpr decimal round_places(decimal d, unsigned places) noexcept {
+  if (d.places <= places) return d;
+  const std::uint64_t div = seawire::detail::pow10_table[d.places - places];
+  d.mantissa = d.mantissa / div + (d.mantissa % div >= div / 2 ? 1 : 0);
+  d.places = static_cast<std::uint8_t>(places);
+  return d;
+}
+
+}  // namespace detail
+
+/// Signed decimal degrees of an NMEA position, exactly: two more fraction digits than the
+/// minutes have (at most 17), so the minutes can be recovered from them digit for digit.
+/// "4221.71114,N" -> 42.3618523; "0000.00,W" -> -0.0000 (sign from the hemisphere letter).
+template <class Axis>
+[[nodiscard]] constexpr decimal to_decimal_degrees(const nmea_coordinate<Axis>& c) noexcept {
+  // minutes / 60 at p + 2 places is minutes_mantissa * 100 / 60 = mantissa * 5 / 3, rounded;
+  // mantissa % 3 is never a half, so there are no ties.
+  decimal m = detail::round_places(c.minutes, 15);  // 180 * 10^17 must fit 64 bits
+  const std::uint64_t q = m.mantissa / 3;
+  const std::uint64_t r = m.mantissa % 3;
+  const std::uint64_t frac = 5 * q + (r == 0 ? 0 : (r == 1 ? 2 : 3));
+  decimal d;
+  d.places = static_cast<std::uint8_t>(m.places + 2);
+  d.mantissa = c.whole_degrees * seawire::detail::pow10_table[d.places] + frac;
+  d.negative = static_cast<char>(c.hemi) == Axis::negative;
+  return d;
+}
+
+/// Signed decimal degrees of a decimal-degrees position ("21.31198,S" -> -21.31198), the wire's
+/// digits (zero padding of the degrees is dropped).
+template <class Axis>
+[[nodiscard]] constexpr decimal to_decimal_degrees(const decimal_coordinate<Axis>& c) noexcept {
+  decimal d = c.value;
+  d.int_width = 0;
+  d.negative = static_cast<char>(c.hemi) == Axis::negative;
+  return d;
+}
+
+/// The NMEA position of signed decimal degrees given as written, exactly (no double):
+/// minutes rounded to `minute_places` digits (halves up), hemisphere from the sign (so -0.0 is
+/// S or W). minute_places < 0 picks the default: the number's fraction digits - 2, which gives
+/// back exactly the minutes to_decimal_degrees() started from, or 4 (0.0001' = 0.19 m) when the
+/// number has fewer than 3 fraction digits. out_of_range beyond 90/180 degrees or 12 places.
+template <class Coordinate>
+[[nodiscard]] constexpr result<Coordinate> from_decimal_degrees(decimal deg,
+                                                                int minute_places = -1) noexcept {
+  result<Coordinate> r;
+  using Axis = typename detail::coordinate_traits<Coordinate>::axis;
+  if constexpr (detail::coordinate_traits<Coordinate>::nmea_form) {
+    const unsigned p = minute_places >= 0 ? static_cast<unsigned>(minute_places)
+                       : deg.places >= 3  ? deg.places - 2u
+                                          : 4u;
+    if (p > 12) {
+      r.ec = errc::out_of_range;
+      return r;
+    }
+    unsigned qd = deg.places;
+    std::uint64_t whole = deg.mantissa / seawire::detail::pow10_table[qd];
+    std::uint64_t frac = deg.mantissa % seawire::detail::pow10_table[qd];
+    if (qd > 18) {  // keep frac * 6 inside 64 bits
+      frac = (frac + 5) / 10;
+      qd = 18;
+      if (frac == seawire::detail::pow10_table[18]) {
+        frac = 0;
+        ++whole;
+      }
+    }
+    // minutes * 10^p = frac * 60 * 10^p / 10^qd = frac * 6 * 10^(p + 1 - qd)
+    std::uint64_t m = 0;
+    if (p + 1 >= qd) {
+      m = frac * 6 * seawire::detail::pow10_table[p + 1 - qd];
+    } else {
+      const std::uint64_t div = seawire::detail::pow10_table[qd - p - 1];
+      m = (frac * 6 + div / 2) / div;
+    }
+    const std::uint64_t sixty = 60 * seawire::detail::pow10_table[p];
+    if (m >= sixty) {
+      m -= sixty;
+      ++whole;
+    }
+    if (whole > Axis::max_degrees || (whole == Axis::max_degrees && m != 0)) {
+      r.ec = Axis::error;
+      return r;
+    }
+    r.value.whole_degrees = static_cast<std::uint16_t>(whole);
+    r.value.minutes = decimal{};
+    r.value.minutes.mantissa = m;
+    r.value.minutes.places = static_cast<std::uint8_t>(p);
+    r.value.degree_digits = Axis::width;
+    r.value.hemi = static_cast<hemisphere>(deg.negative ? Axis::negative : Axis::positive);
+  } else {
+    decimal v = deg;
+    if (minute_places >= 0) {
+      if (minute_places > 18) {
+        r.ec = errc::out_of_range;
+        return r;
+      }
+      v = detail::round_places(v, static_cast<unsigned>(minute_places));
+      while (v.places < static_cast<unsigned>(minute_places)) {  // pad: 21.3 at 5 places
+        if (v.mantissa > 1'000'000'000'000'000'000ULL) {
+          r.ec = errc::number_too_long;
+          return r;
+        }
+        v.mantissa *= 10;
+        ++v.places;
+      }
+    }
+    v.negative = false;
+    v.int_width = 0;
+    if (v.compare(decimal(Axis::max_degrees)) > 0) {
+      r.ec = Axis::error;
+      return r;
+    }
+    r.value.value = v;
+    r.value.hemi = static_cast<hemisphere>(deg.negative ? Axis::negative : Axis::positive);
+  }
+  return r;
+}
+
+/// A time of day from "hh:mm:ss[.f]" (1 to 9 fraction digits after a point, kept) or the wire's
+/// "hhmmss[.f]". bad_time for other shapes, *_out_of_range for impossible values.
+[[nodiscard]] constexpr result<time_of_day> parse_time_text(std::string_view s) noexcept {
+  result<time_of_day> r;
+  const bool colons = s.size() >= 8 && s[2] == ':' && s[5] == ':';
+  const std::size_t step = colons ? 3 : 2;
+  const std::size_t end = colons ? 8 : 6;
+  unsigned h = 0, m = 0, sec = 0, frac = 0;
+  std::size_t places = 0;
+  bool ok = detail::parse_fixed_digits(s, 0, 2, h) && detail::parse_fixed_digits(s, step, 2, m) &&
+            detail::parse_fixed_digits(s, 2 * step, 2, sec);
+  if (ok && s.size() > end) {
+    places = s.size() - end - 1;
+    ok = s[end] == '.' && places >= 1 && places <= 9 &&
+         detail::parse_fixed_digits(s, end + 1, places, frac);
+  }
+  if (!ok) {
+    r.ec = errc::bad_time;
+    return r;
+  }
+  r.value = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m),
+             static_cast<std::uint8_t>(sec), frac, static_cast<std::uint8_t>(places)};
+  r.ec = codec<time_of_day>::check(r.value);
+  return r;
+}
+
+/// A date from ISO "YYYY-MM-DD" or the wire's "ddmmyy"; years 1980..2079, as the wire's.
+[[nodiscard]] constexpr result<date> parse_date_text(std::string_view s) noexcept {
+  result<date> r;
+  unsigned y = 0, m = 0, d = 0;
+  if (s.size() == 10 && s[4] == '-' && s[7] == '-' && detail::parse_fixed_digits(s, 0, 4, y) &&
+      detail::parse_fixed_digits(s, 5, 2, m) && detail::parse_fixed_digits(s, 8, 2, d)) {
+    r.value = {static_cast<std::uint16_t>(y), static_cast<std::uint8_t>(m),
+               static_cast<std::uint8_t>(d)};
+  } else if (s.size() == 6 && detail::parse_fixed_digits(s, 0, 2, d) &&
+             detail::parse_fixed_digits(s, 2, 2, m) && detail::parse_fixed_digits(s, 4, 2, y)) {
+    r.value = {static_cast<std::uint16_t>(y < 80 ? 2000 + y : 1900 + y),
+               static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(d)};
+  } else {
+    r.ec = errc::bad_date;
+    return r;
+  }
+  r.ec = codec<date>::check(r.value);
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// writing
+
+namespace detail {
+
+template <json_sink Sink>
+constexpr void json_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
+  char tmp[24];
+  unsigned n = 0;
+  do {
+    tmp[n++] = static_cast<char>('0' + v % 10);
+    v /= 10;
+  } while (v != 0);
+  while (n < min_digits && n < sizeof tmp) tmp[n++] = '0';
+  while (n > 0) s.put(tmp[--n]);
+}
+
+/// A JSON string's content: '"' and '\' escaped, every byte outside printable ASCII as
+/// \u00XX (so a stray byte >= 0x80 in rejected input still makes valid JSON, read as Latin-1).
+template <json_sink Sink>
+constexpr void json_escape(Sink& s, std::string_view text) noexcept {
+  std::size_t run = 0;  // start of the current run of plain characters
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7F && c != '"' && c != '\\') continue;
+    s.put(text.substr(run, i - run));
+    run = i + 1;
+    switch (c) {
+      case '"': s.put("\\\""); break;
+      case '\\': s.put("\\\\"); break;
+      case '\n': s.put("\\n"); break;
+      case '\r': s.put("\\r"); break;
+      case '\t': s.put("\\t"); break;
+      default:
+        s.put("\\u00");
+        s.put(seawire::detail::hex_digit_upper(c >> 4u));
+        s.put(seawire::detail::hex_digit_upper(c));
+    }
+  }
+  s.put(text.substr(run));
+}
+
+template <json_style Style, json_sink Sink>
+constexpr void json_string(Sink& s, std::string_view text) noexcept {
+  if constexpr (Style == json_style::json) {
+    s.put('"');
+    json_escape(s, text);
+    s.put('"');
+  } else {
+    s.put(text);
+  }
+}
+
+/// A decimal as a JSON number: no padding, the wire's fraction digits.
+template <json_sink Sink>
+constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
+  if (d.negative) s.put('-');
+  if (d.places > 19) return;
+  const std::uint64_t p = seawire::detail::pow10_table[d.places];
+  json_uint(s, d.mantissa / p);
+  if (d.places > 0) {
+    s.put('.');
+    json_uint(s, d.mantissa % p, d.places);
+  }
+}
+
+template <class T>
+struct is_optional : std::false_type {};
+template <class T>
+struct is_optional<std::optional<T>> : std::true_type {};
+
+template <class T>
+struct is_text : std::false_type {};
+template <std::size_t N>
+struct is_text<text<N>> : std::true_type {};
+
+template <class T>
+struct is_nmea_coordinate : std::false_type {};
+template <class A>
+struct is_nmea_coordinate<nmea_coordinate<A>> : std::true_type {};
+template <class T>
+struct is_decimal_coordinate : std::false_type {};
+template <class A>
+struct is_decimal_coordinate<decimal_coordinate<A>> : std::true_type {};
+
+}  // namespace detail
+
+/// One value, by the conventions at the top of this file.
+template <json_style Style = json_style::json, json_sink Sink, class T>
+constexpr void write_json_value(Sink& s, const T& v) noexcept {
+  if constexpr (detail::is_optional<T>::value) {
+    if (v) {
+      write_json_value<Style>(s, *v);
+    } else {
+      s.put("null");
+    }
+  } else if constexpr (std::is_same_v<T, decimal>) {
+    detail::json_decimal(s, v);
+  } else if constexpr (std::is_same_v<T, bool>) {
+    s.put(v ? std::string_view("true") : std::string_view("false"));
+  } else if constexpr (std::is_integral_v<T> && !std::is_same_v<T, char>) {
+    if constexpr (std::is_signed_v<T>) {
+      if (v < 0) {
+        s.put('-');
+        detail::json_uint(s, 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
+        return;
+      }
+    }
+    detail::json_uint(s, static_cast<std::uint64_t>(v));
+  } else if constexpr (detail::is_nmea_coordinate<T>::value ||
+                       detail::is_decimal_coordinate<T>::value) {
+    detail::json_decimal(s, to_decimal_degrees(v));
+  } else if constexpr (std::is_same_v<T, time_of_day>) {
+    if constexpr (Style == json_style::json) s.put('"');
+    detail::json_uint(s, v.hour, 2);
+    s.put(':');
+    detail::json_uint(s, v.minute, 2);
+    s.put(':');
+    detail::json_uint(s, v.second, 2);
+    if (v.places > 0) {
+      s.put('.');
+      detail::json_uint(s, v.fraction, v.places);
+    }
+    if constexpr (Style == json_style::json) s.put('"');
+  } else if constexpr (std::is_same_v<T, date>) {
+    if constexpr (Style == json_style::json) s.put('"');
+    detail::json_uint(s, v.year, 4);
+    s.put('-');
+    detail::json_uint(s, v.month, 2);
+    s.put('-');
+    detail::json_uint(s, v.day, 2);
+    if constexpr (Style == json_style::json) s.put('"');
+  } else if constexpr (detail::is_text<T>::value) {
+    detail::json_string<json_style::json>(s, v.view());
+  } else if constexpr (char_enum_like<T> || word_enum_like<T>) {
+    detail::json_string<Style>(s, to_string(v));
+  } else if constexpr (has_codec<T>) {
+    // Any other value with a codec: its wire text, e.g. a RobotX light pattern "RGB".
+    char buf[256];
+    writer w(std::span<char>(buf, sizeof buf));
+    codec<T>::write(w, v);
+    detail::json_string<Style>(s, w.view());
+  } else {
+    static_assert(has_codec<T>, "write_json_value: no JSON form for this type");
+  }
+}
+
+/// The "type" value of a message: its address, or talker + type for talker-agnostic ones.
+template <json_sink Sink, message_like T>
+constexpr void write_type(Sink& s, const T& msg) noexcept {
+  constexpr auto& desc = T::nmea;
+  if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
+    s.put(msg.talker.view());
+    s.put(desc.address.substr(2));
+  } else {
+    s.put(desc.address);
+  }
+}
+
+/// A message as one JSON object (no newline): "type", then each field in wire order.
+template <json_sink Sink, message_like T>
+constexpr void write_json(Sink& s, const T& msg) noexcept {
+  s.put("{\"type\":\"");
+  write_type(s, msg);
+  s.put('"');
+  for_each_field(msg, [&](std::string_view name, const auto& value) {
+    s.put(",\"");
+    detail::json_escape(s, name);
+    s.put("\":");
+    write_json_value(s, value);
+  });
+  s.put('}');
+}
+
+/// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}.
+template <json_sink Sink>
+constexpr void write_json(Sink& s, const unknown_sentence& u) noexcept {
+  s.put("{\"type\":\"");
+  detail::json_escape(s, u.sentence.address);
+  s.put("\",\"fields\":[");
+  const parse_policy policy;
+  field_reader r(u.sentence, policy);
+  for (bool first = true; !r.at_end(); first = false) {
+    if (!first) s.put(',');
+    s.put('"');
+    detail::json_escape(s, r.take().text);
+    s.put('"');
+  }
+  s.put("]}");
+}
+
+/// A rejected input: {"line":N,"error":"<errc name>","field":K,"detail":"...","input":"..."}.
+/// `field` is the spec's field number (0: the sentence as a whole).
+template <json_sink Sink>
+constexpr void write_json_error(Sink& s, std::uint64_t line, errc e, std::uint16_t field,
+                                std::string_view detail, std::string_view input) noexcept {
+  s.put("{\"line\":");
+  detail::json_uint(s, line);
+  s.put(",\"error\":\"");
+  s.put(name(e));
+  s.put("\",\"field\":");
+  detail::json_uint(s, field);
+  s.put(",\"detail\":\"");
+  detail::json_escape(s, detail);
+  s.put("\",\"input\":\"");
+  detail::json_escape(s, input);
+  s.put("\"}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// reading
+
+/// What a JSON reader found for a key.
+enum class json_kind : std::uint8_t {
+  absent,   ///< no such key
+  null,     ///< null
+  boolean,  ///< text is "true" or "false"
+  number,   ///< text is the number as written ("203.10")
+  string,   ///< text is the string's content, unescaped
+  other,    ///< an object or array
+};
+
+/// One JSON value, tokenised by whatever JSON library the caller uses. Views the caller's text.
+struct json_value {
+  json_kind kind = json_kind::absent;
+  std::string_view text;
+
+  [[nodiscard]] constexpr bool blank() const noexcept {
+    return kind == json_kind::absent || kind == json_kind::null;
+  }
+};
+
+namespace detail {
+
+/// A decimal from a JSON number or a string holding one; exponents are refused (bad_number).
+[[nodiscard]] constexpr errc json_number(const json_value& v, decimal& out) noexcept {
+  if (v.kind != json_kind::number && v.kind != json_kind::string) return errc::bad_number;
+  return parse_decimal(v.text, false, out);
+}
+
+[[nodiscard]] constexpr bool is_scalar_text(const json_value& v) noexcept {
+  return v.kind == json_kind::string || v.kind == json_kind::number;
+}
+
+/// A value of a codec without a JSON form of its own: its wire text, read by the codec.
+template <class T>
+[[nodiscard]] constexpr errc read_wire_text(std::string_view text, T& out) noexcept {
+  sentence_view s;
+  s.body = text;
+  s.field_count = 1;
+  for (const char c : text)
+    if (c == ',') ++s.field_count;
+  const parse_policy policy;
+  field_reader r(s, policy);
+  if (text.empty() && !codec<T>::allows_blank) return errc::missing_field;
+  const errc e = codec<T>::read(r, out);
+  if (e != errc::ok) return e;
+  return r.at_end() ? errc::ok : errc::bad_text;
+}
+
+}  // namespace detail
+
+/// One value from JSON, by the conventions at the top of this file. The value must not be
+/// blank (callers handle null and absent). `precision`: for positions, the wire's fraction
+/// digits (minutes for DDMM.mmm positions, degrees for decimal-degree ones); < 0 = default.
+template <class T>
+[[nodiscard]] constexpr errc read_json_value(const json_value& v, T& out,
+                                             int precision = -1) noexcept {
+  if constexpr (std::is_same_v<T, decimal>) {
+    return detail::json_number(v, out);
+  } else if constexpr (std::is_same_v<T, bool>) {
+    if (v.kind == json_kind::boolean ||
+        ((v.kind == json_kind::number || v.kind == json_kind::string) &&
+         (v.text == "0" || v.text == "1"))) {
+      out = v.text == "true" || v.text == "1";
+      return errc::ok;
+    }
+    if (v.kind == json_kind::string && (v.text == "true" || v.text == "false")) {
+      out = v.text == "true";
+      return errc::ok;
+    }
+    return errc::bad_flag;
+  } else if constexpr (std::is_integral_v<T> && !std::is_same_v<T, char>) {
+    if (!detail::is_scalar_text(v)) return errc::bad_number;
+    sentence_view s;
+    s.body = v.text;
+    s.field_count = 1;
+    const parse_policy strict{checksum_policy::ignore, true, true, false, true, 1024};
+    field_reader r(s, strict);
+    if (v.text.empty()) return errc::bad_number;
+    return codec<T>::read(r, out);
+  } else if constexpr (detail::is_nmea_coordinate<T>::value ||
+                       detail::is_decimal_coordinate<T>::value) {
+    decimal d;
+    const errc e = detail::json_number(v, d);
+    if (e != errc::ok) return e == errc::bad_number ? detail::coordinate_traits<T>::axis::error : e;
+    const result<T> c = from_decimal_degrees<T>(d, precision);
+    if (c) out = c.value;
+    return c.ec;
+  } else if constexpr (std::is_same_v<T, time_of_day>) {
+    if (v.kind != json_kind::string && v.kind != json_kind::number) return errc::bad_time;
+    const result<time_of_day> t = parse_time_text(v.text);
+    if (t) out = t.value;
+    return t.ec;
+  } else if constexpr (std::is_same_v<T, date>) {
+    if (v.kind != json_kind::string && v.kind != json_kind::number) return errc::bad_date;
+    const result<date> d = parse_date_text(v.text);
+    if (d) out = d.value;
+    return d.ec;
+  } else if constexpr (detail::is_text<T>::value) {
+    if (!detail::is_scalar_text(v)) return errc::bad_text;
+    return out.assign(v.text) ? errc::ok : errc::text_too_long;
+  } else if constexpr (char_enum_like<T> || word_enum_like<T>) {
+    if (!detail::is_scalar_text(v) || v.text.empty()) return errc::bad_enum;
+    return detail::read_wire_text(v.text, out);
+  } else if constexpr (has_codec<T>) {
+    if (!detail::is_scalar_text(v)) return errc::bad_text;
+    return detail::read_wire_text(v.text, out);
+  } else {
+    static_assert(has_codec<T>, "read_json_value: no JSON form for this type");
+    return errc::bad_text;
+  }
+}
+
+/// Whether messages of type T have a field called `name` (for reporting unknown keys).
+template <message_like T>
+[[nodiscard]] constexpr bool has_field(std::string_view name) noexcept {
+  return std::apply([&](const auto&... d) { return ((d.name == name) || ...); }, T::nmea.fields);
+}
+
+/// Reads a message from a JSON object. `type` is its "type" member ("GPRMC": the talker of a
+/// talker-agnostic message comes from it). `lookup(object, key)` returns the json_value of
+/// member `key` of the message object (object == "") or of its "precision" object (object ==
+/// "precision"; a number of fraction digits for a position field). On failure: the errc and
+/// the field number on the wire (nmea::field_name<T>(field) names it); wrong_address when
+/// `type` is not T's. Values are checked against the spec's ranges when the message is encoded,
+/// not here.
+template <message_like T, class Lookup>
+[[nodiscard]] constexpr result<T> read_json(std::string_view type, Lookup&& lookup) noexcept {
+  result<T> out;
+  constexpr auto& desc = T::nmea;
+  if (!desc.matches(type)) {
+    out.ec = errc::wrong_address;
+    return out;
+  }
+  if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
+    (void)out.value.talker.assign(type.substr(0, 2));
+  }
+  std::uint16_t wire_field = 1;
+  const auto one = [&](const auto& d) -> bool {
+    using F = std::remove_cvref_t<decltype(d)>;
+    using V = typename F::value_type;
+    auto& member = out.value.*F::member;
+    const json_value v = lookup(std::string_view{}, d.name);
+    int precision = -1;
+    errc e = errc::ok;
+    if constexpr (detail::is_nmea_coordinate<V>::value || detail::is_decimal_coordinate<V>::value) {
+      const json_value p = lookup(std::string_view("precision"), d.name);
+      if (!p.blank()) {
+        std::uint8_t n = 0;
+        e = read_json_value(p, n);
+        if (e == errc::ok && n > 18) e = errc::out_of_range;
+        precision = n;
+      }
+    }
+    if (e == errc::ok) {
+      if constexpr (F::is_optional) {
+        if (v.blank()) {
+          member.reset();
+        } else {
+          V value{};
+          e = read_json_value(v, value, precision);
+          if (e == errc::ok) member = value;
+        }
+      } else if (v.blank()) {
+        if constexpr (detail::is_text<V>::value) {
+          member = V{};
+        } else {
+          e = errc::missing_field;
+        }
+      } else {
+        e = read_json_value(v, member, precision);
+      }
+    }
+    if (e != errc::ok) {
+      out.ec = e;
+      out.field = wire_field;
+      return false;
+    }
+    wire_field = static_cast<std::uint16_t>(wire_field + d.width());
+    return true;
+  };
+  std::apply([&](const auto&... d) { (void)(one(d) && ...); }, desc.fields);
+  return out;
+}
+
+}  // namespace seawire::nmea

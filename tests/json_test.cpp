@@ -1,0 +1,656 @@
+// SPDX-License-Identifier: BSL-1.0
+// nmea/json.hpp and anello/frame_json.hpp: every value type's JSON form, whole messages, unknown
+// sentences and errors, the exact position conversions, and reading messages back. Where
+// nlohmann-json is installed, every document written here must also parse as JSON.
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <map>
+#include <random>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "seawire/anello/frame_json.hpp"
+#include "seawire/kingfisher/messages.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/robotx/messages.hpp"
+#include "seawire/sandshark/messages.hpp"
+#include "seawire/standard/gga.hpp"
+#include "seawire/standard/rmc.hpp"
+
+#if SEAWIRE_HAS_NLOHMANN_JSON
+#include <nlohmann/json.hpp>
+#endif
+
+using namespace seawire;
+using namespace seawire::nmea;
+
+namespace {
+
+struct string_sink {
+  std::string s;
+  void put(char c) { s += c; }
+  void put(std::string_view v) { s += v; }
+};
+
+template <class T>
+std::string value_json(const T& v) {
+  string_sink k;
+  write_json_value(k, v);
+  return k.s;
+}
+
+template <class T>
+std::string message_json(const T& m) {
+  string_sink k;
+  write_json(k, m);
+  return k.s;
+}
+
+bool valid_json(const std::string& s) {
+#if SEAWIRE_HAS_NLOHMANN_JSON
+  return nlohmann::json::accept(s);
+#else
+  return !s.empty();
+#endif
+}
+
+template <class T>
+T must_decode(std::string_view line) {
+  const auto r = decode<T>(line);
+  REQUIRE(r);
+  return r.value;
+}
+
+// A JSON object as read_json sees it: key -> (kind, text), plus a "precision" object.
+struct object {
+  std::map<std::string, json_value, std::less<>> members;
+  std::map<std::string, json_value, std::less<>> precision;
+  json_value operator()(std::string_view obj, std::string_view key) const {
+    const auto& m = obj.empty() ? members : precision;
+    const auto it = m.find(key);
+    return it == m.end() ? json_value{} : it->second;
+  }
+};
+
+#if SEAWIRE_HAS_NLOHMANN_JSON
+// Flattens one JSON object with nlohmann's SAX interface, which hands out a number's text.
+struct flat_reader : nlohmann::json_sax<nlohmann::json> {
+  std::vector<std::string> storage;  // texts live here (reserved: views stay valid)
+  object out;
+  std::string current_key;
+  int depth = 0;
+  bool in_precision = false;
+
+  flat_reader() { storage.reserve(256); }
+  bool put(json_kind kind, std::string text) {
+    storage.push_back(std::move(text));
+    auto& m = in_precision ? out.precision : out.members;
+    m[current_key] = json_value{kind, storage.back()};
+    return true;
+  }
+  bool null() override { return put(json_kind::null, ""); }
+  bool boolean(bool b) override { return put(json_kind::boolean, b ? "true" : "false"); }
+  bool number_integer(number_integer_t v) override {
+    return put(json_kind::number, std::to_string(v));
+  }
+  bool number_unsigned(number_unsigned_t v) override {
+    return put(json_kind::number, std::to_string(v));
+  }
+  bool number_float(number_float_t, const string_t& s) override {
+    return put(json_kind::number, s);
+  }
+  bool string(string_t& s) override { return put(json_kind::string, s); }
+  bool binary(binary_t&) override { return false; }
+  bool start_object(std::size_t) override {
+    ++depth;
+    if (depth == 2) in_precision = current_key == "precision";
+    return true;
+  }
+  bool key(string_t& k) override {
+    current_key = k;
+    return true;
+  }
+  bool end_object() override {
+    if (--depth == 1) in_precision = false;
+    return true;
+  }
+  bool start_array(std::size_t) override { return put(json_kind::other, ""); }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false;
+  }
+};
+
+// decode -> JSON -> (nlohmann SAX) -> read_json -> encode: the wire line comes back.
+template <class T>
+std::string through_json(std::string_view line) {
+  const T m = must_decode<T>(line);
+  const std::string js = message_json(m);
+  flat_reader reader;
+  REQUIRE(nlohmann::json::sax_parse(js, &reader));
+  const json_value type = reader.out.members.at("type");
+  const result<T> back = read_json<T>(type.text, reader.out);
+  REQUIRE(back);
+  return std::string(encode(back.value).view());
+}
+#endif
+
+}  // namespace
+
+// The writers are constexpr: a whole message as JSON at compile time.
+static_assert([] {
+  json_buffer<128> b;
+  write_json(b, kingfisher::pydir{decimal(45), decimal(-5, 1)});
+  return b.view() == R"({"type":"PYDIR","thrust_left":45,"thrust_right":-0.5})";
+}());
+
+TEST_CASE("decimals keep the wire's digits") {
+  const auto dec = [](std::string_view s) {
+    decimal d;
+    REQUIRE(nmea::detail::parse_decimal(s, true, d) == errc::ok);
+    return value_json(d);
+  };
+  CHECK(dec("203.10") == "203.10");
+  CHECK(dec("-0.0") == "-0.0");
+  CHECK(dec("-0") == "-0");
+  CHECK(dec("0.05") == "0.05");
+  CHECK(dec("4.50") == "4.50");
+  CHECK(dec("+7") == "7");
+  CHECK(dec("011.3") == "11.3");  // JSON has no leading zeros; the value stays
+  CHECK(dec("000.0") == "0.0");
+  CHECK(dec("1234567890123456789") == "1234567890123456789");
+  CHECK(dec("0.0000000000000000001") == "0.0000000000000000001");
+  CHECK(valid_json(dec("-0.0")));
+  CHECK(valid_json(dec("011.3")));
+}
+
+TEST_CASE("integers, flags, optionals") {
+  CHECK(value_json(std::uint8_t{6}) == "6");
+  CHECK(value_json(std::int32_t{-42}) == "-42");
+  CHECK(value_json(std::int64_t{INT64_MIN}) == "-9223372036854775808");
+  CHECK(value_json(std::uint64_t{UINT64_MAX}) == "18446744073709551615");
+  CHECK(value_json(true) == "true");
+  CHECK(value_json(false) == "false");
+  CHECK(value_json(std::optional<decimal>{}) == "null");
+  CHECK(value_json(std::optional<decimal>{decimal(15, 1)}) == "1.5");
+}
+
+TEST_CASE("NMEA positions: signed decimal degrees with minute places + 2") {
+  const auto rmc = must_decode<standard::rmc>(
+      "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
+      "311214,,,A*70");
+  CHECK(value_json(*rmc.lat) == "42.3618523");
+  CHECK(value_json(*rmc.lon) == "-71.0908130");
+  const auto nvg = must_decode<kingfisher::cpnvg>(
+      "$CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
+      "164959.006*78");
+  CHECK(value_json(nvg.lat) == "42.36185237");
+  CHECK(value_json(nvg.lon) == "-71.0908130");  // unpadded degrees: same value
+  // At exactly zero the sign still comes from the hemisphere letter.
+  const auto zero =
+      must_decode<kingfisher::cpnvg>("$CPNVG,105707.24,0000.00,N,00000.00,W,1,,,0,,,105707.24*64");
+  CHECK(value_json(zero.lat) == "0.0000");
+  CHECK(value_json(zero.lon) == "-0.0000");
+  CHECK(valid_json(value_json(zero.lon)));
+  // No minute fraction: two places.
+  latitude l;
+  l.whole_degrees = 89;
+  l.minutes = decimal(59);
+  l.hemi = hemisphere::south;
+  CHECK(value_json(l) == "-89.98");
+  l.minutes = decimal(599, 1);
+  CHECK(value_json(l) == "-89.998");  // 59.9/60 = 0.998333
+}
+
+TEST_CASE("decimal-degree positions keep their digits") {
+  const auto hrb =
+      must_decode<robotx::rxhrb>("$RXHRB,111221,161229,21.31198,N,157.88972,W,ROBOT,2,1*11");
+  CHECK(value_json(*hrb.lat) == "21.31198");
+  CHECK(value_json(*hrb.lon) == "-157.88972");
+}
+
+TEST_CASE("times, dates, text, enums") {
+  CHECK(value_json(time_of_day{8, 10, 25, 987, 3}) == R"("08:10:25.987")");
+  CHECK(value_json(time_of_day{16, 49, 59, 0, 2}) == R"("16:49:59.00")");
+  CHECK(value_json(time_of_day{16, 12, 29, 0, 0}) == R"("16:12:29")");
+  CHECK(value_json(time_of_day{23, 59, 60, 123456789, 9}) == R"("23:59:60.123456789")");
+  CHECK(value_json(date{2018, 12, 10}) == R"("2018-12-10")");
+  CHECK(value_json(date{1999, 1, 2}) == R"("1999-01-02")");
+  CHECK(value_json(text<32>("BWSI Autonomy OK")) == R"("BWSI Autonomy OK")");
+  text<16> nasty;
+  REQUIRE(nasty.assign(std::string_view("a\"b\\c\x01\n", 7)));
+  CHECK(value_json(nasty) == R"("a\"b\\c\u0001\n")");
+  CHECK(valid_json(value_json(nasty)));
+  text<4> high;  // bytes outside ASCII (only user-built text can hold them) stay valid JSON
+  REQUIRE(high.assign("\xE9\x7F"));
+  CHECK(value_json(high) == R"("\u00E9\u007F")");
+  CHECK(value_json(standard::rmc_status::warning) == R"("V")");
+  CHECK(value_json(sandshark::log_state::off) == R"("OFF")");
+  CHECK(value_json(robotx::dock_shape::cruciform) == R"("CRUC")");
+  CHECK(value_json(robotx::deliver_shape::cruciform) == R"("CRUCI")");
+  // A value type with a codec and no JSON form of its own: its wire text.
+  CHECK(value_json(robotx::light_pattern::from("RGB").value) == R"("RGB")");
+}
+
+TEST_CASE("whole messages: type first, then fields in wire order") {
+  CHECK(message_json(must_decode<kingfisher::cpnvg>(
+            "$CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
+            "164959.006*78")) ==
+        R"({"type":"CPNVG","timestamp":"16:49:59.034","latitude":42.36185237,)"
+        R"("longitude":-71.0908130,"position_quality":true,"altitude_m":0,"depth_m":0,)"
+        R"("heading_deg":234.32964,"roll_deg":-6.796959,"pitch_deg":-1.706798,)"
+        R"("nav_timestamp":"16:49:59.006"})");
+  // Talker-agnostic messages: "type" is the address as it came.
+  CHECK(message_json(must_decode<standard::gga>(
+            "$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C")) ==
+        R"({"type":"GPGGA","time":"16:49:59.00","latitude":42.3618523,)"
+        R"("longitude":-71.0908130,"quality":"1","satellites":6,"hdop":2.80,"altitude_m":46.6,)"
+        R"("geoid_separation_m":-33.2,"dgps_age_s":null,"dgps_station":null})");
+  standard::rmc rmc = must_decode<standard::rmc>(
+      "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70");
+  rmc.talker = "GN";
+  CHECK(message_json(rmc).starts_with(R"({"type":"GNRMC","time":"16:49:59.00",)"));
+  // Text, blank text and absent optional text.
+  CHECK(message_json(must_decode<sandshark::bfack>("$BFACK,081025.990,RMB,081025.950,,2,0,*32")) ==
+        R"({"type":"BFACK","timestamp":"08:10:25.990","command":"RMB",)"
+        R"("command_timestamp":"08:10:25.950","behavior_id":null,"status":"2","future_use":0,)"
+        R"("description":"","trailing":null})");
+  CHECK(message_json(must_decode<robotx::rxdok>("$RXDOK,101218,161229,AUVSI,R,TRIAN*28")) ==
+        R"({"type":"RXDOK","date":"2018-12-10","time":"16:12:29","team_id":"AUVSI",)"
+        R"("shape_color":"R","shape":"TRIAN"})");
+  CHECK(valid_json(message_json(must_decode<sandshark::bpsts>("$BPSTS,231133.12,1,OK*73"))));
+}
+
+TEST_CASE("unknown sentences and errors") {
+  const auto s = parse("$XXFOO,1,,a b*00", {checksum_policy::ignore});
+  REQUIRE(s);
+  string_sink k;
+  write_json(k, unknown_sentence{s.value});
+  CHECK(k.s == R"({"type":"XXFOO","fields":["1","","a b"]})");
+  CHECK(valid_json(k.s));
+  const auto bare = parse("$XXBAR");
+  REQUIRE(bare);
+  k.s.clear();
+  write_json(k, unknown_sentence{bare.value});
+  CHECK(k.s == R"({"type":"XXBAR","fields":[]})");
+
+  k.s.clear();
+  write_json_error(k, 12, errc::minute_out_of_range, 2, "CPNVG field 2 (latitude): \"61\"",
+                   "$CPNVG,1,2\\");
+  CHECK(k.s == R"({"line":12,"error":"minute_out_of_range","field":2,)"
+               R"("detail":"CPNVG field 2 (latitude): \"61\"","input":"$CPNVG,1,2\\"})");
+  CHECK(valid_json(k.s));
+}
+
+TEST_CASE("json_buffer reports overflow") {
+  json_buffer<10> b;
+  write_json(b, kingfisher::pyclt{true});
+  CHECK(b.overflow());
+  CHECK(b.size() == 10);
+  b.clear();
+  CHECK_FALSE(b.overflow());
+  b.put("{}");
+  CHECK(b.view() == "{}");
+}
+
+TEST_CASE("from_decimal_degrees inverts to_decimal_degrees exactly") {
+  std::mt19937_64 rng(7);
+  for (unsigned p = 0; p <= 12; ++p) {
+    for (int i = 0; i < 500; ++i) {
+      latitude l;
+      l.whole_degrees = static_cast<std::uint16_t>(rng() % 90);
+      l.minutes.places = static_cast<std::uint8_t>(p);
+      l.minutes.mantissa = rng() % (60 * seawire::detail::pow10_table[p]);
+      l.hemi = rng() % 2 ? hemisphere::north : hemisphere::south;
+      const decimal deg = to_decimal_degrees(l);
+      CHECK(deg.places == p + 2);
+      const auto back = from_decimal_degrees<latitude>(deg, static_cast<int>(p));
+      REQUIRE(back);
+      CHECK(back.value == l);
+      if (p >= 1) {  // the default precision gives the same minutes
+        const auto by_default = from_decimal_degrees<latitude>(deg);
+        REQUIRE(by_default);
+        CHECK(by_default.value == l);
+      }
+    }
+  }
+}
+
+TEST_CASE("from_decimal_degrees: rounding, carry, default places, range") {
+  const auto lon = [](std::string_view s, int places = -1) {
+    decimal d;
+    REQUIRE(nmea::detail::parse_decimal(s, false, d) == errc::ok);
+    return from_decimal_degrees<longitude>(d, places);
+  };
+  auto r = lon("-71.0908130");
+  REQUIRE(r);
+  CHECK(r.value.whole_degrees == 71);
+  CHECK(r.value.minutes == decimal(544878, 5));
+  CHECK(r.value.hemi == hemisphere::west);
+  // Fewer than three fraction digits: 4 minute places.
+  r = lon("42.5");
+  REQUIRE(r);
+  CHECK(r.value.minutes == decimal(300000, 4));
+  r = lon("7");
+  REQUIRE(r);
+  CHECK((r.value.whole_degrees == 7 && r.value.minutes == decimal(0, 4)));
+  // -0 keeps its hemisphere.
+  r = lon("-0.0000");
+  REQUIRE(r);
+  CHECK((r.value.whole_degrees == 0 && r.value.hemi == hemisphere::west));
+  // An explicit precision, and the carry when the minutes round up to 60.
+  r = lon("12.9999999", 2);
+  REQUIRE(r);
+  CHECK((r.value.whole_degrees == 13 && r.value.minutes == decimal(0, 2)));
+  r = lon("12.5", 6);
+  REQUIRE(r);
+  CHECK(r.value.minutes == decimal(30000000, 6));
+  // Range.
+  CHECK(lon("180.0000").ec == errc::ok);
+  CHECK(lon("180.0001").ec == errc::bad_longitude);
+  CHECK(lon("-181").ec == errc::bad_longitude);
+  CHECK(lon("12.5", 13).ec == errc::out_of_range);
+  decimal d;
+  REQUIRE(nmea::detail::parse_decimal("90.00001", false, d) == errc::ok);
+  CHECK(from_decimal_degrees<latitude>(d).ec == errc::bad_latitude);
+  // Decimal-degree positions: digits as given, or to the requested places.
+  REQUIRE(nmea::detail::parse_decimal("-157.88972", false, d) == errc::ok);
+  auto dl = from_decimal_degrees<decimal_longitude>(d);
+  REQUIRE(dl);
+  CHECK((dl.value.value == decimal(15788972, 5) && dl.value.hemi == hemisphere::west));
+  dl = from_decimal_degrees<decimal_longitude>(d, 2);
+  CHECK(dl.value.value == decimal(15789, 2));
+  dl = from_decimal_degrees<decimal_longitude>(d, 7);
+  CHECK(dl.value.value == decimal(1578897200, 7));
+}
+
+TEST_CASE("time and date text") {
+  auto t = parse_time_text("08:10:25.987");
+  REQUIRE(t);
+  CHECK(t.value == time_of_day{8, 10, 25, 987, 3});
+  t = parse_time_text("16:12:29");
+  REQUIRE(t);
+  CHECK(t.value == time_of_day{16, 12, 29, 0, 0});
+  t = parse_time_text("164959.00");  // the wire's form is accepted too
+  REQUIRE(t);
+  CHECK(t.value == time_of_day{16, 49, 59, 0, 2});
+  CHECK(parse_time_text("24:00:00").ec == errc::hour_out_of_range);
+  CHECK(parse_time_text("12:60:00").ec == errc::minute_out_of_range);
+  CHECK(parse_time_text("12:00:60").ec == errc::second_out_of_range);
+  CHECK(parse_time_text("23:59:60").ec == errc::ok);
+  CHECK(parse_time_text("8:10:25").ec == errc::bad_time);
+  CHECK(parse_time_text("08:10:25.").ec == errc::bad_time);
+  CHECK(parse_time_text("08:10:25.1234567890").ec == errc::bad_time);
+  CHECK(parse_time_text("").ec == errc::bad_time);
+
+  auto d = parse_date_text("2018-12-10");
+  REQUIRE(d);
+  CHECK(d.value == date{2018, 12, 10});
+  d = parse_date_text("311214");
+  REQUIRE(d);
+  CHECK(d.value == date{2014, 12, 31});
+  CHECK(parse_date_text("2018-13-10").ec == errc::month_out_of_range);
+  CHECK(parse_date_text("2019-02-29").ec == errc::day_out_of_range);
+  CHECK(parse_date_text("2020-02-29").ec == errc::ok);
+  CHECK(parse_date_text("1979-12-31").ec == errc::out_of_range);
+  CHECK(parse_date_text("2018/12/10").ec == errc::bad_date);
+}
+
+TEST_CASE("read_json: values, blanks, errors name the wire field") {
+  object o;
+  o.members["timestamp"] = {json_kind::string, "16:49:59.034"};
+  o.members["latitude"] = {json_kind::number, "42.36185237"};
+  o.members["longitude"] = {json_kind::number, "-71.0908130"};
+  o.members["position_quality"] = {json_kind::boolean, "true"};
+  o.members["altitude_m"] = {json_kind::null, ""};
+  o.members["heading_deg"] = {json_kind::number, "234.30"};
+  auto r = read_json<kingfisher::cpnvg>("CPNVG", o);
+  REQUIRE(r);
+  CHECK(r.value.lat.minutes == decimal(21711142, 6));
+  CHECK(r.value.lon.degree_digits == 3);
+  CHECK_FALSE(r.value.altitude_m);
+  CHECK_FALSE(r.value.depth_m);  // absent
+  CHECK(*r.value.heading_deg == decimal(23430, 2));
+  CHECK(encode(r.value).view() ==
+        "$CPNVG,164959.034,4221.711142,N,07105.44878,W,1,,,234.30,,,*62\r\n");
+
+  // A precision override for one position.
+  o.precision["latitude"] = {json_kind::number, "3"};
+  r = read_json<kingfisher::cpnvg>("CPNVG", o);
+  REQUIRE(r);
+  CHECK(r.value.lat.minutes == decimal(21711, 3));
+  o.precision.clear();
+
+  CHECK(read_json<kingfisher::cpnvg>("CPNVR", o).ec == errc::wrong_address);
+  o.members["latitude"] = {json_kind::string, "north"};
+  r = read_json<kingfisher::cpnvg>("CPNVG", o);
+  CHECK(r.ec == errc::bad_latitude);
+  CHECK(r.field == 2);
+  CHECK(field_name<kingfisher::cpnvg>(r.field) == "latitude");
+  o.members["latitude"] = {json_kind::number, "42.5"};
+  o.members.erase("timestamp");
+  r = read_json<kingfisher::cpnvg>("CPNVG", o);
+  CHECK(r.ec == errc::missing_field);
+  CHECK(r.field == 1);
+  o.members["timestamp"] = {json_kind::string, "16:49:59.034"};
+  o.members["heading_deg"] = {json_kind::number, "1e2"};
+  r = read_json<kingfisher::cpnvg>("CPNVG", o);
+  CHECK(r.ec == errc::bad_number);
+  CHECK(r.field == 9);  // positions span two wire fields each
+  CHECK(field_name<kingfisher::cpnvg>(r.field) == "heading_deg");
+  o.members["heading_deg"] = {json_kind::boolean, "true"};
+  CHECK(read_json<kingfisher::cpnvg>("CPNVG", o).ec == errc::bad_number);
+
+  CHECK(has_field<kingfisher::cpnvg>("heading_deg"));
+  CHECK_FALSE(has_field<kingfisher::cpnvg>("heading"));
+  CHECK_FALSE(has_field<kingfisher::cpnvg>("type"));
+}
+
+TEST_CASE("read_json: talker from the type, enums, text, lenient forms") {
+  object o;
+  o.members["status"] = {json_kind::string, "A"};
+  o.members["date"] = {json_kind::string, "311214"};
+  auto r = read_json<standard::rmc>("GNRMC", o);
+  REQUIRE(r);
+  CHECK(r.value.talker == "GN");
+  CHECK(encode(r.value).view() == "$GNRMC,,A,,,,,,,311214,,*3C\r\n");
+  o.members["status"] = {json_kind::string, "X"};
+  r = read_json<standard::rmc>("GNRMC", o);
+  CHECK(r.ec == errc::bad_enum);
+  CHECK(r.field == 2);
+
+  object s;
+  s.members["timestamp"] = {json_kind::string, "231133.12"};
+  s.members["all_ok"] = {json_kind::number, "1"};
+  s.members["message"] = {json_kind::string, "BWSI Autonomy OK"};
+  auto st = read_json<sandshark::bpsts>("BPSTS", s);
+  REQUIRE(st);
+  CHECK(encode(st.value).view() == "$BPSTS,231133.12,1,BWSI Autonomy OK*46\r\n");
+  s.members.erase("message");  // blank text is empty text
+  st = read_json<sandshark::bpsts>("BPSTS", s);
+  REQUIRE(st);
+  CHECK(st.value.message.empty());
+  s.members["all_ok"] = {json_kind::number, "2"};
+  CHECK(read_json<sandshark::bpsts>("BPSTS", s).ec == errc::bad_flag);
+
+  object g;
+  g.members["date"] = {json_kind::string, "2018-12-10"};
+  g.members["time"] = {json_kind::string, "16:12:29"};
+  g.members["team_id"] = {json_kind::string, "AUVSI"};
+  g.members["entrance_gate"] = {json_kind::number, "1"};  // a number for a digit enum
+  g.members["light_pattern"] = {json_kind::string, "RGB"};
+  auto gat = read_json<robotx::rxgat>("RXGAT", g);
+  REQUIRE(gat);
+  CHECK(encode(gat.value).view() == "$RXGAT,101218,161229,AUVSI,1,,,RGB*4E\r\n");
+  g.members["light_pattern"] = {json_kind::string, "RGX"};
+  gat = read_json<robotx::rxgat>("RXGAT", g);
+  CHECK(gat.ec == errc::bad_enum);
+  CHECK(gat.field == 7);
+  g.members["light_pattern"] = {json_kind::string, "RG,B"};
+  CHECK(read_json<robotx::rxgat>("RXGAT", g).ec == errc::bad_length);
+
+  object i;
+  i.members["satellites"] = {json_kind::number, "300"};
+  i.members["quality"] = {json_kind::string, "1"};
+  CHECK(read_json<standard::gga>("GPGGA", i).ec == errc::out_of_range);
+  i.members["satellites"] = {json_kind::number, "-1"};
+  CHECK(read_json<standard::gga>("GPGGA", i).ec == errc::out_of_range);
+  i.members["satellites"] = {json_kind::number, "6.0"};
+  CHECK(read_json<standard::gga>("GPGGA", i).ec == errc::bad_number);
+  i.members["satellites"] = {json_kind::number, "6"};
+  auto gga = read_json<standard::gga>("GPGGA", i);
+  REQUIRE(gga);
+  CHECK(encode(gga.value).view() == "$GPGGA,,,,,,1,06,,,M,,M,,*61\r\n");
+}
+
+#if SEAWIRE_HAS_NLOHMANN_JSON
+TEST_CASE("decode -> JSON -> read_json -> encode gives the line back") {
+  const std::vector<std::string_view> kingfisher_lines = {
+      "$CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57\r\n",
+      "$CPNVR,164959.063,0.02941,-0.068552,0,0.060938,0,-0.061132*59\r\n",
+      "$CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,164959.060*62\r\n",
+      "$CPRBS,172909.322,15.121597,15.121597,15.121597,0*76\r\n",
+      "$CPRBS,105707.24,1,15.2,15.1,15.3,0*67\r\n",
+      "$PYDEV,90,1.5*7D\r\n",
+      "$PYDEP,-10,50*71\r\n",
+  };
+  CHECK(through_json<kingfisher::cpimu>(kingfisher_lines[0]) == kingfisher_lines[0]);
+  CHECK(through_json<kingfisher::cpnvr>(kingfisher_lines[1]) == kingfisher_lines[1]);
+  CHECK(through_json<kingfisher::cprcm>(kingfisher_lines[2]) == kingfisher_lines[2]);
+  CHECK(through_json<kingfisher::cprbs>(kingfisher_lines[3]) == kingfisher_lines[3]);
+  CHECK(through_json<kingfisher::cprbs>(kingfisher_lines[4]) == kingfisher_lines[4]);
+  CHECK(through_json<kingfisher::pydev>(kingfisher_lines[5]) == kingfisher_lines[5]);
+  CHECK(through_json<kingfisher::pydep>(kingfisher_lines[6]) == kingfisher_lines[6]);
+  const std::string_view rmc =
+      "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70\r\n";
+  CHECK(through_json<standard::rmc>(rmc) == rmc);
+  const std::string_view gga =
+      "$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C\r\n";
+  CHECK(through_json<standard::gga>(gga) == gga);
+  const std::string_view nvg =
+      "$BFNVG,231131.55,4218.000000,N,07106.000000,W,0,10.0,1.0,45.0,0.0,0.0,231131.55*62\r\n";
+  CHECK(through_json<sandshark::bfnvg>(nvg) == nvg);
+  const std::string_view zero = "$CPNVG,105707.24,0000.00,N,00000.00,W,1,,,0,,,105707.24*64\r\n";
+  CHECK(through_json<kingfisher::cpnvg>(zero) == zero);
+  // Unpadded longitude degrees come back padded: same meaning, canonical form.
+  CHECK(through_json<kingfisher::cpnvg>("$CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,"
+                                        "234.32964,-6.796959,-1.706798,164959.006*78\r\n") ==
+        "$CPNVG,164959.034,4221.711142,N,07105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
+        "164959.006*48\r\n");
+  const std::string_view ack1 = "$BFACK,081025.990,RMB,081025.950,,2,0,*32\r\n";
+  const std::string_view ack2 = "$BFACK,081025.990,RMB,081025.950,,2,0*1E\r\n";
+  CHECK(through_json<sandshark::bfack>(ack1) == ack1);
+  CHECK(through_json<sandshark::bfack>(ack2) == ack2);
+  const std::string_view rmb = "$BPRMB,231204.72,-15,,,750,0,1*54\r\n";
+  CHECK(through_json<sandshark::bprmb>(rmb) == rmb);
+  const std::string_view log = "$BPLOG,ACK,ON*1E\r\n";
+  CHECK(through_json<sandshark::bplog>(log) == log);
+  const std::string_view hrb = "$RXHRB,111221,161229,21.31198,N,157.88972,W,ROBOT,2,1*11\r\n";
+  CHECK(through_json<robotx::rxhrb>(hrb) == hrb);
+  const std::string_view gat = "$RXGAT,101218,161229,AUVSI,1,2,Y,RGB*25\r\n";
+  CHECK(through_json<robotx::rxgat>(gat) == gat);
+  const std::string_view del = "$RXDEL,101218,161229,AUVSI,R,CIRCL*32\r\n";
+  CHECK(through_json<robotx::rxdel>(del) == del);
+}
+#endif
+
+namespace {
+constexpr std::string_view kSeedFrameHex =
+    "AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF00000000000200"
+    "6C0003005AFFFFFFFF";
+
+anello::frame_bytes seed_frame() {
+  anello::frame_bytes b{};
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const auto hex = [](char c) {
+      return static_cast<std::uint8_t>(seawire::detail::hex_value(c));
+    };
+    b[i] =
+        static_cast<std::uint8_t>(hex(kSeedFrameHex[2 * i]) * 16 + hex(kSeedFrameHex[2 * i + 1]));
+  }
+  return b;
+}
+}  // namespace
+
+TEST_CASE("ANELLO frame JSON: the seed frame, exact digits, null for not available") {
+  const auto f = anello::decode_frame(seed_frame());
+  REQUIRE(f);
+  string_sink k;
+  anello::write_json(k, f.value);
+  CHECK(k.s ==
+        R"({"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,)"
+        R"("sog_mps":0.0,"cog_deg":null,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,)"
+        R"("geoid_sep_m":null,"hdop":null,"fix_quality":null,"motor_pct":0,"rudder_pct":0,)"
+        R"("stw_mps":0.0,"wind_speed_abs_mps":0.2,"wind_dir_abs_deg":108,)"
+        R"("wind_speed_rel_mps":0.3,"wind_dir_rel_deg":90,"air_temp_c":null,"pressure_hpa":null})");
+  CHECK(valid_json(k.s));
+  CHECK(anello::has_json_field("latitude"));
+  CHECK(anello::has_json_field("pressure_hpa"));
+  CHECK_FALSE(anello::has_json_field("latitude_deg"));
+}
+
+TEST_CASE("ANELLO frame JSON read back: exact, strict, errors by field number") {
+  object o;
+  o.members["heading_deg"] = {json_kind::number, "89"};
+  o.members["latitude"] = {json_kind::number, "32.828671"};
+  o.members["longitude"] = {json_kind::number, "-117.229926"};
+  o.members["sog_mps"] = {json_kind::number, "0.0"};
+  o.members["gps_time"] = {json_kind::string, "2024-07-03T15:42:58.000Z"};
+  o.members["alt_msl_m"] = {json_kind::number, "48.0"};
+  o.members["motor_pct"] = {json_kind::number, "0"};
+  o.members["rudder_pct"] = {json_kind::number, "0"};
+  o.members["stw_mps"] = {json_kind::number, "0.0"};
+  o.members["wind_speed_abs_mps"] = {json_kind::number, "0.2"};
+  o.members["wind_dir_abs_deg"] = {json_kind::number, "108"};
+  o.members["wind_speed_rel_mps"] = {json_kind::number, "0.3"};
+  o.members["wind_dir_rel_deg"] = {json_kind::number, "90"};
+  auto r = anello::read_frame_json(o);
+  REQUIRE(r);
+  // The seed sends 0xFFFF for air temperature; "not available" is written as 0x7FFF.
+  auto expected = anello::decode_frame(seed_frame()).value;
+  expected.air_temp = 0x7FFF;
+  CHECK(r.value == expected);
+
+  o.members["sog_mps"] = {json_kind::number, "1.25"};  // rounded to 0.1, halves away from zero
+  r = anello::read_frame_json(o);
+  REQUIRE(r);
+  CHECK(r.value.sog == 13);
+  o.members["gps_time"] = {json_kind::number, "1720021378000"};  // milliseconds
+  r = anello::read_frame_json(o);
+  REQUIRE(r);
+  CHECK(r.value.gps_time_ms == 1720021378000ULL);
+
+  o.members["heading_deg"] = {json_kind::number, "361"};
+  r = anello::read_frame_json(o);
+  CHECK(r.ec == errc::out_of_range);
+  CHECK(r.field == 1);
+  CHECK(r.column == 8);
+  o.members["heading_deg"] = {json_kind::number, "89"};
+  o.members["air_temp_c"] = {json_kind::number, "-0.1"};
+  r = anello::read_frame_json(o);
+  CHECK(r.ec == errc::value_too_large);
+  CHECK(r.field == 18);
+  o.members["air_temp_c"] = {json_kind::number, "21.5"};
+  r = anello::read_frame_json(o);
+  REQUIRE(r);
+  CHECK(r.value.air_temp == 215);
+  o.members["gps_time"] = {json_kind::string, "2024-02-30T00:00:00Z"};
+  r = anello::read_frame_json(o);
+  CHECK(r.ec == errc::day_out_of_range);
+  CHECK(r.field == 6);
+  o.members["gps_time"] = {json_kind::string, "2024-07-03T15:42:58.0001Z"};
+  CHECK(anello::read_frame_json(o).ec == errc::bad_time);
+  o.members["gps_time"] = {json_kind::string, "2024-07-03T15:42:58Z"};
+  r = anello::read_frame_json(o);
+  REQUIRE(r);
+  CHECK(r.value.gps_time_ms == 1720021378000ULL);
+
+  // Times outside ISO's four-digit years are written as milliseconds.
+  anello::sensor_frame_raw far;
+  far.gps_time_ms = 253402300800000ULL;
+  string_sink k;
+  anello::write_json(k, far);
+  CHECK(k.s.find(R"("gps_time":253402300800000,)") != std::string::npos);
+}
