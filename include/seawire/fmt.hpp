@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Optional: fmt::formatter for every message and value type. Needs {fmt} (8 or later); nothing
+// else in seawire does, and nothing else includes this header.
+//
+//   fmt::print("{}\n", msg);    // CPNVG{timestamp=16:49:59.034, latitude=42.36185237, ...}
+//   fmt::print("{:j}\n", msg);  // {"type":"CPNVG","timestamp":"16:49:59.034",...} (one line)
+//
+// Values are written as nmea/json.hpp writes them: decimals with the wire's digits, positions
+// in signed decimal degrees, "hh:mm:ss.fff" times, ISO dates, enums by their wire spelling,
+// null for a blank optional. The default form quotes only text; {:j} is exactly write_json().
+// Value types format on their own too: fmt::format("{}", msg.lat) is "42.36185237", a
+// time_of_day "08:10:25.987", a text<N> its characters, an enum its wire spelling.
+// An unknown_sentence formats as its line ({}) or as {"type":...,"fields":[...]} ({:j}).
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string_view>
+
+#include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace seawire::detail {
+
+/// A json_sink writing to a fmt output iterator.
+template <class OutputIt>
+struct fmt_sink {
+  OutputIt out;
+  constexpr void put(char c) { *out++ = c; }
+  constexpr void put(std::string_view s) { out = std::copy(s.begin(), s.end(), out); }
+};
+
+/// Parses "" or "j" (and, where `json_only` is false, nothing else).
+struct fmt_spec {
+  bool json = false;
+
+  template <class ParseContext>
+  constexpr auto parse(ParseContext& ctx) {
+    auto it = ctx.begin();
+    if (it != ctx.end() && *it == 'j') {
+      json = true;
+      ++it;
+    }
+    if (it != ctx.end() && *it != '}') {
+#if FMT_VERSION >= 110000
+      fmt::report_error("seawire: the only format option is 'j' (JSON)");
+#else
+      ctx.on_error("seawire: the only format option is 'j' (JSON)");
+#endif
+    }
+    return it;
+  }
+};
+
+/// TYPE{name=value, ...} with plain values.
+template <class Sink, nmea::message_like T>
+constexpr void write_plain(Sink& s, const T& msg) {
+  nmea::write_type(s, msg);
+  s.put('{');
+  bool first = true;
+  nmea::for_each_field(msg, [&](std::string_view name, const auto& value) {
+    if (!first) s.put(", ");
+    first = false;
+    s.put(name);
+    s.put('=');
+    nmea::write_json_value<nmea::json_style::plain>(s, value);
+  });
+  s.put('}');
+}
+
+/// Value types with a formatter of their own (messages and optionals are not among them).
+template <class T>
+concept fmt_value = std::is_same_v<T, nmea::decimal> || std::is_same_v<T, nmea::time_of_day> ||
+    std::is_same_v<T, nmea::date> || nmea::char_enum_like<T> || nmea::word_enum_like<T> ||
+    nmea::detail::is_nmea_coordinate<T>::value || nmea::detail::is_decimal_coordinate<T>::value;
+
+}  // namespace seawire::detail
+
+/// Messages: "{}" is TYPE{field=value, ...}; "{:j}" one JSON object.
+template <seawire::nmea::message_like T>
+struct fmt::formatter<T> : seawire::detail::fmt_spec {
+  template <class FormatContext>
+  auto format(const T& msg, FormatContext& ctx) const {
+    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
+    if (json) {
+      seawire::nmea::write_json(s, msg);
+    } else {
+      seawire::detail::write_plain(s, msg);
+    }
+    return s.out;
+  }
+};
+
+/// A sentence no message of a set describes: its line, or "{:j}" JSON with its fields.
+template <>
+struct fmt::formatter<seawire::nmea::unknown_sentence> : seawire::detail::fmt_spec {
+  template <class FormatContext>
+  auto format(const seawire::nmea::unknown_sentence& u, FormatContext& ctx) const {
+    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
+    if (json) {
+      seawire::nmea::write_json(s, u);
+    } else {
+      s.put(u.sentence.line);
+    }
+    return s.out;
+  }
+};
+
+/// Value types: decimals, positions, times, dates, enums. "{:j}" gives the JSON value (quoted
+/// where JSON needs it).
+template <seawire::detail::fmt_value T>
+struct fmt::formatter<T> : seawire::detail::fmt_spec {
+  template <class FormatContext>
+  auto format(const T& v, FormatContext& ctx) const {
+    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
+    if (json) {
+      seawire::nmea::write_json_value(s, v);
+    } else {
+      seawire::nmea::write_json_value<seawire::nmea::json_style::plain>(s, v);
+    }
+    return s.out;
+  }
+};
+
+/// text<N>: its characters ("{:j}": a JSON string).
+template <std::size_t N>
+struct fmt::formatter<seawire::nmea::text<N>> : seawire::detail::fmt_spec {
+  template <class FormatContext>
+  auto format(const seawire::nmea::text<N>& v, FormatContext& ctx) const {
+    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
+    if (json) {
+      seawire::nmea::write_json_value(s, v);
+    } else {
+      s.put(v.view());
+    }
+    return s.out;
+  }
+};

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: BSL-1.0
+// seawire/fmt.hpp: messages and value types through {fmt}, in the plain and the JSON form.
+// Built everywhere; the checks need {fmt} (SEAWIRE_HAS_FMT, set by tests/CMakeLists.txt).
+
+#include <catch2/catch.hpp>
+
+#if SEAWIRE_HAS_FMT
+#include <fmt/format.h>
+
+#include <string>
+#include <string_view>
+
+#include "seawire/fmt.hpp"
+#include "seawire/kingfisher/messages.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/robotx/messages.hpp"
+#include "seawire/sandshark/messages.hpp"
+#include "seawire/standard/rmc.hpp"
+
+using namespace seawire;
+using namespace seawire::nmea;
+
+namespace {
+template <class T>
+T must_decode(std::string_view line) {
+  const auto r = decode<T>(line);
+  REQUIRE(r);
+  return r.value;
+}
+
+struct string_sink {
+  std::string s;
+  void put(char c) { s += c; }
+  void put(std::string_view v) { s += v; }
+};
+
+constexpr std::string_view kNvg =
+    "$CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
+    "164959.006*78";
+}  // namespace
+
+TEST_CASE("messages: plain and JSON") {
+  const auto nvg = must_decode<kingfisher::cpnvg>(kNvg);
+  CHECK(fmt::format("{}", nvg) ==
+        "CPNVG{timestamp=16:49:59.034, latitude=42.36185237, longitude=-71.0908130, "
+        "position_quality=true, altitude_m=0, depth_m=0, heading_deg=234.32964, "
+        "roll_deg=-6.796959, pitch_deg=-1.706798, nav_timestamp=16:49:59.006}");
+  // {:j} is write_json, byte for byte.
+  string_sink k;
+  write_json(k, nvg);
+  CHECK(fmt::format("{:j}", nvg) == k.s);
+
+  const auto sts = must_decode<sandshark::bpsts>("$BPSTS,231133.12,1,BWSI Autonomy OK*46");
+  CHECK(fmt::format("{}", sts) ==
+        R"(BPSTS{timestamp=23:11:33.12, all_ok=true, message="BWSI Autonomy OK"})");
+  const auto rmc = must_decode<standard::rmc>("$GNRMC,164959.00,V,,,,,,,311214,,,N*61");
+  CHECK(fmt::format("{}", rmc) ==
+        "GNRMC{time=16:49:59.00, status=V, latitude=null, longitude=null, speed_knots=null, "
+        "course_true=null, date=2014-12-31, magnetic_variation=null, mode=N, "
+        "navigational_status=null}");
+  const auto gat = must_decode<robotx::rxgat>("$RXGAT,101218,161229,AUVSI,1,2,Y,RGB*25");
+  CHECK(fmt::format("{}", gat) ==
+        R"(RXGAT{date=2018-12-10, time=16:12:29, team_id="AUVSI", entrance_gate=1, exit_gate=2, )"
+        R"(light_buoy_active=Y, light_pattern=RGB})");
+}
+
+TEST_CASE("value types on their own") {
+  const auto nvg = must_decode<kingfisher::cpnvg>(kNvg);
+  CHECK(fmt::format("{}", nvg.lat) == "42.36185237");
+  CHECK(fmt::format("{}", nvg.lon) == "-71.0908130");
+  CHECK(fmt::format("{}", nvg.timestamp) == "16:49:59.034");
+  CHECK(fmt::format("{:j}", nvg.timestamp) == R"("16:49:59.034")");
+  CHECK(fmt::format("{}", *nvg.heading_deg) == "234.32964");
+  CHECK(fmt::format("{:>12}|", std::string_view("x")) == "           x|");  // fmt itself intact
+  CHECK(fmt::format("{}", date{2018, 12, 10}) == "2018-12-10");
+  CHECK(fmt::format("{}", text<16>("BWSI")) == "BWSI");
+  CHECK(fmt::format("{:j}", text<16>("a\"b")) == R"("a\"b")");
+  CHECK(fmt::format("{}", sandshark::log_state::on) == "ON");
+  CHECK(fmt::format("{:j}", standard::rmc_status::warning) == R"("V")");
+  const auto hrb =
+      must_decode<robotx::rxhrb>("$RXHRB,111221,161229,21.31198,N,157.88972,W,ROBOT,2,1*11");
+  CHECK(fmt::format("{} {}", *hrb.lat, *hrb.lon) == "21.31198 -157.88972");
+}
+
+TEST_CASE("unknown sentences: the line, or its fields as JSON") {
+  const auto s = parse("$GPGSV,1,1,01,12,45,180,40*47");
+  REQUIRE(s);
+  const unknown_sentence u{s.value};
+  CHECK(fmt::format("{}", u) == "$GPGSV,1,1,01,12,45,180,40*47");
+  CHECK(fmt::format("{:j}", u) ==
+        R"({"type":"GPGSV","fields":["1","1","01","12","45","180","40"]})");
+}
+
+#else
+TEST_CASE("seawire/fmt.hpp needs {fmt}: not tested in this build") { SUCCEED(); }
+#endif
