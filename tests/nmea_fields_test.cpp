@@ -194,6 +194,7 @@ TEST_CASE("malformed fields: errc and field number") {
       {"TSALL,12000,010100,4221.7,N,07105.4,W,0,0,0,A,ON,", errc::bad_time, 1},
       {"TSALL,120000.1234567890,010100,4221.7,N,07105.4,W,0,0,0,A,ON,", errc::bad_time, 1},
       {"TSALL,1200a0,010100,4221.7,N,07105.4,W,0,0,0,A,ON,", errc::bad_time, 1},
+      {"TSALL,120000.,010100,4221.7,N,07105.4,W,0,0,0,A,ON,", errc::bad_time, 1},
       {"TSALL,120000:5,010100,4221.7,N,07105.4,W,0,0,0,A,ON,", errc::bad_time, 1},
       {"TSALL,,010100,4221.7,N,07105.4,W,0,0,0,A,ON,", errc::missing_field, 1},
       // date

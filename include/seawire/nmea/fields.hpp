@@ -630,7 +630,9 @@ struct codec<time_of_day> {
     std::size_t places = 0;
     if (s.size() > 6) {
       places = s.size() - 7;
-      if (s[6] != '.' || places > 9 || !detail::parse_fixed_digits(s, 7, places, frac))
+      // "hhmmss." with nothing after the point is malformed, not zero places.
+      if (s[6] != '.' || places == 0 || places > 9 ||
+          !detail::parse_fixed_digits(s, 7, places, frac))
         return errc::bad_time;
     }
     v = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(sec),
