@@ -1,0 +1,496 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// anello::stream_reader: one input link carrying both NMEA 0183 sentences and 0xAB00 binary
+// frames (spec 002, sections 2.1 and 2.2), cut into items in the order they were sent, from
+// chunks of any size.
+//
+//   anello::stream_reader<> reader;
+//   reader.feed(chunk);                        // bytes as they arrive: std::span<const uint8_t>
+//   while (auto item = reader.next()) {        //   or std::string_view
+//     if (item->is_frame()) use(item->frame);  // sensor_frame_raw, CRC checked; item->bytes
+//     else use(item->sentence.text);           // "$VMVBW,...*58": decode_input() it
+//   }
+//   ...
+//   while (auto item = reader.finish()) ...;   // end of stream: what is left, then nullopt
+//
+// The binary protocol has no byte stuffing, so which bytes are a frame is decided by the bytes
+// alone. The rules, in the order a byte meets them:
+// - Between items, '$' starts a sentence and 0xAB starts a frame candidate; CR and LF are line
+//   breaks; every other byte is noise.
+// - A candidate must go on 00 (the frame id AB 00), then 00 30 (the length: 48 is the only
+//   length the frame has). 0xAB followed by anything but 00 is one noise byte. AB 00 followed by
+//   any other length is a bad_length_frames: the length is never believed, so a lying 0xFFFF
+//   cannot make the reader wait. The byte that broke the pattern is read again as a new start.
+// - A candidate with a good header takes the next 52 bytes whatever they are ('$', CR, LF, AB
+//   are payload there), then its CRC is checked. A good CRC yields the frame.
+// - A bad CRC (bad_crc_frames), or a candidate cut short by finish() (truncated_frames), is not
+//   a frame: its AB is dropped and the bytes after the AB are read again from the "between
+//   items" state, so a sentence or a real frame that a false AB 00 00 30 swallowed still comes
+//   out. The reader keeps those bytes itself (they are the candidate's buffer), so this works
+//   across any chunking. Each re-read is shorter than the one before, so it ends; a byte is read
+//   again at most 14 times (candidates start 4 bytes apart at the closest: AB 00 00 30 AB ...).
+// - A sentence ends at LF, CR or CR LF. A 0xAB inside a sentence ends it as `interrupted`, like
+//   a '$' does (sentences are printable ASCII, so the AB belongs to what comes next), and the AB
+//   starts a candidate. Any other byte outside 0x20..0x7E drops the sentence (invalid_bytes) and
+//   the rest of its line; so does a sentence longer than Capacity (overlong). A '$' or 0xAB in
+//   the dropped rest starts a new item: a frame can follow garbage without a line break.
+// - Nothing else is checked: checksums and fields are decode_input()'s business.
+//
+// What a false sync costs: the items inside its 56 bytes come out once the 56th byte has arrived
+// (or at finish()), not before; nothing is lost and the order is kept.
+//
+// Every item depends only on the byte stream, never on how it was cut into chunks: the
+// re-read bytes are processed by the same state machine as fresh ones, and the only lookahead
+// (CR or CR LF) waits for the next byte wherever it comes from.
+//
+// Accounting: every byte fed ends in exactly one bucket once finish() has returned nullopt:
+//   fed = sum of yielded sentence text + 56 * frames + noise_bytes + dropped_bytes
+//         + line_break_bytes.
+// A rejected candidate contributes its AB to dropped_bytes; its other bytes land wherever their
+// re-read puts them (mostly noise_bytes).
+//
+// Memory is fixed: Capacity bytes for a sentence cut by a chunk boundary, 56 for a frame, 55 to
+// re-read; no heap, noexcept, usable in constant expressions (the std::span feed() excepted: it
+// has to reinterpret the bytes as chars).
+
+#include <algorithm>
+#include <cassert>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <type_traits>
+
+#include "seawire/anello/frame.hpp"
+#include "seawire/nmea/framer.hpp"
+
+namespace seawire::anello {
+
+/// What a stream item is.
+enum class stream_item_kind : std::uint8_t {
+  sentence,  ///< an NMEA 0183 line: stream_item::sentence
+  frame,     ///< a 0xAB00 binary frame with a good CRC: stream_item::bytes and ::frame
+};
+
+/// One item of a mixed NMEA + binary stream.
+struct stream_item {
+  stream_item_kind kind = stream_item_kind::sentence;
+  /// Of the item's first byte ('$' or 0xAB), counted from 0 at construction or reset().
+  std::uint64_t offset = 0;
+  /// kind == sentence: the line from its '$' up to its line ending, the ending, and the line
+  /// number (line breaks before it, plus one; CR and LF inside frames are not line breaks). The
+  /// text is valid until the next call of next(), feed() or finish(). Empty for a frame.
+  nmea::framed_line sentence{};
+  /// kind == frame: the 56 bytes as received (owned, unlike the sentence text).
+  frame_bytes bytes{};
+  /// kind == frame: the bytes decoded; all "not available" for a sentence.
+  sensor_frame_raw frame{};
+
+  [[nodiscard]] constexpr bool is_sentence() const noexcept {
+    return kind == stream_item_kind::sentence;
+  }
+  [[nodiscard]] constexpr bool is_frame() const noexcept { return kind == stream_item_kind::frame; }
+
+  friend constexpr bool operator==(const stream_item&, const stream_item&) noexcept = default;
+};
+
+/// What a stream_reader has seen. Items, rejected frames and dropped lines are counted once;
+/// bytes as the accounting rule in the header comment says.
+struct stream_stats {
+  std::uint64_t sentences = 0;          ///< sentences yielded
+  std::uint64_t frames = 0;             ///< frames yielded
+  std::uint64_t noise_bytes = 0;        ///< bytes outside any item (not counting CR, LF)
+  std::uint64_t bad_crc_frames = 0;     ///< 56-byte candidates whose CRC did not match
+  std::uint64_t bad_length_frames = 0;  ///< AB 00 followed by a length other than 00 30
+  std::uint64_t truncated_frames = 0;   ///< candidates (AB 00 at least) cut by finish()
+  std::uint64_t interrupted = 0;        ///< partial sentences ended by a '$' or a 0xAB
+  std::uint64_t overlong = 0;           ///< sentences dropped for exceeding the capacity
+  std::uint64_t invalid_bytes = 0;      ///< sentences dropped for a byte outside 0x20..0x7E
+  std::uint64_t dropped_bytes = 0;      ///< bytes of dropped sentences + the AB of each rejected
+                                        ///< candidate
+  std::uint64_t line_break_bytes = 0;   ///< CR and LF bytes read as line breaks
+
+  friend constexpr bool operator==(const stream_stats&, const stream_stats&) noexcept = default;
+};
+
+/// Byte stream -> NMEA sentences and binary frames, in fixed memory. Sans-I/O; never allocates;
+/// noexcept throughout (the callback overloads are as noexcept as their callback).
+template <std::size_t Capacity = 1024>
+class stream_reader {
+  static_assert(Capacity > 0, "a reader must hold at least the '$'");
+  static_assert(Capacity < (std::size_t{1} << 48), "capacity + 1 must not overflow");
+
+ public:
+  static constexpr std::size_t capacity = Capacity;
+
+  /// Hands over the next chunk. Precondition: next() has returned nullopt since the last feed()
+  /// (the previous chunk is drained); the chunk must stay alive until it is.
+  constexpr void feed(std::string_view chunk) noexcept {
+    assert(drained() && "stream_reader::feed: previous chunk not drained by next()");
+    assert(!ending_ && "stream_reader::feed: finish() not called until it returned nullopt");
+    base_ += chunk_.size();
+    chunk_ = chunk;
+    pos_ = 0;
+  }
+
+  /// The same for raw bytes.
+  void feed(std::span<const std::uint8_t> chunk) noexcept {
+    feed(std::string_view(reinterpret_cast<const char*>(chunk.data()), chunk.size()));
+  }
+
+  /// Feeds `chunk` and drains it, calling on_item(const stream_item&) for each item.
+  template <class F>
+  constexpr void feed(std::string_view chunk,
+                      F&& on_item) noexcept(std::is_nothrow_invocable_v<F&, const stream_item&>) {
+    feed(chunk);
+    while (const std::optional<stream_item> item = next()) on_item(*item);
+  }
+
+  template <class F>
+  void feed(std::span<const std::uint8_t> chunk,
+            F&& on_item) noexcept(std::is_nothrow_invocable_v<F&, const stream_item&>) {
+    feed(chunk);
+    while (const std::optional<stream_item> item = next()) on_item(*item);
+  }
+
+  /// The next item of the current chunk, or nullopt once the chunk is used up (or, after
+  /// finish(), once the end of the stream is fully resolved).
+  [[nodiscard]] constexpr std::optional<stream_item> next() noexcept {
+    for (;;) {
+      if (rpos_ < rlen_) {
+        if (auto item = step(replay_, rpos_, rlen_)) return item;
+      } else if (pos_ < chunk_.size()) {
+        if (auto item = step(chunk_.data(), pos_, chunk_.size())) return item;
+      } else if (ending_) {
+        if (auto item = end_of_stream()) return item;
+        if (rpos_ < rlen_) continue;  // a truncated candidate's bytes to read again
+        ending_ = false;
+        prev_cr_ = false;
+        return std::nullopt;
+      } else {
+        return std::nullopt;
+      }
+    }
+  }
+
+  /// End of stream: call until it returns nullopt. Yields the sentence still waiting for its
+  /// line ending (ending none, or cr), and whatever the bytes of a truncated candidate hold.
+  /// Precondition: the current chunk is drained. Afterwards the reader sits between items with
+  /// its counters and line number kept; reset() before reusing it for an unrelated stream.
+  [[nodiscard]] constexpr std::optional<stream_item> finish() noexcept {
+    assert(pos_ == chunk_.size() && "stream_reader::finish: current chunk not drained by next()");
+    ending_ = true;
+    return next();
+  }
+
+  /// Finishes, calling on_item(const stream_item&) for each item the end of stream releases.
+  template <class F>
+  constexpr void finish(F&& on_item) noexcept(std::is_nothrow_invocable_v<F&, const stream_item&>) {
+    while (const std::optional<stream_item> item = finish()) on_item(*item);
+  }
+
+  [[nodiscard]] constexpr const stream_stats& stats() const noexcept { return stats_; }
+
+  /// Back to the freshly constructed state: no chunk, nothing pending, offset 0, line 1, zero
+  /// stats.
+  constexpr void reset() noexcept {
+    // Field by field: a whole new reader would put Capacity bytes on the stack.
+    chunk_ = {};
+    pos_ = 0;
+    base_ = 0;
+    line_ = 1;
+    sentence_start_ = 0;
+    frame_start_ = 0;
+    llen_ = 0;
+    stats_ = {};
+    flen_ = 0;
+    rpos_ = 0;
+    rlen_ = 0;
+    state_ = state::idle;
+    prev_cr_ = false;
+    ending_ = false;
+  }
+
+ private:
+  using line_ending = nmea::line_ending;
+
+  enum class state : std::uint8_t {
+    idle,      // between items
+    sentence,  // lbuf_[0, llen_) is the start of a sentence cut by the end of its source
+    held,      // lbuf_[0, llen_) is a complete line whose CR ended its source: CR or CR LF?
+    discard,   // dropping the rest of an overlong or invalid line
+    frame,     // fbuf_[0, flen_) is a frame candidate; its header so far is right
+  };
+
+  static constexpr char sync = static_cast<char>(0xAB);
+  static constexpr std::size_t replay_capacity = frame_size - 1;
+
+  [[nodiscard]] constexpr bool drained() const noexcept {
+    return pos_ == chunk_.size() && rpos_ == rlen_;
+  }
+
+  // Stream offset of byte i of source s. Re-read bytes are always the ones just before the
+  // unread part of the chunk, since they come from the candidate that ended there.
+  [[nodiscard]] constexpr std::uint64_t offset_of(const char* s, std::size_t i) const noexcept {
+    if (s == replay_) return base_ + pos_ - (rlen_ - i);
+    return base_ + i;
+  }
+
+  // Reads source s from i (a reference to rpos_ or pos_) until an item, a change of state or
+  // the end of s.
+  constexpr std::optional<stream_item> step(const char* s, std::size_t& i,
+                                            std::size_t end) noexcept {
+    switch (state_) {
+      case state::held: {
+        line_ending e = line_ending::cr;
+        if (s[i] == '\n') {
+          e = line_ending::crlf;
+          ++stats_.line_break_bytes;
+          ++i;
+        }
+        state_ = state::idle;
+        return yield_sentence(std::string_view(lbuf_, llen_), e);
+      }
+      case state::idle: return idle(s, i, end);
+      case state::sentence: return scan_sentence(s, i, end, llen_);
+      case state::discard:
+        // Cold (only after an error), so byte by byte.
+        for (; i < end; ++i) {
+          const char c = s[i];
+          if (c == '$' || c == sync || c == '\r' || c == '\n') {
+            state_ = state::idle;  // idle starts the item or counts the line break
+            break;
+          }
+          ++stats_.dropped_bytes;
+        }
+        return std::nullopt;
+      case state::frame: return scan_frame(s, i, end);
+    }
+    return std::nullopt;
+  }
+
+  // Between items. Real links send items back to back, so this loop mostly sees one byte.
+  constexpr std::optional<stream_item> idle(const char* s, std::size_t& i,
+                                            std::size_t end) noexcept {
+    for (; i < end; ++i) {
+      const char c = s[i];
+      if (c == '$') {
+        prev_cr_ = false;
+        return scan_sentence(s, i, end, 0);
+      }
+      if (c == sync) {
+        prev_cr_ = false;
+        frame_start_ = offset_of(s, i);
+        fbuf_[0] = 0xAB;
+        flen_ = 1;
+        state_ = state::frame;
+        ++i;
+        return scan_frame(s, i, end);
+      }
+      if (c == '\r' || c == '\n') {
+        ++stats_.line_break_bytes;
+        if (c == '\r' || !prev_cr_) ++line_;
+        prev_cr_ = c == '\r';
+      } else {
+        ++stats_.noise_bytes;
+        prev_cr_ = false;
+      }
+    }
+    return std::nullopt;
+  }
+
+  // The sentence going on at i; `have` of its bytes are already in lbuf_ (0: it starts with the
+  // '$' at i). Yields the line if it ends in this source, else stashes or drops it.
+  constexpr std::optional<stream_item> scan_sentence(const char* s, std::size_t& i, std::size_t end,
+                                                     std::size_t have) noexcept {
+    using scan = nmea::detail::framer_scan;
+    const std::size_t start = i;
+    if (have == 0) sentence_start_ = offset_of(s, start);
+    // Look no further than one byte past the capacity: that byte decides "overlong".
+    const std::size_t room = Capacity + 1 - have;
+    const std::size_t limit = end - start > room ? start + room : end;
+    // find_special stops at 0xAB too: it is outside 0x20..0x7E.
+    const std::size_t q = scan::find_special(s, have == 0 ? start + 1 : start, limit);
+    const std::size_t n = have + (q - start);  // sentence bytes before q
+    if (q == limit) {
+      if (n > Capacity) {
+        ++stats_.overlong;
+        stats_.dropped_bytes += n;
+        i = q;
+        state_ = state::discard;
+      } else {  // q == end: the sentence goes on in the next source
+        stash(s, start, q, have);
+        i = end;
+        state_ = state::sentence;
+      }
+      return std::nullopt;
+    }
+    const char c = s[q];
+    if (c == '\r') {
+      ++stats_.line_break_bytes;
+      if (q + 1 == end) {
+        stash(s, start, q, have);
+        i = end;
+        state_ = state::held;
+        return std::nullopt;
+      }
+      state_ = state::idle;
+      if (s[q + 1] == '\n') {
+        ++stats_.line_break_bytes;
+        i = q + 2;
+        return yield_sentence(text(s, start, q, have), line_ending::crlf);
+      }
+      i = q + 1;
+      return yield_sentence(text(s, start, q, have), line_ending::cr);
+    }
+    if (c == '\n') {
+      ++stats_.line_break_bytes;
+      state_ = state::idle;
+      i = q + 1;
+      return yield_sentence(text(s, start, q, have), line_ending::lf);
+    }
+    if (c == '$' || c == sync) {  // a new item starts at q
+      ++stats_.interrupted;
+      stats_.dropped_bytes += n;
+      i = q;
+      state_ = state::idle;
+      return std::nullopt;
+    }
+    ++stats_.invalid_bytes;
+    stats_.dropped_bytes += n + 1;
+    i = q + 1;
+    state_ = state::discard;
+    return std::nullopt;
+  }
+
+  // The candidate in fbuf_[0, flen_) takes bytes from i.
+  constexpr std::optional<stream_item> scan_frame(const char* s, std::size_t& i,
+                                                  std::size_t end) noexcept {
+    // AB 00 00 30: the header is checked byte by byte, so a false sync is given up at the first
+    // byte that betrays it, without waiting for what its length field promises.
+    constexpr std::uint8_t header[4] = {0xAB, 0x00, 0x00, static_cast<std::uint8_t>(payload_size)};
+    static_assert(payload_size <= 0xFF, "the length field's high byte is 0");
+    for (; flen_ < 4 && i < end; ++i) {
+      const auto b = static_cast<std::uint8_t>(s[i]);
+      if (b != header[flen_]) {
+        reject_header();  // s[i] is read again from the idle state
+        return std::nullopt;
+      }
+      fbuf_[flen_++] = b;
+    }
+    const std::size_t n = std::min(frame_size - flen_, end - i);
+    for (std::size_t k = 0; k < n; ++k) fbuf_[flen_ + k] = static_cast<std::uint8_t>(s[i + k]);
+    i += n;
+    flen_ += n;
+    if (flen_ < frame_size) return std::nullopt;
+
+    state_ = state::idle;
+    const result<sensor_frame_raw> r = decode_frame(fbuf_);
+    if (r) {
+      ++stats_.frames;
+      stream_item item;
+      item.kind = stream_item_kind::frame;
+      item.offset = frame_start_;
+      item.bytes = fbuf_;
+      item.frame = r.value;
+      return item;
+    }
+    ++stats_.bad_crc_frames;
+    read_again();
+    return std::nullopt;
+  }
+
+  // AB then not 00 is a lone noise byte. AB 00 then a wrong length byte is a bad length: the AB
+  // is dropped and the 00s are noise (read again, they would be nothing else).
+  constexpr void reject_header() noexcept {
+    if (flen_ == 1) {
+      ++stats_.noise_bytes;
+    } else {
+      ++stats_.bad_length_frames;
+      ++stats_.dropped_bytes;
+      stats_.noise_bytes += flen_ - 1;
+    }
+    flen_ = 0;
+    state_ = state::idle;
+  }
+
+  // A rejected candidate: drop its AB and read fbuf_[1, flen_) again. They are followed in the
+  // stream by the unread bytes of the chunk: a candidate only completes or is truncated once
+  // every re-read byte before it is used up, which the assert checks.
+  constexpr void read_again() noexcept {
+    assert(rpos_ == rlen_ && flen_ >= 1 && flen_ - 1 <= replay_capacity);
+    ++stats_.dropped_bytes;
+    for (std::size_t k = 1; k < flen_; ++k) replay_[k - 1] = static_cast<char>(fbuf_[k]);
+    rpos_ = 0;
+    rlen_ = flen_ - 1;
+    flen_ = 0;
+    state_ = state::idle;
+  }
+
+  // Both sources are used up and finish() was called: resolve what is pending.
+  constexpr std::optional<stream_item> end_of_stream() noexcept {
+    const state was = state_;
+    state_ = state::idle;
+    switch (was) {
+      case state::held: return yield_sentence(std::string_view(lbuf_, llen_), line_ending::cr);
+      case state::sentence:
+        return yield_sentence(std::string_view(lbuf_, llen_), line_ending::none);
+      case state::frame:
+        if (flen_ == 1) {
+          ++stats_.noise_bytes;  // a lone AB: not even a frame id
+          flen_ = 0;
+        } else {
+          ++stats_.truncated_frames;
+          read_again();
+        }
+        break;
+      case state::idle:
+      case state::discard: break;
+    }
+    return std::nullopt;
+  }
+
+  constexpr stream_item yield_sentence(std::string_view line_text, line_ending e) noexcept {
+    ++stats_.sentences;
+    stream_item item;
+    item.kind = stream_item_kind::sentence;
+    item.offset = sentence_start_;
+    item.sentence = nmea::framed_line{line_text, e, line_};
+    if (e != line_ending::none) ++line_;
+    return item;
+  }
+
+  constexpr void stash(const char* s, std::size_t from, std::size_t to, std::size_t have) noexcept {
+    std::copy_n(s + from, to - from, lbuf_ + have);
+    llen_ = have + (to - from);
+  }
+
+  // The finished sentence: a view into the source when it lies wholly there, else the buffer.
+  constexpr std::string_view text(const char* s, std::size_t from, std::size_t to,
+                                  std::size_t have) noexcept {
+    if (have == 0) return std::string_view(s + from, to - from);
+    stash(s, from, to, have);
+    return std::string_view(lbuf_, llen_);
+  }
+
+  std::string_view chunk_{};
+  std::size_t pos_ = 0;               // next unread byte of chunk_
+  std::uint64_t base_ = 0;            // stream offset of chunk_[0]
+  std::uint64_t line_ = 1;            // number of the line being read
+  std::uint64_t sentence_start_ = 0;  // stream offset of the sentence being collected
+  std::uint64_t frame_start_ = 0;     // stream offset of the candidate being collected
+  std::size_t llen_ = 0;              // bytes in lbuf_ (state sentence or held)
+  stream_stats stats_{};
+  std::size_t flen_ = 0;  // bytes in fbuf_ (state frame)
+  std::size_t rpos_ = 0;  // next byte of replay_ to read
+  std::size_t rlen_ = 0;  // bytes in replay_
+  state state_ = state::idle;
+  bool prev_cr_ = false;  // the last byte read between items was a CR: an LF now ends no line
+  bool ending_ = false;   // finish() was called: resolve what is pending at the end of input
+  frame_bytes fbuf_{};
+  char replay_[replay_capacity]{};
+  char lbuf_[Capacity]{};
+};
+
+}  // namespace seawire::anello
