@@ -71,3 +71,4 @@
 #include "seawire/anello/frame.hpp"
 #include "seawire/anello/gpsctrl.hpp"
 #include "seawire/anello/inputs.hpp"
+#include "seawire/anello/stream.hpp"
