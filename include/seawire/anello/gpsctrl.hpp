@@ -28,6 +28,8 @@ constexpr std::string_view enum_chars(gps_control) noexcept { return "012"; }
 struct papgpsctrl {
   gps_control control = gps_control::use;  // 1 [GPS control] 1 use, 0 ignore, 2 internal off
 
+  friend constexpr bool operator==(const papgpsctrl&, const papgpsctrl&) noexcept = default;
+
   static constexpr auto nmea =
       nmea::sentence<"PAPGPSCTRL">(nmea::field<&papgpsctrl::control>("control"));
 };

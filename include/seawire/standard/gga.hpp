@@ -44,6 +44,8 @@ struct gga {
   std::optional<decimal> dgps_age_s;           // 13 seconds since the last DGPS update
   std::optional<std::uint16_t> dgps_station;   // 14 station id 0000-1023
 
+  friend constexpr bool operator==(const gga&, const gga&) noexcept = default;
+
   static constexpr auto nmea = sentence<"--GGA">(
       field<&gga::time>("time"), field<&gga::lat>("latitude"), field<&gga::lon>("longitude"),
       field<&gga::quality>("quality"), field<&gga::satellites>("satellites", zero_pad(2)),

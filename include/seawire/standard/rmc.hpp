@@ -56,6 +56,8 @@ struct rmc {
   std::optional<mode_indicator> mode;                       // 12 NMEA 2.3+
   std::optional<standard::nav_status> navigational_status;  // 13 NMEA 4.1+
 
+  friend constexpr bool operator==(const rmc&, const rmc&) noexcept = default;
+
   static constexpr auto nmea = sentence<"--RMC">(
       field<&rmc::time>("time"), field<&rmc::status>("status"), field<&rmc::lat>("latitude"),
       field<&rmc::lon>("longitude"), field<&rmc::speed_knots>("speed_knots", at_least(0)),

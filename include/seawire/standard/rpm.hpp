@@ -39,6 +39,8 @@ struct rpm {
   std::optional<decimal> pitch_percent;   // 4 [Propeller pitch] % of maximum, negative = astern
   std::optional<rpm_status> status;       // 5 [Status] A data valid, V invalid
 
+  friend constexpr bool operator==(const rpm&, const rpm&) noexcept = default;
+
   static constexpr auto nmea =
       sentence<"--RPM">(field<&rpm::source>("source"), field<&rpm::number>("number"),
                         field<&rpm::speed_rpm>("speed_rpm"),

@@ -32,6 +32,8 @@ struct rsa {
   std::optional<decimal> port_angle;           // 3 [Port rudder sensor] degrees, as field 1
   std::optional<rsa_status> port_status;       // 4 [Status] A data valid, V invalid
 
+  friend constexpr bool operator==(const rsa&, const rsa&) noexcept = default;
+
   static constexpr auto nmea =
       sentence<"--RSA">(field<&rsa::starboard_angle>("starboard_angle", in_range(-180, 180)),
                         field<&rsa::starboard_status>("starboard_status"),

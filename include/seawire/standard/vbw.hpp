@@ -45,6 +45,8 @@ struct vbw {
   std::optional<decimal> stern_transverse_ground_knots;  // 9 NMEA 3.0+, knots, negative = port
   std::optional<vbw_status> stern_ground_status;         // 10 NMEA 3.0+
 
+  friend constexpr bool operator==(const vbw&, const vbw&) noexcept = default;
+
   static constexpr auto nmea = sentence<"--VBW">(
       field<&vbw::longitudinal_water_knots>("longitudinal_water_knots"),
       field<&vbw::transverse_water_knots>("transverse_water_knots"),

@@ -26,6 +26,8 @@ struct vhw {
   std::optional<decimal> speed_knots;           // 5,6 [Knots, N] speed through water, knots
   std::optional<decimal> speed_kmh;             // 7,8 [Kilometers, K] speed through water, km/h
 
+  friend constexpr bool operator==(const vhw&, const vhw&) noexcept = default;
+
   static constexpr auto nmea = sentence<"--VHW">(
       field<&vhw::heading_true_deg>("heading_true_deg", in_range(0, 360), unit('T')),
       field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", in_range(0, 360), unit('M')),

@@ -40,6 +40,8 @@ struct vwr {
     return side == bow_side::left ? -a : a;
   }
 
+  friend constexpr bool operator==(const vwr&, const vwr&) noexcept = default;
+
   static constexpr auto nmea = sentence<"--VWR">(
       field<&vwr::angle_deg>("angle_deg", in_range(0, 180)), field<&vwr::side>("side"),
       field<&vwr::speed_knots>("speed_knots", at_least(0), unit('N')),
