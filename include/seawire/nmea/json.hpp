@@ -652,7 +652,7 @@ template <message_like T, class Lookup>
     if (e == errc::ok) {
       if constexpr (F::is_optional) {
         if (v.blank()) {
-          member.reset();
+          detail::clear_optional(member);
         } else {
           V value{};
           e = read_json_value(v, value, precision);
