@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: BSL-1.0
+// seawire-decode: NMEA-style sentences on stdin -> one JSON object per message (or re-encoded
+// sentences, or nothing but a verdict). A thin program over the library: the framer cuts the
+// stream, message_set::visit decodes each sentence by its address, nmea/json.hpp writes it.
+// See --help, and README.programs.md for the manual.
+
+#include <CLI/CLI.hpp>
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "io.hpp"
+#include "messages.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/framer.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+namespace {
+
+using namespace seawire;
+using seawire::tools::all_messages;
+
+enum class format { json, nmea, none };
+
+struct options {
+  format fmt = format::json;
+  nmea::parse_policy policy;
+  bool stats = false;
+  bool line_buffered = false;
+};
+
+// Rejected input shows at most this much of its line.
+constexpr std::size_t max_input_shown = 256;
+
+class decoder {
+ public:
+  explicit decoder(const options& o) : opt_(o), policy_(o.policy), out_(stdout) {
+    // The framer has taken the line ending off: it is checked here, from what the framer saw.
+    policy_.require_crlf = false;
+  }
+
+  // Feeds one piece of input; `ends_line` when it ends with the line's LF.
+  void piece(std::string_view bytes, bool ends_line) {
+    piece_ = bytes;
+    framer_.feed(bytes);
+    while (const std::optional<nmea::framed_line> l = framer_.next()) {
+      check_drops();  // what was dropped before this sentence is reported before it
+      sentence(*l);
+    }
+    check_drops();
+    if (ends_line) {
+      line_head_.clear();
+      line_reported_ = false;
+      ++line_;
+    } else if (line_head_.size() < max_input_shown) {  // the line goes on in the next chunk
+      line_head_.append(bytes.substr(0, max_input_shown - line_head_.size()));
+    }
+  }
+
+  void finish() {
+    piece_ = {};
+    if (const std::optional<nmea::framed_line> l = framer_.finish()) {
+      check_drops();
+      sentence(*l);
+    }
+    check_drops();
+    out_.flush();
+  }
+
+  [[nodiscard]] bool all_good() const { return rejected_ == 0 && !out_.failed(); }
+  [[nodiscard]] bool output_failed() const { return out_.failed(); }
+
+  void print_stats() const {
+    const nmea::framer_stats& f = framer_.stats();
+    std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected\n",
+                 static_cast<unsigned long long>(decoded_),
+                 static_cast<unsigned long long>(rejected_));
+    if (!by_type_.empty()) std::fprintf(stderr, "  by type:\n");
+    for (const auto& [type, n] : by_type_)
+      std::fprintf(stderr, "    %-20s %llu\n", type.c_str(), static_cast<unsigned long long>(n));
+    bool any_error = false;
+    for (std::size_t e = 0; e < by_error_.size(); ++e) {
+      if (by_error_[e] == 0) continue;
+      if (!any_error) std::fprintf(stderr, "  by error:\n");
+      any_error = true;
+      const std::string_view n = name(static_cast<errc>(e));
+      std::fprintf(stderr, "    %-20.*s %llu\n", static_cast<int>(n.size()), n.data(),
+                   static_cast<unsigned long long>(by_error_[e]));
+    }
+    if (reencode_failures_ > 0)
+      std::fprintf(stderr, "    (%llu of them refused when re-encoded)\n",
+                   static_cast<unsigned long long>(reencode_failures_));
+    std::fprintf(stderr,
+                 "  framer: %llu sentences, %llu noise bytes, %llu interrupted, %llu overlong, "
+                 "%llu with invalid bytes, %llu dropped bytes\n",
+                 static_cast<unsigned long long>(f.sentences),
+                 static_cast<unsigned long long>(f.noise_bytes),
+                 static_cast<unsigned long long>(f.interrupted),
+                 static_cast<unsigned long long>(f.overlong),
+                 static_cast<unsigned long long>(f.invalid_bytes),
+                 static_cast<unsigned long long>(f.dropped_bytes));
+  }
+
+ private:
+  // ---- one sentence ----
+
+  void sentence(const nmea::framed_line& l) {
+    if (opt_.policy.require_crlf && l.ending != nmea::line_ending::crlf) {
+      reject(l.line, errc::bad_line_ending, 0,
+             std::string(message(errc::bad_line_ending)) + ": the line does not end in CR LF",
+             l.text);
+      return;
+    }
+    const result<nmea::sentence_view> s = nmea::parse(l.text, policy_);
+    if (!s) {
+      parse_error(l, s);
+      return;
+    }
+    const result<bool> r =
+        all_messages::visit(s.value, policy_, [&](const auto& msg) { emit(l, s.value, msg); });
+    if (!r) decode_error(l, s.value, r);
+  }
+
+  template <class M>
+  void emit(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
+    switch (opt_.fmt) {
+      case format::json:
+        nmea::write_json(out_, msg);
+        out_.put('\n');
+        break;
+      case format::nmea:
+        if (!reencode(l, s, msg)) return;
+        break;
+      case format::none: break;
+    }
+    ++decoded_;
+    if (opt_.stats) ++by_type_[std::string(s.address)];
+    if (opt_.line_buffered) out_.flush();
+  }
+
+  template <class M>
+  bool reencode(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
+    std::array<char, 1100> buf;
+    result<std::size_t> r;
+    if constexpr (std::is_same_v<M, nmea::unknown_sentence>) {
+      // Not ours to interpret: the same fields, sealed the way seawire seals.
+      nmea::writer w(std::span<char>(buf.data(), buf.size()));
+      w.begin(s.address);
+      if (s.field_count > 0) {
+        w.next_field();
+        w.put(s.body);
+      }
+      r = w.seal();
+    } else {
+      r = nmea::encode_to(msg, std::span<char>(buf.data(), buf.size()));
+    }
+    if (!r) {
+      ++reencode_failures_;
+      std::string detail = std::string(s.address) + " cannot be re-encoded";
+      if (r.field != 0) {
+        detail += ": field " + std::to_string(r.field) + " (" +
+                  std::string(all_messages::field_name(s.address, r.field)) + ")";
+      }
+      detail += ": " + std::string(message(r.ec));
+      reject(l.line, r.ec, r.field, detail, l.text);
+      return false;
+    }
+    out_.put(std::string_view(buf.data(), r.value));
+    return true;
+  }
+
+  // ---- errors ----
+
+  void parse_error(const nmea::framed_line& l, const result<nmea::sentence_view>& s) {
+    std::string detail(message(s.ec));
+    if (s.ec == errc::checksum_mismatch) {
+      // Parse again without the check, to say what the checksum should have been.
+      nmea::parse_policy lax = policy_;
+      lax.checksum = nmea::checksum_policy::ignore;
+      if (const auto again = nmea::parse(l.text, lax)) {
+        char hex[64];
+        const std::string_view sent = l.text.substr(s.column, 2);
+        std::snprintf(hex, sizeof hex, " (sent %.*s, computed %02X)", static_cast<int>(sent.size()),
+                      sent.data(), again.value.computed_checksum);
+        detail += hex;
+      }
+    }
+    detail += " at column " + std::to_string(s.column);
+    reject(l.line, s.ec, 0, detail, l.text);
+  }
+
+  void decode_error(const nmea::framed_line& l, const nmea::sentence_view& s,
+                    const result<bool>& r) {
+    std::string detail(s.address);
+    if (r.field != 0) {
+      detail += " field " + std::to_string(r.field);
+      const std::string_view field_name = all_messages::field_name(s.address, r.field);
+      if (!field_name.empty()) detail += " (" + std::string(field_name) + ")";
+      const nmea::field_token t = nmea::field(s, r.field);
+      if (t.present) detail += " \"" + std::string(t.text) + "\"";
+    }
+    detail += ": " + std::string(message(r.ec));
+    reject(l.line, r.ec, r.field, detail, l.text);
+  }
+
+  void reject(std::uint64_t line, errc e, std::uint16_t field, std::string_view detail,
+              std::string_view input) {
+    ++rejected_;
+    ++by_error_[static_cast<std::size_t>(e)];
+    if (input.size() > max_input_shown) input = input.substr(0, max_input_shown);
+    if (opt_.fmt == format::json) {
+      nmea::write_json_error(out_, line, e, field, detail, input);
+      out_.put('\n');
+      if (opt_.line_buffered) out_.flush();
+    } else {
+      // stdout keeps only good sentences; the reasons go to stderr, in order with them.
+      out_.flush();
+      std::fprintf(stderr, "seawire-decode: line %llu: %.*s: %.*s\n",
+                   static_cast<unsigned long long>(line), static_cast<int>(name(e).size()),
+                   name(e).data(), static_cast<int>(detail.size()), detail.data());
+    }
+  }
+
+  // ---- what the framer dropped ----
+
+  // Did the framer drop anything since the last look? If so, report the line it is on, once.
+  void check_drops() {
+    const nmea::framer_stats& now = framer_.stats();
+    errc e = errc::ok;
+    std::string_view detail;
+    if (now.invalid_bytes != seen_.invalid_bytes) {
+      e = errc::bad_character;
+      detail = "a byte outside printable ASCII in a sentence; dropped up to the line's end";
+    } else if (now.overlong != seen_.overlong) {
+      e = errc::too_long;
+      detail = "a sentence longer than 1024 bytes; dropped";
+    } else if (now.interrupted != seen_.interrupted) {
+      e = errc::truncated;
+      detail = "a sentence cut short by the next '$'; dropped";
+    } else if (now.noise_bytes != seen_.noise_bytes) {
+      e = errc::missing_start;
+      detail = "bytes outside any sentence (no '$' before them); dropped";
+    }
+    seen_ = now;
+    if (e == errc::ok || line_reported_) return;
+    line_reported_ = true;
+    std::string text = line_head_;
+    text.append(piece_.substr(0, max_input_shown));
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    reject(line_, e, 0, detail, text);
+  }
+
+  const options& opt_;
+  nmea::parse_policy policy_;  // opt_.policy, but for the line ending
+  tools::output out_;
+  nmea::framer<1024> framer_;
+  nmea::framer_stats seen_{};
+  std::string_view piece_;  // the piece of input being read
+  std::string line_head_;   // the start of the line, when it began in an earlier chunk
+  bool line_reported_ = false;
+  std::uint64_t line_ = 1;
+  std::uint64_t decoded_ = 0;
+  std::uint64_t rejected_ = 0;
+  std::uint64_t reencode_failures_ = 0;
+  std::map<std::string, std::uint64_t> by_type_;
+  std::array<std::uint64_t, 256> by_error_{};
+};
+
+int run(const options& o) {
+  decoder d(o);
+  tools::chunk_reader in(0);
+  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
+    // One line at a time, so whatever the framer drops is charged to the line it was on.
+    while (!chunk.empty()) {
+      const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
+      const std::size_t n =
+          nl != nullptr ? static_cast<std::size_t>(static_cast<const char*>(nl) - chunk.data()) + 1
+                        : chunk.size();
+      d.piece(chunk.substr(0, n), nl != nullptr);
+      chunk.remove_prefix(n);
+    }
+  }
+  d.finish();
+  if (o.stats) d.print_stats();
+  if (in.failed()) {
+    std::perror("seawire-decode: reading stdin");
+    return 1;
+  }
+  if (d.output_failed()) {
+    std::perror("seawire-decode: writing stdout");
+    return 1;
+  }
+  return d.all_good() ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "seawire-decode: decode NMEA-style sentences (Kingfisher CP*/PY*, Sandshark BF*/BP*, "
+      "RobotX RX*, ANELLO inputs, standard RMC/GGA/RPM/RSA/VHW/VBW/VWR) read from stdin.\n"
+      "Writes one JSON object per message, one per line, in input order; a rejected line gives\n"
+      "{\"line\":N,\"error\":\"<errc>\",\"field\":K,\"detail\":\"...\",\"input\":\"...\"}.\n\n"
+      "Examples:\n"
+      "  nc vehicle 29500 | seawire-decode --line-buffered | jq -c 'select(.type==\"CPNVG\")'\n"
+      "  seawire-decode --format none --stats < mission.nmea      # check a log\n"
+      "  seawire-decode --format nmea < raw.nmea > clean.nmea     # canonical sentences only\n"
+      "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error.",
+      "seawire-decode"};
+  std::string fmt = "json";
+  std::string checksum = "verify";
+  bool strict = false;
+  options o;
+  app.add_option("-f,--format", fmt,
+                 "json: one JSON object per message (default); nmea: each message re-encoded "
+                 "canonically (uppercase checksum, CR LF), rejected lines reported on stderr; "
+                 "none: decode and validate only (e.g. --format none --stats)")
+      ->check(CLI::IsMember({"json", "nmea", "none"}));
+  CLI::Option* checksum_opt =
+      app.add_option("-c,--checksum", checksum,
+                     "required: a sentence without *hh is rejected; verify: checked when present "
+                     "(default); ignore: not checked (e.g. --checksum required)")
+          ->check(CLI::IsMember({"required", "verify", "ignore"}));
+  app.add_flag("--strict", strict,
+               "apply the rules seawire sends by to the input: checksum required, uppercase hex, "
+               "no extra fields, CR LF endings, no '+' signs or reserved characters in text "
+               "(--checksum still overrides the checksum rule)");
+  app.add_flag("--stats", o.stats,
+               "at the end, print counts by message type and by error, and the framer's "
+               "dropped-byte counters, to stderr (e.g. --format none --stats)");
+  app.add_flag("--line-buffered", o.line_buffered,
+               "flush stdout after each message, for live streams (default: large buffers, "
+               "for speed)");
+  app.set_version_flag("--version", "seawire-decode (seawire)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    (void)app.exit(e);
+    return 2;
+  }
+  o.fmt = fmt == "nmea" ? format::nmea : fmt == "none" ? format::none : format::json;
+  if (strict) o.policy = nmea::parse_policy::strict();
+  if (!strict || checksum_opt->count() > 0) {
+    o.policy.checksum = checksum == "required" ? nmea::checksum_policy::required
+                        : checksum == "ignore" ? nmea::checksum_policy::ignore
+                                               : nmea::checksum_policy::verify_if_present;
+  }
+  return run(o);
+}

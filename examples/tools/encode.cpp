@@ -1,0 +1,393 @@
+// SPDX-License-Identifier: BSL-1.0
+// seawire-encode: JSON Lines on stdin (the schema seawire-decode writes) -> sentences on stdout,
+// and 56-byte ANELLO binary frames for "type":"AB00". nlohmann-json's SAX interface tokenises
+// each line, handing over every number's text, so 203.10 is sent as 203.10; the library reads
+// the values (nmea::read_json, anello::read_frame_json) and encodes them strictly.
+// See --help, and README.programs.md for the manual.
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "io.hpp"
+#include "messages.hpp"
+#include "seawire/anello/frame.hpp"
+#include "seawire/anello/frame_json.hpp"
+#include "seawire/detail/ascii.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/writer.hpp"
+
+namespace {
+
+using namespace seawire;
+using nmea::json_kind;
+using nmea::json_value;
+using seawire::tools::all_messages;
+
+// One JSON Lines object, flattened: its members, the members of its "precision" object, and its
+// "fields" array (unknown sentences). Views point into `texts_`, which never moves its strings.
+class json_object : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  /// Parses one line; false (and error() says why) when it is not one JSON object.
+  bool parse(std::string_view line) {
+    texts_.clear();
+    members_.clear();
+    precision_.clear();
+    fields_.clear();
+    has_fields_ = false;
+    depth_ = 0;
+    mode_ = mode::top;
+    error_.clear();
+    if (!nlohmann::json::sax_parse(line, this) && error_.empty()) error_ = "not JSON";
+    return error_.empty();
+  }
+  [[nodiscard]] const std::string& error() const { return error_; }
+
+  /// The lookup nmea::read_json asks: member `key` of the object ("") or of "precision".
+  json_value operator()(std::string_view object, std::string_view key) const {
+    const auto& list = object.empty() ? members_ : precision_;
+    for (auto it = list.rbegin(); it != list.rend(); ++it)  // the last of repeated keys wins
+      if (it->first == key) return it->second;
+    return {};
+  }
+  [[nodiscard]] const std::vector<std::pair<std::string_view, json_value>>& members() const {
+    return members_;
+  }
+  [[nodiscard]] const std::vector<std::string_view>& fields() const { return fields_; }
+  [[nodiscard]] bool has_fields() const { return has_fields_; }
+
+  // ---- nlohmann::json_sax ----
+  bool null() override { return value(json_kind::null, ""); }
+  bool boolean(bool b) override { return value(json_kind::boolean, b ? "true" : "false"); }
+  bool number_integer(number_integer_t v) override {
+    return value(json_kind::number, std::to_string(v));
+  }
+  bool number_unsigned(number_unsigned_t v) override {
+    return value(json_kind::number, std::to_string(v));
+  }
+  bool number_float(number_float_t, const string_t& text) override {
+    return value(json_kind::number, text);  // the number as written: "203.10"
+  }
+  bool string(string_t& s) override { return value(json_kind::string, s); }
+  bool binary(binary_t&) override { return fail("binary values are not JSON text"); }
+  bool key(string_t& k) override {
+    if (depth_ == 1) {
+      key_ = keep(k);
+    } else if (depth_ == 2 && mode_ == mode::precision) {
+      inner_key_ = keep(k);
+    }
+    return true;
+  }
+  bool start_object(std::size_t) override { return open(false); }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    error_ = e.what();
+    return false;
+  }
+
+ private:
+  enum class mode { top, precision, fields, skip };
+
+  std::string_view keep(std::string_view s) { return texts_.emplace_back(s); }
+
+  bool fail(std::string why) {
+    if (error_.empty()) error_ = std::move(why);
+    return false;
+  }
+
+  bool value(json_kind kind, std::string_view text) {
+    if (depth_ == 0) return fail("a line must hold one JSON object");
+    if (depth_ == 1) {
+      members_.emplace_back(key_, json_value{kind, keep(text)});
+    } else if (depth_ == 2 && mode_ == mode::precision) {
+      precision_.emplace_back(inner_key_, json_value{kind, keep(text)});
+    } else if (depth_ == 2 && mode_ == mode::fields) {
+      if (kind != json_kind::string) return fail("\"fields\" must be an array of strings");
+      fields_.push_back(keep(text));
+    }
+    return true;
+  }
+
+  bool open(bool array) {
+    if (depth_ == 0) {
+      if (array) return fail("a line must hold one JSON object");
+    } else if (depth_ == 1) {
+      members_.emplace_back(key_, json_value{json_kind::other, {}});
+      if (!array && key_ == "precision") {
+        mode_ = mode::precision;
+      } else if (array && key_ == "fields") {
+        mode_ = mode::fields;
+        has_fields_ = true;
+      } else {
+        mode_ = mode::skip;
+      }
+    } else if (depth_ == 2 && mode_ != mode::skip) {
+      return fail("\"precision\" and \"fields\" hold plain values only");
+    }
+    ++depth_;
+    return true;
+  }
+
+  bool close() {
+    if (--depth_ == 1) mode_ = mode::top;
+    return true;
+  }
+
+  std::deque<std::string> texts_;
+  std::vector<std::pair<std::string_view, json_value>> members_;
+  std::vector<std::pair<std::string_view, json_value>> precision_;
+  std::vector<std::string_view> fields_;
+  bool has_fields_ = false;
+  std::string_view key_;
+  std::string_view inner_key_;
+  int depth_ = 0;
+  mode mode_ = mode::top;
+  std::string error_;
+};
+
+/// Calls f(std::type_identity<M>{}) for the first message of the set whose address matches.
+template <class F, class... Ms>
+bool with_type(std::string_view type, nmea::message_set<Ms...>*, F&& f) {
+  return ((Ms::nmea.matches(type) ? (f(std::type_identity<Ms>{}), true) : false) || ...);
+}
+
+struct options {
+  bool line_buffered = false;
+};
+
+class encoder {
+ public:
+  explicit encoder(const options& o) : opt_(o), out_(stdout) {}
+
+  void line(std::string_view text) {
+    ++line_;
+    while (!text.empty() && (text.back() == '\r' || text.back() == ' ' || text.back() == '\t'))
+      text.remove_suffix(1);
+    if (text.find_first_not_of(" \t") == std::string_view::npos) return;  // blank line
+    if (!obj_.parse(text)) {
+      reject("invalid JSON: " + obj_.error());
+      return;
+    }
+    const json_value type = obj_({}, "type");
+    if (type.kind != json_kind::string) {
+      // seawire-decode's report of a line it rejected: nothing to send, already reported.
+      if (type.blank() && !obj_({}, "error").blank()) return;
+      reject("no \"type\" string");
+      return;
+    }
+    if (type.text == anello::frame_json_type) {
+      frame();
+    } else if (!with_type(type.text, static_cast<all_messages*>(nullptr),
+                          [&](auto tag) { send<typename decltype(tag)::type>(type.text); })) {
+      unknown(type.text);
+    }
+    if (opt_.line_buffered) out_.flush();
+  }
+
+  void finish() { out_.flush(); }
+  [[nodiscard]] std::uint64_t rejected() const { return rejected_; }
+  [[nodiscard]] bool output_failed() const { return out_.failed(); }
+
+ private:
+  template <class M>
+  void send(std::string_view type) {
+    if (!known_keys(type, [](std::string_view k) { return nmea::has_field<M>(k); })) return;
+    const result<M> m = nmea::read_json<M>(type, obj_);
+    if (!m) {
+      field_error(type, m.ec, m.field, nmea::field_name<M>(m.field));
+      return;
+    }
+    std::array<char, 1100> buf;
+    const result<std::size_t> r = nmea::encode_to(m.value, std::span<char>(buf.data(), buf.size()));
+    if (!r) {
+      field_error(type, r.ec, r.field, nmea::field_name<M>(r.field));
+      return;
+    }
+    out_.put(std::string_view(buf.data(), r.value));
+  }
+
+  void frame() {
+    if (!known_keys(anello::frame_json_type, anello::has_json_field)) return;
+    const result<anello::sensor_frame_raw> f = anello::read_frame_json(obj_);
+    if (!f) {
+      std::string_view field_name;
+      anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
+        if (number == f.field) field_name = anello::detail::json_key(field.name);
+        return number < f.field;
+      });
+      field_error(anello::frame_json_type, f.ec, f.field, field_name);
+      return;
+    }
+    const anello::frame_bytes bytes = anello::encode_frame(f.value);
+    out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  }
+
+  // {"type":"XXABC","fields":["1","2"]}: a sentence no message describes, sent as given.
+  void unknown(std::string_view type) {
+    if (!obj_.has_fields()) {
+      reject(std::string(name(errc::unknown_address)) + ": no known message is \"" +
+             std::string(type) + "\" (and there is no \"fields\" array to send it as is)");
+      return;
+    }
+    bool address_ok = !type.empty() && type.size() <= 15 && seawire::detail::is_upper(type[0]);
+    for (const char c : type)
+      address_ok = address_ok && (seawire::detail::is_upper(c) || seawire::detail::is_digit(c));
+    if (!address_ok) {
+      reject(std::string(name(errc::bad_address)) + ": \"" + std::string(type) +
+             "\" is not 1-15 upper-case letters and digits");
+      return;
+    }
+    std::array<char, 1100> buf;
+    nmea::writer w(std::span<char>(buf.data(), buf.size()));
+    w.begin(type);
+    std::uint16_t n = 0;
+    for (const std::string_view f : obj_.fields()) {
+      ++n;
+      for (const char c : f) {
+        if (!seawire::detail::is_printable(c) || seawire::detail::is_reserved(c)) {
+          field_error(type, errc::bad_text, n, "fields");
+          return;
+        }
+      }
+      w.next_field();
+      w.put(f);
+    }
+    const result<std::size_t> r = w.seal();
+    if (!r) {
+      field_error(type, r.ec, 0, {});
+      return;
+    }
+    out_.put(w.view());
+  }
+
+  // Keys that are no field of the message are refused: a misspelt key would otherwise be a
+  // silently blank field.
+  template <class Known>
+  bool known_keys(std::string_view type, Known&& known) {
+    for (const auto& [key, value] : obj_.members()) {
+      if (key == "type" || key == "precision" || known(key)) continue;
+      reject(std::string(type) + ": unknown key \"" + std::string(key) + "\" (not a field of " +
+             std::string(type) + ")");
+      return false;
+    }
+    return true;
+  }
+
+  void field_error(std::string_view type, errc e, std::uint16_t field,
+                   std::string_view field_name) {
+    std::string what(type);
+    if (field != 0) {
+      what += " field " + std::to_string(field);
+      if (!field_name.empty()) {
+        what += " (" + std::string(field_name) + ")";
+        const json_value v = obj_({}, field_name);
+        if (v.kind == json_kind::string) {
+          what += " \"" + std::string(v.text) + "\"";
+        } else if (v.kind == json_kind::number || v.kind == json_kind::boolean) {
+          what += " " + std::string(v.text);
+        }
+      }
+    }
+    reject(what + ": " + std::string(name(e)) + ": " + std::string(message(e)));
+  }
+
+  void reject(const std::string& why) {
+    ++rejected_;
+    out_.flush();  // keep stdout and stderr in input order for a reader of both
+    std::fprintf(stderr, "seawire-encode: line %llu: %s\n", static_cast<unsigned long long>(line_),
+                 why.c_str());
+  }
+
+  const options& opt_;
+  tools::output out_;
+  json_object obj_;
+  std::uint64_t line_ = 0;
+  std::uint64_t rejected_ = 0;
+};
+
+int run(const options& o) {
+  encoder e(o);
+  tools::chunk_reader in(0);
+  std::string carry;  // a line cut by the chunk boundary
+  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
+    while (!chunk.empty()) {
+      const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
+      if (nl == nullptr) {
+        carry.append(chunk);
+        break;
+      }
+      const auto n = static_cast<std::size_t>(static_cast<const char*>(nl) - chunk.data());
+      if (carry.empty()) {
+        e.line(chunk.substr(0, n));
+      } else {
+        carry.append(chunk.substr(0, n));
+        e.line(carry);
+        carry.clear();
+      }
+      chunk.remove_prefix(n + 1);
+    }
+  }
+  if (!carry.empty()) e.line(carry);
+  e.finish();
+  if (in.failed()) {
+    std::perror("seawire-encode: reading stdin");
+    return 1;
+  }
+  if (e.output_failed()) {
+    std::perror("seawire-encode: writing stdout");
+    return 1;
+  }
+  return e.rejected() == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "seawire-encode: JSON Lines on stdin -> sentences on stdout (CR LF, uppercase checksum),\n"
+      "in the schema seawire-decode writes: \"type\" (the address as on the wire: \"PYDIR\",\n"
+      "\"GPRMC\"; \"AB00\" for an ANELLO binary frame) plus the message's fields by name.\n"
+      "Numbers are sent with the digits written (1.50 stays 1.50). Positions are signed decimal\n"
+      "degrees; a DDMM.mmm field gets (fraction digits - 2) minute places, 4 when the number has\n"
+      "fewer than 3; override per field with \"precision\": {\"latitude\": 5}. Blank or absent\n"
+      "fields: null or left out. {\"type\":\"XXABC\",\"fields\":[\"1\",\"2\"]} sends any other\n"
+      "sentence as given. Error objects from seawire-decode are passed over. A line that cannot\n"
+      "be sent is reported on stderr (line number, field, reason) and the next line is read.\n\n"
+      "Examples:\n"
+      "  echo '{\"type\":\"PYDIR\",\"thrust_left\":45,\"thrust_right\":55}' | seawire-encode\n"
+      "  seawire-encode --line-buffered < cmds.jsonl | nc vehicle 29500\n"
+      "  seawire-decode < log.nmea | jq -c 'select(.type==\"CPNVG\")' | seawire-encode\n"
+      "Exit status: 0 every line sent, 1 some line rejected, 2 usage error.",
+      "seawire-encode"};
+  options o;
+  app.add_flag("--line-buffered", o.line_buffered,
+               "flush stdout after each sentence, for live links (e.g. ... | seawire-encode "
+               "--line-buffered | nc vehicle 29500); default: large buffers, for speed");
+  app.set_version_flag("--version", "seawire-encode (seawire)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    (void)app.exit(e);
+    return 2;
+  }
+  return run(o);
+}

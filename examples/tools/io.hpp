@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Buffered stdin/stdout for the command-line programs: read() in 64 KiB chunks, one large output
+// buffer written with fwrite(). No iostreams, no per-line system calls.
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <string_view>
+#include <vector>
+
+namespace seawire::tools {
+
+inline constexpr std::size_t read_chunk = 64 * 1024;
+
+/// Reads a file descriptor in chunks of up to read_chunk bytes. Empty view at end of input.
+class chunk_reader {
+ public:
+  explicit chunk_reader(int fd = 0) : fd_(fd), buf_(read_chunk) {}
+
+  /// The next chunk, empty at end of input. Sets failed() on a read error.
+  std::string_view next() {
+    for (;;) {
+      const ssize_t n = ::read(fd_, buf_.data(), buf_.size());
+      if (n > 0) return {buf_.data(), static_cast<std::size_t>(n)};
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) failed_ = true;
+      return {};
+    }
+  }
+  [[nodiscard]] bool failed() const { return failed_; }
+
+ private:
+  int fd_;
+  std::vector<char> buf_;
+  bool failed_ = false;
+};
+
+/// A large output buffer in front of a FILE*. put() never fails; flush() reports write errors.
+class output {
+ public:
+  explicit output(std::FILE* f, std::size_t capacity = 1 << 20) : f_(f), buf_(capacity) {}
+  output(const output&) = delete;
+  output& operator=(const output&) = delete;
+  ~output() { flush(); }
+
+  void put(char c) {
+    if (size_ == buf_.size()) flush();
+    buf_[size_++] = c;
+  }
+  void put(std::string_view s) {
+    if (s.size() > buf_.size() - size_) {
+      flush();
+      if (s.size() > buf_.size()) {
+        write(s.data(), s.size());
+        return;
+      }
+    }
+    std::memcpy(buf_.data() + size_, s.data(), s.size());
+    size_ += s.size();
+  }
+  void flush() {
+    if (size_ > 0) write(buf_.data(), size_);
+    size_ = 0;
+    if (std::fflush(f_) != 0) failed_ = true;
+  }
+  [[nodiscard]] bool failed() const { return failed_; }
+
+ private:
+  void write(const char* p, std::size_t n) {
+    if (!failed_ && std::fwrite(p, 1, n, f_) != n) failed_ = true;
+  }
+
+  std::FILE* f_;
+  std::vector<char> buf_;
+  std::size_t size_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace seawire::tools
