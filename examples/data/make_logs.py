@@ -12,6 +12,8 @@ the expectations there.
 import math
 import os
 import random
+import struct
+import zlib
 from functools import reduce
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -26,7 +28,10 @@ def seal(body):
 def write(name, lines):
     with open(os.path.join(HERE, name), "wb") as f:
         for line in lines:
-            f.write(line.encode("latin-1") + b"\r\n")
+            if isinstance(line, bytes):  # a binary frame: no line ending of its own
+                f.write(line)
+            else:
+                f.write(line.encode("latin-1") + b"\r\n")
 
 
 def hms(t, places):
@@ -286,6 +291,47 @@ def anello():
 
 
 # ------------------------------------------------------------------------------------------------
+# ANELLO, one RS-232 input carrying both: the NMEA speed aiding above and 0xAB00 binary sensor
+# frames at 4 Hz (the spec's seed frame first), back to back with no line breaks of their own.
+# Some payloads hold 0x0A, 0x0D and '$' bytes, which are data inside a frame.
+
+SEED_FRAME = bytes.fromhex(
+    "AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF000000000002"
+    "006C0003005AFFFFFFFF")
+
+
+def frame(heading, lat, lon, sog, cog, t_ms, alt, hdop, fix, motor, rudder, stw, wind):
+    payload = struct.pack(
+        ">HiiHHQiiBBbbHHHHHhH", heading, round(lat * 1e6), round(lon * 1e6), round(sog * 10), cog,
+        t_ms, round(alt * 10), 0x7FFFFFFF, hdop, fix, motor, rudder, round(stw * 10),
+        round(wind[0] * 10), wind[1], round(wind[2] * 10), wind[3], 0x7FFF, 0xFFFF)
+    assert len(payload) == 48
+    return struct.pack(">HHI", 0xAB00, 48, zlib.crc32(payload)) + payload
+
+
+def anello_mixed():
+    nmea = anello()
+    out = [nmea[0], SEED_FRAME]
+    lat, lon = 32.828671, -117.229926
+    t_ms = 1720021378000
+    speed = 0.0
+    for k, line in enumerate(nmea[1:]):
+        out.append(line)
+        if k % 3 == 2:
+            speed = min(2.4, speed + 0.1)
+            lat, lon = move(lat, lon, 89, speed / 4)
+            t_ms += 250
+            out.append(frame(89 + k % 3, lat, lon, speed, 89, t_ms, 48.0 + k / 100, 9, 1,
+                             10 + k % 40, (k % 7) - 3, speed * 0.97, (5.0, 108, 6.3, 90)))
+    # A payload holding '$' (heading 36 = 00 24), CR (course 13 = 00 0D) and LF (speed through
+    # water 1.0 m/s = 00 0A) bytes: the reader must keep them inside the frame.
+    out.append(frame(36, 10.487844, -0.000013, 1.0, 13, t_ms + 250, 36.0, 13, 1, 36, 10, 1.0,
+                     (1.0, 10, 1.0, 13)))
+    out.append(seal("PAPGPSCTRL,1"))
+    return out
+
+
+# ------------------------------------------------------------------------------------------------
 # Standard sentences from a boat's NMEA 0183 bus: a GPS receiver (RMC in the 2.2, 2.3 and 4.1
 # forms, GGA, and GSA/GSV, which seawire does not decode), engine, rudder, log and wind sensors
 # from several talkers, and a receiver starting up without a fix.
@@ -362,5 +408,6 @@ if __name__ == "__main__":
     write("sandshark.nmea", sandshark())
     write("robotx.nmea", robotx())
     write("anello.nmea", anello())
+    write("anello_mixed.nmea", anello_mixed())
     write("standard.nmea", standard())
     write("bad.nmea", bad())

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
-// seawire-decode: NMEA-style sentences on stdin -> one JSON object per message (or re-encoded
-// sentences, or nothing but a verdict). A thin program over the library: the framer cuts the
-// stream, message_set::visit decodes each sentence by its address, nmea/json.hpp writes it.
-// See --help, and README.programs.md for the manual.
+// seawire-decode: NMEA-style sentences (and ANELLO 0xAB00 binary frames mixed in) on stdin ->
+// one JSON object per message (or re-encoded messages, or nothing but a verdict). A thin program
+// over the library: anello::stream_reader cuts the stream into sentences and frames,
+// message_set::visit decodes each sentence by its address, nmea/json.hpp and
+// anello/frame_json.hpp write them. See --help, and README.programs.md for the manual.
 
 #include <CLI/CLI.hpp>
 
@@ -20,9 +21,12 @@
 
 #include "io.hpp"
 #include "messages.hpp"
+#include "seawire/anello/frame.hpp"
+#include "seawire/anello/frame_json.hpp"
+#include "seawire/anello/stream.hpp"
+#include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
-#include "seawire/nmea/framer.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -48,17 +52,17 @@ constexpr std::size_t max_input_shown = 256;
 class decoder {
  public:
   explicit decoder(const options& o) : opt_(o), policy_(o.policy), out_(stdout) {
-    // The framer has taken the line ending off: it is checked here, from what the framer saw.
+    // The reader has taken the line ending off: it is checked here, from what the reader saw.
     policy_.require_crlf = false;
   }
 
-  // Feeds one piece of input; `ends_line` when it ends with the line's LF.
+  // Feeds one piece of input; `ends_line` when it ends with an LF.
   void piece(std::string_view bytes, bool ends_line) {
     piece_ = bytes;
-    framer_.feed(bytes);
-    while (const std::optional<nmea::framed_line> l = framer_.next()) {
-      check_drops();  // what was dropped before this sentence is reported before it
-      sentence(*l);
+    reader_.feed(bytes);
+    while (const std::optional<anello::stream_item> item = reader_.next()) {
+      check_drops();  // what was dropped before this item is reported before it
+      handle(*item);
     }
     check_drops();
     if (ends_line) {
@@ -72,9 +76,9 @@ class decoder {
 
   void finish() {
     piece_ = {};
-    if (const std::optional<nmea::framed_line> l = framer_.finish()) {
+    while (const std::optional<anello::stream_item> item = reader_.finish()) {
       check_drops();
-      sentence(*l);
+      handle(*item);
     }
     check_drops();
     out_.flush();
@@ -84,7 +88,7 @@ class decoder {
   [[nodiscard]] bool output_failed() const { return out_.failed(); }
 
   void print_stats() const {
-    const nmea::framer_stats& f = framer_.stats();
+    const anello::stream_stats& f = reader_.stats();
     std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected\n",
                  static_cast<unsigned long long>(decoded_),
                  static_cast<unsigned long long>(rejected_));
@@ -103,18 +107,71 @@ class decoder {
     if (reencode_failures_ > 0)
       std::fprintf(stderr, "    (%llu of them refused when re-encoded)\n",
                    static_cast<unsigned long long>(reencode_failures_));
-    std::fprintf(stderr,
-                 "  framer: %llu sentences, %llu noise bytes, %llu interrupted, %llu overlong, "
-                 "%llu with invalid bytes, %llu dropped bytes\n",
-                 static_cast<unsigned long long>(f.sentences),
-                 static_cast<unsigned long long>(f.noise_bytes),
-                 static_cast<unsigned long long>(f.interrupted),
-                 static_cast<unsigned long long>(f.overlong),
-                 static_cast<unsigned long long>(f.invalid_bytes),
-                 static_cast<unsigned long long>(f.dropped_bytes));
+    std::fprintf(
+        stderr,
+        "  input: %llu sentences, %llu frames; %llu noise bytes, %llu dropped bytes; "
+        "%llu sentences interrupted, %llu overlong, %llu with invalid bytes; frames: "
+        "%llu bad CRC, %llu bad length, %llu truncated\n",
+        static_cast<unsigned long long>(f.sentences), static_cast<unsigned long long>(f.frames),
+        static_cast<unsigned long long>(f.noise_bytes),
+        static_cast<unsigned long long>(f.dropped_bytes),
+        static_cast<unsigned long long>(f.interrupted), static_cast<unsigned long long>(f.overlong),
+        static_cast<unsigned long long>(f.invalid_bytes),
+        static_cast<unsigned long long>(f.bad_crc_frames),
+        static_cast<unsigned long long>(f.bad_length_frames),
+        static_cast<unsigned long long>(f.truncated_frames));
   }
 
  private:
+  void handle(const anello::stream_item& item) {
+    if (item.is_frame()) {
+      frame(item);
+    } else {
+      sentence(item.sentence);
+    }
+  }
+
+  // ---- one binary frame ----
+
+  void frame(const anello::stream_item& item) {
+    // CR and LF bytes inside the frame are no line breaks: take back what piece() counted.
+    for (const std::uint8_t b : item.bytes)
+      if (b == '\n') --line_;
+    if (opt_.policy.strict_values) {
+      const result<anello::sensor_frame_raw> v = anello::validate(item.frame);
+      if (!v) {
+        std::string detail = "AB00 field " + std::to_string(v.field) + ": " +
+                             std::string(message(v.ec)) + " (the spec's range)";
+        reject(line_, v.ec, v.field, detail, hex(item.bytes));
+        return;
+      }
+    }
+    switch (opt_.fmt) {
+      case format::json:
+        anello::write_json(out_, item.frame);
+        out_.put('\n');
+        break;
+      case format::nmea: {
+        const anello::frame_bytes bytes = anello::encode_frame(item.frame);
+        out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+        break;
+      }
+      case format::none: break;
+    }
+    ++decoded_;
+    if (opt_.stats) ++by_type_[std::string(anello::frame_json_type)];
+    if (opt_.line_buffered) out_.flush();
+  }
+
+  static std::string hex(const anello::frame_bytes& bytes) {
+    std::string h;
+    for (const std::uint8_t b : bytes) {
+      h += seawire::detail::hex_digit_upper(b >> 4U);
+      h += seawire::detail::hex_digit_upper(b);
+    }
+    return h;
+  }
+
   // ---- one sentence ----
 
   void sentence(const nmea::framed_line& l) {
@@ -234,11 +291,11 @@ class decoder {
     }
   }
 
-  // ---- what the framer dropped ----
+  // ---- what the reader dropped ----
 
-  // Did the framer drop anything since the last look? If so, report the line it is on, once.
+  // Did the reader drop anything since the last look? If so, report the line it is on, once.
   void check_drops() {
-    const nmea::framer_stats& now = framer_.stats();
+    const anello::stream_stats& now = reader_.stats();
     errc e = errc::ok;
     std::string_view detail;
     if (now.invalid_bytes != seen_.invalid_bytes) {
@@ -249,10 +306,19 @@ class decoder {
       detail = "a sentence longer than 1024 bytes; dropped";
     } else if (now.interrupted != seen_.interrupted) {
       e = errc::truncated;
-      detail = "a sentence cut short by the next '$'; dropped";
+      detail = "a sentence cut short by the next '$' or 0xAB; dropped";
+    } else if (now.bad_crc_frames != seen_.bad_crc_frames) {
+      e = errc::crc_mismatch;
+      detail = "an AB00 frame whose CRC-32 does not match its payload; dropped";
+    } else if (now.bad_length_frames != seen_.bad_length_frames) {
+      e = errc::bad_length;
+      detail = "AB 00 followed by a length other than 48; dropped";
+    } else if (now.truncated_frames != seen_.truncated_frames) {
+      e = errc::truncated;
+      detail = "an AB00 frame cut short by the end of the input; dropped";
     } else if (now.noise_bytes != seen_.noise_bytes) {
       e = errc::missing_start;
-      detail = "bytes outside any sentence (no '$' before them); dropped";
+      detail = "bytes outside any sentence or frame (no '$' before them); dropped";
     }
     seen_ = now;
     if (e == errc::ok || line_reported_) return;
@@ -266,8 +332,8 @@ class decoder {
   const options& opt_;
   nmea::parse_policy policy_;  // opt_.policy, but for the line ending
   tools::output out_;
-  nmea::framer<1024> framer_;
-  nmea::framer_stats seen_{};
+  anello::stream_reader<1024> reader_;
+  anello::stream_stats seen_{};
   std::string_view piece_;  // the piece of input being read
   std::string line_head_;   // the start of the line, when it began in an earlier chunk
   bool line_reported_ = false;
@@ -283,7 +349,7 @@ int run(const options& o) {
   decoder d(o);
   tools::chunk_reader in(0);
   for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
-    // One line at a time, so whatever the framer drops is charged to the line it was on.
+    // One line at a time, so whatever the reader drops is charged to the line it was on.
     while (!chunk.empty()) {
       const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
       const std::size_t n =
@@ -311,7 +377,8 @@ int run(const options& o) {
 int main(int argc, char** argv) {
   CLI::App app{
       "seawire-decode: decode NMEA-style sentences (Kingfisher CP*/PY*, Sandshark BF*/BP*, "
-      "RobotX RX*, ANELLO inputs, standard RMC/GGA/RPM/RSA/VHW/VBW/VWR) read from stdin.\n"
+      "RobotX RX*, ANELLO inputs, standard RMC/GGA/RPM/RSA/VHW/VBW/VWR) and ANELLO 0xAB00 "
+      "binary frames (\"type\":\"AB00\") read from stdin.\n"
       "Writes one JSON object per message, one per line, in input order; a rejected line gives\n"
       "{\"line\":N,\"error\":\"<errc>\",\"field\":K,\"detail\":\"...\",\"input\":\"...\"}.\n\n"
       "Examples:\n"
@@ -339,7 +406,7 @@ int main(int argc, char** argv) {
                "no extra fields, CR LF endings, no '+' signs or reserved characters in text "
                "(--checksum still overrides the checksum rule)");
   app.add_flag("--stats", o.stats,
-               "at the end, print counts by message type and by error, and the framer's "
+               "at the end, print counts by message type and by error, and the stream reader's "
                "dropped-byte counters, to stderr (e.g. --format none --stats)");
   app.add_flag("--line-buffered", o.line_buffered,
                "flush stdout after each message, for live streams (default: large buffers, "

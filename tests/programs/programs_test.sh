@@ -12,7 +12,7 @@ case_name=$4
 work=$(mktemp -d)
 trap 'rm -rf -- "$work"' EXIT
 
-families=(kingfisher sandshark robotx anello standard)
+families=(kingfisher sandshark robotx anello anello_mixed standard)
 failures=0
 
 fail() {
@@ -62,7 +62,10 @@ case_json() {
   for f in "${families[@]}"; do
     expect_rc "decode $f.nmea" 0 "$decode" <"$data/$f.nmea"
     cp "$work/out" "$work/$f.json"
-    expect_eq "$f: one JSON object per line" "$(wc -l <"$data/$f.nmea")" "$(wc -l <"$work/$f.json")"
+    if [[ $f != anello_mixed ]]; then  # frames are messages without a line of their own
+      expect_eq "$f: one JSON object per line" "$(wc -l <"$data/$f.nmea")" \
+        "$(wc -l <"$work/$f.json")"
+    fi
     expect_eq "$f: nothing on stderr" "" "$(cat "$work/err")"
     if grep -qv '^{"type":"[A-Z0-9]*",' "$work/$f.json"; then fail "$f: a line without a type"; fi
   done
@@ -162,7 +165,7 @@ case_bad() {
     '{"line":5,"error":"minute_out_of_range","field":2,"detail":"CPNVG field 2 (latitude) \"4261.81092\": minutes out of range (00-59)","input":"$CPNVG,081025.987,4261.81092,N,07106.84603,W,1,0,0,203.1,-3.4,4.5,081025.980*5C"}' \
     "$(line 5 "$o")"
   expect_eq "garbage line" \
-    '{"line":7,"error":"missing_start","field":0,"detail":"bytes outside any sentence (no '"'"'$'"'"' before them); dropped","input":"### vehicle rebooted ###"}' \
+    '{"line":7,"error":"missing_start","field":0,"detail":"bytes outside any sentence or frame (no '"'"'$'"'"' before them); dropped","input":"### vehicle rebooted ###"}' \
     "$(line 7 "$o")"
   expect_eq "a control byte, escaped in the report" \
     '"input":"$CPNVR,164959.063,0.029\u000141,-0.068552,0,0.060938,0,-0.061132*59"}' \
@@ -208,7 +211,7 @@ case_none() {
   err=$(cat "$work/err")
   for want in 'seawire-decode: 3 messages decoded, 12 rejected' 'by type:' \
     'GPRMC                2' 'PYDIR                1' 'by error:' 'checksum_mismatch    3' \
-    'missing_start        1' 'framer: 12 sentences, 24 noise bytes, 1 interrupted, 0 overlong, 1 with invalid bytes'; do
+    'missing_start        1' 'input: 12 sentences, 0 frames; 24 noise bytes, 87 dropped bytes; 1 sentences interrupted, 0 overlong, 1 with invalid bytes'; do
     if [[ $err != *"$want"* ]]; then fail "--stats: no '$want' in: $err"; fi
   done
   expect_rc "decode --stats, all good" 0 "$decode" --stats <"$data/robotx.nmea"
@@ -222,7 +225,7 @@ case_roundtrip() {
     cp "$work/out" "$work/$f.again"
     expect_rc "decode the re-encoded $f" 0 "$decode" <"$work/$f.again"
     if ! cmp -s "$work/out" "$work/$f.json"; then fail "$f: decode | encode changed the meaning"; fi
-    if [[ $f != kingfisher ]] && ! cmp -s "$work/$f.again" "$data/$f.nmea"; then
+    if [[ $f != kingfisher && $f != anello_mixed ]] && ! cmp -s "$work/$f.again" "$data/$f.nmea"; then
       fail "$f: decode | encode is not byte-exact"
     fi
   done
@@ -230,6 +233,13 @@ case_roundtrip() {
   expect_eq "kingfisher: padded longitude is the only change" \
     "$(sed 's/,\([0-9]\{4\}\.[0-9]*\),W,/,0\1,W,/' "$data/kingfisher.nmea" | tr -d '\r' | cut -d'*' -f1)" \
     "$(tr -d '\r' <"$work/kingfisher.again" | cut -d'*' -f1)"
+  # ANELLO: only the seed frame changes, whose air temperature 0xFFFF ("not available" in the
+  # seed's own example) is sent as the spec's 0x7FFF: the frame's byte 52 and its CRC (4-7),
+  # counted from 1 in the file (the frame follows an 18-byte sentence).
+  expect_eq "anello_mixed: only the seed frame's air temperature and CRC differ" \
+    "23 24 25 26 71" \
+    "$(cmp -l "$work/anello_mixed.again" "$data/anello_mixed.nmea" | awk '{printf "%s ", $1}' |
+      sed 's/ $//')"
   # Error objects from decode are passed over by encode.
   "$decode" <"$data/bad.nmea" >"$work/bad.json" || true
   expect_rc "encode decode's output of bad.nmea" 0 "$encode" <"$work/bad.json"
@@ -268,6 +278,53 @@ case_options() {
     "$(printf '%s\n' 1:missing_start '{"type":"PYDIR","thrust_left":1,"thrust_right":2}' \
       '{"type":"PYDIR","thrust_left":3,"thrust_right":4}' '{"type":"PYDIR","thrust_left":5,"thrust_right":6}')" \
     "$(sed 's/^{"line":\([0-9]*\),"error":"\([a-z_]*\)".*/\1:\2/' "$work/out")"
+}
+
+# hex2bin <hex>: the bytes.
+hex2bin() { printf "$(sed 's/../\\x&/g' <<<"$1")"; }
+seed_frame=AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF000000000002006C0003005AFFFFFFFF
+
+case_frames() {
+  local m=$work/anello_mixed.json
+  expect_rc "decode anello_mixed.nmea" 0 "$decode" <"$data/anello_mixed.nmea"
+  cp "$work/out" "$m"
+  expect_eq "43 frames and 125 sentences" "43 125" \
+    "$(grep -c '"type":"AB00"' "$m") $(grep -vc '"type":"AB00"' "$m")"
+  expect_eq "the seed frame, after the first sentence" \
+    '{"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,"sog_mps":0.0,"cog_deg":null,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,"geoid_sep_m":null,"hdop":null,"fix_quality":null,"motor_pct":0,"rudder_pct":0,"stw_mps":0.0,"wind_speed_abs_mps":0.2,"wind_dir_abs_deg":108,"wind_speed_rel_mps":0.3,"wind_dir_rel_deg":90,"air_temp_c":null,"pressure_hpa":null}' \
+    "$(line 2 "$m")"
+  expect_eq "a frame holding '$', CR and LF bytes" \
+    '{"type":"AB00","heading_deg":36,"latitude":10.487844,"longitude":-0.000013,"sog_mps":1.0,"cog_deg":13,' \
+    "$(tail -n 2 "$m" | head -n 1 | cut -d, -f1-6),"
+  # A frame with a bad CRC between two sentences: reported, and the next sentence still read.
+  local bad=${seed_frame:0:20}FF${seed_frame:22}
+  {
+    crlf "$(seal PYDIR,1,2)"
+    hex2bin "$bad"
+    crlf "$(seal PYDIR,3,4)"
+    hex2bin "$seed_frame"
+  } >"$work/in"
+  expect_rc "a frame with a bad CRC" 1 "$decode" <"$work/in"
+  expect_eq "reported on its line, then the sentence after it, then a good frame" \
+    "$(printf '%s\n' '{"type":"PYDIR","thrust_left":1,"thrust_right":2}' 2:crc_mismatch \
+      '{"type":"PYDIR","thrust_left":3,"thrust_right":4}' AB00)" \
+    "$(sed -e 's/^{"line":\([0-9]*\),"error":"\([a-z_]*\)".*/\1:\2/' \
+      -e 's/^{"type":"AB00".*/AB00/' "$work/out")"
+  expect_rc "--format nmea with frames" 1 "$decode" --format nmea <"$work/in"
+  if ! cmp -s "$work/out" <({ crlf "$(seal PYDIR,1,2)" "$(seal PYDIR,3,4)"; hex2bin "$seed_frame"; }); then
+    fail "--format nmea: frames written back as 56 bytes"
+  fi
+  # seawire-encode writes frames; "not available" as the spec's maximum.
+  printf '%s\n' '{"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,"sog_mps":0.0,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,"motor_pct":0,"rudder_pct":0,"stw_mps":0.0,"wind_speed_abs_mps":0.2,"wind_dir_abs_deg":108,"wind_speed_rel_mps":0.3,"wind_dir_rel_deg":90}' \
+    '{"type":"AB00","heading_deg":361}' '{"type":"AB00","latitude_deg":1}' >"$work/in"
+  expect_rc "encode frames" 1 "$encode" <"$work/in"
+  expect_eq "one frame of 56 bytes, AB 00 00 30 ..." "56 ab000030" \
+    "$(wc -c <"$work/out") $(head -c 4 "$work/out" | od -An -tx1 | tr -d ' \n')"
+  expect_eq "the frame's payload is the seed's, but for the air temperature" \
+    "${seed_frame:16:88}7FFFFFFF" "$(tail -c 48 "$work/out" | od -An -tx1 | tr -d ' \n' | tr a-f A-F)"
+  expect_eq "frame errors name the field" "$(printf '%s\n' \
+    'seawire-encode: line 2: AB00 field 1 (heading_deg) 361: out_of_range: value outside the range the spec allows' \
+    'seawire-encode: line 3: AB00: unknown key "latitude_deg" (not a field of AB00)')" "$(cat "$work/err")"
 }
 
 case_usage() {
