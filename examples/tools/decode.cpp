@@ -296,6 +296,8 @@ class decoder {
   // Did the reader drop anything since the last look? If so, report the line it is on, once.
   void check_drops() {
     const anello::stream_stats& now = reader_.stats();
+    // Whatever the reader drops adds to one of these two: the common case is two comparisons.
+    if (now.noise_bytes == seen_.noise_bytes && now.dropped_bytes == seen_.dropped_bytes) return;
     errc e = errc::ok;
     std::string_view detail;
     if (now.invalid_bytes != seen_.invalid_bytes) {
