@@ -161,6 +161,15 @@ namespace detail {
   return errc::ok;
 }
 
+/// Whether write_decimal writes `d` as text parse_decimal reads back to `d`: at most 19 digits
+/// (the mantissa below 10^19, at most 19 of them after the point) and an integer padding the
+/// writer can produce (20 digits at most).
+[[nodiscard]] constexpr errc check_decimal(const decimal& d) noexcept {
+  constexpr std::uint64_t max_mantissa = 9'999'999'999'999'999'999ULL;
+  return d.places > 19 || d.mantissa > max_mantissa || d.int_width > 20 ? errc::value_too_large
+                                                                        : errc::ok;
+}
+
 constexpr void write_decimal(writer& w, const decimal& d) noexcept {
   if (d.negative) w.put('-');
   const std::uint64_t p = seawire::detail::pow10_table[d.places];
@@ -464,9 +473,7 @@ struct codec<decimal> {
   static constexpr errc read(field_reader& r, decimal& v) noexcept {
     return detail::parse_decimal(r.take().text, !r.policy().strict_values, v);
   }
-  static constexpr errc check(const decimal& v) noexcept {
-    return v.places > 19 ? errc::value_too_large : errc::ok;
-  }
+  static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
   static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
 };
 
@@ -606,6 +613,7 @@ struct codec<decimal_coordinate<Axis>> {
     return nmea::template read_hemisphere<Axis>(r, v.hemi);
   }
   static constexpr errc check(const value_type& v) noexcept {
+    if (const errc e = detail::check_decimal(v.value); e != errc::ok) return e;
     if (v.value.negative || v.value.compare(decimal(Axis::max_degrees)) > 0) return Axis::error;
     return nmea::template check_hemisphere<Axis>(v.hemi);
   }
