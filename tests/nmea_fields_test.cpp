@@ -464,10 +464,10 @@ TEST_CASE("round trip over generated values") {
     m.day = {static_cast<std::uint16_t>(1980 + pick(100)), static_cast<std::uint8_t>(1 + pick(12)),
              static_cast<std::uint8_t>(1 + pick(28))};
     m.lat = latitude::from_degrees(static_cast<double>(pick(180'000'000)) / 1e6 - 90.0,
-                                   static_cast<unsigned>(pick(7)))
+                                   static_cast<unsigned>(1 + pick(6)))
                 .value;
     m.lon = longitude::from_degrees(static_cast<double>(pick(360'000'000)) / 1e6 - 180.0,
-                                    static_cast<unsigned>(pick(7)))
+                                    static_cast<unsigned>(1 + pick(6)))
                 .value;
     m.value = decimal(static_cast<std::int64_t>(pick(200'001)) - 100'000, 3);
     m.count = static_cast<std::int16_t>(static_cast<int>(pick(65536)) - 32768);

@@ -50,3 +50,24 @@ TEST_CASE("encode refuses a decimal the decoder could not read back") {
   CHECK(encode(h).ec == errc::value_too_large);
   CHECK(encode(h).field == 3);
 }
+
+TEST_CASE("positions built from degrees always carry a fraction of the minute") {
+  // Every spec writes DDMM.m (Kingfisher: "minimum of one digit to the right of the decimal
+  // point"), and receivers depend on it: gpsd 3.22 drops the whole fix for "5906,S", pynmea2's
+  // latitude/longitude raise. So the builder refuses zero places.
+  CHECK(latitude::from_degrees(42.5, 0).ec == errc::out_of_range);
+  CHECK(longitude::from_degrees(-71.25, 0).ec == errc::out_of_range);
+  const auto lat = latitude::from_degrees(42.5, 1);
+  REQUIRE(lat);
+  standard::rmc m;
+  m.lat = lat.value;
+  CHECK(encode(m).view().starts_with("$GPRMC,,A,4230.0,N,"));
+
+  // A position received without a fraction is still read, and relayed as it came (as unpadded
+  // degrees are): decode -> encode is the identity.
+  constexpr std::string_view relayed = "$GPRMC,,A,4221,N,07105,W,,,,,*09\r\n";
+  const auto d = decode<standard::rmc>(relayed);
+  REQUIRE(d);
+  CHECK(d.value.lat->minutes == decimal(21));
+  CHECK(encode(d.value).view() == relayed);
+}

@@ -196,8 +196,8 @@ TEST_CASE("RMC/GGA round trip over generated values") {
                                               static_cast<unsigned>(rng() % 4))
                  .value;
     r.status = (i % 3) ? standard::rmc_status::active : standard::rmc_status::warning;
-    r.lat = latitude::from_degrees(uniform(-90, 90), static_cast<unsigned>(rng() % 7)).value;
-    r.lon = longitude::from_degrees(uniform(-180, 180), static_cast<unsigned>(rng() % 7)).value;
+    r.lat = latitude::from_degrees(uniform(-90, 90), static_cast<unsigned>(1 + rng() % 6)).value;
+    r.lon = longitude::from_degrees(uniform(-180, 180), static_cast<unsigned>(1 + rng() % 6)).value;
     r.speed_knots = decimal::from_double(uniform(0, 50), 3).value;
     r.course_true = decimal::from_double(uniform(0, 359.99), 2).value;
     r.date = nmea::date{static_cast<std::uint16_t>(1980 + rng() % 100),

@@ -229,7 +229,10 @@ struct nmea_coordinate {
     return static_cast<char>(hemi) == Axis::negative ? -v : v;
   }
 
-  /// From signed decimal degrees, minutes rounded to `minute_places` digits.
+  /// From signed decimal degrees, minutes rounded to `minute_places` digits, 1 to 12: every
+  /// spec writes DDMM.m with at least one digit after the point, and receivers rely on it (gpsd
+  /// drops a fix whose position reads "4221,N"), so 0 places is out_of_range. A position
+  /// received without a fraction is still decoded, and written back as it came.
   [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
       double deg, unsigned minute_places = 4) noexcept {
     result<nmea_coordinate> r;
@@ -238,7 +241,7 @@ struct nmea_coordinate {
       return r;
     }
     const double mag = deg < 0 ? -deg : deg;
-    if (mag > Axis::max_degrees || minute_places > 12) {
+    if (mag > Axis::max_degrees || minute_places < 1 || minute_places > 12) {
       r.ec = errc::out_of_range;
       return r;
     }
