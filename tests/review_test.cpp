@@ -71,3 +71,34 @@ TEST_CASE("positions built from degrees always carry a fraction of the minute") 
   CHECK(d.value.lat->minutes == decimal(21));
   CHECK(encode(d.value).view() == relayed);
 }
+
+TEST_CASE("encode and decode name the same field for a wrong hemisphere letter") {
+  // The letter is a field of its own ("4 [LatNS_NMEA]"): decode reports it there, and so does
+  // encode, not at the number before it.
+  standard::rmc m;
+  m.lat = latitude::from_degrees(42.5).value;
+  m.lon = longitude::from_degrees(-71.25).value;
+  m.lat->hemi = hemisphere::east;
+  CHECK(encode(m).ec == errc::bad_hemisphere);
+  CHECK(encode(m).field == 4);
+  CHECK(decode<standard::rmc>("$GPRMC,,A,4230.0000,E,07115.0000,W,,,,,*03\r\n").field == 4);
+  m.lat->hemi = hemisphere::north;
+  m.lon->hemi = hemisphere::north;
+  CHECK(encode(m).field == 6);
+  CHECK(decode<standard::rmc>("$GPRMC,,A,4230.0000,N,07115.0000,N,,,,,*11\r\n").field == 6);
+  // Errors in the number itself stay on the number.
+  m.lon->hemi = hemisphere::west;
+  m.lon->minutes = decimal(60);
+  CHECK(encode(m).ec == errc::minute_out_of_range);
+  CHECK(encode(m).field == 5);
+
+  robotx::rxhrb h;
+  h.team_id = "AUVSI";
+  h.lat = decimal_latitude{decimal(2131198, 5), hemisphere::west};
+  CHECK(encode(h).ec == errc::bad_hemisphere);
+  CHECK(encode(h).field == 4);
+  h.lat->hemi = hemisphere::north;
+  h.lon = decimal_longitude{decimal(18001, 2), hemisphere::west};
+  CHECK(encode(h).ec == errc::bad_longitude);
+  CHECK(encode(h).field == 5);
+}

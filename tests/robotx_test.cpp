@@ -419,7 +419,7 @@ TEST_CASE("encode refuses what the spec does not allow, naming the field") {
   auto wrong_letter = hb;
   wrong_letter.lon = nmea::decimal_longitude{decimal(1, 0), nmea::hemisphere::north};
   CHECK(nmea::encode(wrong_letter).ec == errc::bad_hemisphere);
-  CHECK(nmea::encode(wrong_letter).field == 5);
+  CHECK(nmea::encode(wrong_letter).field == 6);  // the letter, as decode says
 
   auto mode = hb;
   mode.system_mode = static_cast<rx::system_mode>('3');

@@ -31,6 +31,7 @@
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/writer.hpp"
+#include "seawire/version.hpp"
 
 namespace {
 
@@ -403,17 +404,18 @@ int main(int argc, char** argv) {
                      "required: a sentence without *hh is rejected; verify: checked when present "
                      "(default); ignore: not checked (e.g. --checksum required)")
           ->check(CLI::IsMember({"required", "verify", "ignore"}));
-  app.add_flag("--strict", strict,
-               "apply the rules seawire sends by to the input: checksum required, uppercase hex, "
-               "no extra fields, CR LF endings, no '+' signs or reserved characters in text "
-               "(--checksum still overrides the checksum rule)");
+  app.add_flag(
+      "--strict", strict,
+      "apply the rules seawire sends by to the input: checksum required, uppercase hex, "
+      "no extra fields, CR LF endings, no '+' signs or reserved characters in text "
+      "(--checksum still overrides the checksum rule; e.g. --strict --format none < ours.nmea)");
   app.add_flag("--stats", o.stats,
                "at the end, print counts by message type and by error, and the stream reader's "
                "dropped-byte counters, to stderr (e.g. --format none --stats)");
   app.add_flag("--line-buffered", o.line_buffered,
                "flush stdout after each message, for live streams (default: large buffers, "
-               "for speed)");
-  app.set_version_flag("--version", "seawire-decode (seawire)");
+               "for speed; e.g. nc vehicle 29500 | seawire-decode --line-buffered)");
+  app.set_version_flag("--version", "seawire-decode (seawire " SEAWIRE_VERSION_STRING ")");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -29,6 +29,7 @@
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/writer.hpp"
+#include "seawire/version.hpp"
 
 namespace {
 
@@ -378,7 +379,7 @@ int main(int argc, char** argv) {
   app.add_flag("--line-buffered", o.line_buffered,
                "flush stdout after each sentence, for live links (e.g. ... | seawire-encode "
                "--line-buffered | nc vehicle 29500); default: large buffers, for speed");
-  app.set_version_flag("--version", "seawire-encode (seawire)");
+  app.set_version_flag("--version", "seawire-encode (seawire " SEAWIRE_VERSION_STRING ")");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -584,6 +584,11 @@ struct codec<nmea_coordinate<Axis>> {
     w.put(static_cast<char>(v.hemi));
   }
 
+  /// An error check() gives is about the hemisphere letter (the second wire field) or the number.
+  static constexpr unsigned error_offset(errc e) noexcept {
+    return e == errc::bad_hemisphere ? 1 : 0;
+  }
+
   template <class A>
   static constexpr errc read_hemisphere(field_reader& r, hemisphere& h) noexcept {
     const field_token t = r.take();
@@ -620,6 +625,7 @@ struct codec<decimal_coordinate<Axis>> {
     if (v.value.negative || v.value.compare(decimal(Axis::max_degrees)) > 0) return Axis::error;
     return nmea::template check_hemisphere<Axis>(v.hemi);
   }
+  static constexpr unsigned error_offset(errc e) noexcept { return nmea::error_offset(e); }
   static constexpr void write(writer& w, const value_type& v) noexcept {
     detail::write_decimal(w, v.value);
     w.next_field();

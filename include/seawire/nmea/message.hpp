@@ -377,6 +377,17 @@ template <class F, class T>
   }
 }
 
+/// Which of a codec's wire fields (0 = its first) an error of its check() is about, so that
+/// encode names the field decode would: a position's hemisphere letter is its second.
+template <class V>
+[[nodiscard]] constexpr unsigned error_offset(errc e) noexcept {
+  if constexpr (requires { codec<V>::error_offset(e); }) {
+    return codec<V>::error_offset(e);
+  } else {
+    return 0;
+  }
+}
+
 template <class F, class T>
 [[nodiscard]] constexpr errc write_field(const F& f, writer& w, const T& msg,
                                          bool& skip_rest) noexcept {
@@ -455,7 +466,9 @@ template <message_like T>
     if (f.opts.when_count != 0 && detail::skipped(f, msg)) return true;
     ++wire_field;
     e = detail::write_field(f, w, msg, skip_rest);
-    if (e == errc::ok) wire_field = static_cast<std::uint16_t>(wire_field + f.width() - 1);
+    using V = typename std::remove_cvref_t<decltype(f)>::value_type;
+    wire_field = static_cast<std::uint16_t>(
+        wire_field + (e == errc::ok ? f.width() - 1 : detail::error_offset<V>(e)));
     return e == errc::ok;
   };
   std::apply([&](const auto&... f) { (void)(one(f) && ...); }, desc.fields);
