@@ -161,7 +161,8 @@ template <class Axis>
 /// minutes rounded to `minute_places` digits (halves up), hemisphere from the sign (so -0.0 is
 /// S or W). minute_places < 0 picks the default: the number's fraction digits - 2, which gives
 /// back exactly the minutes to_decimal_degrees() started from, or 4 (0.0001' = 0.19 m) when the
-/// number has fewer than 3 fraction digits. out_of_range beyond 90/180 degrees or 12 places.
+/// number has fewer than 3 fraction digits. out_of_range for minute places outside 1..12 (gpsd
+/// and others drop a fix written "4221,N"); bad_latitude/bad_longitude beyond 90/180 degrees.
 template <class Coordinate>
 [[nodiscard]] constexpr result<Coordinate> from_decimal_degrees(decimal deg,
                                                                 int minute_places = -1) noexcept {
@@ -171,7 +172,7 @@ template <class Coordinate>
     const unsigned p = minute_places >= 0 ? static_cast<unsigned>(minute_places)
                        : deg.places >= 3  ? deg.places - 2u
                                           : 4u;
-    if (p > 12) {
+    if (p < 1 || p > 12) {  // DDMM.m: at least one digit after the point, as every spec writes
       r.ec = errc::out_of_range;
       return r;
     }
