@@ -102,3 +102,39 @@ TEST_CASE("encode and decode name the same field for a wrong hemisphere letter")
   CHECK(encode(h).ec == errc::bad_longitude);
   CHECK(encode(h).field == 5);
 }
+
+TEST_CASE("equality is the written form: padding that writes nothing is no difference") {
+  // int_width 1 on "45" and degree_digits 1 on 42 degrees pad nothing: the writer writes what
+  // it would without them, so decode(encode(v)) must equal v.
+  kingfisher::pydir p;
+  p.thrust_left = decimal(48);
+  p.thrust_left.int_width = 1;
+  p.thrust_right = decimal(0);
+  p.thrust_right.int_width = 1;
+  const auto e = encode(p);
+  REQUIRE(e);
+  CHECK(e.view() == "$PYDIR,48,0*6A\r\n");
+  const auto d = decode<kingfisher::pydir>(e.view(), parse_policy::strict());
+  REQUIRE(d);
+  CHECK(d.value == p);
+  // Padding that is written is part of the value.
+  decimal padded(45);
+  padded.int_width = 3;  // "045"
+  CHECK(padded != decimal(45));
+  CHECK(padded.written_int_digits() == 3);
+
+  standard::rmc m;
+  m.lat = latitude{42, decimal(217, 1), hemisphere::north, 1};  // written "4221.7"
+  m.lon = longitude{100, decimal(5, 1), hemisphere::west, 2};   // written "10000.5"
+  const auto r = encode(m);
+  REQUIRE(r);
+  CHECK(r.view().starts_with("$GPRMC,,A,4221.7,N,10000.5,W,"));
+  const auto back = decode<standard::rmc>(r.view(), parse_policy::strict());
+  REQUIRE(back);
+  CHECK(back.value.lat == m.lat);
+  CHECK(back.value.lon == m.lon);
+  CHECK(back.value == m);
+  // An unpadded longitude is a different written form from the padded one.
+  CHECK(longitude{71, decimal(5, 1), hemisphere::west, 2} !=
+        longitude{71, decimal(5, 1), hemisphere::west, 3});
+}

@@ -94,7 +94,21 @@ struct decimal {
     return n1 ? -mag : mag;
   }
 
-  friend constexpr bool operator==(const decimal&, const decimal&) noexcept = default;
+  /// Integer digits of the written form: int_width, or the natural count when that is more (an
+  /// int_width of 1 on "45" pads nothing); the writer pads to 20 digits at most.
+  [[nodiscard]] constexpr unsigned written_int_digits() const noexcept {
+    const unsigned natural =
+        places > 19 ? 0
+                    : seawire::detail::digit_count(mantissa / seawire::detail::pow10_table[places]);
+    const unsigned padded = int_width < 20 ? int_width : 20;
+    return natural > padded ? natural : padded;
+  }
+
+  /// The same written form: digits, places, sign and integer padding.
+  friend constexpr bool operator==(const decimal& a, const decimal& b) noexcept {
+    return a.mantissa == b.mantissa && a.places == b.places && a.negative == b.negative &&
+           a.written_int_digits() == b.written_int_digits();
+  }
 
  private:
   [[nodiscard]] constexpr int compare_magnitude(const decimal& o) const noexcept {
@@ -264,8 +278,20 @@ struct nmea_coordinate {
     return r;
   }
 
-  friend constexpr bool operator==(const nmea_coordinate&,
-                                   const nmea_coordinate&) noexcept = default;
+  /// Degree digits of the written form: degree_digits, or the natural count when that is more.
+  [[nodiscard]] constexpr unsigned written_degree_digits() const noexcept {
+    const unsigned natural = seawire::detail::digit_count(whole_degrees);
+    return natural > degree_digits ? natural : degree_digits;
+  }
+
+  /// The same written form. The minutes are always written with two integer digits, so their
+  /// int_width is no part of it.
+  friend constexpr bool operator==(const nmea_coordinate& a, const nmea_coordinate& b) noexcept {
+    return a.whole_degrees == b.whole_degrees && a.hemi == b.hemi &&
+           a.minutes.mantissa == b.minutes.mantissa && a.minutes.places == b.minutes.places &&
+           a.minutes.negative == b.minutes.negative &&
+           a.written_degree_digits() == b.written_degree_digits();
+  }
 };
 using latitude = nmea_coordinate<detail::lat_axis>;
 using longitude = nmea_coordinate<detail::lon_axis>;
