@@ -9,6 +9,7 @@
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/robotx/messages.hpp"
+#include "seawire/sandshark/messages.hpp"
 #include "seawire/standard/rmc.hpp"
 
 using namespace seawire;
@@ -137,4 +138,26 @@ TEST_CASE("equality is the written form: padding that writes nothing is no diffe
   // An unpadded longitude is a different written form from the padded one.
   CHECK(longitude{71, decimal(5, 1), hemisphere::west, 2} !=
         longitude{71, decimal(5, 1), hemisphere::west, 3});
+}
+
+TEST_CASE("an absent text field can only be left out at the end") {
+  // BFACK's description (7) and trailing field (8) may each be absent. Blank text is empty
+  // text, so a description that is absent while field 8 is there cannot be written: it would
+  // come back as an empty description.
+  sandshark::bfack a;
+  a.command = "RMB";
+  a.description.reset();
+  CHECK(encode(a).ec == errc::missing_field);
+  CHECK(encode(a).field == 7);
+  a.trailing.reset();
+  const auto seven = encode(a);
+  REQUIRE(seven);
+  CHECK(seven.view() == "$BFACK,000000,RMB,,,2,0*12\r\n");
+  a.description = text<96>{};
+  a.trailing = text<32>{};
+  const auto e = encode(a);
+  REQUIRE(e);
+  const auto d = decode<sandshark::bfack>(e.view(), parse_policy::strict());
+  REQUIRE(d);
+  CHECK(d.value == a);
 }
