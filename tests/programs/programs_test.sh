@@ -229,6 +229,14 @@ case_roundtrip() {
       fail "$f: decode | encode is not byte-exact"
     fi
   done
+  # The sample logs hold every message type seawire knows, so the round trip covers them all.
+  local type missing=()
+  for type in CPNVG CPNVR CPRCM CPRBS CPIMU CPALT PYDEP PYDEV PYDIR PYCLT BFSHT BFVER BFNVG BFNVR \
+    BFMIS BFACK BFCTL BPLOG BPSTS BPRMB BPABT BPVER RXHRB RXGAT RXCOD RXDOK RXDEL PAPGPSCTRL AB00 \
+    ..RMC ..GGA ..RPM ..RSA ..VHW ..VBW ..VWR; do
+    grep -q "^{\"type\":\"$type\"," "$work"/*.json || missing+=("$type")
+  done
+  expect_eq "every message type in the sample logs" "" "${missing[*]}"
   # Kingfisher: the only difference is the vehicle's unpadded longitude degrees.
   expect_eq "kingfisher: padded longitude is the only change" \
     "$(sed 's/,\([0-9]\{4\}\.[0-9]*\),W,/,0\1,W,/' "$data/kingfisher.nmea" | tr -d '\r' | cut -d'*' -f1)" \
