@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <variant>
 
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -160,4 +161,20 @@ TEST_CASE("an absent text field can only be left out at the end") {
   const auto d = decode<sandshark::bfack>(e.view(), parse_policy::strict());
   REQUIRE(d);
   CHECK(d.value == a);
+}
+
+TEST_CASE("a proprietary sentence is not a standard one from a talker named P.") {
+  // Garmin's sensor configuration sentence ends in RMC but is no RMC: a payload reading the
+  // Kingfisher's relayed GPS lines must ignore it (unknown_sentence), not report RMC errors.
+  constexpr std::string_view pgrmc =
+      "$PGRMC,A,218.8,100,6378137.000,298.257223563,0.0,0.0,0.0,A,3,1,1,4,30*72\r\n";
+  const auto k = kingfisher::decode_from_vehicle(pgrmc);
+  REQUIRE(k);
+  CHECK(std::holds_alternative<unknown_sentence>(k.value));
+  CHECK(decode<standard::rmc>(pgrmc).ec == errc::wrong_address);
+  // Talkers of standard sentences are two letters (or a letter and a digit), never P + one.
+  standard::rmc m;
+  CHECK(encode(m));
+  m.talker = "PG";
+  CHECK(encode(m).ec == errc::bad_address);
 }

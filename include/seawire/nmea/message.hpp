@@ -187,13 +187,14 @@ template <auto Member, class... Options>
 template <seawire::detail::fixed_string Address, class... Fields>
 struct sentence_desc {
   static constexpr std::string_view address = Address.view();
-  /// "--RMC": any two-character talker followed by RMC.
+  /// "--RMC": any two-character talker followed by RMC. A 'P' first is not a talker but a
+  /// proprietary sentence (Garmin's $PGRMC is no RMC), so it never matches.
   static constexpr bool any_talker = Address.size() > 2 && address[0] == '-' && address[1] == '-';
   std::tuple<Fields...> fields;
 
   [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
     if constexpr (any_talker) {
-      return a.size() == address.size() && a.substr(2) == address.substr(2);
+      return a.size() == address.size() && a[0] != 'P' && a.substr(2) == address.substr(2);
     } else {
       return a == address;
     }
@@ -439,7 +440,7 @@ template <message_like T>
   constexpr auto& desc = T::nmea;
   if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
     const std::string_view t = msg.talker.view();
-    if (t.size() != 2 || !seawire::detail::is_upper(t[0]) ||
+    if (t.size() != 2 || !seawire::detail::is_upper(t[0]) || t[0] == 'P' ||
         !(seawire::detail::is_upper(t[1]) || seawire::detail::is_digit(t[1]))) {
       result<std::size_t> r;
       r.ec = errc::bad_address;
