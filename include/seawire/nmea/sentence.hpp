@@ -174,7 +174,8 @@ class field_reader {
   constexpr field_reader(const sentence_view& s, const parse_policy& p) noexcept
       : rest_(s.body),
         more_(s.field_count > 0),
-        column_(static_cast<std::uint16_t>(s.body_column())),
+        // With no fields there is no body: point past the address, not past the line.
+        column_(static_cast<std::uint16_t>(s.field_count > 0 ? s.body_column() : s.line.size())),
         total_(s.field_count),
         policy_(&p) {}
 
