@@ -28,7 +28,7 @@ struct parse_policy {
   bool extra_fields = true;       ///< ignore fields past the last one a message defines (SPI 4.2)
   bool require_crlf = false;      ///< otherwise CR LF, LF, CR or no ending at all are accepted
   bool strict_values = false;     ///< send-side rules on values too: no '+' signs, no reserved text
-  std::size_t max_length = 1024;  ///< bytes from '$' to the end of the checksum
+  std::size_t max_length = 1024;  ///< bytes from '$' to the end of the checksum (65535 at most)
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.
   [[nodiscard]] static constexpr parse_policy strict() noexcept {
@@ -90,7 +90,10 @@ namespace detail {
 
   if (n == 0) return detail::fail(errc::empty_input, 0);
   if (line[0] != '$') return detail::fail(errc::missing_start, 0);
-  if (n > policy.max_length) return detail::fail(errc::too_long, policy.max_length);
+  // Columns and field counts are 16-bit, so no policy makes a longer line readable: past 65535
+  // bytes the count of fields could wrap (65536 commas would read as no fields at all).
+  const std::size_t longest = policy.max_length < 0xFFFF ? policy.max_length : 0xFFFF;
+  if (n > longest) return detail::fail(errc::too_long, longest);
 
   sentence_view s;
   s.line = line;
