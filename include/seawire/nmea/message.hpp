@@ -412,6 +412,11 @@ template <class F, class T>
     errc e = codec<V>::check(*v);
     if (e == errc::ok) e = check_options(*v, o);
     if (e != errc::ok) return e;
+  } else if (codec<V>::allows_blank) {
+    // A blank field reads back as nullopt, except text: there blank is the empty string, and
+    // only a field left out is nullopt. One that a later field keeps from being left out cannot
+    // be written as nullopt at all.
+    return errc::missing_field;
   }
   w.next_field();
   if (has) {
