@@ -106,7 +106,10 @@ struct rng {
     return static_cast<E>(letters[below(N - 1)]);
   }
   nmea::talker_id talker() {
-    const char t[3] = {static_cast<char>('A' + below(26)), static_cast<char>('A' + below(26)), 0};
+    // Any two letters but a 'P' first, which makes a proprietary address, not a talker.
+    char first = static_cast<char>('A' + below(25));
+    if (first >= 'P') ++first;
+    const char t[3] = {first, static_cast<char>('A' + below(26)), 0};
     nmea::talker_id id;
     (void)id.assign(std::string_view(t, 2));
     return id;
