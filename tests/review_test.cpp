@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <string>
 #include <variant>
 
 #include "seawire/kingfisher/messages.hpp"
@@ -177,4 +178,23 @@ TEST_CASE("a proprietary sentence is not a standard one from a talker named P.")
   CHECK(encode(m));
   m.talker = "PG";
   CHECK(encode(m).ec == errc::bad_address);
+}
+
+TEST_CASE("a BFMIS that decodes also encodes: its texts need more than 256 bytes") {
+  sandshark::bfmis m;
+  m.timestamp = time_of_day{23, 59, 59, 999'999'999, 9};
+  (void)m.dive_file.assign(std::string(128, 'd'));
+  (void)m.status.assign("Running " + std::string(120, 's'));
+  (void)m.details.assign(std::string(200, 'x'));
+  const auto e = encode(m);
+  REQUIRE(e);
+  CHECK(e.view().size() == 487);
+  const auto d = sandshark::decode_from_vehicle(e.view());
+  REQUIRE(d);
+  REQUIRE(std::holds_alternative<sandshark::bfmis>(d.value));
+  CHECK(std::get<sandshark::bfmis>(d.value) == m);
+  CHECK(encode(std::get<sandshark::bfmis>(d.value)).view() == e.view());
+  // Other messages keep the 256-byte buffer; an explicit size still works.
+  static_assert(sizeof(encode(sandshark::bpsts{}).data) == 256);
+  CHECK(encode<128>(m).ec == errc::buffer_too_small);
 }

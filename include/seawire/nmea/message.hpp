@@ -490,8 +490,21 @@ template <message_like T>
   return w.seal();
 }
 
-/// Encode into a buffer held by value (256 bytes unless asked otherwise).
-template <std::size_t N = 256, message_like T>
+namespace detail {
+/// The buffer encode() gives a message: 256 bytes, or T::max_sentence_size for a message whose
+/// text fields can make it longer (BFMIS), so that whatever decodes also encodes.
+template <class T>
+[[nodiscard]] consteval std::size_t sentence_size() noexcept {
+  if constexpr (requires { T::max_sentence_size; }) {
+    return T::max_sentence_size > 256 ? T::max_sentence_size : 256;
+  } else {
+    return 256;
+  }
+}
+}  // namespace detail
+
+/// Encode into a buffer of N bytes held by value.
+template <std::size_t N, message_like T>
 [[nodiscard]] constexpr sentence_buffer<N> encode(const T& msg) noexcept {
   sentence_buffer<N> b;
   const result<std::size_t> r = encode_to(msg, std::span<char>(b.data, N));
@@ -499,6 +512,11 @@ template <std::size_t N = 256, message_like T>
   b.field = r.field;
   b.size = r ? r.value : 0;
   return b;
+}
+/// Encode into a buffer held by value, of 256 bytes unless the message needs more.
+template <message_like T>
+[[nodiscard]] constexpr sentence_buffer<detail::sentence_size<T>()> encode(const T& msg) noexcept {
+  return encode<detail::sentence_size<T>()>(msg);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -88,7 +88,8 @@ class writer {
 };
 
 /// A sentence held by value: what encode() returns. 256 bytes holds every sentence seawire
-/// defines with room to spare (NMEA 0183's own limit is 82).
+/// defines (NMEA 0183's own limit is 82) but one: BFMIS, whose three texts take up to 456 bytes,
+/// is encoded into 512 (its max_sentence_size).
 template <std::size_t N = 256>
 struct sentence_buffer {
   char data[N]{};

@@ -11,6 +11,7 @@
 // Field numbers below count as the spec does: 1 is the first field after the address.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -125,6 +126,10 @@ struct bfmis {
   }
 
   friend constexpr bool operator==(const bfmis&, const bfmis&) noexcept = default;
+
+  /// "$BFMIS," 7 + time 16 + texts 128 + 128 + 200 + 3 commas + "*hh" CR LF 5 = 487 bytes: more
+  /// than the 256 encode() gives other messages.
+  static constexpr std::size_t max_sentence_size = 512;
 
   static constexpr auto nmea = sentence<"BFMIS">(
       field<&bfmis::timestamp>("timestamp"), field<&bfmis::dive_file>("dive_file"),
