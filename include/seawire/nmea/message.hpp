@@ -401,9 +401,6 @@ template <class F, class T>
   if constexpr (F::is_optional) {
     has = m.has_value();
     if (!has && o.when_count != 0) return errc::ok;  // the shorter form has no such field
-    // Blank text is empty text, so an absent text field can only be left out at the end (BFACK
-    // without a description but with the field after it cannot be written).
-    if (!has && codec<V>::allows_blank) return errc::missing_field;
     if (has) v = &*m;
   } else {
     v = &m;
