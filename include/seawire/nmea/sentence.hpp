@@ -6,9 +6,14 @@
 //   $GPRMC,164959.00,A,4221.71114,N,...,A*70\r\n
 //    ^^^^^ address  ^^^^^^^^^^^^^^^^^^^^^^^^ body (fields)   ^^ checksum
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
@@ -60,6 +65,125 @@ struct sentence_view {
 };
 
 namespace detail {
+
+/// What the one pass over a sentence finds between its '$' and its '*' (or its end).
+struct body_scan {
+  std::size_t star = 0;         ///< index of the first '*'; 0 if there is none
+  std::size_t bad = 0;          ///< index of the first byte that may not stand there; 0 if none
+  std::size_t first_comma = 0;  ///< index of the first ','; 0 if there is none
+  std::size_t commas = 0;       ///< ',' before the '*'
+  std::uint8_t x = 0;           ///< XOR of every byte before the '*' (the '$' excluded)
+};
+
+/// The byte loop: the reference, and what constant evaluation and short lines use.
+constexpr void scan_body_bytes(std::string_view line, body_scan& b) noexcept {
+  std::uint8_t x = 0;
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '*') {
+      b.star = i;
+      break;
+    }
+    if (!seawire::detail::is_printable(c) || c == '$') {
+      b.bad = i;
+      return;
+    }
+    if (c == ',') {
+      if (b.first_comma == 0) b.first_comma = i;
+      ++b.commas;
+    }
+    x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(c));
+  }
+  b.x = x;
+}
+
+#if defined(__SSE2__)
+// 16 bytes per step: find '*', refuse a byte outside 0x20..0x7E or a '$', count the commas and
+// XOR the bytes, all on the block at once. The last block is the line's last 16 bytes, overlapping
+// bytes already seen, which are masked out; nothing outside the line is ever read.
+// Precondition: line.size() >= 16.
+inline void scan_body_sse2(std::string_view line, body_scan& b) noexcept {
+  const char* const p = line.data();
+  const std::size_t n = line.size();
+  const __m128i star_c = _mm_set1_epi8('*');
+  const __m128i comma_c = _mm_set1_epi8(',');
+  const __m128i space_c = _mm_set1_epi8(0x20);
+  const __m128i del_c = _mm_set1_epi8(0x7F);
+  const __m128i dollar_c = _mm_set1_epi8('$');
+  __m128i x = _mm_setzero_si128();
+  __m128i commas = _mm_setzero_si128();  // per-lane counts (each lane sees <= 64 blocks)
+  std::size_t at = 1;                    // where the block starts
+  unsigned lo = 0;                       // lanes below lo were seen in the block before
+  for (;;) {
+    if (n - at < 16) {
+      if (at >= n) break;
+      lo = static_cast<unsigned>(at - (n - 16));
+      at = n - 16;
+    }
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + at));
+    const __m128i comma = _mm_cmpeq_epi8(v, comma_c);
+    // Signed compare: below 0x20 also catches 0x80..0xFF, which are negative.
+    const __m128i bad =
+        _mm_or_si128(_mm_cmplt_epi8(v, space_c),
+                     _mm_or_si128(_mm_cmpeq_epi8(v, del_c), _mm_cmpeq_epi8(v, dollar_c)));
+    const auto stars =
+        static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, star_c))) & (0xFFFFU << lo);
+    const auto bads = static_cast<unsigned>(_mm_movemask_epi8(bad));
+    if (b.first_comma == 0) {
+      const auto m = static_cast<unsigned>(_mm_movemask_epi8(comma)) & (0xFFFFU << lo);
+      // Only a comma before the '*' counts.
+      const unsigned before_star = stars == 0 ? 0xFFFFU : (stars & (0U - stars)) - 1U;
+      if ((m & before_star) != 0)
+        b.first_comma = at + static_cast<std::size_t>(std::countr_zero(m));
+    }
+    if ((stars | bads | lo) == 0) {          // the whole block is sentence text: the common case
+      commas = _mm_sub_epi8(commas, comma);  // a match is -1
+      x = _mm_xor_si128(x, v);
+      at += 16;
+      continue;
+    }
+    // Lanes [lo, hi) are this block's share of the sentence: past what was seen, before '*'.
+    const int hi = stars != 0 ? std::countr_zero(stars) : 16;
+    const unsigned live_bits = (0xFFFFU << lo) & ((1U << static_cast<unsigned>(hi)) - 1U);
+    if (const unsigned m = bads & live_bits; m != 0) {
+      b.bad = at + static_cast<std::size_t>(std::countr_zero(m));
+      return;
+    }
+    const __m128i index = _mm_setr_epi8(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __m128i live =
+        _mm_and_si128(_mm_cmpgt_epi8(index, _mm_set1_epi8(static_cast<char>(lo) - 1)),
+                      _mm_cmplt_epi8(index, _mm_set1_epi8(static_cast<char>(hi))));
+    commas = _mm_sub_epi8(commas, _mm_and_si128(live, comma));
+    x = _mm_xor_si128(x, _mm_and_si128(live, v));
+    if (stars != 0) {
+      b.star = at + static_cast<std::size_t>(hi);
+      break;
+    }
+    at += 16;
+  }
+  x = _mm_xor_si128(x, _mm_srli_si128(x, 8));
+  x = _mm_xor_si128(x, _mm_srli_si128(x, 4));
+  x = _mm_xor_si128(x, _mm_srli_si128(x, 2));
+  x = _mm_xor_si128(x, _mm_srli_si128(x, 1));
+  b.x = static_cast<std::uint8_t>(_mm_cvtsi128_si32(x) & 0xFF);
+  const __m128i sums = _mm_sad_epu8(commas, _mm_setzero_si128());
+  b.commas = static_cast<std::size_t>(_mm_cvtsi128_si32(sums) + _mm_extract_epi16(sums, 4));
+}
+#endif
+
+/// One pass over `line` (no line ending; line[0] is the '$').
+[[nodiscard]] constexpr body_scan scan_body(std::string_view line) noexcept {
+  body_scan b;
+#if defined(__SSE2__)
+  if (!std::is_constant_evaluated() && line.size() >= 16) {
+    scan_body_sse2(line, b);
+    return b;
+  }
+#endif
+  scan_body_bytes(line, b);
+  return b;
+}
+
 [[nodiscard]] constexpr result<sentence_view> fail(errc e, std::size_t column) noexcept {
   result<sentence_view> r;
   r.ec = e;
@@ -68,9 +192,16 @@ namespace detail {
 }
 }  // namespace detail
 
-/// Split and check one line. The line may carry its CR LF / LF / CR ending or none.
-[[nodiscard]] constexpr result<sentence_view> parse(std::string_view line,
-                                                    const parse_policy& policy = {}) noexcept {
+namespace detail {
+
+/// parse() into `s`, which the caller owns: the error, and in `column` where it is. Everything
+/// is written in place, so parse() returns one object and the compiler copies nothing.
+[[nodiscard]] constexpr errc split(std::string_view line, const parse_policy& policy,
+                                   sentence_view& s, std::size_t& column) noexcept {
+  const auto fail = [&column](errc e, std::size_t at) {
+    column = at;
+    return e;
+  };
   using seawire::detail::hex_value;
   using seawire::detail::is_digit;
   using seawire::detail::is_upper;
@@ -81,51 +212,38 @@ namespace detail {
   if (crlf) {
     n -= 2;
   } else if (n >= 1 && (line[n - 1] == '\n' || line[n - 1] == '\r')) {
-    if (policy.require_crlf) return detail::fail(errc::bad_line_ending, n - 1);
+    if (policy.require_crlf) return fail(errc::bad_line_ending, n - 1);
     n -= 1;
   } else if (policy.require_crlf && n > 0) {
-    return detail::fail(errc::bad_line_ending, n);
+    return fail(errc::bad_line_ending, n);
   }
   line = line.substr(0, n);
 
-  if (n == 0) return detail::fail(errc::empty_input, 0);
-  if (line[0] != '$') return detail::fail(errc::missing_start, 0);
+  if (n == 0) return fail(errc::empty_input, 0);
+  if (line[0] != '$') return fail(errc::missing_start, 0);
   // Columns and field counts are 16-bit, so no policy makes a longer line readable: past 65535
   // bytes the count of fields could wrap (65536 commas would read as no fields at all).
   const std::size_t longest = policy.max_length < 0xFFFF ? policy.max_length : 0xFFFF;
-  if (n > longest) return detail::fail(errc::too_long, longest);
+  if (n > longest) return fail(errc::too_long, longest);
 
-  sentence_view s;
   s.line = line;
 
   // One pass: XOR, printable check, address end, comma count, checksum delimiter.
-  std::uint8_t x = 0;
-  std::size_t i = 1;
-  std::size_t address_end = 0;
-  std::size_t commas = 0;
-  std::size_t star = 0;
-  for (; i < n; ++i) {
-    const char c = line[i];
-    if (c == '*') {
-      star = i;
-      break;
-    }
-    if (!seawire::detail::is_printable(c) || c == '$') return detail::fail(errc::bad_character, i);
-    if (c == ',') {
-      if (address_end == 0) address_end = i;
-      ++commas;
-    }
-    x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(c));
-  }
+  const detail::body_scan scan = detail::scan_body(line);
+  if (scan.bad != 0) return fail(errc::bad_character, scan.bad);
+  const std::uint8_t x = scan.x;
+  const std::size_t commas = scan.commas;
+  const std::size_t star = scan.star;
+  std::size_t address_end = scan.first_comma;
   const std::size_t data_end = star != 0 ? star : n;
   if (address_end == 0) address_end = data_end;
 
   // Address: upper-case letters and digits, starting with a letter.
   const std::size_t alen = address_end - 1;
-  if (alen == 0 || alen > 15) return detail::fail(errc::bad_address, 1);
+  if (alen == 0 || alen > 15) return fail(errc::bad_address, 1);
   for (std::size_t k = 1; k < address_end; ++k) {
     const char c = line[k];
-    if (!(is_upper(c) || (k > 1 && is_digit(c)))) return detail::fail(errc::bad_address, k);
+    if (!(is_upper(c) || (k > 1 && is_digit(c)))) return fail(errc::bad_address, k);
   }
   s.address = line.substr(1, alen);
   if (address_end < data_end) {
@@ -138,29 +256,42 @@ namespace detail {
   if (star != 0) {
     const std::size_t digits = n - star - 1;
     if (digits != 0) {
-      if (digits != 2) return detail::fail(errc::bad_checksum_format, star + 1);
+      if (digits != 2) return fail(errc::bad_checksum_format, star + 1);
       const char h = line[star + 1];
       const char l = line[star + 2];
       const int hv = hex_value(h);
       const int lv = hex_value(l);
-      if (hv < 0 || lv < 0) return detail::fail(errc::bad_checksum_format, star + 1);
+      if (hv < 0 || lv < 0) return fail(errc::bad_checksum_format, star + 1);
       if (!policy.lowercase_hex && ((h >= 'a' && h <= 'f') || (l >= 'a' && l <= 'f')))
-        return detail::fail(errc::bad_checksum_format, star + 1);
+        return fail(errc::bad_checksum_format, star + 1);
       s.received_checksum = static_cast<std::uint8_t>(hv * 16 + lv);
       if (s.received_checksum == x) {
         s.checksum = checksum_state::valid;
       } else {
         if (policy.checksum != checksum_policy::ignore)
-          return detail::fail(errc::checksum_mismatch, star + 1);
+          return fail(errc::checksum_mismatch, star + 1);
         s.checksum = checksum_state::mismatch;
       }
     }
   }
   if (s.checksum == checksum_state::absent && policy.checksum == checksum_policy::required)
-    return detail::fail(errc::missing_checksum, data_end);
+    return fail(errc::missing_checksum, data_end);
 
+  return errc::ok;
+}
+
+}  // namespace detail
+
+/// Split and check one line. The line may carry its CR LF / LF / CR ending or none.
+[[nodiscard]] constexpr result<sentence_view> parse(std::string_view line,
+                                                    const parse_policy& policy = {}) noexcept {
   result<sentence_view> r;
-  r.value = s;
+  std::size_t column = 0;
+  r.ec = detail::split(line, policy, r.value, column);
+  if (r.ec != errc::ok) {
+    r.value = {};
+    r.column = static_cast<std::uint16_t>(column > 0xFFFF ? 0xFFFF : column);
+  }
   return r;
 }
 
