@@ -57,6 +57,16 @@ inline constexpr std::uint64_t pow10_table[20] = {1ull,
                                                   1000000000000000000ull,
                                                   10000000000000000000ull};
 
+/// The largest v for which v * 10^k fits 64 bits: scale_limit[k] == UINT64_MAX / 10^k.
+inline constexpr std::uint64_t scale_limit[20] = {
+    ~0ull / pow10_table[0],  ~0ull / pow10_table[1],  ~0ull / pow10_table[2],
+    ~0ull / pow10_table[3],  ~0ull / pow10_table[4],  ~0ull / pow10_table[5],
+    ~0ull / pow10_table[6],  ~0ull / pow10_table[7],  ~0ull / pow10_table[8],
+    ~0ull / pow10_table[9],  ~0ull / pow10_table[10], ~0ull / pow10_table[11],
+    ~0ull / pow10_table[12], ~0ull / pow10_table[13], ~0ull / pow10_table[14],
+    ~0ull / pow10_table[15], ~0ull / pow10_table[16], ~0ull / pow10_table[17],
+    ~0ull / pow10_table[18], ~0ull / pow10_table[19]};
+
 /// Number of decimal digits of v (1 for 0).
 [[nodiscard]] constexpr unsigned digit_count(std::uint64_t v) noexcept {
   unsigned n = 1;

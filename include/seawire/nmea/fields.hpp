@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/writer.hpp"
@@ -112,33 +113,29 @@ struct decimal {
 
  private:
   [[nodiscard]] constexpr int compare_magnitude(const decimal& o) const noexcept {
-    // Compare integer parts, then fraction parts aligned to the longer fraction.
-    const std::uint64_t ia = mantissa / seawire::detail::pow10_table[places];
-    const std::uint64_t ib = o.mantissa / seawire::detail::pow10_table[o.places];
-    if (ia != ib) return ia < ib ? -1 : 1;
-    std::uint64_t fa = mantissa % seawire::detail::pow10_table[places];
-    std::uint64_t fb = o.mantissa % seawire::detail::pow10_table[o.places];
-    // A fraction below 10^places scaled by at most 10^(19-places) stays below 10^19 < 2^64.
-    if (places < o.places) fa *= seawire::detail::pow10_table[o.places - places];
-    if (o.places < places) fb *= seawire::detail::pow10_table[places - o.places];
-    return fa == fb ? 0 : (fa < fb ? -1 : 1);
+    // Scale the mantissa with fewer places up to the other's: no division, and a product that
+    // would pass 2^64 is certainly the larger (the other mantissa is below 2^64).
+    if (places == o.places) return three_way(mantissa, o.mantissa);
+    if (places < o.places) return scaled_compare(mantissa, o.places - places, o.mantissa);
+    return -scaled_compare(o.mantissa, places - o.places, mantissa);
+  }
+  // a * 10^k against b, for k < 20.
+  [[nodiscard]] static constexpr int scaled_compare(std::uint64_t a, unsigned k,
+                                                    std::uint64_t b) noexcept {
+    if (a > seawire::detail::scale_limit[k]) return 1;
+    return three_way(a * seawire::detail::pow10_table[k], b);
+  }
+  [[nodiscard]] static constexpr int three_way(std::uint64_t a, std::uint64_t b) noexcept {
+    return a == b ? 0 : (a < b ? -1 : 1);
   }
 };
 
 namespace detail {
 
-/// Parse [sign] digits [. digits]. '+' only when allowed (receivers accept it, senders never
-/// write it). No exponent, no spaces.
-[[nodiscard]] constexpr errc parse_decimal(std::string_view s, bool allow_plus,
-                                           decimal& out) noexcept {
-  std::size_t i = 0;
+/// Parse [sign] digits [. digits] the slow, general way: any number of leading zeros.
+[[nodiscard]] constexpr errc parse_decimal_long(std::string_view s, std::size_t i, bool neg,
+                                                decimal& out) noexcept {
   const std::size_t n = s.size();
-  bool neg = false;
-  if (i < n && (s[i] == '-' || s[i] == '+')) {
-    if (s[i] == '+' && !allow_plus) return errc::bad_number;
-    neg = s[i] == '-';
-    ++i;
-  }
   std::uint64_t m = 0;
   unsigned significant = 0;
   unsigned places = 0;
@@ -172,6 +169,46 @@ namespace detail {
   const unsigned natural = seawire::detail::digit_count(m / seawire::detail::pow10_table[places]);
   out.int_width =
       static_cast<std::uint8_t>(int_written > natural && int_written <= 20 ? int_written : 0);
+  return errc::ok;
+}
+
+/// Parse [sign] digits [. digits]. '+' only when allowed (receivers accept it, senders never
+/// write it). No exponent, no spaces.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s,
+                                                                 bool allow_plus,
+                                                                 decimal& out) noexcept {
+  std::size_t i = 0;
+  const std::size_t n = s.size();
+  bool neg = false;
+  if (i < n && (s[i] == '-' || s[i] == '+')) {
+    if (s[i] == '+' && !allow_plus) return errc::bad_number;
+    neg = s[i] == '-';
+    ++i;
+  }
+  // Up to 19 digits in all fit the mantissa whatever they are, and no division is needed to
+  // find the integer digits as written; anything longer takes the general path.
+  const std::size_t int_begin = i;
+  std::uint64_t m = 0;
+  for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10; ++i)
+    m = m * 10 + d;
+  const std::size_t int_written = i - int_begin;
+  std::size_t places = 0;
+  if (i < n && s[i] == '.') {
+    const std::size_t frac_begin = ++i;
+    for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10; ++i)
+      m = m * 10 + d;
+    places = i - frac_begin;
+  }
+  // Past 19 digits the general path decides, down to which error comes first.
+  if (int_written + places > 19) return parse_decimal_long(s, int_begin, neg, out);
+  if (i != n || int_written + places == 0) return errc::bad_number;
+  std::size_t zeros = 0;  // leading zeros of the integer digits
+  while (zeros < int_written && s[int_begin + zeros] == '0') ++zeros;
+  const std::size_t natural = int_written - zeros == 0 ? 1 : int_written - zeros;
+  out.mantissa = m;
+  out.places = static_cast<std::uint8_t>(places);
+  out.negative = neg;
+  out.int_width = static_cast<std::uint8_t>(int_written > natural ? int_written : 0);
   return errc::ok;
 }
 
@@ -566,21 +603,34 @@ struct codec<nmea_coordinate<Axis>> {
 
   static constexpr errc read(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;
-    std::size_t point = s.find('.');
-    if (point == std::string_view::npos) point = s.size();
-    // DDMM: at least one degree digit and exactly two minute digits before the point.
+    // One pass. The digits before the point are DDMM: one to Axis::width degree digits and
+    // exactly two minute digits. Those after it are the fraction of the minute.
+    const std::size_t n = s.size();
+    std::size_t i = 0;
+    std::uint64_t ddmm = 0;
+    for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10; ++i)
+      ddmm = ddmm * 10 + d;
+    const std::size_t point = i;
     if (point < 3 || point - 2 > Axis::width) return Axis::error;
-    unsigned deg = 0;
-    if (!detail::parse_fixed_digits(s, 0, point - 2, deg)) return Axis::error;
-    decimal minutes;
-    // 12 fraction digits of a minute is 2 micrometres: more is noise, and would overflow the
-    // range arithmetic below.
-    if (detail::parse_decimal(s.substr(point - 2), false, minutes) != errc::ok ||
-        minutes.negative || minutes.places > 12)
-      return Axis::error;
-    minutes.int_width = 0;  // minutes are always written with two digits
-    const std::uint64_t sixty = 60 * seawire::detail::pow10_table[minutes.places];
-    if (minutes.mantissa >= sixty) return errc::minute_out_of_range;
+    std::uint64_t fraction = 0;
+    std::size_t places = 0;
+    if (i < n) {
+      if (s[i] != '.') return Axis::error;
+      const std::size_t fraction_begin = ++i;
+      for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10;
+           ++i)
+        fraction = fraction * 10 + d;
+      places = i - fraction_begin;
+      // 12 fraction digits of a minute is 2 micrometres: more is noise, and would overflow the
+      // range arithmetic below.
+      if (i != n || places > 12) return Axis::error;
+    }
+    const auto deg = static_cast<unsigned>(ddmm / 100);
+    const std::uint64_t whole_minutes = ddmm % 100;
+    if (whole_minutes >= 60) return errc::minute_out_of_range;
+    decimal minutes;  // int_width stays 0: minutes are always written with two digits
+    minutes.mantissa = whole_minutes * seawire::detail::pow10_table[places] + fraction;
+    minutes.places = static_cast<std::uint8_t>(places);
     if (deg > Axis::max_degrees || (deg == Axis::max_degrees && minutes.mantissa != 0))
       return Axis::error;
     v.whole_degrees = static_cast<std::uint16_t>(deg);
@@ -665,21 +715,30 @@ struct codec<time_of_day> {
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
     const std::string_view s = r.take().text;
-    unsigned h = 0, m = 0, sec = 0;
-    if (!detail::parse_fixed_digits(s, 0, 2, h) || !detail::parse_fixed_digits(s, 2, 2, m) ||
-        !detail::parse_fixed_digits(s, 4, 2, sec))
-      return errc::bad_time;
+    if (s.size() < 6) return errc::bad_time;
+    unsigned digits[6]{};
+    bool ok = true;
+    for (std::size_t k = 0; k < 6; ++k) {
+      digits[k] = static_cast<unsigned char>(s[k]) - unsigned{'0'};
+      ok = ok && digits[k] < 10;
+    }
+    if (!ok) return errc::bad_time;
     unsigned frac = 0;
     std::size_t places = 0;
     if (s.size() > 6) {
       places = s.size() - 7;
       // "hhmmss." with nothing after the point is malformed, not zero places.
-      if (s[6] != '.' || places == 0 || places > 9 ||
-          !detail::parse_fixed_digits(s, 7, places, frac))
-        return errc::bad_time;
+      if (s[6] != '.' || places == 0 || places > 9) return errc::bad_time;
+      for (std::size_t k = 7; k < s.size(); ++k) {
+        const unsigned d = static_cast<unsigned char>(s[k]) - unsigned{'0'};
+        if (d >= 10) return errc::bad_time;
+        frac = frac * 10 + d;
+      }
     }
-    v = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(sec),
-         frac, static_cast<std::uint8_t>(places)};
+    v = {static_cast<std::uint8_t>(digits[0] * 10 + digits[1]),
+         static_cast<std::uint8_t>(digits[2] * 10 + digits[3]),
+         static_cast<std::uint8_t>(digits[4] * 10 + digits[5]), frac,
+         static_cast<std::uint8_t>(places)};
     return check(v);
   }
   static constexpr errc check(const time_of_day& v) noexcept {
@@ -754,15 +813,20 @@ template <char_enum_like E>
 struct codec<E> {
   static constexpr unsigned width = 1;
   static constexpr bool allows_blank = false;
+  // Which bytes are letters of E: one lookup instead of a search through enum_chars.
+  static constexpr std::array<bool, 256> letters = [] {
+    std::array<bool, 256> t{};
+    for (const char c : std::string_view(enum_chars(E{}))) t[static_cast<unsigned char>(c)] = true;
+    return t;
+  }();
   static constexpr errc read(field_reader& r, E& v) noexcept {
     const std::string_view s = r.take().text;
-    if (s.size() != 1 || std::string_view(enum_chars(E{})).find(s[0]) == std::string_view::npos)
-      return errc::bad_enum;
+    if (s.size() != 1 || !letters[static_cast<unsigned char>(s[0])]) return errc::bad_enum;
     v = static_cast<E>(s[0]);
     return errc::ok;
   }
   static constexpr errc check(const E& v) noexcept {
-    return to_string(v).empty() ? errc::bad_enum : errc::ok;
+    return letters[static_cast<unsigned char>(static_cast<char>(v))] ? errc::ok : errc::bad_enum;
   }
   static constexpr void write(writer& w, const E& v) noexcept { w.put(static_cast<char>(v)); }
 };
