@@ -46,8 +46,9 @@ struct message_set {
   /// unknown_sentence (not an error: receivers are told to ignore such messages).
   [[nodiscard]] static constexpr result<variant> decode(const sentence_view& s,
                                                         const parse_policy& p = {}) noexcept {
-    result<variant> out;
-    out.value = unknown_sentence{s};
+    // Built holding unknown_sentence, not value-initialized: that would first zero the storage
+    // of the largest message in the set.
+    result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
     (void)((Ms::nmea.matches(s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
     return out;
   }
@@ -81,24 +82,22 @@ struct message_set {
   }
 
  private:
+  // Decodes straight into the variant's alternative: a message is never copied.
   template <class M>
   static constexpr void assign(result<variant>& out, const sentence_view& s,
                                const parse_policy& p) noexcept {
-    result<M> r = nmea::decode<M>(s, p);
-    out.ec = r.ec;
-    out.field = r.field;
-    out.column = r.column;
-    if (r) out.value.template emplace<M>(r.value);
+    detail::decode_into(s, p, out.value.template emplace<M>(), out);
+    if (!out) out.value.template emplace<unknown_sentence>(unknown_sentence{s});
   }
   template <class M, class F>
   static constexpr void visit_one(result<bool>& out, const sentence_view& s, const parse_policy& p,
                                   F& on_message) {
-    const result<M> r = nmea::decode<M>(s, p);
-    out.ec = r.ec;
-    out.field = r.field;
-    out.column = r.column;
+    // Default-initialized, not value-initialized: every member has its initializer and
+    // decode_into writes every field, so there is no need to zero the whole message first.
+    M m;
+    detail::decode_into(s, p, m, out);
     out.value = true;
-    if (r) on_message(r.value);
+    if (out) on_message(static_cast<const M&>(m));
   }
 };
 

@@ -28,6 +28,7 @@
 #include <utility>
 
 #include "seawire/detail/fixed_string.hpp"
+#include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -220,7 +221,8 @@ concept message_like = requires {
 
 namespace detail {
 
-[[nodiscard]] constexpr errc check_options(const decimal& v, const field_options& o) noexcept {
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc check_options(const decimal& v,
+                                                                 const field_options& o) noexcept {
   if (o.max_places >= 0 && v.places > o.max_places) return errc::out_of_range;
   if (o.has_min && v.compare(o.min) < 0) return errc::out_of_range;
   if (o.has_max) {
@@ -230,7 +232,8 @@ namespace detail {
   return errc::ok;
 }
 template <class T>
-[[nodiscard]] constexpr errc check_options(const T& v, const field_options& o) noexcept {
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc check_options(const T& v,
+                                                                 const field_options& o) noexcept {
   if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
     return check_options(decimal(static_cast<std::int64_t>(v)), o);
   } else if constexpr (std::is_same_v<T, time_of_day>) {
@@ -245,8 +248,9 @@ template <class T>
   }
 }
 
-[[nodiscard]] constexpr errc read_unit(field_reader& r, const field_options& o,
-                                       bool value_present) noexcept {
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_unit(field_reader& r,
+                                                             const field_options& o,
+                                                             bool value_present) noexcept {
   if (o.unit == 0) return errc::ok;
   const field_token t = r.take();
   if (!t.present) return value_present ? errc::too_few_fields : errc::ok;
@@ -266,7 +270,8 @@ constexpr void clear_optional(O& o) noexcept {
 }
 
 template <class F, class T>
-[[nodiscard]] constexpr errc read_field(const F& f, field_reader& r, T& msg) noexcept {
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_field(const F& f, field_reader& r,
+                                                              T& msg) noexcept {
   using V = typename F::value_type;
   auto& m = msg.*F::member;
   const field_options& o = f.opts;
@@ -289,11 +294,12 @@ template <class F, class T>
       clear_optional(m);
       return read_unit(r, o, false);
     }
-    V v{};
-    errc e = codec<V>::read(r, v);
-    if (e == errc::ok) e = check_options(v, o);
+    // Read in place: a value built on the side and copied in would be copied through the
+    // stack in wide loads that wait on the narrow stores that just wrote it.
+    errc e = codec<V>::read(r, m.emplace());
+    if (e == errc::ok) e = check_options(*m, o);
     if (e == errc::ok) e = read_unit(r, o, true);
-    if (e == errc::ok) m = v;
+    if (e != errc::ok) clear_optional(m);
     return e;
   } else {
     const field_token t = r.peek();
@@ -312,13 +318,40 @@ template <class F, class T>
   }
 }
 
-template <class T>
-[[nodiscard]] constexpr result<T> fail(errc e, const field_reader& r) noexcept {
-  result<T> out;
-  out.ec = e;
-  out.field = r.index();
-  out.column = r.column();
-  return out;
+/// decode<T>() into `msg`, a default-constructed T the caller owns (the value of a result, the
+/// alternative of a variant), so that no finished message is ever copied; the errc, field and
+/// column go to `status` (any result<>). On error `msg` holds what was read before it.
+template <message_like T, class Status>
+constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T& msg,
+                           Status& status) noexcept {
+  status.ec = errc::ok;
+  status.field = 0;
+  status.column = 0;
+  if (!T::nmea.matches(s.address)) {
+    status.ec = errc::wrong_address;
+    return;
+  }
+  if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
+    (void)msg.talker.assign(s.address.substr(0, 2));
+  }
+  field_reader r(s, policy);
+  errc e = errc::ok;
+  // Each descriptor named by its place in the constant table, not passed by reference: its
+  // options are then constants where read_field is inlined, and the checks a field does not
+  // have compile away.
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (void)(((e = detail::read_field(std::get<I>(T::nmea.fields), r, msg)) == errc::ok) && ...);
+  }
+  (std::make_index_sequence<std::tuple_size_v<decltype(T::nmea.fields)>>{});
+  if (e == errc::ok && !r.at_end() && !policy.extra_fields) {
+    (void)r.take();
+    e = errc::too_many_fields;
+  }
+  if (e != errc::ok) {
+    status.ec = e;
+    status.field = r.index();
+    status.column = r.column();
+  }
 }
 
 }  // namespace detail
@@ -328,25 +361,8 @@ template <message_like T>
 [[nodiscard]] constexpr result<T> decode(const sentence_view& s,
                                          const parse_policy& policy = {}) noexcept {
   result<T> out;
-  if (!T::nmea.matches(s.address)) {
-    out.ec = errc::wrong_address;
-    return out;
-  }
-  if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
-    (void)out.value.talker.assign(s.address.substr(0, 2));
-  }
-  field_reader r(s, policy);
-  errc e = errc::ok;
-  std::apply(
-      [&](const auto&... f) {
-        (void)(((e = detail::read_field(f, r, out.value)) == errc::ok) && ...);
-      },
-      T::nmea.fields);
-  if (e != errc::ok) return detail::fail<T>(e, r);
-  if (!r.at_end() && !policy.extra_fields) {
-    (void)r.take();
-    return detail::fail<T>(errc::too_many_fields, r);
-  }
+  detail::decode_into(s, policy, out.value, out);
+  if (!out) out.value = T{};
   return out;
 }
 
