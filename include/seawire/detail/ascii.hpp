@@ -2,6 +2,7 @@
 #pragma once
 // Character classes and small integer helpers. Locale-free and constexpr, unlike <cctype>.
 
+#include <bit>
 #include <cstdint>
 
 namespace seawire::detail {
@@ -21,6 +22,12 @@ namespace seawire::detail {
 [[nodiscard]] constexpr char hex_digit_upper(unsigned nibble) noexcept {
   return "0123456789ABCDEF"[nibble & 0xFu];
 }
+
+/// "00" "01" ... "99": two digits written at once.
+inline constexpr char digit_pairs[201] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
 
 /// Characters NMEA 0183 reserves for framing; never data in a sentence seawire writes.
 [[nodiscard]] constexpr bool is_reserved(char c) noexcept {
@@ -67,11 +74,14 @@ inline constexpr std::uint64_t scale_limit[20] = {
     ~0ull / pow10_table[15], ~0ull / pow10_table[16], ~0ull / pow10_table[17],
     ~0ull / pow10_table[18], ~0ull / pow10_table[19]};
 
-/// Number of decimal digits of v (1 for 0).
+/// Number of decimal digits of v (1 for 0). From the bit length, which fixes it to one of two
+/// neighbours, and one comparison: no loop.
 [[nodiscard]] constexpr unsigned digit_count(std::uint64_t v) noexcept {
-  unsigned n = 1;
-  while (n < 20 && v >= pow10_table[n]) ++n;
-  return n;
+  // 1233 / 4096 is log10(2) rounded up: t is the digit count or one less. v | 1 has the digits
+  // of v, and makes 0 count as one digit.
+  const std::uint64_t w = v | 1U;
+  const auto t = static_cast<unsigned>(std::bit_width(w)) * 1233U >> 12U;
+  return t + (w >= pow10_table[t] ? 1U : 0U);
 }
 
 }  // namespace seawire::detail

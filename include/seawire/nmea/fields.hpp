@@ -223,12 +223,7 @@ namespace detail {
 
 constexpr void write_decimal(writer& w, const decimal& d) noexcept {
   if (d.negative) w.put('-');
-  const std::uint64_t p = seawire::detail::pow10_table[d.places];
-  w.put_uint(d.mantissa / p, d.int_width);
-  if (d.places > 0) {
-    w.put('.');
-    w.put_uint(d.mantissa % p, d.places);
-  }
+  w.put_fixed(d.mantissa, d.places, d.int_width);
 }
 
 /// Parse an unsigned run of digits of exactly `len` characters at s[pos].
@@ -650,12 +645,7 @@ struct codec<nmea_coordinate<Axis>> {
   }
   static constexpr void write(writer& w, const value_type& v) noexcept {
     w.put_uint(v.whole_degrees, v.degree_digits);
-    const std::uint64_t p = seawire::detail::pow10_table[v.minutes.places];
-    w.put_uint(v.minutes.mantissa / p, 2);
-    if (v.minutes.places > 0) {
-      w.put('.');
-      w.put_uint(v.minutes.mantissa % p, v.minutes.places);
-    }
+    w.put_fixed(v.minutes.mantissa, v.minutes.places, 2);
     w.next_field();
     w.put(static_cast<char>(v.hemi));
   }

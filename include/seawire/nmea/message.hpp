@@ -406,8 +406,8 @@ template <class V>
 }
 
 template <class F, class T>
-[[nodiscard]] constexpr errc write_field(const F& f, writer& w, const T& msg,
-                                         bool& skip_rest) noexcept {
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc write_field(const F& f, writer& w, const T& msg,
+                                                               bool& skip_rest) noexcept {
   using V = typename F::value_type;
   const auto& m = msg.*F::member;
   const field_options& o = f.opts;
@@ -482,7 +482,10 @@ template <message_like T>
   std::uint16_t wire_field = 0;  // spec number of the first wire field of the current one
   std::size_t index = 0;
   bool skip_rest = false;
-  const auto one = [&](const auto& f) {
+  // Each descriptor named by its place in the constant table (as in decode_into), so that its
+  // options are constants in the code written for it.
+  const auto one = [&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    constexpr const auto& f = std::get<I>(T::nmea.fields);
     if (index++ >= keep) skip_rest = true;
     // A field of the longer form that this message does not have takes no number.
     if (f.opts.when_count != 0 && detail::skipped(f, msg)) return true;
@@ -493,7 +496,10 @@ template <message_like T>
         wire_field + (e == errc::ok ? f.width() - 1 : detail::error_offset<V>(e)));
     return e == errc::ok;
   };
-  std::apply([&](const auto&... f) { (void)(one(f) && ...); }, desc.fields);
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (void)(one(std::integral_constant<std::size_t, I>{}) && ...);
+  }
+  (std::make_index_sequence<n>{});
   result<std::size_t> r;
   if (e != errc::ok) {
     r.ec = e;

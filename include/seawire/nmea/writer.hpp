@@ -11,6 +11,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/checksum.hpp"
 
 namespace seawire::nmea {
 
@@ -42,27 +43,45 @@ class writer {
     }
     for (char c : s) out_[size_++] = c;
   }
-  /// Unsigned integer, zero-padded to at least `min_digits` digits.
+  /// Unsigned integer, zero-padded to at least `min_digits` digits (at most 20 are written).
   constexpr void put_uint(std::uint64_t v, unsigned min_digits = 1) noexcept {
-    char tmp[20];
-    unsigned n = 0;
-    do {
-      tmp[n++] = static_cast<char>('0' + v % 10);
-      v /= 10;
-    } while (v != 0);
-    while (n < min_digits && n < sizeof tmp) tmp[n++] = '0';
+    unsigned n = seawire::detail::digit_count(v);
+    if (n < min_digits) n = min_digits < 20 ? min_digits : 20;
     if (n > out_.size() - size_) {
       failed_ = true;
       return;
     }
-    while (n > 0) out_[size_++] = tmp[--n];
+    (void)digits_at(size_, v, n);
+    size_ += n;
+  }
+  /// The fixed-point number scaled / 10^places, e.g. "4.50" from 450 and 2: all `places` fraction
+  /// digits, and the integer part zero-padded to at least `min_int_digits` digits (at most 20).
+  /// Nothing is written, and the writer fails, if it does not all fit.
+  constexpr void put_fixed(std::uint64_t scaled, unsigned places,
+                           unsigned min_int_digits = 1) noexcept {
+    if (places == 0) {
+      put_uint(scaled, min_int_digits);
+      return;
+    }
+    const unsigned n = seawire::detail::digit_count(scaled);
+    unsigned int_digits = n > places ? n - places : 1;
+    if (int_digits < min_int_digits) int_digits = min_int_digits < 20 ? min_int_digits : 20;
+    const std::size_t total = std::size_t{int_digits} + 1 + places;
+    if (total > out_.size() - size_) {
+      failed_ = true;
+      return;
+    }
+    // Right to left, dividing only by constants: the fraction, the point, the integer part.
+    const std::uint64_t whole = digits_at(size_ + int_digits + 1, scaled, places);
+    out_[size_ + int_digits] = '.';
+    (void)digits_at(size_, whole, int_digits);
+    size_ += total;
   }
 
   /// Finish: '*', checksum, CR LF. Returns the sentence length or buffer_too_small.
   constexpr result<std::size_t> seal() noexcept {
-    std::uint8_t x = 0;
-    for (std::size_t i = 1; i < size_ && !failed_; ++i)
-      x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(out_[i]));
+    const std::uint8_t x =
+        failed_ || size_ == 0 ? 0 : checksum(std::string_view(out_.data() + 1, size_ - 1));
     put('*');
     put(seawire::detail::hex_digit_upper(x >> 4u));
     put(seawire::detail::hex_digit_upper(x));
@@ -82,6 +101,23 @@ class writer {
   [[nodiscard]] constexpr std::string_view view() const noexcept { return {out_.data(), size_}; }
 
  private:
+  // Writes the lowest `count` decimal digits of v to out_[at, at + count), two at a time, and
+  // returns what is left of v. The caller has checked the room.
+  constexpr std::uint64_t digits_at(std::size_t at, std::uint64_t v, unsigned count) noexcept {
+    std::size_t end = at + count;
+    for (; count >= 2; count -= 2) {
+      const auto pair = static_cast<std::size_t>(v % 100) * 2;
+      v /= 100;
+      out_[--end] = seawire::detail::digit_pairs[pair + 1];
+      out_[--end] = seawire::detail::digit_pairs[pair];
+    }
+    if (count == 1) {
+      out_[--end] = static_cast<char>('0' + v % 10);
+      v /= 10;
+    }
+    return v;
+  }
+
   std::span<char> out_;
   std::size_t size_ = 0;
   bool failed_ = false;
