@@ -1,0 +1,395 @@
+// SPDX-License-Identifier: BSL-1.0
+// The fast paths of the hot code against plain references, over many generated inputs: the
+// vectorized sentence scan, the word-at-a-time field search, digit counting, number writing, the
+// checksum, and the fast decimal parser. Each fast path must give exactly what the simple code
+// gives, byte for byte and error for error, at run time (where the fast paths run) and at
+// compile time (where the simple ones do).
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "seawire/detail/ascii.hpp"
+#include "seawire/detail/crc32.hpp"
+#include "seawire/nmea/checksum.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+using namespace seawire;
+using namespace seawire::nmea;
+
+namespace {
+
+// splitmix64: deterministic, so a failure names an input that can be replayed.
+struct prng {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15U);
+    z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9U;
+    z = (z ^ (z >> 27U)) * 0x94D049BB133111EBU;
+    return z ^ (z >> 31U);
+  }
+  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
+};
+
+// A line that looks like a sentence most of the time: '$', an address, fields of digits and
+// letters, sometimes a '*' and hex, sometimes a byte that does not belong.
+std::string random_line(prng& g) {
+  static constexpr std::string_view alphabet = "0123456789.,,,,-ABCNSEWMT*$ \x7f\x1f\x80\xff";
+  std::string s = "$";
+  const std::size_t address = 1 + g.below(8);
+  for (std::size_t i = 0; i < address; ++i) s += static_cast<char>('A' + g.below(26));
+  const std::size_t n = g.below(140);
+  for (std::size_t i = 0; i < n; ++i) {
+    // Mostly plain field text; the rare bytes appear often enough to sit in every lane.
+    s += g.below(8) == 0 ? alphabet[g.below(alphabet.size())] : alphabet[g.below(16)];
+  }
+  if (g.below(2) == 0) {
+    s += '*';
+    s += "0123456789ABCDEF"[g.below(16)];
+    s += "0123456789ABCDEF"[g.below(16)];
+  }
+  return s;
+}
+
+// The scan as parse() did it before it was vectorized: one byte at a time.
+nmea::detail::body_scan reference_scan(std::string_view line) {
+  nmea::detail::body_scan b;
+  nmea::detail::scan_body_bytes(line, b);
+  return b;
+}
+
+// Splitting at every comma, the obvious way.
+std::vector<std::string_view> reference_fields(std::string_view body) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= body.size(); ++i) {
+    if (i == body.size() || body[i] == ',') {
+      out.push_back(body.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the vectorized sentence scan finds what the byte loop finds") {
+  prng g{20261121};
+  for (int k = 0; k < 200000; ++k) {
+    const std::string line = random_line(g);
+    INFO(line);
+    const nmea::detail::body_scan fast = nmea::detail::scan_body(line);
+    const nmea::detail::body_scan slow = reference_scan(line);
+    REQUIRE(fast.bad == slow.bad);
+    if (slow.bad != 0) continue;  // the rest is not defined once a bad byte stops the scan
+    REQUIRE(fast.star == slow.star);
+    REQUIRE(fast.first_comma == slow.first_comma);
+    REQUIRE(fast.commas == slow.commas);
+    REQUIRE(fast.x == slow.x);
+  }
+}
+
+TEST_CASE("parse() gives the same answer at run time as at compile time") {
+  // The compile-time answers come from the byte loop (constant evaluation never vectorizes).
+  constexpr std::string_view line =
+      "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70\r\n";
+  constexpr auto ct = parse(line);
+  static_assert(ct.ok() && ct.value.field_count == 12 && ct.value.computed_checksum == 0x70);
+  const auto rt = parse(line);
+  REQUIRE(rt);
+  CHECK(rt.value.address == ct.value.address);
+  CHECK(rt.value.body == ct.value.body);
+  CHECK(rt.value.field_count == ct.value.field_count);
+  CHECK(rt.value.computed_checksum == ct.value.computed_checksum);
+}
+
+TEST_CASE("field_reader hands out the fields a plain split finds, with their columns") {
+  prng g{7};
+  parse_policy p;
+  p.checksum = checksum_policy::ignore;
+  for (int k = 0; k < 50000; ++k) {
+    const std::string line = random_line(g);
+    const auto s = parse(line, p);
+    if (!s) continue;
+    INFO(line);
+    const std::vector<std::string_view> want =
+        s.value.field_count > 0 ? reference_fields(s.value.body) : std::vector<std::string_view>{};
+    REQUIRE(want.size() == s.value.field_count);
+    field_reader r(s.value, p);
+    std::size_t column = s.value.body_column();
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      REQUIRE(r.peek().text == want[i]);
+      const field_token t = r.take();
+      REQUIRE(t.present);
+      REQUIRE(t.text == want[i]);
+      REQUIRE(r.column() == column);
+      REQUIRE(r.index() == i + 1);
+      column += want[i].size() + 1;
+    }
+    REQUIRE(r.at_end());
+    REQUIRE_FALSE(r.take().present);
+  }
+}
+
+TEST_CASE("digit_count: exact at every power of ten and either side of it") {
+  CHECK(seawire::detail::digit_count(0) == 1);
+  CHECK(seawire::detail::digit_count(~std::uint64_t{0}) == 20);
+  for (unsigned k = 1; k < 20; ++k) {
+    const std::uint64_t p = seawire::detail::pow10_table[k];
+    CHECK(seawire::detail::digit_count(p - 1) == k);
+    CHECK(seawire::detail::digit_count(p) == k + 1);
+    CHECK(seawire::detail::digit_count(p + 1) == k + 1);
+  }
+  static_assert(seawire::detail::digit_count(99) == 2 && seawire::detail::digit_count(100) == 3);
+}
+
+TEST_CASE("writer::put_uint and put_fixed write what std::to_string would") {
+  prng g{99};
+  for (int k = 0; k < 100000; ++k) {
+    const unsigned digits = 1 + static_cast<unsigned>(g.below(20));
+    const std::uint64_t v =
+        digits == 20 ? g.next() : g.next() % seawire::detail::pow10_table[digits];
+    const unsigned min = static_cast<unsigned>(g.below(22));
+    const unsigned places = static_cast<unsigned>(g.below(20));
+
+    std::string want = std::to_string(v);
+    while (want.size() < min && want.size() < 20) want.insert(want.begin(), '0');
+    char buf[64];
+    writer w(buf);
+    w.put_uint(v, min);
+    INFO(v << " min " << min);
+    REQUIRE(w.view() == want);
+
+    // put_fixed: the integer part then the `places` fraction digits.
+    const std::uint64_t p = seawire::detail::pow10_table[places];
+    std::string whole = std::to_string(v / p);
+    while (whole.size() < min && whole.size() < 20) whole.insert(whole.begin(), '0');
+    std::string fraction = std::to_string(v % p);
+    while (fraction.size() < places) fraction.insert(fraction.begin(), '0');
+    const std::string fixed = places == 0 ? whole : whole + "." + fraction;
+    writer f(buf);
+    f.put_fixed(v, places, min);
+    INFO("places " << places);
+    REQUIRE(f.view() == fixed);
+
+    // Out of room: nothing written, the writer failed.
+    writer tight(std::span<char>(buf, fixed.size() - 1));
+    tight.put_fixed(v, places, min);
+    REQUIRE(tight.failed());
+    REQUIRE(tight.size() == 0);
+  }
+}
+
+TEST_CASE("the checksum of any span matches the byte-by-byte XOR") {
+  prng g{3};
+  std::string s;
+  for (int k = 0; k < 300; ++k) {
+    s += static_cast<char>(g.next());
+    std::uint8_t x = 0;
+    for (const char c : s) x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(c));
+    for (std::size_t from = 0; from < 3 && from <= s.size(); ++from) {
+      std::uint8_t y = 0;
+      for (std::size_t i = from; i < s.size(); ++i)
+        y = static_cast<std::uint8_t>(y ^ static_cast<std::uint8_t>(s[i]));
+      REQUIRE(checksum(std::string_view(s).substr(from)) == y);
+    }
+    REQUIRE(checksum(s) == x);
+  }
+  static_assert(checksum("GPGLL,5057.970,N,00146.110,E,142451,A") == 0x27);
+}
+
+TEST_CASE("the fast decimal parser agrees with the general one") {
+  prng g{11};
+  static constexpr std::string_view chars = "0000123456789..-+x";
+  for (int k = 0; k < 300000; ++k) {
+    std::string s;
+    const std::size_t n = g.below(26);
+    for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
+    INFO(s);
+    for (const bool plus : {false, true}) {
+      decimal fast{123, 4};
+      decimal slow{123, 4};
+      const errc ef = nmea::detail::parse_decimal(s, plus, fast);
+      std::size_t i = 0;
+      bool neg = false;
+      errc es = errc::ok;
+      if (!s.empty() && (s[0] == '-' || s[0] == '+')) {
+        if (s[0] == '+' && !plus) es = errc::bad_number;
+        neg = s[0] == '-';
+        i = 1;
+      }
+      if (es == errc::ok) es = nmea::detail::parse_decimal_long(s, i, neg, slow);
+      REQUIRE(ef == es);
+      if (ef == errc::ok) REQUIRE(fast == slow);
+    }
+  }
+}
+
+TEST_CASE("decimal::compare without division agrees with the value") {
+  prng g{5};
+  for (int k = 0; k < 200000; ++k) {
+    decimal a;
+    decimal b;
+    a.places = static_cast<std::uint8_t>(g.below(20));
+    b.places = static_cast<std::uint8_t>(g.below(20));
+    a.mantissa = g.below(4) == 0 ? g.next() : g.next() % 100000;
+    b.mantissa = g.below(4) == 0 ? g.next() : g.next() % 100000;
+    a.negative = g.below(2) == 0;
+    b.negative = g.below(2) == 0;
+    // Reference: the magnitudes written out as text with 20 integer and 19 fraction digits,
+    // which compare as the numbers do.
+    const auto text = [](const decimal& d) {
+      const std::uint64_t p = seawire::detail::pow10_table[d.places];
+      std::string whole = std::to_string(d.mantissa / p);
+      std::string fraction = d.places == 0 ? std::string() : std::to_string(d.mantissa % p);
+      while (fraction.size() < d.places) fraction.insert(fraction.begin(), '0');
+      while (whole.size() < 20) whole.insert(whole.begin(), '0');
+      while (fraction.size() < 19) fraction += '0';
+      return whole + fraction;
+    };
+    const bool na = a.negative && a.mantissa != 0;
+    const bool nb = b.negative && b.mantissa != 0;
+    int want = 0;
+    if (na != nb) {
+      want = na ? -1 : 1;
+    } else {
+      const std::string ta = text(a);
+      const std::string tb = text(b);
+      want = ta == tb ? 0 : (ta < tb ? -1 : 1);
+      if (na) want = -want;
+    }
+    INFO(a.mantissa << "e-" << int(a.places) << " vs " << b.mantissa << "e-" << int(b.places));
+    REQUIRE(a.compare(b) == want);
+  }
+}
+
+namespace {
+
+// Positions as fields.hpp read them before the one-pass reader: split at the point, degrees by
+// parse_fixed_digits, minutes by parse_decimal.
+template <class Axis>
+errc reference_position(std::string_view s, nmea_coordinate<Axis>& v) {
+  std::size_t point = s.find('.');
+  if (point == std::string_view::npos) point = s.size();
+  if (point < 3 || point - 2 > Axis::width) return Axis::error;
+  unsigned deg = 0;
+  if (!nmea::detail::parse_fixed_digits(s, 0, point - 2, deg)) return Axis::error;
+  decimal minutes;
+  if (nmea::detail::parse_decimal(s.substr(point - 2), false, minutes) != errc::ok ||
+      minutes.negative || minutes.places > 12)
+    return Axis::error;
+  minutes.int_width = 0;
+  if (minutes.mantissa >= 60 * seawire::detail::pow10_table[minutes.places])
+    return errc::minute_out_of_range;
+  if (deg > Axis::max_degrees || (deg == Axis::max_degrees && minutes.mantissa != 0))
+    return Axis::error;
+  v.whole_degrees = static_cast<std::uint16_t>(deg);
+  v.minutes = minutes;
+  v.degree_digits = static_cast<std::uint8_t>(point - 2);
+  return errc::ok;
+}
+
+// Times as fields.hpp read them before: three parse_fixed_digits and the fraction.
+errc reference_time(std::string_view s, time_of_day& v) {
+  unsigned h = 0, m = 0, sec = 0;
+  if (!nmea::detail::parse_fixed_digits(s, 0, 2, h) ||
+      !nmea::detail::parse_fixed_digits(s, 2, 2, m) ||
+      !nmea::detail::parse_fixed_digits(s, 4, 2, sec))
+    return errc::bad_time;
+  unsigned frac = 0;
+  std::size_t places = 0;
+  if (s.size() > 6) {
+    places = s.size() - 7;
+    if (s[6] != '.' || places == 0 || places > 9 ||
+        !nmea::detail::parse_fixed_digits(s, 7, places, frac))
+      return errc::bad_time;
+  }
+  v = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(sec),
+       frac, static_cast<std::uint8_t>(places)};
+  return codec<time_of_day>::check(v);
+}
+
+// The codec's answer for `text` as the field before the hemisphere letter N.
+template <class V>
+errc through_codec(std::string_view text, V& v) {
+  const std::string line = "$XXABC," + std::string(text) + ",N";
+  parse_policy p;
+  p.checksum = checksum_policy::ignore;
+  const auto s = parse(line, p);
+  if (!s) return errc::bad_character;  // not a field at all: the caller skips it
+  field_reader r(s.value, p);
+  return codec<V>::read(r, v);
+}
+
+std::string random_number_text(prng& g, std::string_view chars, std::size_t max) {
+  std::string s;
+  const std::size_t n = g.below(max + 1);
+  for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("the one-pass position reader agrees with splitting at the point") {
+  prng g{13};
+  for (int k = 0; k < 300000; ++k) {
+    const std::string s = random_number_text(g, "0123456789012345678959.x", 22);
+    if (s.empty() || s.find(',') != std::string::npos) continue;
+    INFO(s);
+    latitude fast_lat;
+    latitude slow_lat;
+    const errc fl = through_codec(s, fast_lat);
+    const errc sl = reference_position(s, slow_lat);
+    REQUIRE(fl == sl);
+    longitude fast_lon;
+    longitude slow_lon;
+    const errc fo = through_codec(s, fast_lon);
+    const errc so = reference_position(s, slow_lon);
+    // A longitude wants E/W: the field after it is N, so a good number ends in bad_hemisphere.
+    REQUIRE(fo == (so == errc::ok ? errc::bad_hemisphere : so));
+    if (sl == errc::ok) {
+      REQUIRE(fast_lat.whole_degrees == slow_lat.whole_degrees);
+      REQUIRE(fast_lat.minutes == slow_lat.minutes);
+      REQUIRE(fast_lat.degree_digits == slow_lat.degree_digits);
+    }
+  }
+}
+
+TEST_CASE("the time reader agrees with three fixed-digit reads") {
+  prng g{17};
+  for (int k = 0; k < 300000; ++k) {
+    const std::string s = random_number_text(g, "01234567890123456789.:", 17);
+    if (s.empty()) continue;
+    INFO(s);
+    time_of_day fast;
+    time_of_day slow;
+    const errc ef = through_codec(s, fast);
+    const errc es = reference_time(s, slow);
+    REQUIRE(ef == es);
+    if (es == errc::ok) REQUIRE(fast == slow);
+  }
+}
+
+TEST_CASE("CRC-32 eight bytes at a time equals the byte-at-a-time register") {
+  prng g{23};
+  std::vector<std::uint8_t> v;
+  const auto bytewise = [](std::span<const std::uint8_t> b, std::uint32_t crc) {
+    std::uint32_t reg = ~crc;
+    for (const std::uint8_t x : b) reg = seawire::detail::crc32_step(reg, x);
+    return ~reg;
+  };
+  for (int n = 0; n < 700; ++n) {
+    v.push_back(static_cast<std::uint8_t>(g.next()));
+    const std::span<const std::uint8_t> all(v);
+    for (std::size_t cut = 0; cut < 9 && cut <= v.size(); ++cut) {
+      REQUIRE(seawire::crc32(all.subspan(cut)) == bytewise(all.subspan(cut), 0));
+      REQUIRE(seawire::crc32_update(seawire::crc32(all.first(cut)), all.subspan(cut)) ==
+              bytewise(all, 0));
+    }
+  }
+  static_assert(seawire::crc32("123456789") == 0xCBF43926U);
+}
