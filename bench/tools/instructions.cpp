@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: BSL-1.0
+// Instructions per sentence, the one figure a busy machine cannot disturb: runs one loop of
+// bench/ ten times over the 1,000-sentence RMC/GGA corpus with callgrind collecting only there.
+//
+//   valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file=cg.out
+//            build/bench/bench/seawire_bench_instructions decode    (one command line)
+//   callgrind_annotate cg.out | grep 'PROGRAM TOTALS'     # divide by 10,000 sentences
+//
+// Modes: baseline (frame + checksum + split), decode (message_set -> variant, every field read),
+// visit (message_set::visit, every field read), encode (encode_to into a stack buffer).
+
+#include <valgrind/callgrind.h>
+
+#include <cstdio>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+
+#include "../corpus.hpp"
+#include "../support.hpp"
+
+namespace {
+
+using namespace seawire;
+namespace sb = seawire::bench;
+
+constexpr int rounds = 10;
+
+void baseline(const sb::corpus& c) {
+  sb::split_sentence split;
+  for (int r = 0; r < rounds; ++r) {
+    sb::for_each_line(c.bytes, [&](std::string_view line) {
+      (void)sb::baseline_split(line, split);
+      benchmark::DoNotOptimize(split);
+    });
+  }
+}
+
+void decode(const sb::corpus& c, sb::sink& s) {
+  for (int r = 0; r < rounds; ++r) {
+    sb::for_each_line(c.bytes, [&](std::string_view line) {
+      const auto d = sb::rmc_gga_set::decode(line);
+      if (d) std::visit([&s](const auto& m) { sb::read_all(s, m); }, d.value);
+      benchmark::DoNotOptimize(s);
+    });
+  }
+}
+
+void visit(const sb::corpus& c, sb::sink& s) {
+  for (int r = 0; r < rounds; ++r) {
+    sb::for_each_line(c.bytes, [&](std::string_view line) {
+      const result<nmea::sentence_view> v = nmea::parse(line);
+      if (v) (void)sb::rmc_gga_set::visit(v.value, {}, [&s](const auto& m) { sb::read_all(s, m); });
+      benchmark::DoNotOptimize(s);
+    });
+  }
+}
+
+template <class Messages>
+void encode(const Messages& messages) {
+  char buffer[256];
+  for (int r = 0; r < rounds; ++r) {
+    for (const auto& m : messages) {
+      std::visit(
+          [&](const auto& one) {
+            if constexpr (nmea::message_like<std::remove_cvref_t<decltype(one)>>)
+              (void)nmea::encode_to(one, std::span<char>(buffer));
+          },
+          m);
+      benchmark::DoNotOptimize(buffer);
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "decode";
+  const auto c = sb::rmc_gga_corpus(1000);  // built before collection starts
+  sb::sink s;
+  CALLGRIND_TOGGLE_COLLECT;
+  if (mode == "baseline") {
+    baseline(c);
+  } else if (mode == "decode") {
+    decode(c, s);
+  } else if (mode == "visit") {
+    visit(c, s);
+  } else if (mode == "encode") {
+    encode(c.messages);
+  } else {
+    CALLGRIND_TOGGLE_COLLECT;
+    std::fprintf(stderr, "usage: %s baseline|decode|visit|encode\n", argv[0]);
+    return 2;
+  }
+  CALLGRIND_TOGGLE_COLLECT;
+  std::printf("%s: %d sentences (%g)\n", mode.c_str(), rounds * 1000, s.sum);
+  return 0;
+}
