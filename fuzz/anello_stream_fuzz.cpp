@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: BSL-1.0
+// anello::stream_reader, the mixed NMEA + 0xAB00 binary stream, fed the stream whole, byte by
+// byte and in chunks whose sizes the fuzzer picks (empty ones included), at a small capacity and
+// the default one.
+// Properties:
+//  - every chunking yields the same items (kind, offset, text, ending, line, bytes) and stats;
+//  - items come in stream order without overlapping, and each is the stream's own bytes at its
+//    offset: a sentence is '$' + printable ASCII within the capacity, a frame is 56 bytes that
+//    decode_frame accepts and decodes to the item's frame;
+//  - every byte fed is accounted for (the rule in stream.hpp's comment);
+//  - valid data after hostile data still comes out: a good sentence and a good frame appended
+//    after a line break are the last two items, whatever came before (unless the fuzzer built a
+//    frame with a right CRC over the appended bytes themselves).
+// Input: byte 0 seeds the chunk sizes, the rest is the stream. Byte runs "AB 00 00 30" followed
+// by 52 bytes get their CRC fixed up (when byte 0 is odd), so the fuzzer reaches good frames.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fuzz_common.hpp"
+#include "seawire/anello/frame.hpp"
+#include "seawire/anello/stream.hpp"
+
+namespace {
+
+namespace anello = seawire::anello;
+using seawire::fuzz::number;
+
+struct owned_item {
+  anello::stream_item_kind kind{};
+  std::uint64_t offset = 0;
+  std::string text;
+  seawire::nmea::line_ending ending{};
+  std::uint64_t line = 0;
+  anello::frame_bytes bytes{};
+  anello::sensor_frame_raw frame{};
+  friend bool operator==(const owned_item&, const owned_item&) = default;
+};
+
+struct outcome {
+  std::vector<owned_item> items;
+  anello::stream_stats stats;
+  friend bool operator==(const outcome&, const outcome&) = default;
+};
+
+owned_item own(const anello::stream_item& i) {
+  return {i.kind,  i.offset, std::string(i.sentence.text), i.sentence.ending, i.sentence.line,
+          i.bytes, i.frame};
+}
+
+template <std::size_t Capacity, class NextSize>
+outcome run(std::string_view stream, NextSize&& next_size) {
+  anello::stream_reader<Capacity> reader;
+  outcome out;
+  const auto take = [&](const anello::stream_item& i) { out.items.push_back(own(i)); };
+  std::size_t at = 0;
+  while (at < stream.size()) {
+    const std::size_t n = std::min(next_size(), stream.size() - at);
+    reader.feed(stream.substr(at, n), take);
+    at += n;
+  }
+  reader.feed(std::string_view{}, take);
+  reader.finish(take);
+  SEAWIRE_FUZZ_CHECK(!reader.finish().has_value(), "finish() yielded after nullopt");
+  out.stats = reader.stats();
+  return out;
+}
+
+template <std::size_t Capacity>
+outcome check_stream(std::string_view stream, std::uint8_t seed) {
+  const outcome whole = run<Capacity>(stream, [&] { return stream.size(); });
+  const outcome bytewise = run<Capacity>(stream, [] { return std::size_t{1}; });
+  SEAWIRE_FUZZ_CHECK(bytewise == whole, "byte-by-byte feed differs from the whole stream", stream);
+  std::uint32_t x = 0x9E3779B9U ^ seed;
+  const outcome chunked = run<Capacity>(stream, [&] {
+    x ^= x << 13U;
+    x ^= x >> 17U;
+    x ^= x << 5U;
+    return (x & 3U) == 0 ? std::size_t{x >> 8U} % (2 * Capacity + 2) : std::size_t{x >> 8U} % 9;
+  });
+  SEAWIRE_FUZZ_CHECK(chunked == whole, "chunked feed differs from the whole stream", stream);
+
+  std::uint64_t next_free = 0;
+  std::uint64_t text = 0;
+  std::uint64_t frames = 0;
+  for (const owned_item& i : whole.items) {
+    SEAWIRE_FUZZ_CHECK(i.offset >= next_free, "items overlap or go backwards", stream,
+                       number(i.offset));
+    if (i.kind == anello::stream_item_kind::frame) {
+      SEAWIRE_FUZZ_CHECK(i.offset + anello::frame_size <= stream.size(), stream);
+      const std::string_view here = stream.substr(i.offset, anello::frame_size);
+      SEAWIRE_FUZZ_CHECK(
+          std::equal(here.begin(), here.end(), i.bytes.begin(),
+                     [](char c, std::uint8_t b) { return static_cast<std::uint8_t>(c) == b; }),
+          "a frame's bytes are not the stream's", stream);
+      const seawire::result<anello::sensor_frame_raw> d = anello::decode_frame(i.bytes);
+      SEAWIRE_FUZZ_CHECK(d.ok() && d.value == i.frame, "a yielded frame does not decode", stream);
+      SEAWIRE_FUZZ_CHECK(i.text.empty(), stream);
+      next_free = i.offset + anello::frame_size;
+      ++frames;
+    } else {
+      SEAWIRE_FUZZ_CHECK(!i.text.empty() && i.text[0] == '$' && i.text.size() <= Capacity &&
+                             i.text.find('$', 1) == std::string::npos,
+                         i.text);
+      for (const char c : i.text) SEAWIRE_FUZZ_CHECK(c >= 0x20 && c <= 0x7E, i.text);
+      SEAWIRE_FUZZ_CHECK(stream.substr(i.offset, i.text.size()) == i.text,
+                         "a sentence is not the stream's bytes", stream, i.text);
+      next_free = i.offset + i.text.size();
+      text += i.text.size();
+    }
+  }
+  const anello::stream_stats& s = whole.stats;
+  SEAWIRE_FUZZ_CHECK(s.frames == frames && s.sentences == whole.items.size() - frames, stream);
+  SEAWIRE_FUZZ_CHECK(
+      text + anello::frame_size * frames + s.noise_bytes + s.dropped_bytes + s.line_break_bytes ==
+          stream.size(),
+      "bytes unaccounted for", stream, number(text), number(frames), number(s.noise_bytes),
+      number(s.dropped_bytes), number(s.line_break_bytes));
+  return whole;
+}
+
+// The seed's example frame (valid CRC).
+constexpr std::array<std::uint8_t, 56> seed_frame = {
+    0xAB, 0x00, 0x00, 0x30, 0x8E, 0xF7, 0xF1, 0x76, 0x00, 0x59, 0x01, 0xF4, 0xEC, 0xFF,
+    0xF9, 0x03, 0x36, 0x9A, 0x00, 0x00, 0xFF, 0xFF, 0x00, 0x00, 0x01, 0x90, 0x79, 0x43,
+    0x63, 0xD0, 0x00, 0x00, 0x01, 0xE0, 0x7F, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x00, 0x00,
+    0x00, 0x00, 0x00, 0x02, 0x00, 0x6C, 0x00, 0x03, 0x00, 0x5A, 0xFF, 0xFF, 0xFF, 0xFF};
+
+void check_recovery(std::string_view hostile) {
+  constexpr std::string_view good = "$VMVBW,0.0,0.0,A,0.0,0.0,A*58";
+  std::string stream(hostile);
+  stream += "\r\n";
+  const std::size_t suffix = stream.size();
+  stream += good;
+  stream += "\r\n";
+  for (const std::uint8_t b : seed_frame) stream += static_cast<char>(b);
+  const outcome out = run<80>(stream, [&] { return stream.size(); });
+  for (const owned_item& i : out.items) {
+    // A frame the fuzzer built over the appended bytes, CRC and all, is a frame: nothing to say.
+    if (i.kind == anello::stream_item_kind::frame && i.offset + anello::frame_size > suffix &&
+        i.offset < suffix + good.size() + 2)
+      return;
+  }
+  const std::size_t n = out.items.size();
+  SEAWIRE_FUZZ_CHECK(n >= 2 && out.items[n - 2].text == good && out.items[n - 2].offset == suffix &&
+                         out.items[n - 1].kind == anello::stream_item_kind::frame &&
+                         out.items[n - 1].bytes == seed_frame,
+                     "good data after hostile bytes was lost", stream);
+}
+
+// Every "AB 00 00 30" with 52 bytes after it gets the CRC of those bytes' last 48.
+std::string with_good_crcs(std::string_view s) {
+  std::string out(s);
+  for (std::size_t i = 0; i + anello::frame_size <= out.size(); ++i) {
+    if (static_cast<std::uint8_t>(out[i]) == 0xAB && out[i + 1] == 0 && out[i + 2] == 0 &&
+        out[i + 3] == 0x30) {
+      std::array<std::uint8_t, anello::frame_size> f{};
+      for (std::size_t k = 0; k < f.size(); ++k) f[k] = static_cast<std::uint8_t>(out[i + k]);
+      seawire::fuzz::fix_frame_crc(f);
+      for (std::size_t k = 4; k < 8; ++k) out[i + k] = static_cast<char>(f[k]);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const std::string_view raw = seawire::fuzz::as_text(data + 1, size - 1);
+  const std::string fixed = (data[0] & 1U) != 0 ? with_good_crcs(raw) : std::string(raw);
+  check_stream<80>(fixed, data[0]);
+  check_stream<1024>(fixed, data[0]);
+  check_recovery(fixed);
+  return 0;
+}
