@@ -14,9 +14,13 @@
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/crc32.hpp"
 #include "seawire/nmea/checksum.hpp"
+#include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/writer.hpp"
+#include "seawire/standard/gga.hpp"
+#include "seawire/standard/rmc.hpp"
+#include "seawire/standard/vwr.hpp"
 
 using namespace seawire;
 using namespace seawire::nmea;
@@ -392,4 +396,39 @@ TEST_CASE("CRC-32 eight bytes at a time equals the byte-at-a-time register") {
     }
   }
   static_assert(seawire::crc32("123456789") == 0xCBF43926U);
+}
+
+namespace {
+// Three lengths of address, any-talker and fixed, and one longer than a key's eight bytes.
+struct m8 {
+  int x = 0;
+  static constexpr auto nmea = sentence<"PABCDEFG">(field<&m8::x>("x"));
+};
+struct m10 {
+  int x = 0;
+  static constexpr auto nmea = sentence<"PAPGPSCTRL">(field<&m10::x>("x"));
+};
+struct m1 {
+  int x = 0;
+  static constexpr auto nmea = sentence<"Z">(field<&m1::x>("x"));
+};
+template <class... Ms>
+bool by_string(nmea::message_set<Ms...>*, std::string_view a) {
+  return (Ms::nmea.matches(a) || ...);
+}
+}  // namespace
+
+TEST_CASE("dispatch by address key finds what string comparison finds") {
+  using set = message_set<standard::rmc, standard::gga, standard::vwr, m8, m10, m1>;
+  static constexpr std::string_view seeds[] = {
+      "GPRMC", "GNGGA", "PGRMC", "IIVWR",  "PABCDEFG", "PAPGPSCTRL", "PAPGPSCTRX",
+      "Z",     "ZZ",    "RMC",   "GPRMCX", "PABCDEF",  "PABCDEFGH"};
+  prng g{29};
+  for (int k = 0; k < 100000; ++k) {
+    std::string a(seeds[g.below(std::size(seeds))]);
+    if (!a.empty() && g.below(2) == 0) a[g.below(a.size())] = static_cast<char>('A' + g.below(26));
+    INFO(a);
+    REQUIRE(set::knows(a) == by_string(static_cast<set*>(nullptr), a));
+  }
+  static_assert(set::knows("GPRMC") && set::knows("PAPGPSCTRL") && !set::knows("PGRMC"));
 }

@@ -8,6 +8,7 @@
 //   from_vehicle::visit(sentence, policy, [](const auto& msg) { ... });
 
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -17,6 +18,44 @@
 #include "seawire/nmea/sentence.hpp"
 
 namespace seawire::nmea {
+
+namespace detail {
+
+/// An address as its length and its first eight bytes packed in an integer (zero beyond the
+/// end), so that finding the message of a set compares integers, not strings.
+struct address_key {
+  std::uint64_t head = 0;
+  std::size_t size = 0;
+};
+
+[[nodiscard]] constexpr address_key key_of(std::string_view a) noexcept {
+  address_key k{0, a.size()};
+  for (std::size_t i = 0; i < a.size() && i < 8; ++i)
+    k.head |= std::uint64_t{static_cast<unsigned char>(a[i])} << (8U * i);
+  return k;
+}
+
+/// M::nmea.matches(a), given k == key_of(a): the length and one masked compare for addresses
+/// of up to eight characters (all of seawire's but PAPGPSCTRL), the rest by string.
+template <class M>
+[[nodiscard]] constexpr bool key_matches(const address_key& k, std::string_view a) noexcept {
+  using desc = std::remove_cvref_t<decltype(M::nmea)>;
+  constexpr std::string_view want = desc::address;
+  if (k.size != want.size()) return false;
+  if constexpr (want.size() > 8) {
+    return M::nmea.matches(a);
+  } else if constexpr (desc::any_talker) {
+    // Any talker: the first two bytes are not compared ("--" in the declaration).
+    constexpr std::uint64_t mask = ~std::uint64_t{0xFFFF};
+    constexpr std::uint64_t head = key_of(want).head & mask;
+    return (k.head & mask) == head && a[0] != 'P';
+  } else {
+    constexpr std::uint64_t head = key_of(want).head;
+    return k.head == head;
+  }
+}
+
+}  // namespace detail
 
 /// A well-formed sentence that no message of the set describes. Views into the input: it is
 /// valid as long as the line it came from.
@@ -31,7 +70,8 @@ struct message_set {
 
   /// Whether some message of the set has this address.
   [[nodiscard]] static constexpr bool knows(std::string_view address) noexcept {
-    return (Ms::nmea.matches(address) || ...);
+    const detail::address_key k = detail::key_of(address);
+    return (detail::key_matches<Ms>(k, address) || ...);
   }
 
   /// The declared name of wire field `n` of the message with this address ("" if unknown).
@@ -49,7 +89,8 @@ struct message_set {
     // Built holding unknown_sentence, not value-initialized: that would first zero the storage
     // of the largest message in the set.
     result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
-    (void)((Ms::nmea.matches(s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
+    const detail::address_key k = detail::key_of(s.address);
+    (void)((detail::key_matches<Ms>(k, s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
     return out;
   }
   [[nodiscard]] static constexpr result<variant> decode(std::string_view line,
@@ -71,8 +112,10 @@ struct message_set {
   static constexpr result<bool> visit(const sentence_view& s, const parse_policy& p,
                                       F&& on_message) {
     result<bool> out;
+    const detail::address_key k = detail::key_of(s.address);
     const bool found =
-        ((Ms::nmea.matches(s.address) ? (visit_one<Ms>(out, s, p, on_message), true) : false) ||
+        ((detail::key_matches<Ms>(k, s.address) ? (visit_one<Ms>(out, s, p, on_message), true)
+                                                : false) ||
          ...);
     if (!found) {
       on_message(unknown_sentence{s});
