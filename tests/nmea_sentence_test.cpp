@@ -188,6 +188,16 @@ TEST_CASE("field_reader walks fields, marks blanks and the end, tracks columns")
   CHECK(r.index() == 5);
 }
 
+TEST_CASE("field_reader on a sentence without fields never points past the line") {
+  const auto s = parse("$RXHRB", with_checksum(checksum_policy::ignore));
+  REQUIRE(s);
+  parse_policy p;
+  field_reader r(s.value, p);
+  CHECK(r.at_end());
+  CHECK_FALSE(r.take().present);
+  CHECK(r.column() <= s.value.line.size());
+}
+
 TEST_CASE("writer seals with upper-case checksum and CR LF, and reports overflow") {
   char buf[64];
   writer w(buf);
