@@ -15,19 +15,28 @@ import json
 import sys
 
 
+# The order of the tables: the headline first, then each family and role.
+FAMILIES = ["rmc_gga", "anello_inputs", "kingfisher_from_vehicle", "kingfisher_to_vehicle",
+            "sandshark_from_vehicle", "sandshark_to_vehicle", "robotx_reports"]
+
+
 def load(path):
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
     runs = {}
+    cvs = {}
     for b in data["benchmarks"]:
         aggregate = b.get("aggregate_name")
+        name = b.get("run_name", b["name"])
+        if aggregate == "cv":
+            cvs[name] = b.get("time_per_msg", 0.0)
+            continue
         if aggregate not in (None, "median"):
             continue
-        name = b.get("run_name", b["name"])
         if aggregate is None and name in runs:
             continue  # repetitions without aggregates: keep the first
         runs[name] = b
-    return data.get("context", {}), runs
+    return data.get("context", {}), runs, cvs
 
 
 def ns_per_msg(b):
@@ -50,27 +59,36 @@ def ratio(a, b):
     return f"{a / b:.2f}x" if b > 0 else "-"
 
 
-def corpora(runs, kind):
+def corpora(runs, kind, order=None):
     prefix = kind + "/"
-    return [n[len(prefix):] for n in runs if n.startswith(prefix)]
+    names = [n[len(prefix):] for n in runs if n.startswith(prefix)]
+    if order is None:
+        return sorted(names)
+    return [n for n in order if n in names] + sorted(n for n in names if n not in order)
+
+
+def spread(cvs, name):
+    cv = cvs.get(name)
+    return f"{cv * 100:.0f}%" if cv is not None else "-"
 
 
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
-    context, runs = load(sys.argv[1])
+    context, runs, cvs = load(sys.argv[1])
     print(f"Machine: {context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz,"
           f" load average {', '.join(f'{x:.2f}' for x in context.get('load_avg', []))} at the start;"
           f" {context.get('date', '')}")
     print()
 
     print("Sentence corpora (1,000 sentences each): ns per sentence, ratio to the baseline, MB/s"
-          " of decode, heap allocations per sentence")
+          " of decode, heap allocations per sentence, coefficient of variation of decode over"
+          " the repetitions")
     print()
     print("| corpus | baseline | decode | ratio | decode (visit) | ratio | encode | ratio |"
-          " decode MB/s | allocs |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
-    for c in corpora(runs, "decode"):
+          " decode MB/s | allocs | decode cv |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for c in corpora(runs, "decode", FAMILIES):
         base = runs.get("baseline/" + c)
         dec = runs["decode/" + c]
         vis = runs.get("decode_visit/" + c)
@@ -80,7 +98,7 @@ def main():
         cells += [fmt_ns(ns_per_msg(vis)), ratio(ns_per_msg(vis), b)] if vis else ["-", "-"]
         cells += [fmt_ns(ns_per_msg(enc)), ratio(ns_per_msg(enc), b)] if enc else ["-", "-"]
         worst = max(allocs(x) for x in (dec, vis, enc) if x)
-        cells += [f"{mb_per_s(dec):,.0f}", f"{worst:g}"]
+        cells += [f"{mb_per_s(dec):,.0f}", f"{worst:g}", spread(cvs, "decode/" + c)]
         print("| " + " | ".join(cells) + " |")
     for n, b in runs.items():
         if n.startswith("decode_all_sets/"):
@@ -110,9 +128,12 @@ def main():
     print()
     print("| benchmark | ns/item | MB/s | allocs |")
     print("|---|---:|---:|---:|")
-    for n, b in runs.items():
-        if n.split("/")[0] in ("framer", "framer+decode", "checksum", "crc32", "frame"):
-            print(f"| {n} | {fmt_ns(ns_per_msg(b))} | {mb_per_s(b):,.0f} | {allocs(b):g} |")
+    kinds = ["framer", "framer+decode", "checksum", "crc32", "frame"]
+    streams = sorted((n for n in runs if n.split("/")[0] in kinds),
+                     key=lambda n: (kinds.index(n.split("/")[0]), n))
+    for n in streams:
+        b = runs[n]
+        print(f"| {n} | {fmt_ns(ns_per_msg(b))} | {mb_per_s(b):,.0f} | {allocs(b):g} |")
 
 
 if __name__ == "__main__":
