@@ -519,6 +519,17 @@ TEST_CASE("dispatch by address: variant, visitor, unknown sentences") {
   CHECK(seen == 1);
 }
 
+TEST_CASE("from_double rounds to nearest without the x + 0.5 trap") {
+  // Found by clang-tidy (bugprone-incorrect-roundings): static_cast(x + 0.5) rounds the sum
+  // first, so a value just below one half went up, and an odd integer past 2^52 became even.
+  CHECK(decimal::from_double(0.49999999999999994, 0).value.mantissa == 0);
+  CHECK(decimal::from_double(4503599627370497.0, 0).value.mantissa == 4503599627370497ULL);
+  CHECK(decimal::from_double(-4503599627370497.0, 0).value.mantissa == 4503599627370497ULL);
+  CHECK(decimal::from_double(2.5, 0).value.mantissa == 3);  // halves still go up
+  CHECK(decimal::from_double(0.125, 2).value == decimal(13, 2));
+  CHECK(latitude::from_degrees(0.49999999999999994 / 60.0, 1).value.minutes == decimal(5, 1));
+}
+
 TEST_CASE("for_each_field gives declared names in wire order") {
   optionals o;
   std::string names;

@@ -29,6 +29,17 @@ namespace seawire::nmea {
 // ---------------------------------------------------------------------------------------------
 // decimal
 
+namespace detail {
+/// The integer nearest x >= 0 (halves up), for x below 2^64. Not static_cast(x + 0.5): that sum
+/// is itself rounded, so 0.49999999999999994 gave 1 and 2^52 + 1 gave 2^52 + 2. The fraction
+/// taken by subtraction is exact.
+[[nodiscard]] constexpr std::uint64_t round_nonnegative(double x) noexcept {
+  auto whole = static_cast<std::uint64_t>(x);
+  if (x - static_cast<double>(whole) >= 0.5) ++whole;
+  return whole;
+}
+}  // namespace detail
+
 /// A decimal number exactly as written: digits, number of fraction digits, sign.
 /// "-0.0" keeps its sign and "4.50" its trailing zero. Equality compares the written form;
 /// `compare()` compares values. At most 19 significant digits and 19 fraction digits.
@@ -70,7 +81,7 @@ struct decimal {
       r.ec = errc::value_too_large;
       return r;
     }
-    r.value.mantissa = static_cast<std::uint64_t>(mag + 0.5);
+    r.value.mantissa = detail::round_nonnegative(mag);
     r.value.places = static_cast<std::uint8_t>(places);
     r.value.negative = v < 0 && r.value.mantissa != 0;
     return r;
@@ -293,8 +304,8 @@ struct nmea_coordinate {
     }
     auto whole = static_cast<std::uint64_t>(mag);
     const std::uint64_t scale = seawire::detail::pow10_table[minute_places];
-    auto m = static_cast<std::uint64_t>(
-        (mag - static_cast<double>(whole)) * 60.0 * static_cast<double>(scale) + 0.5);
+    auto m = detail::round_nonnegative((mag - static_cast<double>(whole)) * 60.0 *
+                                       static_cast<double>(scale));
     if (m >= 60 * scale) {  // 59.99999 rounded up to 60: carry into the degrees
       m -= 60 * scale;
       ++whole;
