@@ -153,7 +153,7 @@ inline void scan_body_sse2(std::string_view line, body_scan& b) noexcept {
     }
     const __m128i index = _mm_setr_epi8(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
     const __m128i live =
-        _mm_and_si128(_mm_cmpgt_epi8(index, _mm_set1_epi8(static_cast<char>(lo) - 1)),
+        _mm_and_si128(_mm_cmpgt_epi8(index, _mm_set1_epi8(static_cast<char>(lo - 1))),
                       _mm_cmplt_epi8(index, _mm_set1_epi8(static_cast<char>(hi))));
     commas = _mm_sub_epi8(commas, _mm_and_si128(live, comma));
     x = _mm_xor_si128(x, _mm_and_si128(live, v));
@@ -169,7 +169,8 @@ inline void scan_body_sse2(std::string_view line, body_scan& b) noexcept {
   x = _mm_xor_si128(x, _mm_srli_si128(x, 1));
   b.x = static_cast<std::uint8_t>(_mm_cvtsi128_si32(x) & 0xFF);
   const __m128i sums = _mm_sad_epu8(commas, _mm_setzero_si128());
-  b.commas = static_cast<std::size_t>(_mm_cvtsi128_si32(sums) + _mm_extract_epi16(sums, 4));
+  b.commas = static_cast<std::size_t>(_mm_cvtsi128_si32(sums)) +
+             static_cast<std::size_t>(_mm_extract_epi16(sums, 4));
 }
 #endif
 
