@@ -148,9 +148,8 @@ anello::sensor_values make_values(byte_source& src) {
           using field_type = std::remove_cvref_t<decltype(f)>;
           using value_type = typename field_type::value_type;
           auto& member = v.*field_type::value_member;
-          if (src.coin()) {
-            member.reset();
-          } else if constexpr (std::is_same_v<value_type, double>) {
+          if (src.coin()) return;  // not available
+          if constexpr (std::is_same_v<value_type, double>) {
             member = make_double(src, f.divisor);
           } else if constexpr (std::is_same_v<value_type, anello::time_ms>) {
             member = anello::time_ms{anello::time_ms::duration{src.integer<std::int64_t>()}};
