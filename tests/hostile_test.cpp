@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -542,6 +544,30 @@ TEST_CASE("valid data after hostile data in a stream still comes out") {
   const stream_out frames = read_all(mixed);
   CHECK(frames.frames.size() == hostile.size());
   for (const auto& f : frames.frames) CHECK(f == seed_frame);
+}
+
+// ---------------------------------------------------------------------------------------------
+// the fuzz dictionary
+
+namespace {
+template <class... Ms>
+constexpr auto addresses_of(message_set<Ms...>*) {
+  return std::array<std::string_view, sizeof...(Ms)>{Ms::nmea.address...};
+}
+}  // namespace
+
+TEST_CASE("the fuzz dictionary names every address of every family") {
+  // fuzz/nmea.dict, next to tests/: a message added without its address there is fuzzed blind.
+  std::ifstream in(std::string(SEAWIRE_TEST_DATA_DIR) + "/../../fuzz/nmea.dict");
+  REQUIRE(in);
+  const std::string dict((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string_view address : addresses_of(static_cast<every_set*>(nullptr))) {
+    INFO(address);
+    // "--RMC" (any talker) is there with some talker: "$GPRMC,".
+    const std::string entry = address.starts_with("--") ? std::string(address.substr(2)) + ",\""
+                                                        : "\"$" + std::string(address) + ",\"";
+    CHECK(dict.find(entry) != std::string::npos);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
