@@ -25,7 +25,8 @@ void refused(std::string_view what, errc ec, unsigned field) {
               message(ec).data(), field);
 }
 
-void show(std::string_view what, const nmea::sentence_buffer<>& out) {
+template <std::size_t N>
+void show(std::string_view what, const nmea::sentence_buffer<N>& out) {
   if (!out) return refused(what, out.ec, out.field);
   // The sentence ends in CR LF: print it without them.
   const std::string_view s = out.view().substr(0, out.view().size() - 2);
@@ -94,17 +95,15 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  const nmea::sentence_buffer<> lines[] = {
-      nmea::encode(vhw.value),
-      nmea::encode(vbw.value),
-      nmea::encode(anello::papgpsctrl{anello::gps_control::use}),
-  };
-  const std::string_view names[] = {"VHW", "VBW", "PAPGPSCTRL"};
-
+  // encode() sizes each buffer for its message (VBW's can be longer than VHW's), so each line
+  // has its own type.
   bool ok = true;
-  for (std::size_t i = 0; i < 3; ++i) {
-    show(names[i], lines[i]);
-    ok = lines[i] && read_back(lines[i].view()) && ok;
-  }
+  const auto send = [&ok](std::string_view name, const auto& line) {
+    show(name, line);
+    ok = line && read_back(line.view()) && ok;
+  };
+  send("VHW", nmea::encode(vhw.value));
+  send("VBW", nmea::encode(vbw.value));
+  send("PAPGPSCTRL", nmea::encode(anello::papgpsctrl{anello::gps_control::use}));
   return ok ? 0 : 1;
 }

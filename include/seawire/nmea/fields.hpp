@@ -535,12 +535,16 @@ requires char_enum_like<E> || word_enum_like<E>
 /// codec<T>: `width` wire fields; read() takes them from the reader (the first is known to be
 /// present and non-blank unless `allows_blank`), check() applies the value's own domain before
 /// writing, write() writes them (the message layer writes the comma before the first).
+/// `max_chars` is the longest text write() produces for a value check() accepts (the commas
+/// between its own wire fields included): encode() sizes its buffer from it.
 template <class T>
 struct codec;
 
 template <>
 struct codec<decimal> {
   static constexpr unsigned width = 1;
+  /// Longest text written: sign, 20 integer digits (padding), point, 19 fraction digits.
+  static constexpr std::size_t max_chars = 41;
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, decimal& v) noexcept {
     return detail::parse_decimal(r.take().text, !r.policy().strict_values, v);
@@ -552,6 +556,8 @@ struct codec<decimal> {
 template <std::integral I>
 requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars =
+      std::numeric_limits<I>::digits10 + 1 + (std::is_signed_v<I> ? 1 : 0);
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, I& v) noexcept {
     decimal d;
@@ -590,6 +596,7 @@ requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
 template <>
 struct codec<bool> {
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = 1;
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, bool& v) noexcept {
     const std::string_view t = r.take().text;
@@ -605,6 +612,8 @@ template <class Axis>
 struct codec<nmea_coordinate<Axis>> {
   using value_type = nmea_coordinate<Axis>;
   static constexpr unsigned width = 2;
+  /// DDDMM, point, 12 fraction digits (check's limit), comma, letter.
+  static constexpr std::size_t max_chars = Axis::width + 2 + 1 + 12 + 2;
   static constexpr bool allows_blank = false;
 
   static constexpr errc read(field_reader& r, value_type& v) noexcept {
@@ -687,6 +696,7 @@ struct codec<decimal_coordinate<Axis>> {
   using value_type = decimal_coordinate<Axis>;
   using nmea = codec<nmea_coordinate<Axis>>;
   static constexpr unsigned width = 2;
+  static constexpr std::size_t max_chars = codec<decimal>::max_chars + 2;
   static constexpr bool allows_blank = false;
 
   static constexpr errc read(field_reader& r, value_type& v) noexcept {
@@ -713,6 +723,7 @@ struct codec<decimal_coordinate<Axis>> {
 template <>
 struct codec<time_of_day> {
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = 16;  // hhmmss.fffffffff
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
     const std::string_view s = r.take().text;
@@ -764,6 +775,7 @@ struct codec<time_of_day> {
 template <>
 struct codec<date> {
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = 6;
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, date& v) noexcept {
     const std::string_view s = r.take().text;
@@ -791,6 +803,7 @@ struct codec<date> {
 template <std::size_t N>
 struct codec<text<N>> {
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = N;
   static constexpr bool allows_blank = true;  // blank text is empty text
   static constexpr errc read(field_reader& r, text<N>& v) noexcept {
     const std::string_view s = r.take().text;
@@ -813,6 +826,7 @@ struct codec<text<N>> {
 template <char_enum_like E>
 struct codec<E> {
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = 1;
   static constexpr bool allows_blank = false;
   // Which bytes are letters of E: one lookup instead of a search through enum_chars.
   static constexpr std::array<bool, 256> letters = [] {
@@ -835,6 +849,11 @@ struct codec<E> {
 template <word_enum_like E>
 struct codec<E> {
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = [] {
+    std::size_t n = 0;
+    for (const std::string_view w : enum_words(E{})) n = w.size() > n ? w.size() : n;
+    return n;
+  }();
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, E& v) noexcept {
     const std::string_view s = r.take().text;

@@ -510,15 +510,39 @@ template <message_like T>
 }
 
 namespace detail {
-/// The buffer encode() gives a message: 256 bytes, or T::max_sentence_size for a message whose
-/// text fields can make it longer (BFMIS), so that whatever decodes also encodes.
+/// The longest sentence encode_to can write for T: '$', the address, a comma and the longest
+/// text of each field (codec max_chars, wider zero padding, ",X" for a unit letter), "*hh\r\n".
+/// 0 when a field's codec does not say how long it can be.
+template <class T>
+[[nodiscard]] consteval std::size_t longest_sentence() noexcept {
+  std::size_t n = 1 + T::nmea.address.size() + 5;
+  bool known = true;
+  const auto add = [&](const auto& f) {
+    using V = typename std::remove_cvref_t<decltype(f)>::value_type;
+    if constexpr (requires { codec<V>::max_chars; }) {
+      std::size_t chars = codec<V>::max_chars;
+      if constexpr (std::is_integral_v<V>) {
+        const std::size_t pad = f.opts.zero_pad < 20 ? f.opts.zero_pad : 20;
+        if (pad > chars) chars = pad;
+      }
+      n += 1 + chars + (f.opts.unit != 0 ? 2 : 0);
+    } else {
+      known = false;
+    }
+  };
+  std::apply([&](const auto&... f) { (add(f), ...); }, T::nmea.fields);
+  return known ? n : 0;
+}
+
+/// The buffer encode() gives a message: 256 bytes, or more when its longest sentence needs more
+/// (or T::max_sentence_size says so), so that whatever decodes also encodes.
 template <class T>
 [[nodiscard]] consteval std::size_t sentence_size() noexcept {
+  std::size_t n = longest_sentence<T>() > 256 ? longest_sentence<T>() : 256;
   if constexpr (requires { T::max_sentence_size; }) {
-    return T::max_sentence_size > 256 ? T::max_sentence_size : 256;
-  } else {
-    return 256;
+    if (T::max_sentence_size > n) n = T::max_sentence_size;
   }
+  return n;
 }
 }  // namespace detail
 

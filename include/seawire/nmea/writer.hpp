@@ -123,9 +123,10 @@ class writer {
   bool failed_ = false;
 };
 
-/// A sentence held by value: what encode() returns. 256 bytes holds every sentence seawire
-/// defines (NMEA 0183's own limit is 82) but one: BFMIS, whose three texts take up to 456 bytes,
-/// is encoded into 512 (its max_sentence_size).
+/// A sentence held by value: what encode() returns. encode() picks N per message: 256 bytes, or
+/// the longest sentence the message can have when that is more (BFMIS with its three texts;
+/// CPIMU, CPNVG, CPNVR, VBW and GGA with every number at its widest), so that whatever decodes
+/// also encodes. NMEA 0183's own limit is 82.
 template <std::size_t N = 256>
 struct sentence_buffer {
   char data[N]{};

@@ -123,6 +123,7 @@ template <>
 struct seawire::nmea::codec<seawire::robotx::light_pattern> {
   using value_type = seawire::robotx::light_pattern;
   static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = 3;
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, value_type& v) noexcept {
     const result<value_type> p = value_type::from(r.take().text);
