@@ -628,6 +628,24 @@ TEST_CASE("fuzz: an absent text field a later field keeps from being left out is
   CHECK(back.value == a);
 }
 
+TEST_CASE("fuzz: encode() holds every sentence that decodes") {
+  // kingfisher_fuzz (once encode() was held to it): a CPIMU whose six numbers are written with
+  // 19 zero-padded integer digits and 18 fraction digits decodes (285 bytes, under the 1024 a
+  // receiver takes) but did not fit encode()'s 256 bytes. The buffer now comes from the longest
+  // text each field's codec can write.
+  const std::string d = "-0000000000000000000.000000000000000001";
+  const std::string line = sealed("$CPIMU,235959.123456789," + d + "," + d + "," + d + "," + d +
+                                  "," + d + "," + d + ",235959.123456789");
+  const auto r = decode<kingfisher::cpimu>(line);
+  REQUIRE(r);
+  const auto e = encode(r.value);
+  REQUIRE(e);
+  CHECK(e.view() == line);
+  CHECK(sizeof e.data >= 297);  // the longest CPIMU: 6 numbers of 41 characters, 2 times of 16
+  // Messages that cannot be long keep the 256-byte buffer.
+  CHECK(sizeof encode(kingfisher::pydir{}).data == 256);
+}
+
 TEST_CASE("fuzz: a sentence without fields reports its errors inside the line") {
   // standard_fuzz: "$GPGGA" gave too_few_fields at column 7, one past the end.
   for (const std::string_view line : {"$GPGGA", "$GPRMC", "$CPNVG", "$RXHRB", "$IIRPM"}) {
