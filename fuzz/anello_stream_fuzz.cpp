@@ -71,11 +71,16 @@ outcome run(std::string_view stream, NextSize&& next_size) {
   return out;
 }
 
+// Byte by byte is the slowest feed: it runs at the small capacity only, the chunked feed
+// at both.
 template <std::size_t Capacity>
-void check_stream(std::string_view stream, std::uint8_t seed) {
+void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too) {
   const outcome whole = run<Capacity>(stream, [&] { return stream.size(); });
-  const outcome bytewise = run<Capacity>(stream, [] { return std::size_t{1}; });
-  SEAWIRE_FUZZ_CHECK(bytewise == whole, "byte-by-byte feed differs from the whole stream", stream);
+  if (bytewise_too) {
+    const outcome bytewise = run<Capacity>(stream, [] { return std::size_t{1}; });
+    SEAWIRE_FUZZ_CHECK(bytewise == whole, "byte-by-byte feed differs from the whole stream",
+                       stream);
+  }
   std::uint32_t x = 0x9E3779B9U ^ seed;
   const outcome chunked = run<Capacity>(stream, [&] {
     x ^= x << 13U;
@@ -173,8 +178,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   const std::string_view raw = seawire::fuzz::as_text(data + 1, size - 1);
   const std::string fixed = (data[0] & 1U) != 0 ? with_good_crcs(raw) : std::string(raw);
-  check_stream<80>(fixed, data[0]);
-  check_stream<1024>(fixed, data[0]);
+  check_stream<80>(fixed, data[0], true);
+  check_stream<1024>(fixed, data[0], false);
   check_recovery(fixed);
   return 0;
 }

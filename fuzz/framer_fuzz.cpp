@@ -172,16 +172,20 @@ outcome run(std::string_view stream, NextSize&& next_size) {
   return out;
 }
 
+// Byte by byte is the slowest feed: it runs at the small capacity only, the chunked feed
+// at both.
 template <std::size_t Capacity>
-void check_stream(std::string_view stream, std::uint8_t seed) {
+void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too) {
   model m(Capacity);
   for (const char c : stream) m.put(c);
   const outcome expected = m.finish();
 
   const outcome whole = run<Capacity>(stream, [&] { return stream.size(); });
   SEAWIRE_FUZZ_CHECK(whole == expected, "whole stream differs from the model", stream);
-  const outcome bytewise = run<Capacity>(stream, [] { return std::size_t{1}; });
-  SEAWIRE_FUZZ_CHECK(bytewise == expected, "byte-by-byte feed differs from the model", stream);
+  if (bytewise_too) {
+    const outcome bytewise = run<Capacity>(stream, [] { return std::size_t{1}; });
+    SEAWIRE_FUZZ_CHECK(bytewise == expected, "byte-by-byte feed differs from the model", stream);
+  }
   std::uint32_t x = 0x9E3779B9U ^ seed;
   const outcome chunked = run<Capacity>(stream, [&] {
     x ^= x << 13U;
@@ -229,8 +233,8 @@ void check_recovery(std::string_view hostile) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view stream = seawire::fuzz::as_text(data + 1, size - 1);
-  check_stream<80>(stream, data[0]);
-  check_stream<1024>(stream, data[0]);
+  check_stream<80>(stream, data[0], true);
+  check_stream<1024>(stream, data[0], false);
   check_recovery<80>(stream);
   return 0;
 }
