@@ -287,8 +287,8 @@ TEST_CASE("-0 keeps its sign where a sign may stand, and is refused where none m
 
 TEST_CASE("exponents, hex, inf and nan are not numbers") {
   for (const std::string_view n :
-       {"1e5", "1E5", "1.5e-3", "1e", "e5", "inf", "-inf", "nan", "0x10", "1.2.3", "1-2", "+-1",
-        "--1", ".", "-", "+", " 1", "1 ", "1_000"}) {
+       {"1e5", "1E5", "1.5e-3", "1e", "e5", "inf", "-inf", "nan", "0x10", "1.2.3",
+        "1-2", "+-1", "--1",    ".",  "-",  "+",   " ",    "1 2", "- 1",  "1_000"}) {
     INFO(n);
     const auto d = sandshark_set::decode(sealed("$BPRMB,231137.32,,,," + std::string(n) + ",0,1"));
     CHECK(d.ec == errc::bad_number);
@@ -298,9 +298,14 @@ TEST_CASE("exponents, hex, inf and nan are not numbers") {
     CHECK(i.ec == errc::bad_number);
     CHECK(i.field == 2);
   }
-  // '+' is a sign receivers take and the strict policy refuses.
-  CHECK(sandshark_set::decode(sealed("$BPRMB,231137.32,,,,+5,0,1")).ok());
-  CHECK(sandshark_set::decode(sealed("$BPRMB,231137.32,,,,+5,0,1"), strict).ec == errc::bad_number);
+  // '+' and spaces around a number (SPI 4.2) are what receivers take and the strict policy
+  // refuses.
+  for (const std::string_view n : {"+5", " 5", "5 ", " -5 "}) {
+    INFO(n);
+    const std::string line = sealed("$BPRMB,231137.32,,,," + std::string(n) + ",0,1");
+    CHECK(sandshark_set::decode(line).ok());
+    CHECK(sandshark_set::decode(line, strict).ec == errc::bad_number);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -363,6 +363,27 @@ TEST_CASE("extra trailing fields and unknown messages are ignored (SPI 4.2)") {
       decode_to_vehicle(sealed("BFCTL,081025.987,1")).value));
 }
 
+TEST_CASE("numbers may have spaces before the minus sign (SPI 4.2, Table 1)") {
+  // "If negative, the first non-whitespace character will be the minus sign."
+  const auto nvg = decode_from_vehicle(sealed(
+      "BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,  -3.4, 4.5 ,081025.980"));
+  REQUIRE(nvg.ok());
+  const auto& n = std::get<bfnvg>(nvg.value);
+  CHECK(n.roll_deg == decimal(-34, 1));
+  CHECK(n.pitch_deg == decimal(45, 1));
+  CHECK(encoded(n).find(",-3.4,4.5,") != std::string::npos);  // written without the spaces
+
+  const auto rmb = decode_to_vehicle(sealed("BPRMB,231204.72, -15,,,750,0,1"));
+  REQUIRE(rmb.ok());
+  CHECK(std::get<bprmb>(rmb.value).heading == decimal{-15});
+
+  // Inside a number a space is still an error, and so is a field of spaces only.
+  const auto inside = decode_to_vehicle(sealed("BPRMB,231204.72,- 15,,,750,0,1"));
+  CHECK(inside.ec == errc::bad_number);
+  CHECK(inside.field == 2);
+  CHECK(decode_to_vehicle(sealed("BPRMB,231204.72,   ,,,750,0,1")).ec == errc::bad_number);
+}
+
 TEST_CASE("the role sets know their addresses") {
   for (std::string_view a : {"BFSHT", "BFVER", "BFNVG", "BFNVR", "BFMIS", "BFACK", "BFCTL"}) {
     CHECK(from_vehicle::knows(a));

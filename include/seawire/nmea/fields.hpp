@@ -183,16 +183,17 @@ namespace detail {
   return errc::ok;
 }
 
-/// Parse [sign] digits [. digits]. '+' only when allowed (receivers accept it, senders never
-/// write it). No exponent, no spaces.
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s,
-                                                                 bool allow_plus,
+[[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
+
+/// Parse [sign] digits [. digits]. '+' and spaces before or after the number only when allowed
+/// (receivers accept them, senders never write them). No exponent, no spaces inside.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s, bool liberal,
                                                                  decimal& out) noexcept {
   std::size_t i = 0;
   const std::size_t n = s.size();
   bool neg = false;
   if (i < n && (s[i] == '-' || s[i] == '+')) {
-    if (s[i] == '+' && !allow_plus) return errc::bad_number;
+    if (s[i] == '+' && !liberal) return errc::bad_number;
     neg = s[i] == '-';
     ++i;
   }
@@ -212,7 +213,13 @@ namespace detail {
   }
   // Past 19 digits the general path decides, down to which error comes first.
   if (int_written + places > 19) return parse_decimal_long(s, int_begin, neg, out);
-  if (i != n || int_written + places == 0) return errc::bad_number;
+  if (i != n || int_written + places == 0) {
+    // SPI 4.2: "if negative, the first non-whitespace character will be the minus sign", so a
+    // receiver takes " -5.0" (and "12 "); senders never write spaces.
+    if (liberal && n != 0 && (s.front() == ' ' || s.back() == ' '))
+      return parse_decimal_spaced(s, out);
+    return errc::bad_number;
+  }
   std::size_t zeros = 0;  // leading zeros of the integer digits
   while (zeros < int_written && s[int_begin + zeros] == '0') ++zeros;
   const std::size_t natural = int_written - zeros == 0 ? 1 : int_written - zeros;
@@ -221,6 +228,16 @@ namespace detail {
   out.negative = neg;
   out.int_width = static_cast<std::uint8_t>(int_written > natural ? int_written : 0);
   return errc::ok;
+}
+
+/// parse_decimal of a number with spaces around it (the liberal reading only).
+[[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept {
+  std::size_t b = 0;
+  std::size_t e = s.size();
+  while (b < e && s[b] == ' ') ++b;
+  while (e > b && s[e - 1] == ' ') --e;
+  if (b == e) return errc::bad_number;  // nothing but spaces
+  return parse_decimal(s.substr(b, e - b), true, out);
 }
 
 /// Whether write_decimal writes `d` as text parse_decimal reads back to `d`: at most 19 digits

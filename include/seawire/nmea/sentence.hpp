@@ -34,7 +34,7 @@ struct parse_policy {
   bool lowercase_hex = true;      ///< accept "*4e" as well as "*4E"
   bool extra_fields = true;       ///< ignore fields past the last one a message defines (SPI 4.2)
   bool require_crlf = false;      ///< otherwise CR LF, LF, CR or no ending at all are accepted
-  bool strict_values = false;     ///< send-side rules on values too: no '+' signs, no reserved text
+  bool strict_values = false;     ///< send-side value rules: no '+', no spaces by numbers, ...
   std::size_t max_length = 1024;  ///< bytes from '$' to the end of the checksum (65535 at most)
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.
