@@ -345,7 +345,7 @@ constexpr std::size_t wire_width() {
 /// The policies every decoder target tries besides its roles' own: the most liberal one (any
 /// checksum, anything else the defaults take) and the strict one (what seawire sends).
 inline constexpr nmea::parse_policy liberal_policy{
-    nmea::checksum_policy::ignore, true, true, false, false, 1024};
+    nmea::checksum_policy::ignore, true, true, false, false, 1024, true};
 inline constexpr nmea::parse_policy strict_policy = nmea::parse_policy::strict();
 
 inline bool sentence_level(errc e) { return e >= errc::empty_input && e <= errc::too_long; }

@@ -298,14 +298,17 @@ TEST_CASE("exponents, hex, inf and nan are not numbers") {
     CHECK(i.ec == errc::bad_number);
     CHECK(i.field == 2);
   }
-  // '+' and spaces around a number (SPI 4.2) are what receivers take and the strict policy
-  // refuses.
+  // '+' and, in the Sandshark roles, spaces around a number (SPI 4.2) are what receivers take
+  // and the strict policy refuses.
   for (const std::string_view n : {"+5", " 5", "5 ", " -5 "}) {
     INFO(n);
     const std::string line = sealed("$BPRMB,231137.32,,,," + std::string(n) + ",0,1");
-    CHECK(sandshark_set::decode(line).ok());
+    CHECK(sandshark_set::decode(line, sandshark::to_vehicle_policy).ok());
     CHECK(sandshark_set::decode(line, strict).ec == errc::bad_number);
   }
+  // Elsewhere a space is not part of a number.
+  CHECK(kingfisher_set::decode(sealed("$CPRCM,164959.065, 2,234.3,-1.6,-6.6,")).ec ==
+        errc::bad_number);
 }
 
 // ---------------------------------------------------------------------------------------------

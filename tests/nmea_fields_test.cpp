@@ -121,19 +121,22 @@ TEST_CASE("decimal keeps its written form") {
                                " ", "   ", "1 2", "- 1", "1. 5", " -", "\t1", "1\t"}) {
     INFO(bad);
     CHECK(nmea::detail::parse_decimal(bad, true, d) == errc::bad_number);
+    CHECK(nmea::detail::parse_decimal(bad, true, d, true) == errc::bad_number);
   }
-  // SPI 4.2: "the first non-whitespace character will be the minus sign": receivers take spaces
-  // around a number, the strict (send-side) reading does not.
+  // SPI 4.2: "the first non-whitespace character will be the minus sign": receivers that allow
+  // it (parse_policy::spaced_numbers) take spaces around a number; by default, and in the
+  // strict (send-side) reading, they are not part of a number.
   for (const auto& [spaced, want] : {std::pair<std::string_view, decimal>{" 1", decimal{1}},
                                      {"1 ", decimal{1}},
                                      {"  -5.0  ", decimal(-50, 1)},
                                      {" +12.25", decimal(1225, 2)}}) {
     INFO(spaced);
-    REQUIRE(nmea::detail::parse_decimal(spaced, true, d) == errc::ok);
+    REQUIRE(nmea::detail::parse_decimal(spaced, true, d, true) == errc::ok);
     CHECK(d == want);
-    CHECK(nmea::detail::parse_decimal(spaced, false, d) == errc::bad_number);
+    CHECK(nmea::detail::parse_decimal(spaced, true, d) == errc::bad_number);
+    CHECK(nmea::detail::parse_decimal(spaced, false, d, true) == errc::bad_number);
   }
-  REQUIRE(nmea::detail::parse_decimal(" 007 ", true, d) == errc::ok);
+  REQUIRE(nmea::detail::parse_decimal(" 007 ", true, d, true) == errc::ok);
   CHECK(d.mantissa == 7);
   CHECK(d.int_width == 3);  // the digits as written, without the spaces
   CHECK(nmea::detail::parse_decimal("10000000000000000000", false, d) == errc::number_too_long);
@@ -279,18 +282,24 @@ TEST_CASE("extra trailing fields: ignored by default, refused under strict") {
   CHECK(strict.field == 13);
 }
 
-TEST_CASE("strict values: no '+' signs, no spaces by numbers, no reserved characters in text") {
+TEST_CASE("strict values: no '+' signs, no reserved characters in text; spaces by numbers") {
   const std::string plus = seal("TSALL,120000,010100,4221.7,N,07105.4,W,+5,0,0,A,ON,");
   CHECK(decode<all_types>(plus));
   CHECK(decode<all_types>(plus).value.value == decimal{5});
   CHECK(decode<all_types>(plus, parse_policy::strict()).ec == errc::bad_number);
   const std::string spaced = seal("TSALL,120000,010100,4221.7,N,07105.4,W, -5.5,0,0,A,ON,");
-  CHECK(decode<all_types>(spaced));
-  CHECK(decode<all_types>(spaced).value.value == decimal(-55, 1));
-  CHECK(encode(decode<all_types>(spaced).value).view().find(",-5.5,") != std::string_view::npos);
-  const auto strict = decode<all_types>(spaced, parse_policy::strict());
-  CHECK(strict.ec == errc::bad_number);
-  CHECK(strict.field == 7);
+  parse_policy spi;
+  spi.spaced_numbers = true;
+  REQUIRE(decode<all_types>(spaced, spi));
+  CHECK(decode<all_types>(spaced, spi).value.value == decimal(-55, 1));
+  CHECK(encode(decode<all_types>(spaced, spi).value).view().find(",-5.5,") !=
+        std::string_view::npos);
+  for (parse_policy refuses : {parse_policy{}, parse_policy::strict()}) {
+    refuses.spaced_numbers = refuses.strict_values;  // strict refuses even with the flag set
+    const auto r = decode<all_types>(spaced, refuses);
+    CHECK(r.ec == errc::bad_number);
+    CHECK(r.field == 7);
+  }
   const std::string bang = seal("TSALL,120000,010100,4221.7,N,07105.4,W,5,0,0,A,ON,hi!");
   CHECK(decode<all_types>(bang));
   CHECK(decode<all_types>(bang, parse_policy::strict()).ec == errc::bad_text);

@@ -407,7 +407,8 @@ int main(int argc, char** argv) {
   app.add_flag(
       "--strict", strict,
       "apply the rules seawire sends by to the input: checksum required, uppercase hex, "
-      "no extra fields, CR LF endings, no '+' signs or reserved characters in text "
+      "no extra fields, CR LF endings, no '+' signs or spaces around numbers, no reserved "
+      "characters in text "
       "(--checksum still overrides the checksum rule; e.g. --strict --format none < ours.nmea)");
   app.add_flag("--stats", o.stats,
                "at the end, print counts by message type and by error, and the stream reader's "
@@ -428,6 +429,9 @@ int main(int argc, char** argv) {
   }
   o.fmt = fmt == "nmea" ? format::nmea : fmt == "none" ? format::none : format::json;
   if (strict) o.policy = nmea::parse_policy::strict();
+  // Numbers with spaces around them (" -3.4"): Sandshark's SPI allows them, and a liberal reader
+  // of every family at once takes them; --strict does not.
+  o.policy.spaced_numbers = !strict;
   if (!strict || checksum_opt->count() > 0) {
     o.policy.checksum = checksum == "required" ? nmea::checksum_policy::required
                         : checksum == "ignore" ? nmea::checksum_policy::ignore

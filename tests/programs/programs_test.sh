@@ -270,6 +270,13 @@ case_options() {
   expect_eq "--strict rejects lowercase hex, LF alone, '+' and a missing checksum" \
     "$(printf '%s\n' 'line 1: bad_checksum_format' 'line 2: bad_line_ending' 'line 3: bad_number' \
       'line 4: missing_checksum')" "$(sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/' "$work/err")"
+  # SPI 4.2: spaces may come before a number's minus sign; --strict refuses them.
+  printf '%s\r\n' "$(seal 'BPRMB,231204.72, -15,,,750,0,1')" >"$work/in"
+  expect_rc "spaces around a number" 0 "$decode" <"$work/in"
+  expect_eq "spaces are not part of the number" \
+    '{"type":"BPRMB","timestamp":"23:12:04.72","heading":-15,"depth":null,"depth_mode":null,"speed":750,"speed_mode":"0","horizontal_mode":"1"}' \
+    "$(cat "$work/out")"
+  expect_rc "spaces around a number, --strict" 1 "$decode" --strict <"$work/in"
   printf '$PYDIR,45,55\r\n' >"$work/in"
   expect_rc "--strict --checksum verify" 0 "$decode" --strict --checksum verify <"$work/in"
   expect_rc "--line-buffered" 0 "$decode" --line-buffered <"$data/sandshark.nmea"

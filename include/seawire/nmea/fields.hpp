@@ -185,10 +185,12 @@ namespace detail {
 
 [[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
 
-/// Parse [sign] digits [. digits]. '+' and spaces before or after the number only when allowed
-/// (receivers accept them, senders never write them). No exponent, no spaces inside.
+/// Parse [sign] digits [. digits]. A '+' only when `liberal`, spaces before and after the number
+/// only when `spaced` too (receivers accept them, senders never write them). No exponent, no
+/// spaces inside.
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s, bool liberal,
-                                                                 decimal& out) noexcept {
+                                                                 decimal& out,
+                                                                 bool spaced = false) noexcept {
   std::size_t i = 0;
   const std::size_t n = s.size();
   bool neg = false;
@@ -216,7 +218,7 @@ namespace detail {
   if (i != n || int_written + places == 0) {
     // SPI 4.2: "if negative, the first non-whitespace character will be the minus sign", so a
     // receiver takes " -5.0" (and "12 "); senders never write spaces.
-    if (liberal && n != 0 && (s.front() == ' ' || s.back() == ' '))
+    if (spaced && liberal && n != 0 && (s.front() == ' ' || s.back() == ' '))
       return parse_decimal_spaced(s, out);
     return errc::bad_number;
   }
@@ -230,14 +232,14 @@ namespace detail {
   return errc::ok;
 }
 
-/// parse_decimal of a number with spaces around it (the liberal reading only).
+/// parse_decimal of a number with spaces around it (parse_policy::spaced_numbers).
 [[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept {
   std::size_t b = 0;
   std::size_t e = s.size();
   while (b < e && s[b] == ' ') ++b;
   while (e > b && s[e - 1] == ' ') --e;
   if (b == e) return errc::bad_number;  // nothing but spaces
-  return parse_decimal(s.substr(b, e - b), true, out);
+  return parse_decimal(s.substr(b, e - b), true, out, false);
 }
 
 /// Whether write_decimal writes `d` as text parse_decimal reads back to `d`: at most 19 digits
@@ -564,7 +566,8 @@ struct codec<decimal> {
   static constexpr std::size_t max_chars = 41;
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, decimal& v) noexcept {
-    return detail::parse_decimal(r.take().text, !r.policy().strict_values, v);
+    return detail::parse_decimal(r.take().text, !r.policy().strict_values, v,
+                                 r.policy().spaced_numbers);
   }
   static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
   static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
@@ -578,7 +581,8 @@ requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
   static constexpr bool allows_blank = false;
   static constexpr errc read(field_reader& r, I& v) noexcept {
     decimal d;
-    const errc e = detail::parse_decimal(r.take().text, !r.policy().strict_values, d);
+    const errc e = detail::parse_decimal(r.take().text, !r.policy().strict_values, d,
+                                         r.policy().spaced_numbers);
     if (e != errc::ok) return e;
     if (d.places != 0) return errc::bad_number;
     if (d.negative && d.mantissa != 0) {

@@ -34,8 +34,12 @@ struct parse_policy {
   bool lowercase_hex = true;      ///< accept "*4e" as well as "*4E"
   bool extra_fields = true;       ///< ignore fields past the last one a message defines (SPI 4.2)
   bool require_crlf = false;      ///< otherwise CR LF, LF, CR or no ending at all are accepted
-  bool strict_values = false;     ///< send-side value rules: no '+', no spaces by numbers, ...
+  bool strict_values = false;     ///< send-side value rules: no '+' signs, no reserved text
   std::size_t max_length = 1024;  ///< bytes from '$' to the end of the checksum (65535 at most)
+  /// Spaces before and after a number (" -5.0"): SPI 4.2 says the minus sign is "the first
+  /// non-whitespace character" of a number, so the Sandshark roles take them. Off by default:
+  /// NMEA 0183 has none. strict_values refuses them whatever this says.
+  bool spaced_numbers = false;
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.
   [[nodiscard]] static constexpr parse_policy strict() noexcept {

@@ -323,9 +323,13 @@ using from_vehicle = message_set<bfsht, bfver, bfnvg, bfnvr, bfmis, bfack, bfctl
 using to_vehicle = message_set<bplog, bpsts, bprmb, bpabt, bpver>;
 
 /// A payload receiving BF*: the vehicle always sends a checksum (SPI 4.2), so one is required.
-inline constexpr parse_policy from_vehicle_policy{.checksum = checksum_policy::required};
+/// Numbers may have spaces before the minus sign (SPI Table 1: "the first non-whitespace
+/// character"), in both roles.
+inline constexpr parse_policy from_vehicle_policy{.checksum = checksum_policy::required,
+                                                  .spaced_numbers = true};
 /// A vehicle receiving BP*: the payload may leave the checksum out; a wrong one never passes.
-inline constexpr parse_policy to_vehicle_policy{.checksum = checksum_policy::verify_if_present};
+inline constexpr parse_policy to_vehicle_policy{.checksum = checksum_policy::verify_if_present,
+                                                .spaced_numbers = true};
 
 /// Decode a line the vehicle sent; an address the set does not know is unknown_sentence.
 [[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
