@@ -2,6 +2,7 @@
 // The sentence layer: checksum, parse() under each policy, the field reader, the writer.
 
 #include <catch2/catch.hpp>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -186,6 +187,72 @@ TEST_CASE("field_reader walks fields, marks blanks and the end, tracks columns")
   t = r.take();
   CHECK_FALSE(t.present);
   CHECK(r.index() == 5);
+}
+
+TEST_CASE("field_reader agrees with a plain split, over every body length and comma layout") {
+  // Bodies of 0 to 200 bytes (across the reader's 64-byte windows and 16-byte blocks), commas
+  // placed by a fixed pseudo-random sequence, some runs of commas: the fields the reader hands
+  // out, their columns and its end are those of a split at each ','.
+  std::uint32_t x = 0x2545F491U;
+  const auto next = [&x] {
+    x ^= x << 13U;
+    x ^= x >> 17U;
+    x ^= x << 5U;
+    return x;
+  };
+  for (std::size_t len = 0; len <= 200; ++len) {
+    for (int round = 0; round < 8; ++round) {
+      std::string body;
+      for (std::size_t i = 0; i < len; ++i) {
+        const std::uint32_t r = next() % 100;
+        body += r < (round < 4 ? 15U : 60U) ? ',' : static_cast<char>('A' + r % 26);
+      }
+      const std::string line = "$XXABC," + body;
+      const auto s = parse(line, with_checksum(checksum_policy::ignore));
+      REQUIRE(s);
+      parse_policy p;
+      field_reader r(s.value, p);
+      std::size_t start = 0;
+      std::size_t fields = 0;
+      for (;;) {
+        const std::size_t comma = body.find(',', start);
+        const std::size_t end = comma == std::string::npos ? body.size() : comma;
+        INFO(line << " field " << fields + 1);
+        CHECK(r.peek().text == body.substr(start, end - start));
+        const field_token t = r.take();
+        REQUIRE(t.present);
+        CHECK(t.text == body.substr(start, end - start));
+        CHECK(r.column() == 7 + start);
+        ++fields;
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+      }
+      CHECK(r.at_end());
+      CHECK_FALSE(r.take().present);
+      CHECK(fields == s.value.field_count);
+    }
+  }
+}
+
+TEST_CASE("comma_bits8: one bit per ',' byte, none for any other byte value") {
+  for (unsigned v = 0; v < 256; ++v) {
+    for (unsigned at = 0; at < 8; ++at) {
+      // v at byte `at`, ',' and its neighbours 0x2B / 0x2D / 0xAC elsewhere.
+      std::uint64_t w = 0;
+      std::uint64_t want = 0;
+      for (unsigned k = 0; k < 8; ++k) {
+        const unsigned b = k == at ? v
+                                   : (k % 4 == 0   ? 0x2CU
+                                      : k % 4 == 1 ? 0x2BU
+                                      : k % 4 == 2 ? 0x2DU
+                                                   : 0xACU);
+        w |= std::uint64_t{b} << (8 * k);
+        if (b == 0x2C) want |= 1U << k;
+      }
+      INFO(v << " at " << at);
+      CHECK(seawire::nmea::detail::comma_bits8(w) == want);
+    }
+  }
 }
 
 TEST_CASE("field_reader on a sentence without fields never points past the line") {
