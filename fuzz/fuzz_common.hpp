@@ -309,8 +309,8 @@ template <nmea::message_like M>
 bool same_message(const M& a, const M& b) {
   bool same = true;
   if constexpr (std::remove_cvref_t<decltype(M::nmea)>::any_talker) same = a.talker == b.talker;
-  std::apply([&](const auto&... d) { ((same = same && a.*(d.member) == b.*(d.member)), ...); },
-             M::nmea.fields);
+  M::nmea.fields.apply(
+      [&](const auto&... d) { ((same = same && a.*(d.member) == b.*(d.member)), ...); });
   return same;
 }
 
@@ -338,8 +338,7 @@ bool has_reserved_text(const M& m) {
 /// Wire fields the description spans.
 template <nmea::message_like M>
 constexpr std::size_t wire_width() {
-  return std::apply([](const auto&... d) { return (std::size_t{0} + ... + d.width()); },
-                    M::nmea.fields);
+  return M::nmea.fields.apply([](const auto&... d) { return (std::size_t{0} + ... + d.width()); });
 }
 
 /// The policies every decoder target tries besides its roles' own: the most liberal one (any

@@ -46,8 +46,8 @@ std::string sealed(std::string_view body) {
 // relayed RMC and GGA).
 template <class T>
 constexpr bool same_fields(const T& a, const T& b) {
-  return std::apply([&](const auto&... d) { return ((a.*(d.member) == b.*(d.member)) && ...); },
-                    T::nmea.fields);
+  return T::nmea.fields.apply(
+      [&](const auto&... d) { return ((a.*(d.member) == b.*(d.member)) && ...); });
 }
 
 template <class T>

@@ -52,8 +52,8 @@ constexpr bool round_trips(std::string_view text) {
 template <class T>
 bool same_fields(const T& a, const T& b) {
   bool eq = a.talker == b.talker;
-  std::apply([&](const auto&... d) { eq = eq && ((a.*(d.member) == b.*(d.member)) && ...); },
-             T::nmea.fields);
+  T::nmea.fields.apply(
+      [&](const auto&... d) { eq = eq && ((a.*(d.member) == b.*(d.member)) && ...); });
   return eq;
 }
 

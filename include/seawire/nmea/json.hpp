@@ -41,7 +41,6 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -612,7 +611,7 @@ template <class T>
 /// Whether messages of type T have a field called `name` (for reporting unknown keys).
 template <message_like T>
 [[nodiscard]] constexpr bool has_field(std::string_view name) noexcept {
-  return std::apply([&](const auto&... d) { return ((d.name == name) || ...); }, T::nmea.fields);
+  return T::nmea.fields.apply([&](const auto&... d) { return ((d.name == name) || ...); });
 }
 
 /// Reads a message from a JSON object. `type` is its "type" member ("GPRMC": the talker of a
@@ -677,7 +676,7 @@ template <message_like T, class Lookup>
     wire_field = static_cast<std::uint16_t>(wire_field + d.width());
     return true;
   };
-  std::apply([&](const auto&... d) { (void)(one(d) && ...); }, desc.fields);
+  desc.fields.apply([&](const auto&... d) { (void)(one(d) && ...); });
   return out;
 }
 

@@ -23,7 +23,6 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -184,6 +183,40 @@ template <auto Member, class... Options>
   return f;
 }
 
+namespace detail {
+template <std::size_t I, class T>
+struct field_slot {
+  T value;
+};
+template <class Indices, class... Fields>
+struct field_slots;
+template <std::size_t... I, class... Fields>
+struct field_slots<std::index_sequence<I...>, Fields...> : field_slot<I, Fields>... {};
+}  // namespace detail
+
+/// The field descriptors of a message in wire order: a flat aggregate with one base per field.
+/// (std::tuple, which this replaces, instantiates a recursive chain of bases and constraint
+/// checks per message: a large share of the compile time of a file that includes every family.)
+template <class... Fields>
+struct field_list : detail::field_slots<std::index_sequence_for<Fields...>, Fields...> {
+  static constexpr std::size_t size = sizeof...(Fields);
+
+  /// f(descriptor...), all of them in wire order.
+  template <class F>
+  constexpr decltype(auto) apply(F&& f) const {
+    return [&]<std::size_t... I>(std::index_sequence<I...>)->decltype(auto) {
+      return f(static_cast<const detail::field_slot<I, Fields>&>(*this).value...);
+    }
+    (std::index_sequence_for<Fields...>{});
+  }
+};
+
+/// The I-th descriptor (0-based) of a field_list.
+template <std::size_t I, class T>
+[[nodiscard]] constexpr const T& field_at(const detail::field_slot<I, T>& slot) noexcept {
+  return slot.value;
+}
+
 /// A message's wire layout: its address and its fields in wire order.
 template <seawire::detail::fixed_string Address, class... Fields>
 struct sentence_desc {
@@ -191,7 +224,7 @@ struct sentence_desc {
   /// "--RMC": any two-character talker followed by RMC. A 'P' first is not a talker but a
   /// proprietary sentence (Garmin's $PGRMC is no RMC), so it never matches.
   static constexpr bool any_talker = Address.size() > 2 && address[0] == '-' && address[1] == '-';
-  std::tuple<Fields...> fields;
+  field_list<Fields...> fields;
 
   [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
     if constexpr (any_talker) {
@@ -206,7 +239,7 @@ struct sentence_desc {
 template <seawire::detail::fixed_string Address, class... Fields>
 [[nodiscard]] constexpr sentence_desc<Address, Fields...> sentence(Fields... fields) noexcept {
   static_assert(Address.size() >= 1 && Address.size() <= 15, "addresses are 1-15 characters");
-  return {std::tuple<Fields...>{fields...}};
+  return {field_list<Fields...>{{{fields}...}}};
 }
 
 /// A type with a sentence description.
@@ -340,9 +373,9 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
   // options are then constants where read_field is inlined, and the checks a field does not
   // have compile away.
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (void)(((e = detail::read_field(std::get<I>(T::nmea.fields), r, msg)) == errc::ok) && ...);
+    (void)(((e = detail::read_field(field_at<I>(T::nmea.fields), r, msg)) == errc::ok) && ...);
   }
-  (std::make_index_sequence<std::tuple_size_v<decltype(T::nmea.fields)>>{});
+  (std::make_index_sequence<std::remove_cvref_t<decltype(T::nmea.fields)>::size>{});
   if (e == errc::ok && !r.at_end() && !policy.extra_fields) {
     (void)r.take();
     e = errc::too_many_fields;
@@ -470,10 +503,10 @@ template <message_like T>
     w.begin(desc.address);
   }
   // Trailing fields that may be absent and have no value are left out, with their commas.
-  constexpr std::size_t n = std::tuple_size_v<decltype(desc.fields)>;
+  constexpr std::size_t n = std::remove_cvref_t<decltype(desc.fields)>::size;
   std::size_t keep = n;
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    const bool skips[] = {detail::skipped(std::get<I>(desc.fields), msg)..., false};
+    const bool skips[] = {detail::skipped(field_at<I>(desc.fields), msg)..., false};
     while (keep > 0 && skips[keep - 1]) --keep;
   }
   (std::make_index_sequence<n>{});
@@ -485,7 +518,7 @@ template <message_like T>
   // Each descriptor named by its place in the constant table (as in decode_into), so that its
   // options are constants in the code written for it.
   const auto one = [&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
-    constexpr const auto& f = std::get<I>(T::nmea.fields);
+    constexpr const auto& f = field_at<I>(T::nmea.fields);
     if (index++ >= keep) skip_rest = true;
     // A field of the longer form that this message does not have takes no number.
     if (f.opts.when_count != 0 && detail::skipped(f, msg)) return true;
@@ -530,7 +563,7 @@ template <class T>
       known = false;
     }
   };
-  std::apply([&](const auto&... f) { (add(f), ...); }, T::nmea.fields);
+  T::nmea.fields.apply([&](const auto&... f) { (add(f), ...); });
   return known ? n : 0;
 }
 
@@ -568,12 +601,12 @@ template <message_like T>
 /// Calls f(name, member) for each field in wire order (name as declared: snake_case).
 template <message_like T, class F>
 constexpr void for_each_field(const T& msg, F&& f) {
-  std::apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); }, T::nmea.fields);
+  T::nmea.fields.apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); });
 }
 /// The same with mutable members, to fill a message field by field.
 template <message_like T, class F>
 constexpr void for_each_field(T& msg, F&& f) {
-  std::apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); }, T::nmea.fields);
+  T::nmea.fields.apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); });
 }
 
 /// The declared name of the field that holds wire field `n` (1-based), or "" if none.
@@ -581,13 +614,11 @@ template <message_like T>
 [[nodiscard]] constexpr std::string_view field_name(std::size_t n) noexcept {
   std::string_view name;
   std::size_t first = 1;
-  std::apply(
-      [&](const auto&... d) {
-        (void)((n >= first && n < first + d.width() ? (name = d.name, true)
-                                                    : (first += d.width(), false)) ||
-               ...);
-      },
-      T::nmea.fields);
+  T::nmea.fields.apply([&](const auto&... d) {
+    (void)((n >= first && n < first + d.width() ? (name = d.name, true)
+                                                : (first += d.width(), false)) ||
+           ...);
+  });
   return name;
 }
 

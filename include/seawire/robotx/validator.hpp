@@ -36,7 +36,6 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <tuple>
 #include <utility>
 
 #include "seawire/detail/ascii.hpp"
@@ -311,11 +310,9 @@ class validator {
     bool ended = false;
     bool date_ok = false;
     bool time_ok = false;
-    std::apply(
-        [&](const auto&... d) {
-          (one_field(sv, d, msg, first, ended, date_ok, time_ok, base, v), ...);
-        },
-        M::nmea.fields);
+    M::nmea.fields.apply([&](const auto&... d) {
+      (one_field(sv, d, msg, first, ended, date_ok, time_ok, base, v), ...);
+    });
     // Optional fields may be blank but not missing: the spec's sentences have every comma.
     if (!ended && sv.field_count != first - 1) {
       finding f = base;
