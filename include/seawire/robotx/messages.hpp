@@ -299,8 +299,12 @@ inline constexpr report_type report_type_of = report_traits<M>::type;
   return std::nullopt;
 }
 
+// The role decoders below are function templates of nothing (`template <int = 0>`): a file
+// that includes this header then compiles a role's decoders only if it calls them, which
+// keeps including seawire/seawire.hpp cheap. Call them as plain functions.
 /// Decode one line into whichever report it is, under the judges' policy by default. A
 /// well-formed sentence with another address gives unknown_sentence (not an error).
+template <int = 0>
 [[nodiscard]] constexpr result<reports::variant> decode_report(
     std::string_view line, const parse_policy& policy = judge_policy) noexcept {
   return reports::decode(line, policy);
