@@ -183,6 +183,15 @@ namespace detail {
   return errc::ok;
 }
 
+/// Reads the run of digits at s[i] onto m (m * 10 + digit each; past 19 digits m wraps, and the
+/// caller, which sees the count, does not use it) and moves i past it.
+SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t& i,
+                                                 std::uint64_t& m) noexcept {
+  for (unsigned d = 0; i < s.size() && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10;
+       ++i)
+    m = m * 10 + d;
+}
+
 [[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
 
 /// Parse [sign] digits [. digits]. A '+' only when `liberal`, spaces before and after the number
@@ -203,14 +212,12 @@ namespace detail {
   // find the integer digits as written; anything longer takes the general path.
   const std::size_t int_begin = i;
   std::uint64_t m = 0;
-  for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10; ++i)
-    m = m * 10 + d;
+  read_digits(s, i, m);
   const std::size_t int_written = i - int_begin;
   std::size_t places = 0;
   if (i < n && s[i] == '.') {
     const std::size_t frac_begin = ++i;
-    for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10; ++i)
-      m = m * 10 + d;
+    read_digits(s, i, m);
     places = i - frac_begin;
   }
   // Past 19 digits the general path decides, down to which error comes first.
@@ -644,8 +651,7 @@ struct codec<nmea_coordinate<Axis>> {
     const std::size_t n = s.size();
     std::size_t i = 0;
     std::uint64_t ddmm = 0;
-    for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10; ++i)
-      ddmm = ddmm * 10 + d;
+    detail::read_digits(s, i, ddmm);
     const std::size_t point = i;
     if (point < 3 || point - 2 > Axis::width) return Axis::error;
     std::uint64_t fraction = 0;
@@ -653,9 +659,7 @@ struct codec<nmea_coordinate<Axis>> {
     if (i < n) {
       if (s[i] != '.') return Axis::error;
       const std::size_t fraction_begin = ++i;
-      for (unsigned d = 0; i < n && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10;
-           ++i)
-        fraction = fraction * 10 + d;
+      detail::read_digits(s, i, fraction);
       places = i - fraction_begin;
       // 12 fraction digits of a minute is 2 micrometres: more is noise, and would overflow the
       // range arithmetic below.
@@ -761,12 +765,9 @@ struct codec<time_of_day> {
     if (s.size() > 6) {
       places = s.size() - 7;
       // "hhmmss." with nothing after the point is malformed, not zero places.
-      if (s[6] != '.' || places == 0 || places > 9) return errc::bad_time;
-      for (std::size_t k = 7; k < s.size(); ++k) {
-        const unsigned d = static_cast<unsigned char>(s[k]) - unsigned{'0'};
-        if (d >= 10) return errc::bad_time;
-        frac = frac * 10 + d;
-      }
+      if (s[6] != '.' || places == 0 || places > 9 ||
+          !detail::parse_fixed_digits(s, 7, places, frac))
+        return errc::bad_time;
     }
     v = {static_cast<std::uint8_t>(digits[0] * 10 + digits[1]),
          static_cast<std::uint8_t>(digits[2] * 10 + digits[3]),
