@@ -33,84 +33,68 @@ constexpr std::size_t corpus_size = 1000;
 // ---------------------------------------------------------------------------------------------
 // the measurements
 
-void run_baseline(benchmark::State& state, const sb::corpus& c) {
-  sb::split_sentence split;
+/// Times `one` over every line of the corpus, with the allocations made meanwhile. `one` returns
+/// false for a line it could not handle; the run is then marked failed with `error`.
+template <class F>
+void run_over_lines(benchmark::State& state, const sb::corpus& c, const char* error, F&& one) {
   std::size_t bad = 0;
   const std::uint64_t before = sb::allocation_count();
   for (auto _ : state) {
     sb::for_each_line(c.bytes, [&](std::string_view line) {
-      if (!sb::baseline_split(line, split)) ++bad;
-      benchmark::DoNotOptimize(split);
+      if (!one(line)) ++bad;
     });
   }
   const std::uint64_t allocations = sb::allocation_count() - before;
-  if (bad != 0) state.SkipWithError("baseline: a corpus line did not check");
+  if (bad != 0) state.SkipWithError(error);
   sb::report(state, c.size(), c.bytes.size(), allocations);
+}
+
+void run_baseline(benchmark::State& state, const sb::corpus& c) {
+  sb::split_sentence split;
+  run_over_lines(state, c, "baseline: a corpus line did not check", [&](std::string_view line) {
+    const bool ok = sb::baseline_split(line, split);
+    benchmark::DoNotOptimize(split);
+    return ok;
+  });
 }
 
 template <class T>
 void run_decode_typed(benchmark::State& state, const sb::corpus& c,
                       const nmea::parse_policy& policy) {
   sb::sink s;
-  std::size_t bad = 0;
-  const std::uint64_t before = sb::allocation_count();
-  for (auto _ : state) {
-    sb::for_each_line(c.bytes, [&](std::string_view line) {
-      const result<T> r = nmea::decode<T>(line, policy);
-      if (r) {
-        sb::read_all(s, r.value);
-      } else {
-        ++bad;
-      }
-      benchmark::DoNotOptimize(s);
-    });
-  }
-  const std::uint64_t allocations = sb::allocation_count() - before;
-  if (bad != 0) state.SkipWithError("decode: a corpus line did not decode");
-  sb::report(state, c.size(), c.bytes.size(), allocations);
+  run_over_lines(state, c, "decode: a corpus line did not decode", [&](std::string_view line) {
+    const result<T> r = nmea::decode<T>(line, policy);
+    if (r) sb::read_all(s, r.value);
+    benchmark::DoNotOptimize(s);
+    return r.ok();
+  });
 }
 
 template <class Set>
 void run_decode_set(benchmark::State& state, const sb::corpus& c,
                     const nmea::parse_policy& policy) {
   sb::sink s;
-  std::size_t bad = 0;
-  const std::uint64_t before = sb::allocation_count();
-  for (auto _ : state) {
-    sb::for_each_line(c.bytes, [&](std::string_view line) {
-      const auto r = Set::decode(line, policy);
-      if (r && r.value.index() != 0) {
-        std::visit([&s](const auto& m) { sb::read_all(s, m); }, r.value);
-      } else {
-        ++bad;
-      }
-      benchmark::DoNotOptimize(s);
-    });
-  }
-  const std::uint64_t allocations = sb::allocation_count() - before;
-  if (bad != 0) state.SkipWithError("decode: a corpus line did not decode");
-  sb::report(state, c.size(), c.bytes.size(), allocations);
+  run_over_lines(state, c, "decode: a corpus line did not decode", [&](std::string_view line) {
+    const auto r = Set::decode(line, policy);
+    const bool ok = r && r.value.index() != 0;
+    if (ok) std::visit([&s](const auto& m) { sb::read_all(s, m); }, r.value);
+    benchmark::DoNotOptimize(s);
+    return ok;
+  });
 }
 
 template <class Set>
 void run_decode_visit(benchmark::State& state, const sb::corpus& c,
                       const nmea::parse_policy& policy) {
   sb::sink s;
-  std::size_t bad = 0;
-  const std::uint64_t before = sb::allocation_count();
-  for (auto _ : state) {
-    sb::for_each_line(c.bytes, [&](std::string_view line) {
-      const result<nmea::sentence_view> sv = nmea::parse(line, policy);
-      const result<bool> r =
-          sv ? Set::visit(sv.value, policy, [&s](const auto& m) { sb::read_all(s, m); })
-             : result<bool>{false, sv.ec};
-      if (!r || !r.value) ++bad;
-      benchmark::DoNotOptimize(s);
-    });
-  }
-  const std::uint64_t allocations = sb::allocation_count() - before;
-  if (bad != 0) state.SkipWithError("decode: a corpus line did not decode");
-  sb::report(state, c.size(), c.bytes.size(), allocations);
+  run_over_lines(state, c, "decode: a corpus line did not decode", [&](std::string_view line) {
+    const result<nmea::sentence_view> sv = nmea::parse(line, policy);
+    const result<bool> r =
+        sv ? Set::visit(sv.value, policy, [&s](const auto& m) { sb::read_all(s, m); })
+           : result<bool>{false, sv.ec};
+    benchmark::DoNotOptimize(s);
+    return r && r.value;
+  });
 }
 
 template <class T>
