@@ -81,13 +81,7 @@ void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too)
     SEAWIRE_FUZZ_CHECK(bytewise == whole, "byte-by-byte feed differs from the whole stream",
                        stream);
   }
-  std::uint32_t x = 0x9E3779B9U ^ seed;
-  const outcome chunked = run<Capacity>(stream, [&] {
-    x ^= x << 13U;
-    x ^= x >> 17U;
-    x ^= x << 5U;
-    return (x & 3U) == 0 ? std::size_t{x >> 8U} % (2 * Capacity + 2) : std::size_t{x >> 8U} % 9;
-  });
+  const outcome chunked = run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed));
   SEAWIRE_FUZZ_CHECK(chunked == whole, "chunked feed differs from the whole stream", stream);
 
   std::uint64_t next_free = 0;

@@ -186,14 +186,7 @@ void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too)
     const outcome bytewise = run<Capacity>(stream, [] { return std::size_t{1}; });
     SEAWIRE_FUZZ_CHECK(bytewise == expected, "byte-by-byte feed differs from the model", stream);
   }
-  std::uint32_t x = 0x9E3779B9U ^ seed;
-  const outcome chunked = run<Capacity>(stream, [&] {
-    x ^= x << 13U;
-    x ^= x >> 17U;
-    x ^= x << 5U;
-    // Mostly short chunks (the boundary cases), sometimes longer than a sentence.
-    return (x & 3U) == 0 ? std::size_t{x >> 8U} % (2 * Capacity + 2) : std::size_t{x >> 8U} % 9;
-  });
+  const outcome chunked = run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed));
   SEAWIRE_FUZZ_CHECK(chunked == expected, "chunked feed differs from the model", stream);
 
   std::uint64_t text = 0;

@@ -95,6 +95,25 @@ inline std::string number(std::uint64_t v) { return std::to_string(v); }
 // ---------------------------------------------------------------------------------------------
 // integrity fix-ups
 
+/// Chunk sizes for feeding a stream reader of `capacity` bytes in pieces: mostly 0 to 8 bytes
+/// (the boundary cases), sometimes up to twice the capacity (longer than a line); the same
+/// sequence for the same seed, so that a finding replays.
+class chunk_sizes {
+ public:
+  chunk_sizes(std::size_t capacity, std::uint8_t seed) noexcept
+      : capacity_(capacity), x_(0x9E3779B9U ^ seed) {}
+  std::size_t operator()() noexcept {
+    x_ ^= x_ << 13U;
+    x_ ^= x_ >> 17U;
+    x_ ^= x_ << 5U;
+    return (x_ & 3U) == 0 ? std::size_t{x_ >> 8U} % (2 * capacity_ + 2) : std::size_t{x_ >> 8U} % 9;
+  }
+
+ private:
+  std::size_t capacity_;
+  std::uint32_t x_;
+};
+
 /// The line with a checksum that matches, so a fuzzed sentence gets past the XOR check: the
 /// two characters after the first '*' become the XOR of the bytes between '$' and '*' (in
 /// lower case when the input used a lower-case letter there, to keep that path in play), or
