@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "seawire/detail/ascii.hpp"
@@ -91,9 +92,64 @@ TEST_CASE("the vectorized sentence scan finds what the byte loop finds") {
     REQUIRE(fast.bad == slow.bad);
     if (slow.bad != 0) continue;  // the rest is not defined once a bad byte stops the scan
     REQUIRE(fast.star == slow.star);
-    REQUIRE(fast.first_comma == slow.first_comma);
     REQUIRE(fast.commas == slow.commas);
     REQUIRE(fast.x == slow.x);
+  }
+}
+
+TEST_CASE("the vectorized scan counts every comma of a long line") {
+  // Its per-lane counters are bytes: 5,000 commas once came back as 904 fields.
+  parse_policy p;
+  p.max_length = 65535;
+  for (const std::size_t commas : {255U, 256U, 4079U, 4080U, 4081U, 5000U, 65000U}) {
+    std::string line = "$PXXX";
+    line.append(commas, ',');
+    INFO(commas);
+    const nmea::detail::body_scan fast = nmea::detail::scan_body(line);
+    CHECK(fast.commas == commas);
+    CHECK(fast.x == reference_scan(line).x);
+    const auto r = parse(line + "*" + std::string(1, "0123456789ABCDEF"[fast.x >> 4U]) +
+                             std::string(1, "0123456789ABCDEF"[fast.x & 15U]),
+                         p);
+    REQUIRE(r);
+    CHECK(r.value.field_count == commas);
+  }
+}
+
+TEST_CASE("parse() names the byte that spoils an address, as a first-comma search would") {
+  // The reference: the address is what stands before the first ',' (or the '*', or the end); it
+  // must be 1 to 15 upper-case letters and digits, a letter first. A wrong length is reported
+  // at column 1, a wrong character where it stands.
+  const auto reference = [](std::string_view line) -> std::pair<bool, std::size_t> {
+    std::size_t end = 1;
+    while (end < line.size() && line[end] != ',' && line[end] != '*') ++end;
+    if (end - 1 == 0 || end - 1 > 15) return {false, 1};
+    for (std::size_t k = 1; k < end; ++k) {
+      const char c = line[k];
+      if (!((c >= 'A' && c <= 'Z') || (k > 1 && c >= '0' && c <= '9'))) return {false, k};
+    }
+    return {true, 0};
+  };
+  prng g{4242};
+  static constexpr std::string_view chars = "AAAAAAGPRMC0123456789,,*az-.";
+  parse_policy p;
+  p.checksum = checksum_policy::ignore;
+  for (int k = 0; k < 100000; ++k) {
+    std::string line = "$";
+    const std::size_t n = g.below(24);
+    for (std::size_t i = 0; i < n; ++i) line += chars[g.below(chars.size())];
+    if (g.below(2) == 0) line += ",1,2,3.5,ABC,,,N*00";  // long enough for the vector scan
+    INFO(line);
+    const auto r = parse(line, p);
+    const auto [ok, column] = reference(line);
+    if (ok) {
+      // Anything else wrong comes after the address.
+      if (!r) CHECK(r.ec != errc::bad_address);
+    } else {
+      REQUIRE_FALSE(r);
+      CHECK(r.ec == errc::bad_address);
+      CHECK(r.column == column);
+    }
   }
 }
 
@@ -431,4 +487,21 @@ TEST_CASE("dispatch by address key finds what string comparison finds") {
     REQUIRE(set::knows(a) == by_string(static_cast<set*>(nullptr), a));
   }
   static_assert(set::knows("GPRMC") && set::knows("PAPGPSCTRL") && !set::knows("PGRMC"));
+}
+
+TEST_CASE("the address key read in one load is the key read byte by byte") {
+  prng g{99};
+  for (int k = 0; k < 20000; ++k) {
+    std::string line = "$";
+    const std::size_t n = 1 + g.below(15);
+    for (std::size_t i = 0; i < n; ++i) line += static_cast<char>('A' + g.below(26));
+    if (g.below(3) != 0) line += ",1,2";
+    const auto s = parse(line);
+    REQUIRE(s);
+    INFO(line);
+    const nmea::detail::address_key fast = nmea::detail::key_of(s.value);
+    const nmea::detail::address_key slow = nmea::detail::key_of(s.value.address);
+    CHECK(fast.head == slow.head);
+    CHECK(fast.size == slow.size);
+  }
 }

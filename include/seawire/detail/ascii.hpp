@@ -2,7 +2,9 @@
 #pragma once
 // Character classes and small integer helpers. Locale-free and constexpr, unlike <cctype>.
 
+#include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 namespace seawire::detail {
@@ -11,12 +13,21 @@ namespace seawire::detail {
 [[nodiscard]] constexpr bool is_upper(char c) noexcept { return c >= 'A' && c <= 'Z'; }
 [[nodiscard]] constexpr bool is_printable(char c) noexcept { return c >= 0x20 && c <= 0x7E; }
 
+/// hex_values[c]: the value of hex digit c, or -1.
+inline constexpr std::array<std::int8_t, 256> hex_values = [] {
+  std::array<std::int8_t, 256> t{};
+  for (int c = 0; c < 256; ++c) {
+    t[static_cast<std::size_t>(c)] = static_cast<std::int8_t>(c >= '0' && c <= '9'   ? c - '0'
+                                                              : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                                              : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                                                                                     : -1);
+  }
+  return t;
+}();
+
 /// Value of a hex digit, or -1. Accepts both cases; callers decide whether lower case is allowed.
 [[nodiscard]] constexpr int hex_value(char c) noexcept {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
+  return hex_values[static_cast<unsigned char>(c)];
 }
 
 [[nodiscard]] constexpr char hex_digit_upper(unsigned nibble) noexcept {

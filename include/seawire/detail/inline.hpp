@@ -8,8 +8,11 @@
 
 #if defined(__GNUC__) || defined(__clang__)
 #define SEAWIRE_ALWAYS_INLINE __attribute__((always_inline)) inline
+#define SEAWIRE_NOINLINE __attribute__((noinline))
 #elif defined(_MSC_VER)
 #define SEAWIRE_ALWAYS_INLINE __forceinline
+#define SEAWIRE_NOINLINE __declspec(noinline)
 #else
 #define SEAWIRE_ALWAYS_INLINE inline
+#define SEAWIRE_NOINLINE
 #endif

@@ -7,8 +7,10 @@
 //   auto r = from_vehicle::decode(line, policy);   // result<from_vehicle::variant>
 //   from_vehicle::visit(sentence, policy, [](const auto& msg) { ... });
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -33,6 +35,18 @@ struct address_key {
   for (std::size_t i = 0; i < a.size() && i < 8; ++i)
     k.head |= std::uint64_t{static_cast<unsigned char>(a[i])} << (8U * i);
   return k;
+}
+
+/// key_of(s.address), with one 8-byte load where the line is long enough to hold it.
+[[nodiscard]] constexpr address_key key_of(const sentence_view& s) noexcept {
+  if (std::is_constant_evaluated() || std::endian::native != std::endian::little ||
+      s.line.size() < 9 || s.address.data() != s.line.data() + 1)
+    return key_of(s.address);
+  std::uint64_t head = 0;
+  std::memcpy(&head, s.address.data(), sizeof head);  // line[1, 9): inside the line
+  const std::size_t n = s.address.size();
+  if (n < 8) head &= (std::uint64_t{1} << (8U * n)) - 1U;
+  return {head, n};
 }
 
 /// M::nmea.matches(a), given k == key_of(a): the length and one masked compare for addresses
@@ -89,7 +103,7 @@ struct message_set {
     // Built holding unknown_sentence, not value-initialized: that would first zero the storage
     // of the largest message in the set.
     result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
-    const detail::address_key k = detail::key_of(s.address);
+    const detail::address_key k = detail::key_of(s);
     (void)((detail::key_matches<Ms>(k, s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
     return out;
   }
@@ -112,7 +126,7 @@ struct message_set {
   static constexpr result<bool> visit(const sentence_view& s, const parse_policy& p,
                                       F&& on_message) {
     result<bool> out;
-    const detail::address_key k = detail::key_of(s.address);
+    const detail::address_key k = detail::key_of(s);
     const bool found =
         ((detail::key_matches<Ms>(k, s.address) ? (visit_one<Ms>(out, s, p, on_message), true)
                                                 : false) ||

@@ -74,14 +74,14 @@ namespace detail {
 
 /// What the one pass over a sentence finds between its '$' and its '*' (or its end).
 struct body_scan {
-  std::size_t star = 0;         ///< index of the first '*'; 0 if there is none
-  std::size_t bad = 0;          ///< index of the first byte that may not stand there; 0 if none
-  std::size_t first_comma = 0;  ///< index of the first ','; 0 if there is none
-  std::size_t commas = 0;       ///< ',' before the '*'
-  std::uint8_t x = 0;           ///< XOR of every byte before the '*' (the '$' excluded)
+  std::size_t star = 0;    ///< index of the first '*'; 0 if there is none
+  std::size_t bad = 0;     ///< index of the first byte that may not stand there; 0 if none
+  std::size_t commas = 0;  ///< ',' before the '*'
+  std::uint8_t x = 0;      ///< XOR of every byte before the '*' (the '$' excluded)
 };
 
-/// The byte loop: the reference, and what constant evaluation and short lines use.
+/// The byte loop: the reference, and what constant evaluation, short lines and lines with
+/// something wrong in them use.
 constexpr void scan_body_bytes(std::string_view line, body_scan& b) noexcept {
   std::uint8_t x = 0;
   for (std::size_t i = 1; i < line.size(); ++i) {
@@ -94,87 +94,74 @@ constexpr void scan_body_bytes(std::string_view line, body_scan& b) noexcept {
       b.bad = i;
       return;
     }
-    if (c == ',') {
-      if (b.first_comma == 0) b.first_comma = i;
-      ++b.commas;
-    }
+    if (c == ',') ++b.commas;
     x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(c));
   }
   b.x = x;
 }
 
 #if defined(__SSE2__)
-// 16 bytes per step: find '*', refuse a byte outside 0x20..0x7E or a '$', count the commas and
-// XOR the bytes, all on the block at once. The last block is the line's last 16 bytes, overlapping
-// bytes already seen, which are masked out; nothing outside the line is ever read.
-// Precondition: line.size() >= 16.
-inline void scan_body_sse2(std::string_view line, body_scan& b) noexcept {
-  const char* const p = line.data();
-  const std::size_t n = line.size();
-  const __m128i star_c = _mm_set1_epi8('*');
+/// Sixteen zero bytes then sixteen 0xFF: the 16 bytes at lane_keep + 16 - k keep lanes k..15.
+alignas(16) inline constexpr unsigned char lane_keep[32] = {
+    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,
+    0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF};
+
+/// The scan of line[begin, end) when nothing in it is out of place: no '*', no '$', no byte
+/// outside 0x20..0x7E. Sixteen bytes per step with no branch but the loop's: the XOR, the comma
+/// count and an accumulated "something special" flag; the last step takes the 16 bytes that end
+/// at `end`, with the lanes already seen masked out, so nothing outside the range is read.
+/// False when something special is there: the byte loop then says what and where.
+/// Precondition: end - begin >= 16.
+inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
+                            body_scan& b) noexcept {
   const __m128i comma_c = _mm_set1_epi8(',');
-  const __m128i space_c = _mm_set1_epi8(0x20);
-  const __m128i del_c = _mm_set1_epi8(0x7F);
+  const __m128i star_c = _mm_set1_epi8('*');
   const __m128i dollar_c = _mm_set1_epi8('$');
+  const __m128i one_c = _mm_set1_epi8(1);
+  const __m128i printable_c = _mm_set1_epi8(0x21);
+  // Outside 0x20..0x7E: plus one (wrapping), 0x7F..0xFE turn negative and 0xFF..0x1F become
+  // 0x00..0x20, so one signed compare below 0x21 finds them all.
+  const auto special = [&](__m128i v) {
+    return _mm_or_si128(_mm_cmplt_epi8(_mm_add_epi8(v, one_c), printable_c),
+                        _mm_or_si128(_mm_cmpeq_epi8(v, dollar_c), _mm_cmpeq_epi8(v, star_c)));
+  };
+  const auto lane_sum = [](__m128i counts) {  // the sixteen byte counters added up
+    const __m128i sums = _mm_sad_epu8(counts, _mm_setzero_si128());
+    return static_cast<std::size_t>(_mm_cvtsi128_si32(sums)) +
+           static_cast<std::size_t>(_mm_extract_epi16(sums, 4));
+  };
   __m128i x = _mm_setzero_si128();
-  __m128i commas = _mm_setzero_si128();  // per-lane counts (each lane sees <= 64 blocks)
-  std::size_t at = 1;                    // where the block starts
-  unsigned lo = 0;                       // lanes below lo were seen in the block before
-  for (;;) {
-    if (n - at < 16) {
-      if (at >= n) break;
-      lo = static_cast<unsigned>(at - (n - 16));
-      at = n - 16;
-    }
-    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + at));
-    const __m128i comma = _mm_cmpeq_epi8(v, comma_c);
-    // Signed compare: below 0x20 also catches 0x80..0xFF, which are negative.
-    const __m128i bad =
-        _mm_or_si128(_mm_cmplt_epi8(v, space_c),
-                     _mm_or_si128(_mm_cmpeq_epi8(v, del_c), _mm_cmpeq_epi8(v, dollar_c)));
-    const auto stars =
-        static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, star_c))) & (0xFFFFU << lo);
-    const auto bads = static_cast<unsigned>(_mm_movemask_epi8(bad));
-    if (b.first_comma == 0) {
-      const auto m = static_cast<unsigned>(_mm_movemask_epi8(comma)) & (0xFFFFU << lo);
-      // Only a comma before the '*' counts.
-      const unsigned before_star = stars == 0 ? 0xFFFFU : (stars & (0U - stars)) - 1U;
-      if ((m & before_star) != 0)
-        b.first_comma = at + static_cast<std::size_t>(std::countr_zero(m));
-    }
-    if ((stars | bads | lo) == 0) {          // the whole block is sentence text: the common case
-      commas = _mm_sub_epi8(commas, comma);  // a match is -1
+  __m128i odd = _mm_setzero_si128();
+  std::size_t commas = 0;
+  std::size_t at = begin;
+  while (end - at > 16) {
+    // Byte counters hold 255 blocks; a line may have 4096.
+    std::size_t blocks = (end - at - 1) / 16;
+    if (blocks > 255) blocks = 255;
+    __m128i counts = _mm_setzero_si128();
+    for (const std::size_t stop = at + blocks * 16; at != stop; at += 16) {
+      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + at));
+      odd = _mm_or_si128(odd, special(v));
+      counts = _mm_sub_epi8(counts, _mm_cmpeq_epi8(v, comma_c));  // a match is -1
       x = _mm_xor_si128(x, v);
-      at += 16;
-      continue;
     }
-    // Lanes [lo, hi) are this block's share of the sentence: past what was seen, before '*'.
-    const int hi = stars != 0 ? std::countr_zero(stars) : 16;
-    const unsigned live_bits = (0xFFFFU << lo) & ((1U << static_cast<unsigned>(hi)) - 1U);
-    if (const unsigned m = bads & live_bits; m != 0) {
-      b.bad = at + static_cast<std::size_t>(std::countr_zero(m));
-      return;
-    }
-    const __m128i index = _mm_setr_epi8(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-    const __m128i live =
-        _mm_and_si128(_mm_cmpgt_epi8(index, _mm_set1_epi8(static_cast<char>(lo - 1))),
-                      _mm_cmplt_epi8(index, _mm_set1_epi8(static_cast<char>(hi))));
-    commas = _mm_sub_epi8(commas, _mm_and_si128(live, comma));
-    x = _mm_xor_si128(x, _mm_and_si128(live, v));
-    if (stars != 0) {
-      b.star = at + static_cast<std::size_t>(hi);
-      break;
-    }
-    at += 16;
+    commas += lane_sum(counts);
   }
+  const __m128i keep =
+      _mm_loadu_si128(reinterpret_cast<const __m128i*>(lane_keep + 16 - (at - (end - 16))));
+  const __m128i last = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + end - 16));
+  const __m128i v = _mm_and_si128(last, keep);  // a masked lane is 0: no comma, XOR unchanged
+  odd = _mm_or_si128(odd, _mm_and_si128(keep, special(last)));
+  if (_mm_movemask_epi8(odd) != 0) return false;
+  commas += lane_sum(_mm_sub_epi8(_mm_setzero_si128(), _mm_cmpeq_epi8(v, comma_c)));
+  x = _mm_xor_si128(x, v);
   x = _mm_xor_si128(x, _mm_srli_si128(x, 8));
   x = _mm_xor_si128(x, _mm_srli_si128(x, 4));
   x = _mm_xor_si128(x, _mm_srli_si128(x, 2));
   x = _mm_xor_si128(x, _mm_srli_si128(x, 1));
   b.x = static_cast<std::uint8_t>(_mm_cvtsi128_si32(x) & 0xFF);
-  const __m128i sums = _mm_sad_epu8(commas, _mm_setzero_si128());
-  b.commas = static_cast<std::size_t>(_mm_cvtsi128_si32(sums)) +
-             static_cast<std::size_t>(_mm_extract_epi16(sums, 4));
+  b.commas = commas;
+  return true;
 }
 #endif
 
@@ -182,9 +169,16 @@ inline void scan_body_sse2(std::string_view line, body_scan& b) noexcept {
 [[nodiscard]] constexpr body_scan scan_body(std::string_view line) noexcept {
   body_scan b;
 #if defined(__SSE2__)
-  if (!std::is_constant_evaluated() && line.size() >= 16) {
-    scan_body_sse2(line, b);
-    return b;
+  const std::size_t n = line.size();
+  if (!std::is_constant_evaluated() && n >= 20) {
+    // Nearly every sentence ends "*hh": scan up to that '*'; if there is none there, the whole
+    // line, which then must hold no '*' at all.
+    const std::size_t end = line[n - 3] == '*' ? n - 3 : n;
+    if (scan_clean_sse2(line.data(), 1, end, b)) {
+      b.star = end == n ? 0 : end;
+      return b;
+    }
+    b = body_scan{};
   }
 #endif
   scan_body_bytes(line, b);
@@ -235,23 +229,28 @@ namespace detail {
 
   s.line = line;
 
-  // One pass: XOR, printable check, address end, comma count, checksum delimiter.
+  // One pass: XOR, printable check, comma count, checksum delimiter.
   const detail::body_scan scan = detail::scan_body(line);
   if (scan.bad != 0) return fail(errc::bad_character, scan.bad);
   const std::uint8_t x = scan.x;
   const std::size_t commas = scan.commas;
   const std::size_t star = scan.star;
-  std::size_t address_end = scan.first_comma;
   const std::size_t data_end = star != 0 ? star : n;
-  if (address_end == 0) address_end = data_end;
 
-  // Address: upper-case letters and digits, starting with a letter.
-  const std::size_t alen = address_end - 1;
-  if (alen == 0 || alen > 15) return fail(errc::bad_address, 1);
-  for (std::size_t k = 1; k < address_end; ++k) {
-    const char c = line[k];
-    if (!(is_upper(c) || (k > 1 && is_digit(c)))) return fail(errc::bad_address, k);
+  // Address: upper-case letters and digits, starting with a letter, 1 to 15 of them, ended by
+  // the first ',' or by the end of the data.
+  std::size_t address_end = 1;
+  while (address_end < data_end && address_end <= 16 &&
+         (is_upper(line[address_end]) || (address_end > 1 && is_digit(line[address_end]))))
+    ++address_end;
+  if (address_end > 16 || address_end == 1 ||
+      (address_end < data_end && line[address_end] != ',')) {
+    // Wrong: say where. The address is what stands before the first ',' (or the end).
+    std::size_t end = 1;
+    while (end < data_end && line[end] != ',') ++end;
+    return fail(errc::bad_address, end - 1 == 0 || end - 1 > 15 ? 1 : address_end);
   }
+  const std::size_t alen = address_end - 1;
   s.address = line.substr(1, alen);
   if (address_end < data_end) {
     s.body = line.substr(address_end + 1, data_end - address_end - 1);
@@ -371,7 +370,7 @@ class field_reader {
         column_base_(
             static_cast<std::uint16_t>(s.field_count > 0 ? s.body_column() : s.line.size())),
         total_(s.field_count),
-        policy_(&p) {
+        policy_(p) {
     if (more_) {
       mask_ = detail::comma_mask(body_.data(), body_.size());
       next_end_ = find_end();
@@ -410,22 +409,43 @@ class field_reader {
     return static_cast<std::uint16_t>(column_base_ + last_at_);
   }
   [[nodiscard]] constexpr std::uint16_t field_count() const noexcept { return total_; }
-  [[nodiscard]] constexpr const parse_policy& policy() const noexcept { return *policy_; }
+  [[nodiscard]] constexpr const parse_policy& policy() const noexcept { return policy_; }
 
  private:
   // Where the field that starts at next_ ends: the next comma not yet used, else the end of
   // the body. Moves the 64-byte window on when its commas are used up.
   [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::size_t find_end() noexcept {
-    for (;;) {
-      if (mask_ != 0) {
-        const std::size_t e = window_ + static_cast<std::size_t>(std::countr_zero(mask_));
-        mask_ &= mask_ - 1;
-        return e;
-      }
-      if (body_.size() - window_ <= 64) return body_.size();
-      window_ += 64;
-      mask_ = detail::comma_mask(body_.data() + window_, body_.size() - window_);
+    if (mask_ != 0) {
+      const std::size_t e = window_ + static_cast<std::size_t>(std::countr_zero(mask_));
+      mask_ &= mask_ - 1;
+      return e;
     }
+    if (body_.size() - window_ <= 64) return body_.size();
+    const window w = next_window(body_, window_);
+    window_ = w.start;
+    mask_ = w.mask;
+    return w.end;
+  }
+
+  struct window {
+    std::size_t start;   // the window the next comma is in
+    std::uint64_t mask;  // its commas after that one
+    std::size_t end;     // where that comma is (the end of the body if there is none)
+  };
+  // The rest of find_end, out of line (most sentences fit one window) and away from `this`,
+  // so that the reader's state can stay in registers where it is used.
+  [[nodiscard]] SEAWIRE_NOINLINE static constexpr window next_window(std::string_view body,
+                                                                     std::size_t start) noexcept {
+    while (body.size() - start > 64) {
+      start += 64;
+      std::uint64_t mask = detail::comma_mask(body.data() + start, body.size() - start);
+      if (mask != 0) {
+        const std::size_t e = start + static_cast<std::size_t>(std::countr_zero(mask));
+        mask &= mask - 1;
+        return {start, mask, e};
+      }
+    }
+    return {start, 0, body.size()};
   }
 
   std::string_view body_;
@@ -438,7 +458,7 @@ class field_reader {
   std::uint16_t index_ = 0;
   std::uint16_t column_base_;  // column of body_[0]
   std::uint16_t total_;
-  const parse_policy* policy_;
+  parse_policy policy_;  // a copy: the compiler need not reload it after each store to a message
 };
 
 /// The i-th field (1-based) of a sentence, or a non-present token. O(i); for occasional use.
