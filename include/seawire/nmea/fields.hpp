@@ -98,7 +98,7 @@ struct decimal {
   [[nodiscard]] constexpr bool is_zero() const noexcept { return mantissa == 0; }
 
   /// Numeric comparison: -1, 0 or 1. "-0" equals "0"; "4.5" equals "4.50".
-  [[nodiscard]] constexpr int compare(const decimal& o) const noexcept {
+  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr int compare(const decimal& o) const noexcept {
     const bool n1 = negative && mantissa != 0;
     const bool n2 = o.negative && o.mantissa != 0;
     if (n1 != n2) return n1 ? -1 : 1;
@@ -123,7 +123,8 @@ struct decimal {
   }
 
  private:
-  [[nodiscard]] constexpr int compare_magnitude(const decimal& o) const noexcept {
+  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr int compare_magnitude(
+      const decimal& o) const noexcept {
     // Scale the mantissa with fewer places up to the other's: no division, and a product that
     // would pass 2^64 is certainly the larger (the other mantissa is below 2^64).
     if (places == o.places) return three_way(mantissa, o.mantissa);
@@ -229,13 +230,16 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
       return parse_decimal_spaced(s, out);
     return errc::bad_number;
   }
-  std::size_t zeros = 0;  // leading zeros of the integer digits
-  while (zeros < int_written && s[int_begin + zeros] == '0') ++zeros;
-  const std::size_t natural = int_written - zeros == 0 ? 1 : int_written - zeros;
   out.mantissa = m;
   out.places = static_cast<std::uint8_t>(places);
   out.negative = neg;
-  out.int_width = static_cast<std::uint8_t>(int_written > natural ? int_written : 0);
+  out.int_width = 0;
+  if (int_written > 1 && s[int_begin] == '0') {  // zero-padded ("007.5", "00"): keep the width
+    std::size_t zeros = 1;
+    while (zeros < int_written && s[int_begin + zeros] == '0') ++zeros;
+    const std::size_t natural = int_written - zeros == 0 ? 1 : int_written - zeros;
+    out.int_width = static_cast<std::uint8_t>(int_written > natural ? int_written : 0);
+  }
   return errc::ok;
 }
 
@@ -274,6 +278,23 @@ constexpr void write_decimal(writer& w, const decimal& d) noexcept {
   }
   out = v;
   return true;
+}
+
+/// The first six characters of s (at least six) as three two-digit numbers ("hhmmss",
+/// "ddmmyy"), with no branch per digit; false if any is not a digit.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr bool parse_digit_pairs(std::string_view s,
+                                                                     unsigned (&two)[3]) noexcept {
+  const auto digit = [&s](std::size_t k) {  // a byte below '0' wraps to a large value
+    return static_cast<unsigned>(static_cast<unsigned char>(s[k])) - unsigned{'0'};
+  };
+  const unsigned d0 = digit(0), d1 = digit(1), d2 = digit(2), d3 = digit(3), d4 = digit(4),
+                 d5 = digit(5);
+  two[0] = d0 * 10 + d1;
+  two[1] = d2 * 10 + d3;
+  two[2] = d4 * 10 + d5;
+  return static_cast<bool>(static_cast<unsigned>(d0 < 10) & static_cast<unsigned>(d1 < 10) &
+                           static_cast<unsigned>(d2 < 10) & static_cast<unsigned>(d3 < 10) &
+                           static_cast<unsigned>(d4 < 10) & static_cast<unsigned>(d5 < 10));
 }
 
 }  // namespace detail
@@ -572,7 +593,7 @@ struct codec<decimal> {
   /// Longest text written: sign, 20 integer digits (padding), point, 19 fraction digits.
   static constexpr std::size_t max_chars = 41;
   static constexpr bool allows_blank = false;
-  static constexpr errc read(field_reader& r, decimal& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, decimal& v) noexcept {
     return detail::parse_decimal(r.take().text, !r.policy().strict_values, v,
                                  r.policy().spaced_numbers);
   }
@@ -586,7 +607,7 @@ requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
   static constexpr std::size_t max_chars =
       std::numeric_limits<I>::digits10 + 1 + (std::is_signed_v<I> ? 1 : 0);
   static constexpr bool allows_blank = false;
-  static constexpr errc read(field_reader& r, I& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, I& v) noexcept {
     decimal d;
     const errc e = detail::parse_decimal(r.take().text, !r.policy().strict_values, d,
                                          r.policy().spaced_numbers);
@@ -626,7 +647,7 @@ struct codec<bool> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 1;
   static constexpr bool allows_blank = false;
-  static constexpr errc read(field_reader& r, bool& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, bool& v) noexcept {
     const std::string_view t = r.take().text;
     if (t.size() != 1 || (t[0] != '0' && t[0] != '1')) return errc::bad_flag;
     v = t[0] == '1';
@@ -644,7 +665,7 @@ struct codec<nmea_coordinate<Axis>> {
   static constexpr std::size_t max_chars = Axis::width + 2 + 1 + 12 + 2;
   static constexpr bool allows_blank = false;
 
-  static constexpr errc read(field_reader& r, value_type& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;
     // One pass. The digits before the point are DDMM: one to Axis::width degree digits and
     // exactly two minute digits. Those after it are the fraction of the minute.
@@ -724,7 +745,7 @@ struct codec<decimal_coordinate<Axis>> {
   static constexpr std::size_t max_chars = codec<decimal>::max_chars + 2;
   static constexpr bool allows_blank = false;
 
-  static constexpr errc read(field_reader& r, value_type& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;
     // Unsigned on the wire: a sign would contradict (or duplicate) the hemisphere letter.
     if (s.empty() || s[0] == '-' || s[0] == '+') return Axis::error;
@@ -750,16 +771,11 @@ struct codec<time_of_day> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 16;  // hhmmss.fffffffff
   static constexpr bool allows_blank = false;
-  static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
     const std::string_view s = r.take().text;
     if (s.size() < 6) return errc::bad_time;
-    unsigned digits[6]{};
-    bool ok = true;
-    for (std::size_t k = 0; k < 6; ++k) {
-      digits[k] = static_cast<unsigned char>(s[k]) - unsigned{'0'};
-      ok = ok && digits[k] < 10;
-    }
-    if (!ok) return errc::bad_time;
+    unsigned two[3];  // hh, mm, ss
+    if (!detail::parse_digit_pairs(s, two)) return errc::bad_time;
     unsigned frac = 0;
     std::size_t places = 0;
     if (s.size() > 6) {
@@ -769,11 +785,13 @@ struct codec<time_of_day> {
           !detail::parse_fixed_digits(s, 7, places, frac))
         return errc::bad_time;
     }
-    v = {static_cast<std::uint8_t>(digits[0] * 10 + digits[1]),
-         static_cast<std::uint8_t>(digits[2] * 10 + digits[3]),
-         static_cast<std::uint8_t>(digits[4] * 10 + digits[5]), frac,
-         static_cast<std::uint8_t>(places)};
-    return check(v);
+    if (two[0] > 23) return errc::hour_out_of_range;
+    if (two[1] > 59) return errc::minute_out_of_range;
+    if (two[2] > 59 && (two[2] > 60 || !(two[0] == 23 && two[1] == 59)))
+      return errc::second_out_of_range;
+    v = {static_cast<std::uint8_t>(two[0]), static_cast<std::uint8_t>(two[1]),
+         static_cast<std::uint8_t>(two[2]), frac, static_cast<std::uint8_t>(places)};
+    return errc::ok;
   }
   static constexpr errc check(const time_of_day& v) noexcept {
     if (v.hour > 23) return errc::hour_out_of_range;
@@ -799,15 +817,17 @@ struct codec<date> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 6;
   static constexpr bool allows_blank = false;
-  static constexpr errc read(field_reader& r, date& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, date& v) noexcept {
     const std::string_view s = r.take().text;
-    unsigned d = 0, m = 0, y = 0;
-    if (s.size() != 6 || !detail::parse_fixed_digits(s, 0, 2, d) ||
-        !detail::parse_fixed_digits(s, 2, 2, m) || !detail::parse_fixed_digits(s, 4, 2, y))
-      return errc::bad_date;
-    v = {static_cast<std::uint16_t>(y < 80 ? 2000 + y : 1900 + y), static_cast<std::uint8_t>(m),
-         static_cast<std::uint8_t>(d)};
-    return check(v);
+    if (s.size() != 6) return errc::bad_date;
+    unsigned two[3];  // dd, mm, yy
+    if (!detail::parse_digit_pairs(s, two)) return errc::bad_date;
+    const unsigned year = two[2] < 80 ? 2000 + two[2] : 1900 + two[2];
+    if (two[1] < 1 || two[1] > 12) return errc::month_out_of_range;
+    if (two[0] < 1 || two[0] > detail::days_in_month(two[1], year)) return errc::day_out_of_range;
+    v = {static_cast<std::uint16_t>(year), static_cast<std::uint8_t>(two[1]),
+         static_cast<std::uint8_t>(two[0])};
+    return errc::ok;
   }
   static constexpr errc check(const date& v) noexcept {
     if (v.year < 1980 || v.year > 2079) return errc::out_of_range;
@@ -827,7 +847,7 @@ struct codec<text<N>> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = N;
   static constexpr bool allows_blank = true;  // blank text is empty text
-  static constexpr errc read(field_reader& r, text<N>& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, text<N>& v) noexcept {
     const std::string_view s = r.take().text;
     if (r.policy().strict_values) {
       const errc e = check_chars(s);
@@ -856,7 +876,7 @@ struct codec<E> {
     for (const char c : std::string_view(enum_chars(E{}))) t[static_cast<unsigned char>(c)] = true;
     return t;
   }();
-  static constexpr errc read(field_reader& r, E& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {
     const std::string_view s = r.take().text;
     if (s.size() != 1 || !letters[static_cast<unsigned char>(s[0])]) return errc::bad_enum;
     v = static_cast<E>(s[0]);
@@ -877,7 +897,7 @@ struct codec<E> {
     return n;
   }();
   static constexpr bool allows_blank = false;
-  static constexpr errc read(field_reader& r, E& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {
     const std::string_view s = r.take().text;
     constexpr auto words = enum_words(E{});
     for (std::size_t i = 0; i < words.size(); ++i) {

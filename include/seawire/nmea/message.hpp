@@ -351,6 +351,18 @@ template <class F, class T>
   }
 }
 
+/// Every field of T in wire order, up to the first error. Each descriptor is named by its place
+/// in the constant table, not passed by reference: its options are then constants where
+/// read_field is inlined, and the checks a field does not have compile away. Inlined into
+/// decode_into, so that the reader lives in registers.
+template <class T, std::size_t... I>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_fields(field_reader& r, T& msg,
+                                                               std::index_sequence<I...>) noexcept {
+  errc e = errc::ok;
+  (void)(((e = detail::read_field(field_at<I>(T::nmea.fields), r, msg)) == errc::ok) && ...);
+  return e;
+}
+
 /// decode<T>() into `msg`, a default-constructed T the caller owns (the value of a result, the
 /// alternative of a variant), so that no finished message is ever copied; the errc, field and
 /// column go to `status` (any result<>). On error `msg` holds what was read before it.
@@ -368,14 +380,8 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
     (void)msg.talker.assign(s.address.substr(0, 2));
   }
   field_reader r(s, policy);
-  errc e = errc::ok;
-  // Each descriptor named by its place in the constant table, not passed by reference: its
-  // options are then constants where read_field is inlined, and the checks a field does not
-  // have compile away.
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (void)(((e = detail::read_field(field_at<I>(T::nmea.fields), r, msg)) == errc::ok) && ...);
-  }
-  (std::make_index_sequence<std::remove_cvref_t<decltype(T::nmea.fields)>::size>{});
+  errc e = read_fields(
+      r, msg, std::make_index_sequence<std::remove_cvref_t<decltype(T::nmea.fields)>::size>{});
   if (e == errc::ok && !r.at_end() && !policy.extra_fields) {
     (void)r.take();
     e = errc::too_many_fields;
