@@ -130,6 +130,20 @@ TEST_CASE("parse() names the byte that spoils an address, as a first-comma searc
     }
     return {true, 0};
   };
+  // Bytes after the '*' are not checked by the scan, and the address is read eight bytes at a
+  // time: whatever stands there must not change the answer.
+  CHECK(parse("$A*\xff\xff\xff\xff\xff\xff\xff").ec == errc::bad_checksum_format);
+  CHECK(parse("$AB*\x80\x7f\x01\xfe\xff\xff\xff").ec == errc::bad_checksum_format);
+  CHECK(parse("$GP\xffRMC,1,2,3,4,5,6").ec == errc::bad_character);
+  const auto eight = parse("$ABCDEFGH,1,2,3*00", parse_policy{checksum_policy::ignore});
+  REQUIRE(eight);
+  CHECK(eight.value.address == "ABCDEFGH");
+  const auto ten = parse("$PAPGPSCTRL,1*00", parse_policy{checksum_policy::ignore});
+  REQUIRE(ten);
+  CHECK(ten.value.address == "PAPGPSCTRL");
+  CHECK(parse("$ABCDEFGHIJKLMNOP,1").column == 1);  // 16 characters
+  CHECK(parse("$ABCDEFGHIJKLMNO,1").ok());          // 15
+
   prng g{4242};
   static constexpr std::string_view chars = "AAAAAAGPRMC0123456789,,*az-.";
   parse_policy p;

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// SEAWIRE_ALWAYS_INLINE, for the few small functions on the decode path that their callers must
-// see through: the field reader and read_field with its checks. Inlined where a message's field
-// table is walked, a field's options are constants and the checks it does not have compile
-// away; left to itself GCC -O2 keeps them out of line and tests every option at run time
-// (measured: decode of RMC/GGA 15% slower).
+// SEAWIRE_ALWAYS_INLINE, for the functions on the decode path that their callers must see
+// through: the field reader, read_field with its checks, and the codecs' read(). Inlined where a
+// message's field table is walked, a field's options are constants, the checks it does not have
+// compile away and the reader's state stays in registers; left to itself GCC -O2 keeps them out
+// of line and tests every option at run time. SEAWIRE_NOINLINE keeps rare paths (a field reader
+// moving to its next 64-byte window) out of the code they would otherwise bloat.
 
 #if defined(__GNUC__) || defined(__clang__)
 #define SEAWIRE_ALWAYS_INLINE __attribute__((always_inline)) inline

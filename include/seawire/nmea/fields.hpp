@@ -164,7 +164,8 @@ namespace detail {
         ++int_written;
       }
       if (m != 0 || c != '0') {
-        if (++significant > 19) return errc::number_too_long;
+        if (++significant > 19) [[unlikely]]
+          return errc::number_too_long;
         m = m * 10 + static_cast<std::uint64_t>(c - '0');
       }
     } else if (c == '.' && !point) {
@@ -173,8 +174,10 @@ namespace detail {
       return errc::bad_number;
     }
   }
-  if (!any) return errc::bad_number;
-  if (places > 19) return errc::number_too_long;
+  if (!any) [[unlikely]]
+    return errc::bad_number;
+  if (places > 19) [[unlikely]]
+    return errc::number_too_long;
   out.mantissa = m;
   out.places = static_cast<std::uint8_t>(places);
   out.negative = neg;
@@ -205,7 +208,8 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
   const std::size_t n = s.size();
   bool neg = false;
   if (i < n && (s[i] == '-' || s[i] == '+')) {
-    if (s[i] == '+' && !liberal) return errc::bad_number;
+    if (s[i] == '+' && !liberal) [[unlikely]]
+      return errc::bad_number;
     neg = s[i] == '-';
     ++i;
   }
@@ -222,8 +226,9 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
     places = i - frac_begin;
   }
   // Past 19 digits the general path decides, down to which error comes first.
-  if (int_written + places > 19) return parse_decimal_long(s, int_begin, neg, out);
-  if (i != n || int_written + places == 0) {
+  if (int_written + places > 19) [[unlikely]]
+    return parse_decimal_long(s, int_begin, neg, out);
+  if (i != n || int_written + places == 0) [[unlikely]] {
     // SPI 4.2: "if negative, the first non-whitespace character will be the minus sign", so a
     // receiver takes " -5.0" (and "12 "); senders never write spaces.
     if (spaced && liberal && n != 0 && (s.front() == ' ' || s.back() == ' '))
@@ -249,7 +254,8 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
   std::size_t e = s.size();
   while (b < e && s[b] == ' ') ++b;
   while (e > b && s[e - 1] == ' ') --e;
-  if (b == e) return errc::bad_number;  // nothing but spaces
+  if (b == e) [[unlikely]]
+    return errc::bad_number;  // nothing but spaces
   return parse_decimal(s.substr(b, e - b), true, out, false);
 }
 
@@ -612,7 +618,8 @@ requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
     const errc e = detail::parse_decimal(r.take().text, !r.policy().strict_values, d,
                                          r.policy().spaced_numbers);
     if (e != errc::ok) return e;
-    if (d.places != 0) return errc::bad_number;
+    if (d.places != 0) [[unlikely]]
+      return errc::bad_number;
     if (d.negative && d.mantissa != 0) {
       if constexpr (std::is_unsigned_v<I>) {
         return errc::out_of_range;
@@ -649,7 +656,8 @@ struct codec<bool> {
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, bool& v) noexcept {
     const std::string_view t = r.take().text;
-    if (t.size() != 1 || (t[0] != '0' && t[0] != '1')) return errc::bad_flag;
+    if (t.size() != 1 || (t[0] != '0' && t[0] != '1')) [[unlikely]]
+      return errc::bad_flag;
     v = t[0] == '1';
     return errc::ok;
   }
@@ -674,21 +682,25 @@ struct codec<nmea_coordinate<Axis>> {
     std::uint64_t ddmm = 0;
     detail::read_digits(s, i, ddmm);
     const std::size_t point = i;
-    if (point < 3 || point - 2 > Axis::width) return Axis::error;
+    if (point < 3 || point - 2 > Axis::width) [[unlikely]]
+      return Axis::error;
     std::uint64_t fraction = 0;
     std::size_t places = 0;
     if (i < n) {
-      if (s[i] != '.') return Axis::error;
+      if (s[i] != '.') [[unlikely]]
+        return Axis::error;
       const std::size_t fraction_begin = ++i;
       detail::read_digits(s, i, fraction);
       places = i - fraction_begin;
       // 12 fraction digits of a minute is 2 micrometres: more is noise, and would overflow the
       // range arithmetic below.
-      if (i != n || places > 12) return Axis::error;
+      if (i != n || places > 12) [[unlikely]]
+        return Axis::error;
     }
     const auto deg = static_cast<unsigned>(ddmm / 100);
     const std::uint64_t whole_minutes = ddmm % 100;
-    if (whole_minutes >= 60) return errc::minute_out_of_range;
+    if (whole_minutes >= 60) [[unlikely]]
+      return errc::minute_out_of_range;
     decimal minutes;  // int_width stays 0: minutes are always written with two digits
     minutes.mantissa = whole_minutes * seawire::detail::pow10_table[places] + fraction;
     minutes.places = static_cast<std::uint8_t>(places);
@@ -724,7 +736,8 @@ struct codec<nmea_coordinate<Axis>> {
   template <class A>
   static constexpr errc read_hemisphere(field_reader& r, hemisphere& h) noexcept {
     const field_token t = r.take();
-    if (!t.present) return errc::too_few_fields;
+    if (!t.present) [[unlikely]]
+      return errc::too_few_fields;
     if (t.text.size() != 1 || (t.text[0] != A::positive && t.text[0] != A::negative))
       return errc::bad_hemisphere;
     h = static_cast<hemisphere>(t.text[0]);
@@ -748,14 +761,18 @@ struct codec<decimal_coordinate<Axis>> {
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;
     // Unsigned on the wire: a sign would contradict (or duplicate) the hemisphere letter.
-    if (s.empty() || s[0] == '-' || s[0] == '+') return Axis::error;
-    if (detail::parse_decimal(s, false, v.value) != errc::ok) return Axis::error;
-    if (v.value.compare(decimal(Axis::max_degrees)) > 0) return Axis::error;
+    if (s.empty() || s[0] == '-' || s[0] == '+') [[unlikely]]
+      return Axis::error;
+    if (detail::parse_decimal(s, false, v.value) != errc::ok) [[unlikely]]
+      return Axis::error;
+    if (v.value.compare(decimal(Axis::max_degrees)) > 0) [[unlikely]]
+      return Axis::error;
     return nmea::template read_hemisphere<Axis>(r, v.hemi);
   }
   static constexpr errc check(const value_type& v) noexcept {
     if (const errc e = detail::check_decimal(v.value); e != errc::ok) return e;
-    if (v.value.negative || v.value.compare(decimal(Axis::max_degrees)) > 0) return Axis::error;
+    if (v.value.negative || v.value.compare(decimal(Axis::max_degrees)) > 0) [[unlikely]]
+      return Axis::error;
     return nmea::template check_hemisphere<Axis>(v.hemi);
   }
   static constexpr unsigned error_offset(errc e) noexcept { return nmea::error_offset(e); }
@@ -773,9 +790,11 @@ struct codec<time_of_day> {
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
     const std::string_view s = r.take().text;
-    if (s.size() < 6) return errc::bad_time;
+    if (s.size() < 6) [[unlikely]]
+      return errc::bad_time;
     unsigned two[3];  // hh, mm, ss
-    if (!detail::parse_digit_pairs(s, two)) return errc::bad_time;
+    if (!detail::parse_digit_pairs(s, two)) [[unlikely]]
+      return errc::bad_time;
     unsigned frac = 0;
     std::size_t places = 0;
     if (s.size() > 6) {
@@ -785,8 +804,10 @@ struct codec<time_of_day> {
           !detail::parse_fixed_digits(s, 7, places, frac))
         return errc::bad_time;
     }
-    if (two[0] > 23) return errc::hour_out_of_range;
-    if (two[1] > 59) return errc::minute_out_of_range;
+    if (two[0] > 23) [[unlikely]]
+      return errc::hour_out_of_range;
+    if (two[1] > 59) [[unlikely]]
+      return errc::minute_out_of_range;
     if (two[2] > 59 && (two[2] > 60 || !(two[0] == 23 && two[1] == 59)))
       return errc::second_out_of_range;
     v = {static_cast<std::uint8_t>(two[0]), static_cast<std::uint8_t>(two[1]),
@@ -794,11 +815,14 @@ struct codec<time_of_day> {
     return errc::ok;
   }
   static constexpr errc check(const time_of_day& v) noexcept {
-    if (v.hour > 23) return errc::hour_out_of_range;
-    if (v.minute > 59) return errc::minute_out_of_range;
+    if (v.hour > 23) [[unlikely]]
+      return errc::hour_out_of_range;
+    if (v.minute > 59) [[unlikely]]
+      return errc::minute_out_of_range;
     if (v.second > 60 || (v.second == 60 && !(v.hour == 23 && v.minute == 59)))
       return errc::second_out_of_range;
-    if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places]) return errc::bad_time;
+    if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places]) [[unlikely]]
+      return errc::bad_time;
     return errc::ok;
   }
   static constexpr void write(writer& w, const time_of_day& v) noexcept {
@@ -819,20 +843,27 @@ struct codec<date> {
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, date& v) noexcept {
     const std::string_view s = r.take().text;
-    if (s.size() != 6) return errc::bad_date;
+    if (s.size() != 6) [[unlikely]]
+      return errc::bad_date;
     unsigned two[3];  // dd, mm, yy
-    if (!detail::parse_digit_pairs(s, two)) return errc::bad_date;
+    if (!detail::parse_digit_pairs(s, two)) [[unlikely]]
+      return errc::bad_date;
     const unsigned year = two[2] < 80 ? 2000 + two[2] : 1900 + two[2];
-    if (two[1] < 1 || two[1] > 12) return errc::month_out_of_range;
-    if (two[0] < 1 || two[0] > detail::days_in_month(two[1], year)) return errc::day_out_of_range;
+    if (two[1] < 1 || two[1] > 12) [[unlikely]]
+      return errc::month_out_of_range;
+    if (two[0] < 1 || two[0] > detail::days_in_month(two[1], year)) [[unlikely]]
+      return errc::day_out_of_range;
     v = {static_cast<std::uint16_t>(year), static_cast<std::uint8_t>(two[1]),
          static_cast<std::uint8_t>(two[0])};
     return errc::ok;
   }
   static constexpr errc check(const date& v) noexcept {
-    if (v.year < 1980 || v.year > 2079) return errc::out_of_range;
-    if (v.month < 1 || v.month > 12) return errc::month_out_of_range;
-    if (v.day < 1 || v.day > detail::days_in_month(v.month, v.year)) return errc::day_out_of_range;
+    if (v.year < 1980 || v.year > 2079) [[unlikely]]
+      return errc::out_of_range;
+    if (v.month < 1 || v.month > 12) [[unlikely]]
+      return errc::month_out_of_range;
+    if (v.day < 1 || v.day > detail::days_in_month(v.month, v.year)) [[unlikely]]
+      return errc::day_out_of_range;
     return errc::ok;
   }
   static constexpr void write(writer& w, const date& v) noexcept {
@@ -878,7 +909,8 @@ struct codec<E> {
   }();
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {
     const std::string_view s = r.take().text;
-    if (s.size() != 1 || !letters[static_cast<unsigned char>(s[0])]) return errc::bad_enum;
+    if (s.size() != 1 || !letters[static_cast<unsigned char>(s[0])]) [[unlikely]]
+      return errc::bad_enum;
     v = static_cast<E>(s[0]);
     return errc::ok;
   }

@@ -256,11 +256,14 @@ namespace detail {
 
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc check_options(const decimal& v,
                                                                  const field_options& o) noexcept {
-  if (o.max_places >= 0 && v.places > o.max_places) return errc::out_of_range;
-  if (o.has_min && v.compare(o.min) < 0) return errc::out_of_range;
+  if (o.max_places >= 0 && v.places > o.max_places) [[unlikely]]
+    return errc::out_of_range;
+  if (o.has_min && v.compare(o.min) < 0) [[unlikely]]
+    return errc::out_of_range;
   if (o.has_max) {
     const int c = v.compare(o.max);
-    if (c > 0 || (c == 0 && o.max_exclusive)) return errc::out_of_range;
+    if (c > 0 || (c == 0 && o.max_exclusive)) [[unlikely]]
+      return errc::out_of_range;
   }
   return errc::ok;
 }
@@ -355,12 +358,21 @@ template <class F, class T>
 /// in the constant table, not passed by reference: its options are then constants where
 /// read_field is inlined, and the checks a field does not have compile away. Inlined into
 /// decode_into, so that the reader lives in registers.
-template <class T, std::size_t... I>
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_fields(field_reader& r, T& msg,
-                                                               std::index_sequence<I...>) noexcept {
-  errc e = errc::ok;
-  (void)(((e = detail::read_field(field_at<I>(T::nmea.fields), r, msg)) == errc::ok) && ...);
-  return e;
+template <class T, std::size_t I, std::size_t... Rest>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_fields(
+    field_reader& r, T& msg, std::index_sequence<I, Rest...>) noexcept {
+  const errc e = detail::read_field(field_at<I>(T::nmea.fields), r, msg);
+  if (e != errc::ok) [[unlikely]]
+    return e;
+  if constexpr (sizeof...(Rest) == 0) {
+    return errc::ok;
+  } else {
+    return read_fields(r, msg, std::index_sequence<Rest...>{});
+  }
+}
+template <class T>
+[[nodiscard]] constexpr errc read_fields(field_reader&, T&, std::index_sequence<>) noexcept {
+  return errc::ok;
 }
 
 /// decode<T>() into `msg`, a default-constructed T the caller owns (the value of a result, the

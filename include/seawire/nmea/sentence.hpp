@@ -165,6 +165,30 @@ inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
 }
 #endif
 
+/// Where the address that starts at line[1] ends, eight bytes at once: the index of the first
+/// byte that is not an upper-case letter (or, past the first, a digit). 0 when that cannot be
+/// told this way (fewer than 9 bytes, or all eight are address characters) and the caller
+/// must look byte by byte. Precondition: line[1, 9) are printable ASCII (scan_body found no bad
+/// byte before data_end, and the byte at data_end, if any is read, is the '*').
+[[nodiscard]] inline std::size_t address_end_word(std::string_view line) noexcept {
+  if constexpr (std::endian::native != std::endian::little) {
+    return 0;
+  } else {
+    if (line.size() < 9) return 0;
+    std::uint64_t w = 0;
+    std::memcpy(&w, line.data() + 1, sizeof w);
+    // Per byte b in 0x20..0x7E (no carry between bytes): b + (0x80 - k) has its top bit set
+    // exactly when b >= k.
+    constexpr std::uint64_t ones = 0x0101010101010101U;
+    constexpr std::uint64_t top = 0x8080808080808080U;
+    const std::uint64_t upper = (w + 0x3F * ones) & ~(w + 0x25 * ones);  // 'A'..'Z'
+    const std::uint64_t digit = (w + 0x50 * ones) & ~(w + 0x46 * ones);  // '0'..'9'
+    const std::uint64_t other = ~(upper | (digit & ~std::uint64_t{0x80})) & top;
+    if (other == 0) return 0;
+    return 1 + static_cast<std::size_t>(std::countr_zero(other)) / 8;
+  }
+}
+
 /// One pass over `line` (no line ending; line[0] is the '$').
 [[nodiscard]] constexpr body_scan scan_body(std::string_view line) noexcept {
   body_scan b;
@@ -213,25 +237,30 @@ namespace detail {
   if (crlf) {
     n -= 2;
   } else if (n >= 1 && (line[n - 1] == '\n' || line[n - 1] == '\r')) {
-    if (policy.require_crlf) return fail(errc::bad_line_ending, n - 1);
+    if (policy.require_crlf) [[unlikely]]
+      return fail(errc::bad_line_ending, n - 1);
     n -= 1;
   } else if (policy.require_crlf && n > 0) {
     return fail(errc::bad_line_ending, n);
   }
   line = line.substr(0, n);
 
-  if (n == 0) return fail(errc::empty_input, 0);
-  if (line[0] != '$') return fail(errc::missing_start, 0);
+  if (n == 0) [[unlikely]]
+    return fail(errc::empty_input, 0);
+  if (line[0] != '$') [[unlikely]]
+    return fail(errc::missing_start, 0);
   // Columns and field counts are 16-bit, so no policy makes a longer line readable: past 65535
   // bytes the count of fields could wrap (65536 commas would read as no fields at all).
   const std::size_t longest = policy.max_length < 0xFFFF ? policy.max_length : 0xFFFF;
-  if (n > longest) return fail(errc::too_long, longest);
+  if (n > longest) [[unlikely]]
+    return fail(errc::too_long, longest);
 
   s.line = line;
 
   // One pass: XOR, printable check, comma count, checksum delimiter.
   const detail::body_scan scan = detail::scan_body(line);
-  if (scan.bad != 0) return fail(errc::bad_character, scan.bad);
+  if (scan.bad != 0) [[unlikely]]
+    return fail(errc::bad_character, scan.bad);
   const std::uint8_t x = scan.x;
   const std::size_t commas = scan.commas;
   const std::size_t star = scan.star;
@@ -239,10 +268,13 @@ namespace detail {
 
   // Address: upper-case letters and digits, starting with a letter, 1 to 15 of them, ended by
   // the first ',' or by the end of the data.
-  std::size_t address_end = 1;
-  while (address_end < data_end && address_end <= 16 &&
-         (is_upper(line[address_end]) || (address_end > 1 && is_digit(line[address_end]))))
-    ++address_end;
+  std::size_t address_end = std::is_constant_evaluated() ? 0 : detail::address_end_word(line);
+  if (address_end == 0) {
+    address_end = 1;
+    while (address_end < data_end && address_end <= 16 &&
+           (is_upper(line[address_end]) || (address_end > 1 && is_digit(line[address_end]))))
+      ++address_end;
+  }
   if (address_end > 16 || address_end == 1 ||
       (address_end < data_end && line[address_end] != ',')) {
     // Wrong: say where. The address is what stands before the first ',' (or the end).
@@ -262,12 +294,14 @@ namespace detail {
   if (star != 0) {
     const std::size_t digits = n - star - 1;
     if (digits != 0) {
-      if (digits != 2) return fail(errc::bad_checksum_format, star + 1);
+      if (digits != 2) [[unlikely]]
+        return fail(errc::bad_checksum_format, star + 1);
       const char h = line[star + 1];
       const char l = line[star + 2];
       const int hv = hex_value(h);
       const int lv = hex_value(l);
-      if (hv < 0 || lv < 0) return fail(errc::bad_checksum_format, star + 1);
+      if (hv < 0 || lv < 0) [[unlikely]]
+        return fail(errc::bad_checksum_format, star + 1);
       if (!policy.lowercase_hex && ((h >= 'a' && h <= 'f') || (l >= 'a' && l <= 'f')))
         return fail(errc::bad_checksum_format, star + 1);
       s.received_checksum = static_cast<std::uint8_t>(hv * 16 + lv);
