@@ -414,11 +414,12 @@ class field_reader {
   /// The next field; past the end, a blank token with present == false.
   [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr field_token take() noexcept {
     ++index_;
-    if (!more_) return {};
+    if (!more_) [[unlikely]]
+      return {};
     const std::size_t at = next_;
     const std::size_t end = next_end_;
     last_at_ = at;
-    if (end >= body_.size()) {
+    if (end >= body_.size()) [[unlikely]] {
       more_ = false;
     } else {
       next_ = end + 1;  // a ',' at `end`: another field follows, maybe an empty one
@@ -431,7 +432,8 @@ class field_reader {
 
   /// Look at the next field without taking it.
   [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr field_token peek() const noexcept {
-    if (!more_) return {};
+    if (!more_) [[unlikely]]
+      return {};
     return {std::string_view(body_.data() + next_, next_end_ - next_), true};
   }
 
@@ -449,7 +451,7 @@ class field_reader {
   // Where the field that starts at next_ ends: the next comma not yet used, else the end of
   // the body. Moves the 64-byte window on when its commas are used up.
   [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::size_t find_end() noexcept {
-    if (mask_ != 0) {
+    if (mask_ != 0) [[likely]] {
       const std::size_t e = window_ + static_cast<std::size_t>(std::countr_zero(mask_));
       mask_ &= mask_ - 1;
       return e;
