@@ -7,7 +7,12 @@
 // of line and tests every option at run time. SEAWIRE_NOINLINE keeps rare paths (a field reader
 // moving to its next 64-byte window) out of the code they would otherwise bloat.
 
-#if defined(__GNUC__) || defined(__clang__)
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE__)
+// Unoptimized builds (debug, sanitizers): forced inlining there only makes huge functions that
+// are slow to compile and to step through.
+#define SEAWIRE_ALWAYS_INLINE inline
+#define SEAWIRE_NOINLINE __attribute__((noinline))
+#elif defined(__GNUC__) || defined(__clang__)
 #define SEAWIRE_ALWAYS_INLINE __attribute__((always_inline)) inline
 #define SEAWIRE_NOINLINE __attribute__((noinline))
 #elif defined(_MSC_VER)
