@@ -804,17 +804,11 @@ struct codec<time_of_day> {
           !detail::parse_fixed_digits(s, 7, places, frac))
         return errc::bad_time;
     }
-    if (two[0] > 23) [[unlikely]]
-      return errc::hour_out_of_range;
-    if (two[1] > 59) [[unlikely]]
-      return errc::minute_out_of_range;
-    if (two[2] > 59 && (two[2] > 60 || !(two[0] == 23 && two[1] == 59)))
-      return errc::second_out_of_range;
     v = {static_cast<std::uint8_t>(two[0]), static_cast<std::uint8_t>(two[1]),
          static_cast<std::uint8_t>(two[2]), frac, static_cast<std::uint8_t>(places)};
-    return errc::ok;
+    return check(v);
   }
-  static constexpr errc check(const time_of_day& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc check(const time_of_day& v) noexcept {
     if (v.hour > 23) [[unlikely]]
       return errc::hour_out_of_range;
     if (v.minute > 59) [[unlikely]]
@@ -848,16 +842,11 @@ struct codec<date> {
     unsigned two[3];  // dd, mm, yy
     if (!detail::parse_digit_pairs(s, two)) [[unlikely]]
       return errc::bad_date;
-    const unsigned year = two[2] < 80 ? 2000 + two[2] : 1900 + two[2];
-    if (two[1] < 1 || two[1] > 12) [[unlikely]]
-      return errc::month_out_of_range;
-    if (two[0] < 1 || two[0] > detail::days_in_month(two[1], year)) [[unlikely]]
-      return errc::day_out_of_range;
-    v = {static_cast<std::uint16_t>(year), static_cast<std::uint8_t>(two[1]),
-         static_cast<std::uint8_t>(two[0])};
-    return errc::ok;
+    v = {static_cast<std::uint16_t>(two[2] < 80 ? 2000 + two[2] : 1900 + two[2]),
+         static_cast<std::uint8_t>(two[1]), static_cast<std::uint8_t>(two[0])};
+    return check(v);
   }
-  static constexpr errc check(const date& v) noexcept {
+  SEAWIRE_ALWAYS_INLINE static constexpr errc check(const date& v) noexcept {
     if (v.year < 1980 || v.year > 2079) [[unlikely]]
       return errc::out_of_range;
     if (v.month < 1 || v.month > 12) [[unlikely]]
