@@ -4,9 +4,11 @@
 // (so binary round trips can be static_asserted) and never depend on host order or alignment.
 // Big-endian is the ANELLO frame's order; little-endian is NMEA 2000's.
 
+#include <bit>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <type_traits>
 
@@ -42,6 +44,20 @@ template <is_wire_integer T>
                                    static_cast<unsigned_type>(bytes[offset + i]));
   }
   return static_cast<T>(v);
+}
+
+/// The eight bytes at p as one little-endian word (p[0] in the low byte), on any host: one load
+/// where the host is little-endian, by shifts in constant expressions and elsewhere. For the
+/// word-at-a-time text scans. Precondition: p[0, 8) are readable.
+[[nodiscard]] constexpr std::uint64_t load_le64(const char* p) noexcept {
+  if (!std::is_constant_evaluated() && std::endian::native == std::endian::little) {
+    std::uint64_t v = 0;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  std::uint64_t v = 0;
+  for (unsigned i = 0; i < 8; ++i) v |= std::uint64_t{static_cast<unsigned char>(p[i])} << (8U * i);
+  return v;
 }
 
 /// Writes `value` big-endian to bytes[offset, offset + sizeof(T)). Same precondition.

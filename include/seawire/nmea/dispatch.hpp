@@ -7,14 +7,13 @@
 //   auto r = from_vehicle::decode(line, policy);   // result<from_vehicle::variant>
 //   from_vehicle::visit(sentence, policy, [](const auto& msg) { ... });
 
-#include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <string_view>
 #include <type_traits>
 #include <variant>
 
+#include "seawire/detail/byte_order.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -39,11 +38,8 @@ struct address_key {
 
 /// key_of(s.address), with one 8-byte load where the line is long enough to hold it.
 [[nodiscard]] constexpr address_key key_of(const sentence_view& s) noexcept {
-  if (std::is_constant_evaluated() || std::endian::native != std::endian::little ||
-      s.line.size() < 9 || s.address.data() != s.line.data() + 1)
-    return key_of(s.address);
-  std::uint64_t head = 0;
-  std::memcpy(&head, s.address.data(), sizeof head);  // line[1, 9): inside the line
+  if (s.line.size() < 9 || s.address.data() != s.line.data() + 1) return key_of(s.address);
+  std::uint64_t head = seawire::detail::load_le64(s.address.data());  // line[1, 9)
   const std::size_t n = s.address.size();
   if (n < 8) head &= (std::uint64_t{1} << (8U * n)) - 1U;
   return {head, n};

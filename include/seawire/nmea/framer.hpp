@@ -21,13 +21,14 @@
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <string_view>
 #include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+
+#include "seawire/detail/byte_order.hpp"
 
 namespace seawire::nmea {
 
@@ -71,19 +72,6 @@ namespace detail {
 struct framer_scan {
   static constexpr std::uint64_t ones = 0x0101010101010101U;
   static constexpr std::uint64_t highs = 0x8080808080808080U;
-
-  [[nodiscard]] static constexpr std::uint64_t load8(const char* p) noexcept {
-    if (std::is_constant_evaluated()) {
-      std::uint64_t v = 0;
-      for (unsigned i = 0; i < 8; ++i) {
-        v |= std::uint64_t{static_cast<unsigned char>(p[i])} << (8U * i);
-      }
-      return v;
-    }
-    std::uint64_t v = 0;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
 
   // Nonzero iff some byte of v is below n (n <= 0x80). Borrows may flag bytes above the first
   // hit, never below it, so "any" is exact; the byte loop then finds which one.
@@ -147,7 +135,7 @@ struct framer_scan {
     if (!std::is_constant_evaluated()) i = find_special_sse2(s, i, to);
 #endif
     for (; to - i >= 8; i += 8) {
-      const std::uint64_t v = load8(s + i);
+      const std::uint64_t v = seawire::detail::load_le64(s + i);
       if ((any_below(v, 0x20) | (v & highs) | any_equal(v, 0x7F) | any_equal(v, '$')) != 0) break;
     }
     while (i < to && is_plain(s[i])) ++i;
@@ -162,7 +150,7 @@ struct framer_scan {
     if (!std::is_constant_evaluated()) i = find_break_sse2(s, i, to);
 #endif
     for (; to - i >= 8; i += 8) {
-      const std::uint64_t v = load8(s + i);
+      const std::uint64_t v = seawire::detail::load_le64(s + i);
       if ((any_equal(v, '$') | any_equal(v, '\r') | any_equal(v, '\n')) != 0) break;
     }
     while (i < to && !is_break(s[i])) ++i;

@@ -9,7 +9,6 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <string_view>
 #include <type_traits>
 #if defined(__SSE2__)
@@ -17,6 +16,7 @@
 #endif
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 
@@ -170,23 +170,18 @@ inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
 /// told this way (fewer than 9 bytes, or all eight are address characters) and the caller
 /// must look byte by byte. Precondition: line[1, 9) are printable ASCII (scan_body found no bad
 /// byte before data_end, and the byte at data_end, if any is read, is the '*').
-[[nodiscard]] inline std::size_t address_end_word(std::string_view line) noexcept {
-  if constexpr (std::endian::native != std::endian::little) {
-    return 0;
-  } else {
-    if (line.size() < 9) return 0;
-    std::uint64_t w = 0;
-    std::memcpy(&w, line.data() + 1, sizeof w);
-    // Per byte b in 0x20..0x7E (no carry between bytes): b + (0x80 - k) has its top bit set
-    // exactly when b >= k.
-    constexpr std::uint64_t ones = 0x0101010101010101U;
-    constexpr std::uint64_t top = 0x8080808080808080U;
-    const std::uint64_t upper = (w + 0x3F * ones) & ~(w + 0x25 * ones);  // 'A'..'Z'
-    const std::uint64_t digit = (w + 0x50 * ones) & ~(w + 0x46 * ones);  // '0'..'9'
-    const std::uint64_t other = ~(upper | (digit & ~std::uint64_t{0x80})) & top;
-    if (other == 0) return 0;
-    return 1 + static_cast<std::size_t>(std::countr_zero(other)) / 8;
-  }
+[[nodiscard]] constexpr std::size_t address_end_word(std::string_view line) noexcept {
+  if (line.size() < 9) return 0;
+  const std::uint64_t w = seawire::detail::load_le64(line.data() + 1);
+  // Per byte b in 0x20..0x7E (no carry between bytes): b + (0x80 - k) has its top bit set
+  // exactly when b >= k.
+  constexpr std::uint64_t ones = 0x0101010101010101U;
+  constexpr std::uint64_t top = 0x8080808080808080U;
+  const std::uint64_t upper = (w + 0x3F * ones) & ~(w + 0x25 * ones);  // 'A'..'Z'
+  const std::uint64_t digit = (w + 0x50 * ones) & ~(w + 0x46 * ones);  // '0'..'9'
+  const std::uint64_t other = ~(upper | (digit & ~std::uint64_t{0x80})) & top;
+  if (other == 0) return 0;
+  return 1 + static_cast<std::size_t>(std::countr_zero(other)) / 8;
 }
 
 /// One pass over `line` (no line ending; line[0] is the '$').
@@ -198,11 +193,10 @@ inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
     // Nearly every sentence ends "*hh": scan up to that '*'; if there is none there, the whole
     // line, which then must hold no '*' at all.
     const std::size_t end = line[n - 3] == '*' ? n - 3 : n;
-    if (scan_clean_sse2(line.data(), 1, end, b)) {
+    if (scan_clean_sse2(line.data(), 1, end, b)) {  // b untouched when it fails
       b.star = end == n ? 0 : end;
       return b;
     }
-    b = body_scan{};
   }
 #endif
   scan_body_bytes(line, b);
@@ -268,7 +262,7 @@ namespace detail {
 
   // Address: upper-case letters and digits, starting with a letter, 1 to 15 of them, ended by
   // the first ',' or by the end of the data.
-  std::size_t address_end = std::is_constant_evaluated() ? 0 : detail::address_end_word(line);
+  std::size_t address_end = detail::address_end_word(line);
   if (address_end == 0) {
     address_end = 1;
     while (address_end < data_end && address_end <= 16 &&
@@ -374,13 +368,7 @@ namespace detail {
       return m;
     }
 #else
-    if constexpr (std::endian::native == std::endian::little) {
-      for (; n - i >= 8; i += 8) {
-        std::uint64_t w = 0;
-        std::memcpy(&w, p + i, sizeof w);
-        m |= comma_bits8(w) << i;
-      }
-    }
+    for (; n - i >= 8; i += 8) m |= comma_bits8(seawire::detail::load_le64(p + i)) << i;
 #endif
   }
   for (; i < n; ++i) {
@@ -451,16 +439,21 @@ class field_reader {
   // Where the field that starts at next_ ends: the next comma not yet used, else the end of
   // the body. Moves the 64-byte window on when its commas are used up.
   [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::size_t find_end() noexcept {
-    if (mask_ != 0) [[likely]] {
-      const std::size_t e = window_ + static_cast<std::size_t>(std::countr_zero(mask_));
-      mask_ &= mask_ - 1;
-      return e;
-    }
+    if (mask_ != 0) [[likely]]
+      return take_comma(window_, mask_);
     if (body_.size() - window_ <= 64) return body_.size();
     const window w = next_window(body_, window_);
     window_ = w.start;
     mask_ = w.mask;
     return w.end;
+  }
+
+  // Where the first comma of a window's mask is, taken out of the mask.
+  [[nodiscard]] SEAWIRE_ALWAYS_INLINE static constexpr std::size_t take_comma(
+      std::size_t start, std::uint64_t& mask) noexcept {
+    const std::size_t e = start + static_cast<std::size_t>(std::countr_zero(mask));
+    mask &= mask - 1;
+    return e;
   }
 
   struct window {
@@ -476,8 +469,7 @@ class field_reader {
       start += 64;
       std::uint64_t mask = detail::comma_mask(body.data() + start, body.size() - start);
       if (mask != 0) {
-        const std::size_t e = start + static_cast<std::size_t>(std::countr_zero(mask));
-        mask &= mask - 1;
+        const std::size_t e = take_comma(start, mask);
         return {start, mask, e};
       }
     }
