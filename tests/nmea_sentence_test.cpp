@@ -234,6 +234,45 @@ TEST_CASE("field_reader agrees with a plain split, over every body length and co
   }
 }
 
+TEST_CASE("field_reader: fields that span whole 64-byte windows without a comma") {
+  // The reader keeps one 64-byte window of field ends at a time; a window with no end in it
+  // must be skipped, and the end of the body must be found at every offset into a window.
+  const std::size_t lengths[] = {0, 1, 62, 63, 64, 65, 127, 128, 129, 191, 192, 193, 300};
+  for (const std::size_t a : lengths) {
+    for (const std::size_t b : lengths) {
+      for (const std::size_t c : lengths) {
+        const std::string fields[] = {std::string(a, 'A'), std::string(b, 'B'),
+                                      std::string(c, 'C')};
+        const std::string line = "$XXABC," + fields[0] + ',' + fields[1] + ',' + fields[2];
+        parse_policy p;
+        p.checksum = checksum_policy::ignore;
+        p.max_length = 2048;
+        const auto s = parse(line, p);
+        REQUIRE(s);
+        REQUIRE(s.value.field_count == 3);
+        field_reader r(s.value, p);
+        std::size_t column = 7;
+        for (const std::string& f : fields) {
+          INFO(a << ' ' << b << ' ' << c << " field of " << f.size());
+          CHECK_FALSE(r.at_end());
+          CHECK(r.peek().present);
+          CHECK(r.peek().text == f);
+          const field_token t = r.take();
+          REQUIRE(t.present);
+          CHECK(t.text == f);
+          CHECK(r.column() == column);
+          column += f.size() + 1;
+        }
+        CHECK(r.at_end());
+        CHECK_FALSE(r.peek().present);
+        CHECK_FALSE(r.take().present);
+        CHECK_FALSE(r.take().present);
+        CHECK(r.index() == 5);
+      }
+    }
+  }
+}
+
 TEST_CASE("comma_bits8: one bit per ',' byte, none for any other byte value") {
   for (unsigned v = 0; v < 256; ++v) {
     for (unsigned at = 0; at < 8; ++at) {

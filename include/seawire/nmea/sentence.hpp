@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -385,33 +386,41 @@ namespace detail {
 /// them), so that each field costs a bit scan instead of a search through its text.
 class field_reader {
  public:
-  constexpr field_reader(const sentence_view& s, const parse_policy& p) noexcept
+  SEAWIRE_ALWAYS_INLINE constexpr field_reader(const sentence_view& s,
+                                               const parse_policy& p) noexcept
       : body_(s.body),
-        more_(s.field_count > 0),
+        // With no fields there is nothing to take: start past the end.
+        pos_(s.field_count > 0 ? 0 : s.body.size() + 1),
         // With no fields there is no body: point past the address, not past the line.
         column_base_(
             static_cast<std::uint16_t>(s.field_count > 0 ? s.body_column() : s.line.size())),
         total_(s.field_count),
         policy_(p) {
-    if (more_) {
-      mask_ = detail::comma_mask(body_.data(), body_.size());
-      next_end_ = find_end();
+    if (s.field_count > 0) {
+      mask_ = ends_in(body_, 0);
+      if (mask_ != 0) {
+        end_ = lowest(mask_);
+        mask_ &= mask_ - 1;
+      } else {
+        next_window();
+      }
     }
   }
 
   /// The next field; past the end, a blank token with present == false.
   [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr field_token take() noexcept {
     ++index_;
-    if (!more_) [[unlikely]]
+    const std::size_t at = pos_;
+    if (at > body_.size()) [[unlikely]]
       return {};
-    const std::size_t at = next_;
-    const std::size_t end = next_end_;
+    const std::size_t end = end_;
+    pos_ = end + 1;  // past the end of the body after the last field
     last_at_ = at;
-    if (end >= body_.size()) [[unlikely]] {
-      more_ = false;
-    } else {
-      next_ = end + 1;  // a ',' at `end`: another field follows, maybe an empty one
-      next_end_ = find_end();
+    if (mask_ != 0) [[likely]] {
+      end_ = window_ + lowest(mask_);
+      mask_ &= mask_ - 1;
+    } else if (pos_ <= body_.size()) [[unlikely]] {
+      next_window();  // else that was the last field
     }
     // Built here, not copied: GCC would copy a finished token through the stack in one 16-byte
     // load that waits on its two 8-byte stores.
@@ -420,12 +429,12 @@ class field_reader {
 
   /// Look at the next field without taking it.
   [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr field_token peek() const noexcept {
-    if (!more_) [[unlikely]]
+    if (pos_ > body_.size()) [[unlikely]]
       return {};
-    return {std::string_view(body_.data() + next_, next_end_ - next_), true};
+    return {std::string_view(body_.data() + pos_, end_ - pos_), true};
   }
 
-  [[nodiscard]] constexpr bool at_end() const noexcept { return !more_; }
+  [[nodiscard]] constexpr bool at_end() const noexcept { return pos_ > body_.size(); }
   /// Spec number (1-based) of the field last taken.
   [[nodiscard]] constexpr std::uint16_t index() const noexcept { return index_; }
   /// Column of the field last taken (of the first field before any is taken).
@@ -436,53 +445,52 @@ class field_reader {
   [[nodiscard]] constexpr const parse_policy& policy() const noexcept { return policy_; }
 
  private:
-  // Where the field that starts at next_ ends: the next comma not yet used, else the end of
-  // the body. Moves the 64-byte window on when its commas are used up.
-  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::size_t find_end() noexcept {
-    if (mask_ != 0) [[likely]]
-      return take_comma(window_, mask_);
-    if (body_.size() - window_ <= 64) return body_.size();
-    const window w = next_window(body_, window_);
+  // A field ends at a ',' or at the end of the body. The reader knows where the next field
+  // ends (end_) and keeps the ends after it in the 64-byte window [window_, window_ + 64) of
+  // the body as a bit mask: its commas, and the end of the body when that falls inside the
+  // window. The end of the body is always some window's last bit, so taking a field needs no
+  // length test: a bit scan finds the next end while the window has one.
+  [[nodiscard]] static constexpr std::uint64_t ends_in(std::string_view body,
+                                                       std::size_t start) noexcept {
+    const std::size_t left = body.size() - start;
+    return detail::comma_mask(body.data() + start, left) |
+           (left < 64 ? std::uint64_t{1} << left : 0);
+  }
+  [[nodiscard]] SEAWIRE_ALWAYS_INLINE static constexpr std::size_t lowest(
+      std::uint64_t mask) noexcept {
+    return static_cast<std::size_t>(std::countr_zero(mask));
+  }
+  // The window's ends are used up and a field is left: its end is in the next window that has
+  // one (the one holding the end of the body has). Out of line (most sentences fit one window)
+  // and static, so that the reader's state can stay in registers.
+  SEAWIRE_ALWAYS_INLINE constexpr void next_window() noexcept {
+    const window w = window_after(body_, window_);
     window_ = w.start;
     mask_ = w.mask;
-    return w.end;
+    end_ = w.end;
   }
-
-  // Where the first comma of a window's mask is, taken out of the mask.
-  [[nodiscard]] SEAWIRE_ALWAYS_INLINE static constexpr std::size_t take_comma(
-      std::size_t start, std::uint64_t& mask) noexcept {
-    const std::size_t e = start + static_cast<std::size_t>(std::countr_zero(mask));
-    mask &= mask - 1;
-    return e;
-  }
-
   struct window {
-    std::size_t start;   // the window the next comma is in
-    std::uint64_t mask;  // its commas after that one
-    std::size_t end;     // where that comma is (the end of the body if there is none)
+    std::size_t start;   // the window end_ is in
+    std::uint64_t mask;  // its ends after end_
+    std::size_t end;     // the first end in it
   };
-  // The rest of find_end, out of line (most sentences fit one window) and away from `this`,
-  // so that the reader's state can stay in registers where it is used.
-  [[nodiscard]] SEAWIRE_NOINLINE static constexpr window next_window(std::string_view body,
-                                                                     std::size_t start) noexcept {
-    while (body.size() - start > 64) {
+  [[nodiscard]] SEAWIRE_NOINLINE static constexpr window window_after(std::string_view body,
+                                                                      std::size_t start) noexcept {
+    std::uint64_t mask = 0;
+    while (mask == 0) {
       start += 64;
-      std::uint64_t mask = detail::comma_mask(body.data() + start, body.size() - start);
-      if (mask != 0) {
-        const std::size_t e = take_comma(start, mask);
-        return {start, mask, e};
-      }
+      mask = ends_in(body, start);
     }
-    return {start, 0, body.size()};
+    const std::size_t end = start + lowest(mask);
+    return {start, mask & (mask - 1), end};
   }
 
   std::string_view body_;
-  std::size_t next_ = 0;      // where the next field starts in body_
-  std::size_t next_end_ = 0;  // where it ends (its ',' or the end of body_)
-  std::size_t window_ = 0;    // mask_ covers body_[window_, window_ + 64)
-  std::uint64_t mask_ = 0;    // commas of the window not yet used as a field's end
-  std::size_t last_at_ = 0;   // where the field last taken starts in body_
-  bool more_;
+  std::size_t pos_;          // where the next field starts; past body_.size() when none is left
+  std::size_t end_ = 0;      // where the field at pos_ ends
+  std::size_t window_ = 0;   // mask_ covers body_[window_, window_ + 64)
+  std::uint64_t mask_ = 0;   // ends in that window after end_
+  std::size_t last_at_ = 0;  // where the field last taken starts in body_
   std::uint16_t index_ = 0;
   std::uint16_t column_base_;  // column of body_[0]
   std::uint16_t total_;
