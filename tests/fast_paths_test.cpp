@@ -303,6 +303,32 @@ TEST_CASE("the fast decimal parser agrees with the general one") {
   }
 }
 
+TEST_CASE("a number read under a policy is read as under the policy's two flags") {
+  // The codecs read numbers with the field reader's policy, which the parser consults only for
+  // a sign or a space; the answer must be the one the explicit flags give.
+  prng g{12};
+  static constexpr std::string_view chars = "0012345679.. -+x";
+  for (int k = 0; k < 200000; ++k) {
+    std::string s;
+    const std::size_t n = g.below(12);
+    for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
+    INFO(s);
+    for (const bool strict : {false, true}) {
+      for (const bool spaced : {false, true}) {
+        parse_policy p;
+        p.strict_values = strict;
+        p.spaced_numbers = spaced;
+        decimal by_policy{123, 4};
+        decimal by_flags{123, 4};
+        const errc ep = nmea::detail::parse_decimal(s, p, by_policy);
+        const errc ef = nmea::detail::parse_decimal(s, !strict, by_flags, spaced);
+        REQUIRE(ep == ef);
+        REQUIRE(by_policy == by_flags);
+      }
+    }
+  }
+}
+
 TEST_CASE("decimal::compare without division agrees with the value") {
   prng g{5};
   for (int k = 0; k < 200000; ++k) {

@@ -198,17 +198,31 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
 
 [[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
 
-/// Parse [sign] digits [. digits]. A '+' only when `liberal`, spaces before and after the number
-/// only when `spaced` too (receivers accept them, senders never write them). No exponent, no
-/// spaces inside.
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s, bool liberal,
-                                                                 decimal& out,
-                                                                 bool spaced = false) noexcept {
+/// Which leniencies a number read takes, given as two flags.
+struct number_flags {
+  bool liberal_;
+  bool spaced_;
+  [[nodiscard]] constexpr bool liberal() const noexcept { return liberal_; }
+  [[nodiscard]] constexpr bool spaced() const noexcept { return spaced_; }
+};
+/// The same, read from a parse_policy only where a number needs them (a sign, a bad byte), so
+/// that the common number does not work them out.
+struct policy_number_rules {
+  const parse_policy& p;
+  [[nodiscard]] constexpr bool liberal() const noexcept { return !p.strict_values; }
+  [[nodiscard]] constexpr bool spaced() const noexcept { return p.spaced_numbers; }
+};
+
+/// parse_decimal with its rules as `Rules` (number_flags or policy_number_rules).
+template <class Rules>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal_by(std::string_view s,
+                                                                    const Rules& rules,
+                                                                    decimal& out) noexcept {
   std::size_t i = 0;
   const std::size_t n = s.size();
   bool neg = false;
   if (i < n && (s[i] == '-' || s[i] == '+')) {
-    if (s[i] == '+' && !liberal) [[unlikely]]
+    if (s[i] == '+' && !rules.liberal()) [[unlikely]]
       return errc::bad_number;
     neg = s[i] == '-';
     ++i;
@@ -231,7 +245,7 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
   if (i != n || int_written + places == 0) [[unlikely]] {
     // SPI 4.2: "if negative, the first non-whitespace character will be the minus sign", so a
     // receiver takes " -5.0" (and "12 "); senders never write spaces.
-    if (spaced && liberal && n != 0 && (s.front() == ' ' || s.back() == ' '))
+    if (n != 0 && (s.front() == ' ' || s.back() == ' ') && rules.spaced() && rules.liberal())
       return parse_decimal_spaced(s, out);
     return errc::bad_number;
   }
@@ -246,6 +260,22 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
     out.int_width = static_cast<std::uint8_t>(int_written > natural ? int_written : 0);
   }
   return errc::ok;
+}
+
+/// Parse [sign] digits [. digits]. A '+' only when `liberal`, spaces before and after the number
+/// only when `spaced` too (receivers accept them, senders never write them). No exponent, no
+/// spaces inside.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s, bool liberal,
+                                                                 decimal& out,
+                                                                 bool spaced = false) noexcept {
+  return parse_decimal_by(s, number_flags{liberal, spaced}, out);
+}
+/// The same with the leniencies of a receive policy: liberal unless strict_values, spaced when
+/// spaced_numbers.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s,
+                                                                 const parse_policy& p,
+                                                                 decimal& out) noexcept {
+  return parse_decimal_by(s, policy_number_rules{p}, out);
 }
 
 /// parse_decimal of a number with spaces around it (parse_policy::spaced_numbers).
@@ -600,8 +630,7 @@ struct codec<decimal> {
   static constexpr std::size_t max_chars = 41;
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, decimal& v) noexcept {
-    return detail::parse_decimal(r.take().text, !r.policy().strict_values, v,
-                                 r.policy().spaced_numbers);
+    return detail::parse_decimal(r.take().text, r.policy(), v);
   }
   static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
   static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
@@ -615,8 +644,7 @@ requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, I& v) noexcept {
     decimal d;
-    const errc e = detail::parse_decimal(r.take().text, !r.policy().strict_values, d,
-                                         r.policy().spaced_numbers);
+    const errc e = detail::parse_decimal(r.take().text, r.policy(), d);
     if (e != errc::ok) return e;
     if (d.places != 0) [[unlikely]]
       return errc::bad_number;
