@@ -40,6 +40,14 @@ struct prng {
   std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
 };
 
+// Up to `max` characters drawn from `chars`.
+std::string random_text(prng& g, std::string_view chars, std::size_t max) {
+  std::string s;
+  const std::size_t n = g.below(max + 1);
+  for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
+  return s;
+}
+
 // A line that looks like a sentence most of the time: '$', an address, fields of digits and
 // letters, sometimes a '*' and hex, sometimes a byte that does not belong.
 std::string random_line(prng& g) {
@@ -149,9 +157,7 @@ TEST_CASE("parse() names the byte that spoils an address, as a first-comma searc
   parse_policy p;
   p.checksum = checksum_policy::ignore;
   for (int k = 0; k < 100000; ++k) {
-    std::string line = "$";
-    const std::size_t n = g.below(24);
-    for (std::size_t i = 0; i < n; ++i) line += chars[g.below(chars.size())];
+    std::string line = "$" + random_text(g, chars, 23);
     if (g.below(2) == 0) line += ",1,2,3.5,ABC,,,N*00";  // long enough for the vector scan
     INFO(line);
     const auto r = parse(line, p);
@@ -280,9 +286,7 @@ TEST_CASE("the fast decimal parser agrees with the general one") {
   prng g{11};
   static constexpr std::string_view chars = "0000123456789..-+x";
   for (int k = 0; k < 300000; ++k) {
-    std::string s;
-    const std::size_t n = g.below(26);
-    for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
+    const std::string s = random_text(g, chars, 25);
     INFO(s);
     for (const bool plus : {false, true}) {
       decimal fast{123, 4};
@@ -309,9 +313,7 @@ TEST_CASE("a number read under a policy is read as under the policy's two flags"
   prng g{12};
   static constexpr std::string_view chars = "0012345679.. -+x";
   for (int k = 0; k < 200000; ++k) {
-    std::string s;
-    const std::size_t n = g.below(12);
-    for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
+    const std::string s = random_text(g, chars, 11);
     INFO(s);
     for (const bool strict : {false, true}) {
       for (const bool spaced : {false, true}) {
@@ -425,19 +427,12 @@ errc through_codec(std::string_view text, V& v) {
   return codec<V>::read(r, v);
 }
 
-std::string random_number_text(prng& g, std::string_view chars, std::size_t max) {
-  std::string s;
-  const std::size_t n = g.below(max + 1);
-  for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
-  return s;
-}
-
 }  // namespace
 
 TEST_CASE("the one-pass position reader agrees with splitting at the point") {
   prng g{13};
   for (int k = 0; k < 300000; ++k) {
-    const std::string s = random_number_text(g, "0123456789012345678959.x", 22);
+    const std::string s = random_text(g, "0123456789012345678959.x", 22);
     if (s.empty() || s.find(',') != std::string::npos) continue;
     INFO(s);
     latitude fast_lat;
@@ -462,7 +457,7 @@ TEST_CASE("the one-pass position reader agrees with splitting at the point") {
 TEST_CASE("the time reader agrees with three fixed-digit reads") {
   prng g{17};
   for (int k = 0; k < 300000; ++k) {
-    const std::string s = random_number_text(g, "01234567890123456789.:", 17);
+    const std::string s = random_text(g, "01234567890123456789.:", 17);
     if (s.empty()) continue;
     INFO(s);
     time_of_day fast;
