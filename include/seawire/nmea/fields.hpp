@@ -198,31 +198,18 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
 
 [[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
 
-/// Which leniencies a number read takes, given as two flags.
-struct number_flags {
-  bool liberal_;
-  bool spaced_;
-  [[nodiscard]] constexpr bool liberal() const noexcept { return liberal_; }
-  [[nodiscard]] constexpr bool spaced() const noexcept { return spaced_; }
-};
-/// The same, read from a parse_policy only where a number needs them (a sign, a bad byte), so
-/// that the common number does not work them out.
-struct policy_number_rules {
-  const parse_policy& p;
-  [[nodiscard]] constexpr bool liberal() const noexcept { return !p.strict_values; }
-  [[nodiscard]] constexpr bool spaced() const noexcept { return p.spaced_numbers; }
-};
-
-/// parse_decimal with its rules as `Rules` (number_flags or policy_number_rules).
-template <class Rules>
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal_by(std::string_view s,
-                                                                    const Rules& rules,
-                                                                    decimal& out) noexcept {
+/// Parse [sign] digits [. digits] with the leniencies of a receive policy: a '+' unless
+/// strict_values, spaces before and after the number when spaced_numbers too (receivers accept
+/// them, senders never write them). No exponent, no spaces inside. The policy is consulted
+/// only for a sign or a bad byte, so the common number does not work its rules out.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s,
+                                                                 const parse_policy& p,
+                                                                 decimal& out) noexcept {
   std::size_t i = 0;
   const std::size_t n = s.size();
   bool neg = false;
   if (i < n && (s[i] == '-' || s[i] == '+')) {
-    if (s[i] == '+' && !rules.liberal()) [[unlikely]]
+    if (s[i] == '+' && p.strict_values) [[unlikely]]
       return errc::bad_number;
     neg = s[i] == '-';
     ++i;
@@ -245,7 +232,7 @@ template <class Rules>
   if (i != n || int_written + places == 0) [[unlikely]] {
     // SPI 4.2: "if negative, the first non-whitespace character will be the minus sign", so a
     // receiver takes " -5.0" (and "12 "); senders never write spaces.
-    if (n != 0 && (s.front() == ' ' || s.back() == ' ') && rules.spaced() && rules.liberal())
+    if (n != 0 && (s.front() == ' ' || s.back() == ' ') && p.spaced_numbers && !p.strict_values)
       return parse_decimal_spaced(s, out);
     return errc::bad_number;
   }
@@ -262,20 +249,15 @@ template <class Rules>
   return errc::ok;
 }
 
-/// Parse [sign] digits [. digits]. A '+' only when `liberal`, spaces before and after the number
-/// only when `spaced` too (receivers accept them, senders never write them). No exponent, no
-/// spaces inside.
+/// The same with the two leniencies as flags: a '+' only when `liberal`, spaces around the
+/// number only when `spaced` too.
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s, bool liberal,
                                                                  decimal& out,
                                                                  bool spaced = false) noexcept {
-  return parse_decimal_by(s, number_flags{liberal, spaced}, out);
-}
-/// The same with the leniencies of a receive policy: liberal unless strict_values, spaced when
-/// spaced_numbers.
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s,
-                                                                 const parse_policy& p,
-                                                                 decimal& out) noexcept {
-  return parse_decimal_by(s, policy_number_rules{p}, out);
+  parse_policy p;
+  p.strict_values = !liberal;
+  p.spaced_numbers = spaced;
+  return parse_decimal(s, p, out);
 }
 
 /// parse_decimal of a number with spaces around it (parse_policy::spaced_numbers).
