@@ -398,12 +398,8 @@ class field_reader {
         policy_(p) {
     if (s.field_count > 0) {
       mask_ = ends_in(body_, 0);
-      if (mask_ != 0) {
-        end_ = lowest(mask_);
-        mask_ &= mask_ - 1;
-      } else {
-        next_window();
-      }
+      if (mask_ == 0) next_window();
+      take_end();
     }
   }
 
@@ -417,10 +413,10 @@ class field_reader {
     pos_ = end + 1;  // past the end of the body after the last field
     last_at_ = at;
     if (mask_ != 0) [[likely]] {
-      end_ = window_ + lowest(mask_);
-      mask_ &= mask_ - 1;
-    } else if (pos_ <= body_.size()) [[unlikely]] {
-      next_window();  // else that was the last field
+      take_end();
+    } else if (pos_ <= body_.size()) [[unlikely]] {  // else that was the last field
+      next_window();
+      take_end();
     }
     // Built here, not copied: GCC would copy a finished token through the stack in one 16-byte
     // load that waits on its two 8-byte stores.
@@ -460,29 +456,27 @@ class field_reader {
       std::uint64_t mask) noexcept {
     return static_cast<std::size_t>(std::countr_zero(mask));
   }
-  // The window's ends are used up and a field is left: its end is in the next window that has
-  // one (the one holding the end of the body has). Out of line (most sentences fit one window)
-  // and static, so that the reader's state can stay in registers.
-  SEAWIRE_ALWAYS_INLINE constexpr void next_window() noexcept {
-    const window w = window_after(body_, window_);
-    window_ = w.start;
-    mask_ = w.mask;
-    end_ = w.end;
+  // The lowest end of the window's mask is where the field at pos_ ends.
+  SEAWIRE_ALWAYS_INLINE constexpr void take_end() noexcept {
+    end_ = window_ + lowest(mask_);
+    mask_ &= mask_ - 1;
   }
-  struct window {
-    std::size_t start;   // the window end_ is in
-    std::uint64_t mask;  // its ends after end_
-    std::size_t end;     // the first end in it
-  };
-  [[nodiscard]] SEAWIRE_NOINLINE static constexpr window window_after(std::string_view body,
-                                                                      std::size_t start) noexcept {
+  // The window's ends are used up and a field is left: on to the next window that has one (the
+  // one holding the end of the body has). Out of line (most sentences fit one window) and
+  // static, so that the reader's state can stay in registers.
+  SEAWIRE_ALWAYS_INLINE constexpr void next_window() noexcept {
+    const auto [start, mask] = window_after(body_, window_);
+    window_ = start;
+    mask_ = mask;
+  }
+  [[nodiscard]] SEAWIRE_NOINLINE static constexpr std::pair<std::size_t, std::uint64_t>
+  window_after(std::string_view body, std::size_t start) noexcept {
     std::uint64_t mask = 0;
     while (mask == 0) {
       start += 64;
       mask = ends_in(body, start);
     }
-    const std::size_t end = start + lowest(mask);
-    return {start, mask & (mask - 1), end};
+    return {start, mask};
   }
 
   std::string_view body_;
