@@ -146,23 +146,23 @@ struct message_set {
   template <class M, class F>
   static constexpr void visit_one(result<bool>& out, const sentence_view& s, const parse_policy& p,
                                   F& on_message) {
+    const auto decode_and_call = [&](M& m) {
+      detail::decode_into(s, p, m, out);
+      out.value = true;
+      if (out) on_message(static_cast<const M&>(m));
+    };
     if constexpr (std::is_trivially_destructible_v<M>) {
       if (!std::is_constant_evaluated()) {
         // Default-initialized in storage of its own: GCC folds a local `M m;` into a clear of
         // the whole message (a `rep stos` of ~200 bytes) before the members' initializers;
         // placement new writes only those, and decode_into writes every field.
         alignas(M) unsigned char storage[sizeof(M)];
-        M* const m = ::new (static_cast<void*>(storage)) M;
-        detail::decode_into(s, p, *m, out);
-        out.value = true;
-        if (out) on_message(static_cast<const M&>(*m));
+        decode_and_call(*::new (static_cast<void*>(storage)) M);
         return;
       }
     }
     M m;
-    detail::decode_into(s, p, m, out);
-    out.value = true;
-    if (out) on_message(static_cast<const M&>(m));
+    decode_and_call(m);
   }
 };
 
