@@ -624,7 +624,7 @@ TEST_CASE("fuzz: an absent text field a later field keeps from being left out is
   sandshark::bfack a;
   a.command = "RMB";
   a.description.reset();
-  a.trailing = text<32>{};
+  a.trailing = text<128>{};
   const auto line = encode(a);
   CHECK(line.ec == errc::missing_field);
   CHECK(line.field == 7);

@@ -155,8 +155,8 @@ TEST_CASE("an absent text field can only be left out at the end") {
   const auto seven = encode(a);
   REQUIRE(seven);
   CHECK(seven.view() == "$BFACK,000000,RMB,,,2,0*12\r\n");
-  a.description = text<96>{};
-  a.trailing = text<32>{};
+  a.description = text<256>{};
+  a.trailing = text<128>{};
   const auto e = encode(a);
   REQUIRE(e);
   const auto d = decode<sandshark::bfack>(e.view(), parse_policy::strict());

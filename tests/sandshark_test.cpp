@@ -244,7 +244,7 @@ TEST_CASE("BFACK with and without the trailing fields, each written back as it c
   REQUIRE(eight.ok());
   CHECK(eight.value.behavior_id == 7);
   CHECK(eight.value.status == ack_status::pending);
-  CHECK(eight.value.description == text<96>("working"));
+  CHECK(eight.value.description == text<256>("working"));
   REQUIRE(eight.value.trailing.has_value());
   CHECK(eight.value.trailing->empty());
   CHECK(encoded(eight.value) == sealed("BFACK,081025.990,RMB,081025.950,7,3,0,working,"));
@@ -466,7 +466,7 @@ TEST_CASE("malformed BFNVG / BFNVR / BFMIS") {
       {"BFNVR,99", errc::bad_time, 1},
   };
   for (const auto& c : nvr) check_bad<bfnvr>(c, from_vehicle_policy);
-  const std::string long_dive = "BFMIS,081025.987," + std::string(129, 'd') + ",Ready,";
+  const std::string long_dive = "BFMIS,081025.987," + std::string(257, 'd') + ",Ready,";
   const bad_case mis[] = {
       {"BFMIS,081025.987,dive,Running", errc::too_few_fields, 4},
       {"BFMIS,081025.987", errc::too_few_fields, 2},
@@ -491,12 +491,42 @@ TEST_CASE("malformed BFACK") {
   for (const auto& c : ack) check_bad<bfack>(c, from_vehicle_policy);
 }
 
+TEST_CASE("variable-length text: long descriptions, details and log paths, a filled field 8") {
+  // SPI table 1: variable text has no set length. What a vehicle writes in an ack or a mission
+  // status must not make the line undecodable (the ack would be lost and the command resent).
+  const std::string description(200, 'x');
+  const std::string ack_line =
+      sealed("BFACK,081025.990,VER,000001.000,,2,0," + description + ",future field 8 text here");
+  const result<bfack> a = decode<bfack>(ack_line, from_vehicle_policy);
+  REQUIRE(a.ok());
+  CHECK(a.value.description->view() == description);
+  CHECK(a.value.trailing->view() == "future field 8 text here");
+  CHECK(encode(a.value).view() == ack_line);
+
+  const std::string dir = "Running /mnt/data/logs/" + std::string(180, 'm');
+  const std::string details = "Mission aborted: " + std::string(400, 'z');
+  const std::string mis_line = sealed("BFMIS,081025.987,survey.xml," + dir + "," + details);
+  const result<bfmis> m = decode<bfmis>(mis_line, from_vehicle_policy);
+  REQUIRE(m.ok());
+  CHECK(m.value.running());
+  CHECK(m.value.log_directory() == dir.substr(8));
+  CHECK(m.value.details.view() == details);
+  CHECK(encode(m.value).view() == mis_line);
+}
+
 TEST_CASE("malformed BPLOG / BPSTS / BPVER") {
   const bad_case log[] = {
-      {"BPLOG,NV,ON", errc::bad_length, 1},   {"BPLOG,NVGX,ON", errc::text_too_long, 1},
-      {"BPLOG,,ON", errc::missing_field, 1},  {"BPLOG,NVG,on", errc::bad_enum, 2},
-      {"BPLOG,NVG,YES", errc::bad_enum, 2},   {"BPLOG,NVG,", errc::missing_field, 2},
+      {"BPLOG,NV,ON", errc::bad_length, 1},
+      {"BPLOG,NVGX,ON", errc::text_too_long, 1},
+      {"BPLOG,,ON", errc::missing_field, 1},
+      {"BPLOG,NVG,on", errc::bad_enum, 2},
+      {"BPLOG,NVG,YES", errc::bad_enum, 2},
+      {"BPLOG,NVG,", errc::missing_field, 2},
       {"BPLOG,NVG", errc::too_few_fields, 2},
+      // Case-sensitive 3-letter ids (SPI 4.2, 7.1): not lower case, no blanks or signs.
+      {"BPLOG,nvg,ON", errc::bad_text, 1},
+      {"BPLOG,N G,ON", errc::bad_text, 1},
+      {"BPLOG,Nv-,ON", errc::bad_text, 1},
   };
   for (const auto& c : log) check_bad<bplog>(c, to_vehicle_policy);
   const bad_case sts[] = {
@@ -556,9 +586,9 @@ TEST_CASE("encoding refuses what the spec forbids, naming the field") {
   bfack a;
   a.timestamp = tod(25, 0, 0, 0, 0);
   (void)a.command.assign("RMB");
-  b = encode(a);
-  CHECK(b.ec == errc::hour_out_of_range);
-  CHECK(b.field == 1);
+  const auto ab = encode(a);
+  CHECK(ab.ec == errc::hour_out_of_range);
+  CHECK(ab.field == 1);
 
   bpver v{tod(1, 2, 3, 0, 0), {}};
   b = encode(v);
@@ -613,13 +643,13 @@ struct generator {
 
 template <class M>
 void check_round_trip(const M& m, const parse_policy& policy) {
-  const auto first = encode<512>(m);
+  const auto first = encode(m);
   REQUIRE(first.ec == errc::ok);
   INFO(std::string(first.view()));
   const result<M> back = decode<M>(first.view(), policy);
   REQUIRE(back.ok());
   CHECK(back.value == m);
-  CHECK(encode<512>(back.value).view() == first.view());
+  CHECK(encode(back.value).view() == first.view());
 }
 }  // namespace
 
@@ -646,13 +676,13 @@ TEST_CASE("round trips over generated values") {
     const auto form = g.below(3);  // 6, 7 or 8 fields
     if (form == 0) a.description.reset();
     if (form == 0 || form == 1) a.trailing.reset();
-    if (a.description) a.description = g.words<96>(96);
+    if (a.description) a.description = g.words<256>(256);
     check_round_trip(a, from_vehicle_policy);
 
     bpsts s{g.time(), g.coin(), g.words<128>(128)};
     check_round_trip(s, to_vehicle_policy);
 
-    bfmis m{g.time(), g.words<128>(128), g.words<128>(128), g.words<200>(200)};
+    bfmis m{g.time(), g.words<256>(256), g.words<256>(256), g.words<512>(512)};
     check_round_trip(m, from_vehicle_policy);
 
     bplog l;

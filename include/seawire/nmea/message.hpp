@@ -52,6 +52,7 @@ struct field_options {
   std::uint16_t min_length = 0;       ///< text: fewest characters
   std::uint16_t max_length = 0xFFFF;  ///< text: most characters
   std::uint8_t zero_pad = 0;          ///< integers: write at least this many digits ("06")
+  bool code_chars = false;            ///< text: upper-case letters and digits only ("NVG")
 };
 
 namespace option {
@@ -84,6 +85,9 @@ struct absent_ok {
 struct pad {
   std::uint8_t n;
   constexpr void apply(field_options& o) const noexcept { o.zero_pad = n; }
+};
+struct code {
+  constexpr void apply(field_options& o) const noexcept { o.code_chars = true; }
 };
 struct length {
   std::uint16_t lo, hi;
@@ -129,6 +133,9 @@ inline constexpr option::absent_ok may_be_absent{};
 [[nodiscard]] constexpr option::length length_between(int lo, int hi) noexcept {
   return {static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(hi)};
 }
+/// Text that is a code, such as a message id: upper-case letters and digits only (bad_text
+/// otherwise; the protocols are case-sensitive, so "nvg" is not "NVG").
+inline constexpr option::code code_chars{};
 [[nodiscard]] constexpr option::length exact_length(int n) noexcept {
   return {static_cast<std::uint16_t>(n), static_cast<std::uint16_t>(n)};
 }
@@ -278,7 +285,11 @@ template <class T>
                          v.view();
                          T::capacity;
                        }) {
-    return v.size() < o.min_length || v.size() > o.max_length ? errc::bad_length : errc::ok;
+    if (v.size() < o.min_length || v.size() > o.max_length) return errc::bad_length;
+    if (o.code_chars)
+      for (const char c : v.view())
+        if (!seawire::detail::is_upper(c) && !seawire::detail::is_digit(c)) return errc::bad_text;
+    return errc::ok;
   } else {
     return errc::ok;
   }

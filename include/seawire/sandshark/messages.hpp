@@ -90,9 +90,10 @@ enum class mission_state : std::uint8_t {
 ///          1          2         3                           4
 struct bfmis {
   time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  text<128> dive_file;    // 2 [d--d] current dive file; blank when no mission plan asked for one
-  text<128> status;       // 3 [t--t] Offline, Waiting, Ready, Running [log dir], Aborted ...
-  text<200> details;      // 4 [a--a] human-readable details (abort reasons); not for parsing
+  // Variable-length text (SPI table 1): room for what real vehicles send, log paths included.
+  text<256> dive_file;  // 2 [d--d] current dive file; blank when no mission plan asked for one
+  text<256> status;     // 3 [t--t] Offline, Waiting, Ready, Running [log dir], Aborted ...
+  text<512> details;    // 4 [a--a] human-readable details (abort reasons); not for parsing
 
   /// The status text starts with "Running" (it may carry the log directory after it).
   [[nodiscard]] constexpr bool running() const noexcept {
@@ -127,10 +128,6 @@ struct bfmis {
 
   friend constexpr bool operator==(const bfmis&, const bfmis&) noexcept = default;
 
-  /// "$BFMIS," 7 + time 16 + texts 128 + 128 + 200 + 3 commas + "*hh" CR LF 5 = 487 bytes: more
-  /// than the 256 encode() gives other messages.
-  static constexpr std::size_t max_sentence_size = 512;
-
   static constexpr auto nmea = sentence<"BFMIS">(
       field<&bfmis::timestamp>("timestamp"), field<&bfmis::dive_file>("dive_file"),
       field<&bfmis::status>("status"), field<&bfmis::details>("details"));
@@ -162,8 +159,9 @@ struct bfack {
   std::optional<std::int32_t> behavior_id;       // 4 [iiii] payload-assigned id of a new behaviour
   ack_status status = ack_status::ok;            // 5 [s] Acknowledgement Status Code
   std::optional<std::int32_t> future_use = 0;    // 6 [c] always 0 in this revision
-  std::optional<text<96>> description = text<96>{};  // 7 [m-m] details, for people only
-  std::optional<text<32>> trailing = text<32>{};     // 8 the spec's final, empty field
+  std::optional<text<256>> description = text<256>{};  // 7 [m-m] details, for people only
+  std::optional<text<128>> trailing = text<128>{};     // 8 the spec's final field: empty in
+                                                       //   this revision, kept if not
 
   /// Whether this acknowledges `address` ("BPRMB"): the vehicle names commands by their
   /// 3-letter id ("RMB"); the full address is accepted too.
@@ -219,8 +217,8 @@ struct bplog {
 
   friend constexpr bool operator==(const bplog&, const bplog&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"BPLOG">(field<&bplog::code>("code", exact_length(3)),
-                                                 field<&bplog::state>("state"));
+  static constexpr auto nmea = sentence<"BPLOG">(
+      field<&bplog::code>("code", exact_length(3), code_chars), field<&bplog::state>("state"));
 };
 
 /// BPSTS: payload status (the payload's heartbeat).
