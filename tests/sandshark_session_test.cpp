@@ -252,11 +252,12 @@ TEST_CASE("payload: pending, then nothing: ack_timeout 2 s later and the queue m
   REQUIRE(lines.size() == 1);
   (void)p.receive(ack_of(lines[0], '3'), at(1000ms));
   (void)events(p);
-  CHECK(p.next_deadline() == at(3000ms));
-  p.tick(at(2999ms));
+  // "Within 2 seconds": at exactly 2 s the final ack is still in time; one tick later it is not.
+  CHECK(p.next_deadline() == at(3000ms) + timing::just_after);
+  p.tick(at(3000ms));
   CHECK(events(p).empty());
   CHECK(sent(p).empty());
-  p.tick(at(3000ms));
+  p.tick(at(3000ms) + timing::just_after);
   const auto ev = events(p);
   REQUIRE(ev.size() == 1);
   CHECK(ev[0].kind == payload_event_kind::ack_timeout);
@@ -264,6 +265,99 @@ TEST_CASE("payload: pending, then nothing: ack_timeout 2 s later and the queue m
   const auto next = sent(p);
   REQUIRE(next.size() == 1);
   CHECK(next[0] == sealed("BPLOG,NVR,ON"));
+}
+
+TEST_CASE("payload: a final ack exactly 2 s after the pending one, whatever the call order") {
+  for (const bool tick_first : {false, true}) {
+    INFO("tick at the deadline first: " << tick_first);
+    payload_session<> p(quiet());
+    started_with_acks(p, at(0ms));
+    REQUIRE(p.subscribe("NVG", at(0ms)).ok());
+    const auto lines = sent(p);
+    REQUIRE(lines.size() == 1);
+    (void)p.receive(ack_of(lines[0], '3'), at(1000ms));
+    (void)events(p);
+    if (tick_first) p.tick(at(3000ms));
+    (void)p.receive(ack_of(lines[0], '2'), at(3000ms));
+    const auto ev = events(p);
+    REQUIRE(ev.size() == 1);
+    CHECK(ev[0].kind == payload_event_kind::ack_ok);
+  }
+}
+
+TEST_CASE("payload: nothing goes out before start(), not an abort, not a request") {
+  payload_session<> p(quiet());
+  const auto ticket = p.abort("leak", at(0ms));
+  REQUIRE(ticket.ok());
+  (void)p.receive(sealed("BFCTL,000000.100,1"), at(100ms));
+  REQUIRE(p.set_request(heading_request(90), at(200ms)).ok());
+  p.tick(at(6000ms));
+  CHECK(sent(p).empty());
+  CHECK(p.next_deadline() == std::nullopt);
+
+  // BPVER first (SPI 7.5), then the acks, then the abort that was waiting.
+  p.start(at(7000ms));
+  auto lines = sent(p);
+  REQUIRE(lines.size() >= 2);
+  CHECK(address(lines[0]) == "BPVER");
+  CHECK(lines[1] == "$BPLOG,ACK,ON*1E\r\n");
+  CHECK(with_address(lines, "BPABT").empty());  // behind ACK ON, which awaits its ack
+  (void)p.receive(ack_of(lines[1], '2'), at(7100ms));
+  lines = sent(p);
+  REQUIRE(!with_address(lines, "BPABT").empty());
+  CHECK(with_address(lines, "BPABT")[0].find(",leak,1*") != std::string::npos);
+}
+
+TEST_CASE("payload: start() again is a new connection: handshake, subscriptions, old commands") {
+  payload_session<> p(quiet());
+  started_with_acks(p, at(0ms));
+  REQUIRE(p.subscribe("NVG", at(0ms)).ok());
+  auto lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  (void)p.receive(ack_of(lines[0], '2'), at(100ms));
+  REQUIRE(p.subscribe("ALL", at(200ms)).ok());
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  (void)p.receive(ack_of(lines[0], '2'), at(300ms));
+  REQUIRE(p.subscribe("MIS", at(400ms), log_state::off).ok());
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  (void)p.receive(ack_of(lines[0], '2'), at(500ms));
+  const bpsts st{{}, false, "sonar fault"};
+  const auto ticket = p.send(st, at(600ms));
+  REQUIRE(ticket.ok());
+  REQUIRE(sent(p).size() == 1);  // awaiting its ack when the link drops
+  (void)events(p);
+
+  p.start(at(2000ms));
+  // The vehicle has turned the acks off: BPVER is not waited on, ACK ON follows at once.
+  lines = sent(p);
+  REQUIRE(lines.size() == 2);
+  CHECK(address(lines[0]) == "BPVER");
+  CHECK(lines[1] == "$BPLOG,ACK,ON*1E\r\n");
+  // Then the subscriptions, as one request each, then the command, each after the last's ack.
+  // (ALL ON replaced NVG's own request; MIS OFF is the exception under ALL.)
+  const std::vector<std::string> expected = {sealed("BPLOG,ALL,ON"), sealed("BPLOG,MIS,OFF")};
+  std::string last = lines[1];
+  for (const std::string& want : expected) {
+    (void)p.receive(ack_of(last, '2'), at(2100ms));
+    lines = sent(p);
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0] == want);
+    last = lines[0];
+  }
+  (void)p.receive(ack_of(last, '2'), at(2200ms));
+  lines = sent(p);
+  REQUIRE(lines.size() == 1);
+  CHECK(address(lines[0]) == "BPSTS");
+  (void)events(p);
+  (void)p.receive(ack_of(lines[0], '2'), at(2300ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 1);
+  CHECK(ev[0].kind == payload_event_kind::ack_ok);
+  CHECK(ev[0].ticket == ticket.value);
+  CHECK(p.subscriptions().includes("NVR"));
+  CHECK_FALSE(p.subscriptions().includes("MIS"));
 }
 
 TEST_CASE("payload: unrelated traffic between a command and its ack") {
@@ -404,6 +498,8 @@ TEST_CASE("payload: the UTC clock follows the vehicle's timestamps") {
   c.sync_utc_from_vehicle = true;
   payload_session<> p(c);
   (void)p.receive(sealed("BFCTL,235959.500,0"), at(10000ms));
+  p.start(at(10000ms));
+  CHECK(stamp_of(sent(p).at(0)) == "235959.500");  // BPVER
   REQUIRE(p.abort("x", at(11000ms)).ok());
   CHECK(stamp_of(sent(p).at(0)) == "000000.500");  // past midnight
   p.set_utc(at(12000ms), time_of_day{8, 0, 0, 0, 0});
@@ -730,7 +826,7 @@ TEST_CASE("vehicle: ack status codes") {
     CHECK(a.command == "RMB");
     CHECK(a.command_timestamp == time_of_day{23, 12, 4, 72, 2});
     CHECK(a.status == ack_status::failed);
-    CHECK(a.description == text<96>("dynamic requests not allowed"));
+    CHECK(a.description == text<256>("dynamic requests not allowed"));
     CHECK_FALSE(v.current_request().has_value());
   }
   SECTION("invalid: a field that does not decode, named in the description") {
@@ -740,7 +836,7 @@ TEST_CASE("vehicle: ack status codes") {
     CHECK(a.command == "RMB");
     CHECK(a.command_timestamp == time_of_day{23, 12, 4, 72, 2});
     CHECK(a.status == ack_status::invalid);
-    CHECK(a.description == text<96>("bad_enum in field 4 (depth_mode)"));
+    CHECK(a.description == text<256>("bad_enum in field 4 (depth_mode)"));
     const auto ev = events(v);
     REQUIRE(ev.size() == 1);
     CHECK(ev[0].kind == vehicle_event_kind::invalid_command);
@@ -761,12 +857,13 @@ TEST_CASE("vehicle: ack status codes") {
     bfack a = decoded_ack(sent(v).at(0));
     CHECK(a.command == "LOG");
     CHECK(a.status == ack_status::invalid);
-    CHECK(a.description == text<96>("checksum_mismatch"));
+    CHECK(a.description == text<256>("checksum_mismatch"));
     CHECK_FALSE(v.should_send(c, "NVG"));
-    REQUIRE(v.receive(c, sealed("BPLOG,n-g,ON"), at(10ms)).ok());
+    // Now refused by the decoder itself (codes are upper-case letters and digits).
+    CHECK(v.receive(c, sealed("BPLOG,n-g,ON"), at(10ms)).ec == errc::bad_text);
     a = decoded_ack(sent(v).at(0));
     CHECK(a.status == ack_status::invalid);
-    CHECK(a.description == text<96>("bad_text in field 1 (code)"));
+    CHECK(a.description == text<256>("bad_text in field 1 (code)"));
   }
   SECTION("a line without even an address is not acked, but reported") {
     CHECK(v.receive(c, "hello", at(10ms)).ec == errc::missing_start);
@@ -826,11 +923,11 @@ TEST_CASE("vehicle: pending, then the final ack") {
     CHECK(v.complete(ev[0].ticket, ack_status::failed, "unsupported version", at(60000ms)));
     const bfack final_ack = decoded_ack(sent(v).at(0));
     CHECK(final_ack.status == ack_status::failed);
-    CHECK(final_ack.description == text<96>("unsupported version"));
+    CHECK(final_ack.description == text<256>("unsupported version"));
   }
 }
 
-TEST_CASE("vehicle: BPRMB holds for 5 s; 4.999 s keeps it, 5.000 s loses it") {
+TEST_CASE("vehicle: BPRMB holds for 5 s; 5.000 s keeps it, one tick more loses it") {
   vehicle_config cfg;
   cfg.control_allowed = true;
   vehicle_session<> v(cfg);
@@ -840,32 +937,60 @@ TEST_CASE("vehicle: BPRMB holds for 5 s; 4.999 s keeps it, 5.000 s loses it") {
   CHECK(v.current_request()->heading == decimal(90));
   CHECK(events(v).at(0).kind == vehicle_event_kind::request_started);
 
-  // 4.999 s later a BPRMB keeps the request going.
-  CHECK(v.request_active(at(5999ms)));
-  REQUIRE(v.receive(c, "$BPRMB,000005.00,95,,,,,0", at(5999ms)).ok());
+  // "At least every 5 seconds" (SPI 7.3): a BPRMB exactly 5 s later keeps the request going.
+  CHECK(v.request_active(at(6000ms)));
+  REQUIRE(v.receive(c, "$BPRMB,000006.00,95,,,,,0", at(6000ms)).ok());
   CHECK(events(v).empty());
   CHECK(v.current_request()->heading == decimal(95));
-  CHECK(v.next_deadline() == at(10999ms));
+  CHECK(v.next_deadline() == at(11000ms) + timing::just_after);
 
-  // Then nothing: at exactly 5.000 s the request has expired.
-  v.tick(at(10998ms));
+  // Then nothing: at exactly 5 s the request still holds, one tick later it has expired.
+  v.tick(at(11000ms));
   CHECK(events(v).empty());
-  CHECK(v.request_active(at(10998ms)));
-  CHECK_FALSE(v.request_active(at(10999ms)));
-  v.tick(at(10999ms));
+  CHECK(v.request_active(at(11000ms)));
+  CHECK_FALSE(v.request_active(at(11000ms) + timing::just_after));
+  v.tick(at(11000ms) + timing::just_after);
   const auto ev = events(v);
   REQUIRE(ev.size() == 1);
   CHECK(ev[0].kind == vehicle_event_kind::request_expired);
   CHECK_FALSE(v.current_request().has_value());
 
-  // A BPRMB arriving exactly at the boundary is a new request, not a continuation.
-  REQUIRE(v.receive(c, "$BPRMB,000011.00,95,,,,,0", at(12000ms)).ok());
-  REQUIRE(v.receive(c, "$BPRMB,000016.00,95,,,,,0", at(17000ms)).ok());
+  // After the expiry a BPRMB is a new request; one every 5.000 s continues it.
+  REQUIRE(v.receive(c, "$BPRMB,000012.00,95,,,,,0", at(12000ms)).ok());
+  REQUIRE(v.receive(c, "$BPRMB,000017.00,95,,,,,0", at(17000ms)).ok());
+  REQUIRE(v.receive(c, "$BPRMB,000023.00,95,,,,,0", at(23000ms)).ok());
   const auto again = events(v);
   REQUIRE(again.size() == 3);
   CHECK(again[0].kind == vehicle_event_kind::request_started);
   CHECK(again[1].kind == vehicle_event_kind::request_expired);
   CHECK(again[2].kind == vehicle_event_kind::request_started);
+}
+
+TEST_CASE("vehicle: pending acks go with the client; a new client under its id gets none") {
+  vehicle_config cfg;
+  cfg.control_allowed = true;
+  cfg.pending.rmb = true;
+  vehicle_session<> v(cfg);
+  const client_id c = connected_with_acks(v, at(0ms));
+  REQUIRE(v.receive(c, "$BPRMB,000000.10,90,,,,,0", at(100ms)).ok());
+  CHECK(decoded_ack(sent(v).at(0)).status == ack_status::pending);
+  REQUIRE(v.receive(c, "$BPSTS,000000.20,1,OK", at(200ms)).ok());
+  (void)sent(v);
+  v.disconnect(c);
+  CHECK(v.next_deadline() != at(1100ms));  // the pending ack is gone
+
+  const client_id again = connected_with_acks(v, at(500ms));
+  CHECK(again == c);
+  v.tick(at(5000ms));
+  for (const std::string& l : sent(v)) CHECK(address(l) != "BFACK");
+  // What the old client said is not the new one's.
+  CHECK_FALSE(v.payload_status(again).has_value());
+  // An id out of range has nothing, not client 0's state.
+  REQUIRE(v.receive(again, "$BPSTS,000005.00,1,OK", at(5000ms)).ok());
+  CHECK(v.payload_status(again).has_value());
+  CHECK_FALSE(v.payload_status(200).has_value());
+  CHECK(v.payload_version(200).empty());
+  CHECK_FALSE(v.subscriptions(200).acks());
 }
 
 TEST_CASE("vehicle: control handed over and back with BFCTL; revoking ends the request") {

@@ -37,6 +37,7 @@
 // (buffer_too_small), an outgoing sentence that does not fit the outbox raises outbox_overflow,
 // and lost events are counted in an events_lost event.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -123,7 +124,7 @@ struct payload_event {
   text<16> command;          ///< "BPRMB"; for unmatched_ack the ack's own name for it ("RMB")
   std::optional<time_of_day> command_timestamp;  ///< as sent (unmatched_ack: as echoed)
   std::uint32_t count = 0;                       ///< sends so far, or events lost
-  text<96> detail;                               ///< the ack's description, or why control ended
+  text<256> detail;                              ///< the ack's description, or why control ended
 };
 
 /// The address of a payload message ("BPRMB").
@@ -175,9 +176,13 @@ class payload_session {
   // -- what the application does --------------------------------------------------------------
 
   /// Begin: BPVER, then BPLOG,ACK,ON when acks are wanted, ahead of anything already queued,
-  /// and the heartbeat. Calling it again restarts the handshake.
+  /// and the heartbeat. Calling it again starts over as on a new connection (the vehicle has
+  /// turned every status message and the acks off, SPI 7.1): the handshake, then BPLOG requests
+  /// that give back the subscriptions the old link had, then the commands still awaiting their
+  /// ack there (same tickets, sent again), then the queue. Control ends (control_lost).
   constexpr void start(time_point now) noexcept {
     advance(now);
+    if (started_) restart();
     if (config_.want_acks) {
       bplog ack;
       (void)ack.code.assign("ACK");
@@ -239,6 +244,16 @@ class payload_session {
     r = check(m, now);
     if (!r) return r;
     const std::uint32_t ticket = next_ticket_++;
+    if (!started_) {
+      // Nothing goes out before BPVER (SPI 7.5): the abort waits at the head of the queue,
+      // and start() puts only the handshake ahead of it.
+      if (!queue_.push_front({m, ticket})) {
+        r.ec = errc::buffer_too_small;
+        return r;
+      }
+      r.value = ticket;
+      return r;
+    }
     if (!transmit(m, ticket, message_origin::command, false, now)) {
       r.ec = errc::buffer_too_small;
       return r;
@@ -346,11 +361,12 @@ class payload_session {
     };
     for (const payload_in_flight& f : flights_) {
       if (!f.active) continue;
-      consider(f.pending_since ? *f.pending_since + config_.pending_timeout
+      consider(f.pending_since ? *f.pending_since + config_.pending_timeout + timing::just_after
                                : f.last_sent + config_.resend_after);
     }
     if (started_ && config_.heartbeat_period.count() > 0) consider(next_heartbeat_);
-    if (control_ && request_) consider(request_due_ ? now_ : last_request_ + keep_alive_interval());
+    if (started_ && control_ && request_)
+      consider(request_due_ ? now_ : last_request_ + keep_alive_interval());
     if (started_ && !queue_.empty() && !awaiting()) consider(now_);
     return d;
   }
@@ -436,16 +452,54 @@ class payload_session {
   }
 
   constexpr void push_front_command(const payload_message& m) noexcept {
-    if (!queue_.push_front({m, next_ticket_})) {
+    push_front_queued({m, next_ticket_++});
+  }
+  constexpr void push_front_queued(const queued_command& c) noexcept {
+    if (!queue_.push_front(c)) {
       // Full queue: the handshake matters more than the newest command.
       const std::optional<queued_command> dropped = pop_back_command();
       payload_event e = about(payload_event_kind::outbox_overflow, dropped->message);
       e.ticket = dropped->ticket;
       (void)e.detail.assign("command queue full: newest command dropped");
       events_.push(e);
-      (void)queue_.push_front({m, next_ticket_});
+      (void)queue_.push_front(c);
     }
-    ++next_ticket_;
+  }
+
+  /// start() on a session already started: what the old link had is put back in the queue.
+  /// Pushed to the front in reverse, so that the queue reads: subscriptions, old commands,
+  /// what was queued (start() then puts the handshake ahead of all of it).
+  constexpr void restart() noexcept {
+    // Commands that were awaiting an ack, in the order they were first sent (BPLOGs are given
+    // back by the subscriptions below, heartbeats and requests are not commands).
+    std::array<const payload_in_flight*, max_in_flight> old{};
+    std::size_t n = 0;
+    for (const payload_in_flight& f : flights_)
+      if (f.active && f.origin == message_origin::command &&
+          !std::holds_alternative<bplog>(f.message))
+        old[n++] = &f;
+    std::sort(old.begin(), old.begin() + static_cast<std::ptrdiff_t>(n),
+              [](const payload_in_flight* a, const payload_in_flight* b) {
+                return a->first_sent < b->first_sent;
+              });
+    for (std::size_t i = n; i-- > 0;) push_front_queued({old[i]->message, old[i]->ticket});
+    for (payload_in_flight& f : flights_) f = {};
+
+    const subscription_set<> had = subscriptions_;
+    subscriptions_.clear();
+    std::array<bplog, subscription_set<>::capacity + 2> asks{};
+    std::size_t k = 0;
+    had.for_each_request([&](std::string_view code, log_state state) {
+      if (code == "ACK" && config_.want_acks) return;  // start() asks for the acks itself
+      bplog m;
+      (void)m.code.assign(code);
+      m.state = state;
+      asks[k++] = m;
+    });
+    for (std::size_t i = k; i-- > 0;) push_front_command(asks[i]);
+
+    if (control_) lose_control("restart: a new connection starts without control");
+    request_due_ = false;
   }
   [[nodiscard]] constexpr std::optional<queued_command> pop_back_command() noexcept {
     // ring has no pop_back: rotate the rest to the front.
@@ -610,7 +664,8 @@ class payload_session {
     for (payload_in_flight& f : flights_) {
       if (!f.active) continue;
       if (f.pending_since) {
-        if (now - *f.pending_since >= config_.pending_timeout) {
+        // "Within 2 seconds": a final ack at exactly pending_timeout is still in time.
+        if (now - *f.pending_since > config_.pending_timeout) {
           events_.push(about(payload_event_kind::ack_timeout, f));
           f.active = false;
         }
@@ -651,7 +706,8 @@ class payload_session {
       }
     }
 
-    if (control_ && request_ && (request_due_ || now - last_request_ >= keep_alive_interval())) {
+    if (started_ && control_ && request_ &&
+        (request_due_ || now - last_request_ >= keep_alive_interval())) {
       if (transmit(*request_, 0, message_origin::request, false, now)) {
         request_due_ = false;
         last_request_ = now;

@@ -35,6 +35,9 @@ inline constexpr milliseconds request_timeout{5000};
 inline constexpr milliseconds pending_timeout{2000};
 /// No ack at all after this long: resend (what Goby, the reference backseat, does).
 inline constexpr milliseconds resend_after{5000};
+/// The least step of time_point: a limit "within t" is kept at t and broken at t + just_after,
+/// which is when next_deadline() asks to be woken.
+inline constexpr time_point::duration just_after{1};
 }  // namespace timing
 
 /// UTC time of day as a function of steady time: at `anchor` it was `anchor_ms` ms after
@@ -142,6 +145,22 @@ class subscription_set {
   [[nodiscard]] constexpr bool acks() const noexcept { return acks_; }
   [[nodiscard]] constexpr bool all() const noexcept { return all_; }
   constexpr void clear() noexcept { *this = subscription_set{}; }
+
+  /// Most per-code requests held (besides ALL and ACK).
+  static constexpr std::size_t capacity = N;
+
+  /// The BPLOG requests that build this set from an empty one, in order: ACK ON if the acks are
+  /// on, ALL ON if it is, then each code's own request (f(code, state) for each).
+  template <class F>
+  constexpr void for_each_request(F&& f) const {
+    if (acks_) f(std::string_view("ACK"), log_state::on);
+    if (all_) f(std::string_view("ALL"), log_state::on);
+    for (std::size_t i = 0; i < size_; ++i) {
+      // Under ALL OFF (the start), a code's OFF changes nothing: only its ON is asked for.
+      if (!all_ && !on_[i]) continue;
+      f(codes_[i].view(), on_[i] ? log_state::on : log_state::off);
+    }
+  }
 
  private:
   std::array<text<3>, N> codes_{};

@@ -24,9 +24,10 @@
 //   ack at once and the final one from complete(), or automatically after
 //   complete_pending_after. Their effect is applied on receipt; only the ack waits.
 // - Dynamic requests: set_control() sends BFCTL to subscribed clients. An accepted BPRMB holds
-//   the vehicle's behaviour for request_timeout (5 s). The boundary is inclusive: a BPRMB
-//   4.999 s after the previous one keeps the request, at 5.000 s or later the request has
-//   expired (request_expired) and the vehicle has control back.
+//   the vehicle's behaviour for request_timeout (5 s): the payload "must send it at least every
+//   5 seconds" (SPI 7.3), so a BPRMB 5.000 s after the previous one keeps the request; 5 s and
+//   one tick of time_point later the request has expired (request_expired) and the vehicle has
+//   control back.
 
 #include <array>
 #include <cstddef>
@@ -144,8 +145,13 @@ class vehicle_session {
     }
     return std::nullopt;
   }
+  /// The client is gone: its subscriptions, and the pending acks owed to it (a client that
+  /// connects later under the same id never gets an ack for a command it did not send).
   constexpr void disconnect(client_id c) noexcept {
-    if (c < MaxClients) clients_[c] = {};
+    if (c >= MaxClients) return;
+    clients_[c] = {};
+    for (pending_ack& p : pending_)
+      if (p.client == c) p.active = false;
   }
   [[nodiscard]] constexpr bool connected(client_id c) const noexcept {
     return c < MaxClients && clients_[c].connected;
@@ -246,7 +252,7 @@ class vehicle_session {
   /// The earliest time at which tick() has something to do, if any.
   [[nodiscard]] constexpr std::optional<time_point> next_deadline() const noexcept {
     std::optional<time_point> d;
-    if (request_) d = last_request_ + config_.request_timeout;
+    if (request_) d = last_request_ + config_.request_timeout + timing::just_after;
     if (config_.complete_pending_after) {
       for (const pending_ack& p : pending_) {
         if (!p.active) continue;
@@ -269,25 +275,26 @@ class vehicle_session {
   // -- state ----------------------------------------------------------------------------------
 
   [[nodiscard]] constexpr bool control_allowed() const noexcept { return control_allowed_; }
-  /// Whether a BPRMB holds the vehicle's behaviour at `now`: one was accepted less than
-  /// request_timeout ago (at exactly request_timeout it has expired).
+  /// Whether a BPRMB holds the vehicle's behaviour at `now`: one was accepted at most
+  /// request_timeout ago (at exactly request_timeout it still holds).
   [[nodiscard]] constexpr bool request_active(time_point now) const noexcept {
-    return request_.has_value() && now - last_request_ < config_.request_timeout;
+    return request_.has_value() && now - last_request_ <= config_.request_timeout;
   }
   /// The request being followed (cleared when it expires, at the next call after expiry).
   [[nodiscard]] constexpr const std::optional<bprmb>& current_request() const noexcept {
     return request_;
   }
+  /// What the client asked for (nothing for an id that is not connected).
   [[nodiscard]] constexpr const subscription_set<>& subscriptions(client_id c) const noexcept {
-    return clients_[c < MaxClients ? c : 0].subscriptions;
+    return client(c).subscriptions;
   }
-  /// The client's last BPSTS, if any.
+  /// The client's last BPSTS, if any (none for an id that is not connected).
   [[nodiscard]] constexpr const std::optional<bpsts>& payload_status(client_id c) const noexcept {
-    return clients_[c < MaxClients ? c : 0].status;
+    return client(c).status;
   }
-  /// The version the client reported in BPVER (empty until then).
+  /// The version the client reported in BPVER (empty until then, or for an id not connected).
   [[nodiscard]] constexpr std::string_view payload_version(client_id c) const noexcept {
-    return clients_[c < MaxClients ? c : 0].version.view();
+    return client(c).version.view();
   }
   /// The vehicle's UTC clock, for the timestamps of what the caller publishes.
   [[nodiscard]] constexpr const utc_clock& utc() const noexcept { return utc_; }
@@ -305,6 +312,7 @@ class vehicle_session {
     text<32> version;
     std::optional<bpsts> status;
   };
+  static constexpr client_state no_client{};
   struct pending_ack {
     bool active = false;
     client_id client = 0;
@@ -314,6 +322,11 @@ class vehicle_session {
     ack_status final_status = ack_status::ok;
     time_point since{};
   };
+
+  // The state of client c; an empty one for an id out of range (not some other client's).
+  [[nodiscard]] constexpr const client_state& client(client_id c) const noexcept {
+    return c < MaxClients ? clients_[c] : no_client;
+  }
 
   constexpr void advance(time_point& now) noexcept {
     if (now < now_) now = now_;
@@ -351,10 +364,10 @@ class vehicle_session {
     (void)a.command.assign(message_code(address));
     a.command_timestamp = timestamp;
     a.status = status;
-    text<96> d;
+    text<256> d;
     // Keep only what a text field may carry; the description is for people.
     std::size_t n = 0;
-    char buf[96]{};
+    char buf[256]{};
     for (char ch : description) {
       if (n == sizeof buf) break;
       if (seawire::detail::is_printable(ch) && !seawire::detail::is_reserved(ch)) buf[n++] = ch;
