@@ -145,12 +145,12 @@ TEST_CASE("real vehicle capture decodes with the payload role and re-encodes byt
     REQUIRE(r);
     const auto& m = holds<kf::cpimu>(r.value);
     CHECK(m.timestamp == hms(16, 49, 58, 858, 3));
-    CHECK(m.rate_x_dps.to_double() == -0.061035);
-    CHECK(m.rate_y_dps.to_double() == -0.000097);
-    CHECK(m.rate_z_dps.to_double() == -0.061035);
-    CHECK(m.accel_x_mps2.to_double() == -0.026916);
-    CHECK(m.accel_y_mps2.to_double() == 0.104533);
-    CHECK(m.accel_z_mps2.to_double() == -0.932172);
+    CHECK(m.rate_x_dps->to_double() == -0.061035);
+    CHECK(m.rate_y_dps->to_double() == -0.000097);
+    CHECK(m.rate_z_dps->to_double() == -0.061035);
+    CHECK(m.accel_x_mps2->to_double() == -0.026916);
+    CHECK(m.accel_y_mps2->to_double() == 0.104533);
+    CHECK(m.accel_z_mps2->to_double() == -0.932172);
     CHECK_FALSE(m.nav_timestamp.has_value());
     CHECK(m.effective_nav_timestamp() == m.timestamp);
     CHECK(nmea::encode(m).view() == real_cpimu);
@@ -199,9 +199,9 @@ TEST_CASE("real vehicle capture decodes with the payload role and re-encodes byt
     const auto& m = holds<kf::cprcm>(r.value);
     CHECK(m.timestamp == hms(16, 49, 59, 65, 3));
     CHECK(m.compass_id == 0);
-    CHECK(m.heading_deg.to_double() == 234.326694);
-    CHECK(m.pitch_deg.to_double() == -1.655603);
-    CHECK(m.roll_deg.to_double() == -6.628557);
+    CHECK(m.heading_deg->to_double() == 234.326694);
+    CHECK(m.pitch_deg->to_double() == -1.655603);
+    CHECK(m.roll_deg->to_double() == -6.628557);
     CHECK(m.nav_timestamp == hms(16, 49, 59, 60, 3));
     CHECK(m.effective_nav_timestamp() == hms(16, 49, 59, 60, 3));
     CHECK(nmea::encode(m).view() == real_cprcm);
@@ -212,10 +212,10 @@ TEST_CASE("real vehicle capture decodes with the payload role and re-encodes byt
     const auto& m = holds<kf::cprbs>(r.value);
     CHECK(m.timestamp == hms(17, 29, 9, 322, 3));
     CHECK_FALSE(m.battery_id.has_value());
-    CHECK(m.stack_voltage_v.to_double() == 15.121597);
-    CHECK(m.min_cell_voltage_v.to_double() == 15.121597);
-    CHECK(m.max_cell_voltage_v.to_double() == 15.121597);
-    CHECK(m.temperature_c.is_zero());
+    CHECK(m.stack_voltage_v->to_double() == 15.121597);
+    CHECK(m.min_cell_voltage_v->to_double() == 15.121597);
+    CHECK(m.max_cell_voltage_v->to_double() == 15.121597);
+    CHECK(m.temperature_c->is_zero());
     CHECK(nmea::encode(m).view() == real_cprbs);
   }
   SECTION("relayed GPRMC and GPGGA") {
@@ -550,6 +550,48 @@ TEST_CASE("malformed CPNVR") {
       true);
 }
 
+TEST_CASE("blank fields from the vehicle are \"no data\" (seed 2.4), not errors") {
+  // Each measurement blank in turn, in every sentence that carries measurements.
+  const std::vector<std::string> lines = {
+      "CPRCM,164959.065,,234.3,-1.6,-6.6,164959.060",
+      "CPRCM,164959.065,0,,-1.6,-6.6,164959.060",
+      "CPRCM,164959.065,0,234.3,,-6.6,164959.060",
+      "CPRCM,164959.065,0,234.3,-1.6,,164959.060",
+      "CPRCM,164959.065,,,,,",
+      "CPRBS,172909.322,,15.1,15.1,0",
+      "CPRBS,172909.322,15.1,15.1,15.1,",
+      "CPRBS,105707.24,1,,,,",
+      "CPIMU,164958.858,,0,0,0,0,0",
+      "CPIMU,164958.858,0,0,0,0,0,",
+      "CPIMU,164958.858,,,,,,",
+  };
+  for (const std::string& body : lines) {
+    const std::string line = sealed(body);
+    INFO(line);
+    const auto r = kf::decode_from_vehicle(line);
+    REQUIRE(r.ec == errc::ok);
+    // Written back as it came: a blank stays blank.
+    std::visit(
+        [&](const auto& m) {
+          if constexpr (!std::is_same_v<std::decay_t<decltype(m)>, nmea::unknown_sentence>)
+            CHECK(nmea::encode(m).view() == line);
+        },
+        r.value);
+  }
+  const auto rcm = kf::decode_from_vehicle(sealed("CPRCM,164959.065,0,,-1.6,-6.6,164959.060"));
+  REQUIRE(rcm.ec == errc::ok);
+  const auto& m = std::get<kf::cprcm>(rcm.value);
+  CHECK_FALSE(m.heading_deg.has_value());
+  CHECK(m.pitch_deg == decimal(-16, 1));
+
+  // Blank is not absent: the vehicle writes every field, so a sentence cut short is an error.
+  for (const char* cut :
+       {"CPRCM,164959.065,0,234.3", "CPRBS,172909.322,15.1,15.1", "CPIMU,164958.858,0,0,0"}) {
+    INFO(cut);
+    CHECK(kf::decode_from_vehicle(sealed(cut)).ec == errc::too_few_fields);
+  }
+}
+
 TEST_CASE("malformed CPRCM") {
   check_table(
       {
@@ -557,15 +599,12 @@ TEST_CASE("malformed CPRCM") {
           {"CPRCM,,0,234.3,-1.6,-6.6,164959.060", errc::missing_field, 1},
           {"CPRCM,256000,0,234.3,-1.6,-6.6,164959.060", errc::hour_out_of_range, 1},
           {"CPRCM,164959.065", errc::too_few_fields, 2},
-          {"CPRCM,164959.065,,234.3,-1.6,-6.6,164959.060", errc::missing_field, 2},
           {"CPRCM,164959.065,x,234.3,-1.6,-6.6,164959.060", errc::bad_number, 2},
           {"CPRCM,164959.065,1.5,234.3,-1.6,-6.6,164959.060", errc::bad_number, 2},
           {"CPRCM,164959.065,-1,234.3,-1.6,-6.6,164959.060", errc::out_of_range, 2},
           {"CPRCM,164959.065,0,360.5,-1.6,-6.6,164959.060", errc::out_of_range, 3},
-          {"CPRCM,164959.065,0,,-1.6,-6.6,164959.060", errc::missing_field, 3},
           {"CPRCM,164959.065,0,234.3", errc::too_few_fields, 4},
           {"CPRCM,164959.065,0,234.3,95,-6.6,164959.060", errc::out_of_range, 4},
-          {"CPRCM,164959.065,0,234.3,-1.6,,164959.060", errc::missing_field, 5},
           {"CPRCM,164959.065,0,234.3,-1.6,-180.5,164959.060", errc::out_of_range, 5},
           {"CPRCM,164959.065,0,234.3,-1.6,-6.6,99", errc::bad_time, 6},
       },
@@ -579,9 +618,7 @@ TEST_CASE("malformed CPRBS, both forms") {
           {"CPRBS,,15.1,15.1,15.1,0", errc::missing_field, 1},
           {"CPRBS,17290,15.1,15.1,15.1,0", errc::bad_time, 1},
           // five-field form (no id): errors name the field's position on the wire
-          {"CPRBS,172909.322,,15.1,15.1,0", errc::missing_field, 2},
           {"CPRBS,172909.322,15.1,volts,15.1,0", errc::bad_number, 3},
-          {"CPRBS,172909.322,15.1,15.1,15.1,", errc::missing_field, 5},
           {"CPRBS,172909.322,15.1,15.1,15.1", errc::too_few_fields, 5},
           {"CPRBS,172909.322,15.1", errc::too_few_fields, 3},
           // six-field form (with id)
@@ -589,7 +626,6 @@ TEST_CASE("malformed CPRBS, both forms") {
           {"CPRBS,105707.24,1.5,15.2,15.1,15.3,0", errc::bad_number, 2},
           {"CPRBS,105707.24,-1,15.2,15.1,15.3,0", errc::out_of_range, 2},
           {"CPRBS,105707.24,70000,15.2,15.1,15.3,0", errc::out_of_range, 2},
-          {"CPRBS,105707.24,1,,15.1,15.3,0", errc::missing_field, 3},
           {"CPRBS,105707.24,1,15.2,15.1,15.3,hot", errc::bad_number, 6},
       },
       true);
@@ -600,10 +636,8 @@ TEST_CASE("malformed CPIMU") {
       {
           {"CPIMU,,0,0,0,0,0,0", errc::missing_field, 1},
           {"CPIMU,1649588.858,0,0,0,0,0,0", errc::bad_time, 1},
-          {"CPIMU,164958.858,,0,0,0,0,0", errc::missing_field, 2},
           {"CPIMU,164958.858,0,0,z,0,0,0", errc::bad_number, 4},
           {"CPIMU,164958.858,0,0,0,0,0", errc::too_few_fields, 7},
-          {"CPIMU,164958.858,0,0,0,0,0,", errc::missing_field, 7},
           {"CPIMU,164958.858,0,0,0,0,0,0,246000", errc::hour_out_of_range, 8},
           {"CPIMU,164958.858,0,0,0,0,0,0,1x", errc::bad_time, 8},
       },

@@ -63,17 +63,18 @@ using cpnvg = bluefin::nav_update<"CPNVG">;
 using cpnvr = bluefin::velocity_update<"CPNVR">;
 
 /// Raw compass reading, repackaged by the vehicle. The real vehicle reports compass id 0 (the
-/// spec numbers compasses from 1).
+/// spec numbers compasses from 1). Any field after the timestamp may be blank, "no data" (seed
+/// 2.4), which reads as nullopt.
 ///
 ///   $CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,164959.060*62
 ///          1          2 3          4         5         6
 struct cprcm {
-  time_of_day timestamp;         // 1 [Timestamp] when the sentence was made
-  std::uint16_t compass_id = 0;  // 2 [ID_Compass] which compass
-  decimal heading_deg;           // 3 [Heading] degrees clockwise from true north, 0..360
-  decimal pitch_deg;             // 4 [Pitch] degrees, -90..90, positive bow up
-  decimal roll_deg;              // 5 [Roll] degrees, -180..180; the spec's 2.8 says
-                                 //   positive port side up, its Appendix B starboard
+  time_of_day timestamp;                        // 1 [Timestamp] when the sentence was made
+  std::optional<std::uint16_t> compass_id = 0;  // 2 [ID_Compass] which compass
+  std::optional<decimal> heading_deg;  // 3 [Heading] degrees clockwise from true north, 0..360
+  std::optional<decimal> pitch_deg;    // 4 [Pitch] degrees, -90..90, positive bow up
+  std::optional<decimal> roll_deg;     // 5 [Roll] degrees, -180..180; the spec's 2.8 says
+                                       //   positive port side up, its Appendix B starboard
   std::optional<time_of_day> nav_timestamp;  // 6 [NavTimestamp] when the compass measured;
                                              //   blank means "the same as field 1"
 
@@ -95,20 +96,21 @@ struct cprcm {
 /// Battery bank voltages, one sentence per bank. The spec has the battery id as field 2 (six
 /// fields); the real vehicle leaves it out (five fields). The two forms are told apart by the
 /// field count. Member comments number the spec's six fields; errors report the position on
-/// the wire, so in the five-field form the stack voltage is field 2.
+/// the wire, so in the five-field form the stack voltage is field 2. A blank measurement is
+/// "no data" (seed 2.4) and reads as nullopt.
 ///
 ///   $CPRBS,105707.24,1,15.2,15.1,15.3,0*67                  spec form, 6 fields
 ///          1         2 3    4    5    6
 ///   $CPRBS,172909.322,15.121597,15.121597,15.121597,0*76   real vehicle, 5 fields (no id)
 ///          1          2         3         4         5
 struct cprbs {
-  time_of_day timestamp;                    // 1 [Timestamp] when the sentence was made
-  std::optional<std::uint16_t> battery_id;  // 2 [ID_Battery] banks numbered from 1; only in the
-                                            //   six-field form, nullopt writes the five-field one
-  decimal stack_voltage_v;                  // 3 [V_Batt_Stack] volts, the whole bank
-  decimal min_cell_voltage_v;               // 4 [V_Batt_Min] volts, lowest cell of the bank
-  decimal max_cell_voltage_v;               // 5 [V_Batt_Max] volts, highest cell of the bank
-  decimal temperature_c;                    // 6 [TemperatureC] degrees Celsius (real vehicle: 0)
+  time_of_day timestamp;                      // 1 [Timestamp] when the sentence was made
+  std::optional<std::uint16_t> battery_id;    // 2 [ID_Battery] banks numbered from 1; only in the
+                                              //   six-field form, nullopt writes the five-field one
+  std::optional<decimal> stack_voltage_v;     // 3 [V_Batt_Stack] volts, the whole bank
+  std::optional<decimal> min_cell_voltage_v;  // 4 [V_Batt_Min] volts, lowest cell of the bank
+  std::optional<decimal> max_cell_voltage_v;  // 5 [V_Batt_Max] volts, highest cell of the bank
+  std::optional<decimal> temperature_c;       // 6 [TemperatureC] degrees Celsius (real: 0)
 
   friend constexpr bool operator==(const cprbs&, const cprbs&) noexcept = default;
 
@@ -123,18 +125,19 @@ struct cprbs {
 
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
 /// y starboard, z down; rates by the right-hand rule). The real vehicle sends seven fields, no
-/// nav timestamp; nullopt writes that form. (The seed's sentence id is garbled; it is CPIMU.)
+/// nav timestamp; nullopt writes that form. (The seed's sentence id is garbled; it is CPIMU.) A
+/// blank rate or acceleration is "no data" (seed 2.4) and reads as nullopt.
 ///
 ///   $CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57
 ///          1          2         3         4         5         6        7         [8]
 struct cpimu {
   time_of_day timestamp;                     // 1 [Timestamp] when the sentence was made
-  decimal rate_x_dps;                        // 2 [AngularRate_X] deg/s about x (roll)
-  decimal rate_y_dps;                        // 3 [AngularRate_Y] deg/s about y (pitch)
-  decimal rate_z_dps;                        // 4 [AngularRate_Z] deg/s about z (yaw)
-  decimal accel_x_mps2;                      // 5 [Accel_X] m/s^2, positive forward
-  decimal accel_y_mps2;                      // 6 [Accel_Y] m/s^2, positive to starboard
-  decimal accel_z_mps2;                      // 7 [Accel_Z] m/s^2, positive down
+  std::optional<decimal> rate_x_dps;         // 2 [AngularRate_X] deg/s about x (roll)
+  std::optional<decimal> rate_y_dps;         // 3 [AngularRate_Y] deg/s about y (pitch)
+  std::optional<decimal> rate_z_dps;         // 4 [AngularRate_Z] deg/s about z (yaw)
+  std::optional<decimal> accel_x_mps2;       // 5 [Accel_X] m/s^2, positive forward
+  std::optional<decimal> accel_y_mps2;       // 6 [Accel_Y] m/s^2, positive to starboard
+  std::optional<decimal> accel_z_mps2;       // 7 [Accel_Z] m/s^2, positive down
   std::optional<time_of_day> nav_timestamp;  // 8 [NavTimestamp] when the IMU measured; blank or
                                              //   absent means "the same as field 1"
 
@@ -297,10 +300,13 @@ using from_vehicle =
 using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
 
 /// How a payload reads the vehicle: "sentences sent FROM the vehicle will always include a
-/// checksum", so one is required. Otherwise the common liberal defaults.
+/// checksum", so one is required; the vehicle writes every field (a blank one is "no data",
+/// seed 2.4), so a sentence that stops early is too_few_fields. Otherwise the common liberal
+/// defaults.
 [[nodiscard]] constexpr nmea::parse_policy payload_policy() noexcept {
   nmea::parse_policy p;
   p.checksum = nmea::checksum_policy::required;
+  p.absent_as_blank = false;
   return p;
 }
 

@@ -328,9 +328,10 @@ template <class F, class T>
       return errc::ok;
     }
     const field_token t = r.peek();
-    // A sentence that stops before an optional field reads it as blank when receiving
-    // liberally; the strict policy wants every field that is not declared as droppable.
-    if (!t.present && !o.may_be_absent && r.policy().strict_values) {
+    // A sentence that stops before an optional field is cut short, unless the field is
+    // declared as droppable or the policy reads what is missing as blank.
+    if (!t.present && !o.may_be_absent &&
+        (r.policy().strict_values || !r.policy().absent_as_blank)) {
       (void)r.take();
       return errc::too_few_fields;
     }

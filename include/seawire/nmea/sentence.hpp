@@ -41,6 +41,11 @@ struct parse_policy {
   /// non-whitespace character" of a number, so the Sandshark roles take them. Off by default:
   /// NMEA 0183 has none. strict_values refuses them whatever this says.
   bool spaced_numbers = false;
+  /// A sentence that stops before optional fields reads them as blank (the liberal default:
+  /// senders drop trailing empty fields). Off: only fields declared droppable (may_be_absent,
+  /// only_with_field_count) may be missing, anything else is too_few_fields, for links whose
+  /// senders always write every field (Kingfisher's vehicle). strict_values implies off.
+  bool absent_as_blank = true;
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.
   [[nodiscard]] static constexpr parse_policy strict() noexcept {
