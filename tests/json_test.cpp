@@ -5,10 +5,13 @@
 
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <random>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "seawire/anello/frame_json.hpp"
@@ -652,4 +655,136 @@ TEST_CASE("ANELLO frame JSON read back: exact, strict, errors by field number") 
   string_sink k;
   anello::write_json(k, far);
   CHECK(k.s.find(R"("gps_time":253402300800000,)") != std::string::npos);
+}
+
+TEST_CASE("ANELLO frame JSON read back: a code is a whole number, measurements are rounded") {
+  object o;
+  const auto with = [&](const char* key, json_kind kind, const char* text) {
+    o.members.clear();
+    o.members[key] = {kind, text};
+    return anello::read_frame_json(o);
+  };
+  // The GGA fix quality is a code: 7.5 is no quality, and 7.0 is not written as one.
+  for (const char* text : {"7.5", "7.0", "0.4", "-0.5"}) {
+    INFO(text);
+    const auto r = with("fix_quality", json_kind::number, text);
+    CHECK(r.ec == errc::bad_number);
+    CHECK(r.field == 10);
+    CHECK(r.column == 39);
+  }
+  auto r = with("fix_quality", json_kind::number, "7");
+  REQUIRE(r);
+  CHECK(r.value.gga_quality == 7);
+  r = with("fix_quality", json_kind::string, "8");
+  REQUIRE(r);
+  CHECK(r.value.gga_quality == 8);
+  CHECK(with("fix_quality", json_kind::number, "9").ec == errc::out_of_range);
+  // Measured values, whole units on the wire too, are still rounded (halves away from zero).
+  r = with("heading_deg", json_kind::number, "89.5");
+  REQUIRE(r);
+  CHECK(r.value.heading == 90);
+  r = with("motor_pct", json_kind::number, "-99.5");
+  REQUIRE(r);
+  CHECK(r.value.motor == -100);
+  r = with("motor_pct", json_kind::number, "-100.5");
+  CHECK(r.ec == errc::out_of_range);
+  CHECK(r.field == 11);
+  r = with("pressure_hpa", json_kind::number, "1013.25");
+  REQUIRE(r);
+  CHECK(r.value.pressure == 1013);
+}
+
+namespace {
+// A flat JSON object as write_json(frame) writes it (no commas inside values), read into the
+// lookup read_frame_json asks.
+struct flat_frame_object {
+  std::vector<std::string> storage;
+  object o;
+  explicit flat_frame_object(std::string_view js) {
+    storage.reserve(64);
+    REQUIRE(js.size() >= 2);
+    js = js.substr(1, js.size() - 2);
+    while (!js.empty()) {
+      const std::size_t comma = js.find(',');
+      const std::string_view member = js.substr(0, comma);
+      js = comma == std::string_view::npos ? std::string_view{} : js.substr(comma + 1);
+      const std::size_t colon = member.find("\":");
+      REQUIRE(colon != std::string_view::npos);
+      const std::string key(member.substr(1, colon - 1));
+      std::string_view text = member.substr(colon + 2);
+      json_kind kind = json_kind::number;
+      if (text == "null") {
+        kind = json_kind::null;
+      } else if (text.front() == '"') {
+        kind = json_kind::string;
+        text = text.substr(1, text.size() - 2);
+      }
+      storage.emplace_back(text);
+      o.members[key] = {kind, storage.back()};
+    }
+  }
+};
+}  // namespace
+
+// What seawire-decode accepts (validate), seawire-encode must send back: every frame validate()
+// accepts reads back from its JSON as the same frame, and every frame it refuses is refused.
+TEST_CASE("ANELLO frame JSON: validate() and read_frame_json agree on every field's values") {
+  std::mt19937_64 rng(11);
+  const auto base = anello::decode_frame(seed_frame());
+  REQUIRE(base);
+  int accepted = 0, refused = 0;
+  anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    using raw_type = typename field_type::raw_type;
+    using limits = std::numeric_limits<raw_type>;
+    const auto [lo, hi] = field.wire_limits();
+    std::vector<raw_type> values = {limits::min(), static_cast<raw_type>(limits::min() + 1), 0,
+                                    static_cast<raw_type>(limits::max() - 1), limits::max()};
+    if constexpr (std::is_signed_v<raw_type>) values.push_back(static_cast<raw_type>(-1));
+    // The edges of the sender's range and one past them (in 64 bits: gps_time's hi is
+    // INT64_MAX, and one past it is a uint64 the wire carries).
+    for (const std::int64_t edge : {lo, lo + 1, hi - 1, hi}) {
+      if (std::in_range<raw_type>(edge)) values.push_back(static_cast<raw_type>(edge));
+    }
+    if (std::in_range<raw_type>(lo) && std::cmp_greater(lo, limits::min()))
+      values.push_back(static_cast<raw_type>(lo - 1));
+    if (std::cmp_less(hi, limits::max()))
+      values.push_back(static_cast<raw_type>(static_cast<std::uint64_t>(hi) + 1));
+    for (int k = 0; k < 300; ++k) values.push_back(static_cast<raw_type>(rng()));
+    for (int k = 0; k < 300; ++k) {
+      const auto span = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
+      const std::uint64_t off = span == ~std::uint64_t{0} ? rng() : rng() % (span + 1);
+      values.push_back(static_cast<raw_type>(static_cast<std::uint64_t>(lo) + off));
+    }
+    for (const raw_type raw : values) {
+      anello::sensor_frame_raw f = base.value;
+      f.*field_type::raw_member = raw;
+      string_sink k;
+      anello::write_json(k, f);
+      const flat_frame_object json(k.s);
+      const auto back = anello::read_frame_json(json.o);
+      INFO("field " << number << " raw " << +raw << ": " << k.s);
+      if (anello::validate(f)) {
+        ++accepted;
+        REQUIRE(back.ok());
+        // "Not available" comes back as the type's maximum (the seed's 0xFFFF air temperature
+        // as 0x7FFF), every other value as it was.
+        anello::sensor_frame_raw expected = f;
+        anello::detail::visit_sensor_fields([&](std::uint16_t, const auto& g) {
+          using g_type = std::remove_cvref_t<decltype(g)>;
+          auto& r = expected.*g_type::raw_member;
+          if (g.not_available(r)) r = anello::detail::not_available<typename g_type::raw_type>;
+          return true;
+        });
+        REQUIRE(back.value == expected);
+      } else {
+        ++refused;
+        REQUIRE_FALSE(back.ok());
+        CHECK(back.field == number);
+      }
+    }
+    return true;
+  });
+  CHECK(accepted > 19 * 300);
+  CHECK(refused > 0);
 }

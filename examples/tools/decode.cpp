@@ -138,14 +138,12 @@ class decoder {
     // CR and LF bytes inside the frame are no line breaks: take back what piece() counted.
     for (const std::uint8_t b : item.bytes)
       if (b == '\n') --line_;
-    if (opt_.policy.strict_values) {
-      const result<anello::sensor_frame_raw> v = anello::validate(item.frame);
-      if (!v) {
-        std::string detail = "AB00 field " + std::to_string(v.field) + ": " +
-                             std::string(message(v.ec)) + " (the spec's range)";
-        reject(line_, v.ec, v.field, detail, hex(item.bytes));
-        return;
-      }
+    // Values outside the spec's ranges are rejected, as in sentences (strict where it matters):
+    // what is decoded here, seawire-encode sends back. "Not available" values pass.
+    const result<anello::sensor_frame_raw> v = anello::validate(item.frame);
+    if (!v) {
+      reject(line_, v.ec, v.field, frame_error(item.frame, v), hex(item.bytes));
+      return;
     }
     switch (opt_.fmt) {
       case format::json:
@@ -162,6 +160,33 @@ class decoder {
     ++decoded_;
     if (opt_.stats) ++by_type_[std::string(anello::frame_json_type)];
     if (opt_.line_buffered) out_.flush();
+  }
+
+  // "AB00 field 1 (heading_deg) 361: value outside the range the spec allows", the value as
+  // write_json would write it.
+  static std::string frame_error(const anello::sensor_frame_raw& frame,
+                                 const result<anello::sensor_frame_raw>& v) {
+    std::string detail = "AB00 field " + std::to_string(v.field);
+    anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
+      if (number != v.field) return true;
+      using field_type = std::remove_cvref_t<decltype(field)>;
+      const auto raw = frame.*field_type::raw_member;
+      nmea::decimal d;
+      d.negative = raw < 0;
+      d.mantissa = raw < 0 ? 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(raw))
+                           : static_cast<std::uint64_t>(raw);
+      d.places = static_cast<std::uint8_t>(anello::detail::divisor_places(field.divisor));
+      std::string value;
+      struct sink {
+        std::string& s;
+        void put(char c) { s += c; }
+        void put(std::string_view t) { s += t; }
+      } k{value};
+      nmea::write_json_value(k, d);
+      detail += " (" + std::string(anello::detail::json_key(field.name)) + ") " + value;
+      return false;
+    });
+    return detail + ": " + std::string(message(v.ec));
   }
 
   static std::string hex(const anello::frame_bytes& bytes) {
@@ -402,14 +427,17 @@ int main(int argc, char** argv) {
   CLI::Option* checksum_opt =
       app.add_option("-c,--checksum", checksum,
                      "required: a sentence without *hh is rejected; verify: checked when present "
-                     "(default); ignore: not checked (e.g. --checksum required)")
+                     "(default); ignore: not checked, in upper or lower case (e.g. --checksum "
+                     "required)")
           ->check(CLI::IsMember({"required", "verify", "ignore"}));
   app.add_flag(
       "--strict", strict,
       "apply the rules seawire sends by to the input: checksum required, uppercase hex, "
       "no extra fields, CR LF endings, no '+' signs or spaces around numbers, no reserved "
       "characters in text "
-      "(--checksum still overrides the checksum rule; e.g. --strict --format none < ours.nmea)");
+      "(--checksum still overrides the checksum rule; with --checksum ignore the hex may be "
+      "lowercase; e.g. --strict --format none < ours.nmea). Values outside the spec's ranges, "
+      "in sentences and in frames, are rejected with or without --strict");
   app.add_flag("--stats", o.stats,
                "at the end, print counts by message type and by error, and the stream reader's "
                "dropped-byte counters, to stderr (e.g. --format none --stats)");
@@ -437,5 +465,9 @@ int main(int argc, char** argv) {
                         : checksum == "ignore" ? nmea::checksum_policy::ignore
                                                : nmea::checksum_policy::verify_if_present;
   }
+  // A checksum that is not checked has no case to check either (--strict asks for uppercase hex
+  // only of a checksum it verifies). What is after '*' must still be two hex digits: the library
+  // reads it as the sentence's end, and anything else there is no sentence.
+  if (o.policy.checksum == nmea::checksum_policy::ignore) o.policy.lowercase_hex = true;
   return run(o);
 }

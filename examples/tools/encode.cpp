@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // seawire-encode: JSON Lines on stdin (the schema seawire-decode writes) -> sentences on stdout,
 // and 56-byte ANELLO binary frames for "type":"AB00". nlohmann-json's SAX interface tokenises
-// each line, handing over every number's text, so 203.10 is sent as 203.10; the library reads
+// each line, handing over every number's text, so 203.10 is sent as 203.10 (a number in exponent
+// form, as jq prints 0.00001, is first written out: 1e-05 is sent as 0.00001); the library reads
 // the values (nmea::read_json, anello::read_frame_json) and encodes them strictly.
 // See --help, and README.programs.md for the manual.
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -38,11 +40,77 @@ using nmea::json_kind;
 using nmea::json_value;
 using seawire::tools::all_messages;
 
+// Exponent forms are written out only this far: 1e-40 .. 1e40, at most 48 digits in all.
+constexpr int max_exponent = 40;
+constexpr std::size_t max_plain_digits = 48;
+
+/// The plain decimal text of a JSON number written with an exponent, by moving the decimal point
+/// (never through double), so the digits are kept: 1e-05 -> 0.00001, -2.50E+2 -> -250,
+/// 1.50e-1 -> 0.150, 1.5e1 -> 15. The fraction digits are the mantissa's minus the exponent, at
+/// least 0. `text` is valid JSON number text. A number without an exponent is returned as it is.
+/// Empty (and `why` set) when the exponent is beyond +-max_exponent or the result would have more
+/// than max_plain_digits digits.
+std::string plain_decimal(std::string_view text, std::string& why) {
+  const std::size_t e_at = text.find_first_of("eE");
+  if (e_at == std::string_view::npos) return std::string(text);
+  std::string_view mantissa = text.substr(0, e_at);
+  std::string_view exponent = text.substr(e_at + 1);
+  const bool negative = mantissa.starts_with('-');
+  if (negative) mantissa.remove_prefix(1);
+  const bool exponent_negative = exponent.starts_with('-');
+  if (exponent.starts_with('-') || exponent.starts_with('+')) exponent.remove_prefix(1);
+  while (exponent.size() > 1 && exponent.front() == '0') exponent.remove_prefix(1);
+  int e = 0;
+  for (const char c : exponent) {
+    e = e * 10 + (c - '0');
+    if (e > max_exponent) {
+      why = "an exponent beyond +-" + std::to_string(max_exponent) +
+            " is not written out (write the number without an exponent)";
+      return {};
+    }
+  }
+  if (exponent_negative) e = -e;
+  // The mantissa's digits without the point, and how many of them followed it.
+  std::string digits;
+  long fraction = 0;
+  const std::size_t point = mantissa.find('.');
+  if (point == std::string_view::npos) {
+    digits = mantissa;
+  } else {
+    digits = mantissa.substr(0, point);
+    digits += mantissa.substr(point + 1);
+    fraction = static_cast<long>(mantissa.size() - point - 1);
+  }
+  fraction -= e;
+  if (fraction < 0) {
+    digits.append(static_cast<std::size_t>(-fraction), '0');
+    fraction = 0;
+  }
+  const auto places = static_cast<std::size_t>(fraction);
+  if (digits.size() <= places) digits.insert(0, places + 1 - digits.size(), '0');
+  std::size_t lead = 0;  // zeros before the first integer digit: 05 -> 5, 00.1 -> 0.1
+  while (lead + 1 < digits.size() - places && digits[lead] == '0') ++lead;
+  digits.erase(0, lead);
+  if (digits.size() > max_plain_digits) {
+    why = "more than " + std::to_string(max_plain_digits) +
+          " digits written out (write the number without an exponent)";
+    return {};
+  }
+  std::string out = negative ? "-" : "";
+  out.append(digits, 0, digits.size() - places);
+  if (places > 0) {
+    out += '.';
+    out.append(digits, digits.size() - places, places);
+  }
+  return out;
+}
+
 // One JSON Lines object, flattened: its members, the members of its "precision" object, and its
 // "fields" array (unknown sentences). Views point into `texts_`, which never moves its strings.
 class json_object : public nlohmann::json_sax<nlohmann::json> {
  public:
-  /// Parses one line; false (and error() says why) when it is not one JSON object.
+  /// Parses one line; false (and error() says why) when it is not one JSON object, or holds a
+  /// number that cannot be written out (see plain_decimal).
   bool parse(std::string_view line) {
     texts_.clear();
     members_.clear();
@@ -52,7 +120,7 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     depth_ = 0;
     mode_ = mode::top;
     error_.clear();
-    if (!nlohmann::json::sax_parse(line, this) && error_.empty()) error_ = "not JSON";
+    if (!nlohmann::json::sax_parse(line, this) && error_.empty()) error_ = "invalid JSON: not JSON";
     return error_.empty();
   }
   [[nodiscard]] const std::string& error() const { return error_; }
@@ -67,6 +135,10 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   [[nodiscard]] const std::vector<std::pair<std::string_view, json_value>>& members() const {
     return members_;
   }
+  /// The members of the "precision" object(s), in order.
+  [[nodiscard]] const std::vector<std::pair<std::string_view, json_value>>& precision() const {
+    return precision_;
+  }
   [[nodiscard]] const std::vector<std::string_view>& fields() const { return fields_; }
   [[nodiscard]] bool has_fields() const { return has_fields_; }
 
@@ -80,7 +152,20 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     return value(json_kind::number, std::to_string(v));
   }
   bool number_float(number_float_t, const string_t& text) override {
-    return value(json_kind::number, text);  // the number as written: "203.10"
+    // The number as written ("203.10"), or, with an exponent, written out ("1e-05": "0.00001"):
+    // the library reads plain decimals only. Only values that are kept are converted.
+    const bool kept = depth_ == 1 || (depth_ == 2 && mode_ == mode::precision);
+    if (!kept || text.find_first_of("eE") == std::string::npos)
+      return value(json_kind::number, text);
+    std::string why;
+    const std::string plain = plain_decimal(text, why);
+    if (plain.empty()) {
+      const std::string where = depth_ == 1
+                                    ? "field \"" + std::string(key_) + "\""
+                                    : "\"precision\" of \"" + std::string(inner_key_) + "\"";
+      return refuse(where + " " + text + ": " + why);
+    }
+    return value(json_kind::number, plain);
   }
   bool string(string_t& s) override { return value(json_kind::string, s); }
   bool binary(binary_t&) override { return fail("binary values are not JSON text"); }
@@ -97,7 +182,7 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   bool start_array(std::size_t) override { return open(true); }
   bool end_array() override { return close(); }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
-    error_ = e.what();
+    error_ = std::string("invalid JSON: ") + e.what();
     return false;
   }
 
@@ -106,7 +191,10 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
 
   std::string_view keep(std::string_view s) { return texts_.emplace_back(s); }
 
-  bool fail(std::string why) {
+  // Not the JSON this program reads.
+  bool fail(const std::string& why) { return refuse("invalid JSON: " + why); }
+  // JSON, but a value that cannot be sent.
+  bool refuse(std::string why) {
     if (error_.empty()) error_ = std::move(why);
     return false;
   }
@@ -128,7 +216,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     if (depth_ == 0) {
       if (array) return fail("a line must hold one JSON object");
     } else if (depth_ == 1) {
-      members_.emplace_back(key_, json_value{json_kind::other, {}});
+      // The text says which: "{" an object, "[" an array ("precision" must be an object).
+      members_.emplace_back(key_, json_value{json_kind::other, array ? "[" : "{"});
       if (!array && key_ == "precision") {
         mode_ = mode::precision;
       } else if (array && key_ == "fields") {
@@ -167,6 +256,50 @@ bool with_type(std::string_view type, nmea::message_set<Ms...>*, F&& f) {
   return ((Ms::nmea.matches(type) ? (f(std::type_identity<Ms>{}), true) : false) || ...);
 }
 
+/// The "precision" a position field takes: fraction digits from lo to hi (what nmea::read_json
+/// and nmea::from_decimal_degrees accept).
+struct place_range {
+  unsigned lo;
+  unsigned hi;
+  std::string_view what;
+};
+
+/// The precision range of M's field `key`; nullopt when it is no position field of M.
+template <class M>
+std::optional<place_range> position_places(std::string_view key) {
+  std::optional<place_range> out;
+  M::nmea.fields.apply([&](const auto&... d) {
+    (
+        [&](const auto& desc) {
+          using V = typename std::remove_cvref_t<decltype(desc)>::value_type;
+          if (desc.name != key) return;
+          if constexpr (nmea::detail::is_nmea_coordinate<V>::value) {
+            out = place_range{1, 12, "minute places of a DDMM.mmm position"};
+          } else if constexpr (nmea::detail::is_decimal_coordinate<V>::value) {
+            out = place_range{0, 18, "degree places of a decimal-degree position"};
+          }
+        }(d),
+        ...);
+  });
+  return out;
+}
+
+/// M's position fields, for messages: "latitude, longitude"; empty when it has none.
+template <class M>
+std::string position_names() {
+  std::string out;
+  M::nmea.fields.apply([&](const auto&... d) {
+    (
+        [&](const auto& desc) {
+          if (!position_places<M>(desc.name)) return;
+          if (!out.empty()) out += ", ";
+          out += desc.name;
+        }(d),
+        ...);
+  });
+  return out;
+}
+
 struct options {
   bool line_buffered = false;
 };
@@ -181,7 +314,7 @@ class encoder {
       text.remove_suffix(1);
     if (text.find_first_not_of(" \t") == std::string_view::npos) return;  // blank line
     if (!obj_.parse(text)) {
-      reject("invalid JSON: " + obj_.error());
+      reject(obj_.error());
       return;
     }
     const json_value type = obj_({}, "type");
@@ -208,6 +341,9 @@ class encoder {
   template <class M>
   void send(std::string_view type) {
     if (!known_keys(type, [](std::string_view k) { return nmea::has_field<M>(k); })) return;
+    if (!known_precision(
+            type, [](std::string_view k) { return position_places<M>(k); }, position_names<M>()))
+      return;
     const result<M> m = nmea::read_json<M>(type, obj_);
     if (!m) {
       field_error(type, m.ec, m.field, nmea::field_name<M>(m.field));
@@ -223,15 +359,22 @@ class encoder {
   }
 
   void frame() {
-    if (!known_keys(anello::frame_json_type, anello::has_json_field)) return;
+    // A frame's positions always have 6 fraction digits: no "precision" (an unknown key).
+    if (!known_keys(anello::frame_json_type, anello::has_json_field, false)) return;
     const result<anello::sensor_frame_raw> f = anello::read_frame_json(obj_);
     if (!f) {
       std::string_view field_name;
+      bool code = false;  // a code or count (fix_quality): a whole number, never rounded
       anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
-        if (number == f.field) field_name = anello::detail::json_key(field.name);
+        using value_type = typename std::remove_cvref_t<decltype(field)>::value_type;
+        if (number == f.field) {
+          field_name = anello::detail::json_key(field.name);
+          code = std::is_integral_v<value_type>;
+        }
         return number < f.field;
       });
-      field_error(anello::frame_json_type, f.ec, f.field, field_name);
+      field_error(anello::frame_json_type, f.ec, f.field, field_name,
+                  code && f.ec == errc::bad_number ? " (a code: a whole number, not rounded)" : "");
       return;
     }
     const anello::frame_bytes bytes = anello::encode_frame(f.value);
@@ -243,6 +386,12 @@ class encoder {
     if (!obj_.has_fields()) {
       reject(std::string(name(errc::unknown_address)) + ": no known message is \"" +
              std::string(type) + "\" (and there is no \"fields\" array to send it as is)");
+      return;
+    }
+    for (const auto& [key, value] : obj_.members()) {
+      if (key == "type" || key == "fields") continue;
+      reject(std::string(type) + ": unknown key \"" + std::string(key) +
+             "\" (a sentence no message describes takes only \"type\" and \"fields\")");
       return;
     }
     bool address_ok = !type.empty() && type.size() <= 15 && seawire::detail::is_upper(type[0]);
@@ -279,9 +428,9 @@ class encoder {
   // Keys that are no field of the message are refused: a misspelt key would otherwise be a
   // silently blank field.
   template <class Known>
-  bool known_keys(std::string_view type, Known&& known) {
+  bool known_keys(std::string_view type, Known&& known, bool precision_allowed = true) {
     for (const auto& [key, value] : obj_.members()) {
-      if (key == "type" || key == "precision" || known(key)) continue;
+      if (key == "type" || (precision_allowed && key == "precision") || known(key)) continue;
       reject(std::string(type) + ": unknown key \"" + std::string(key) + "\" (not a field of " +
              std::string(type) + ")");
       return false;
@@ -289,8 +438,57 @@ class encoder {
     return true;
   }
 
-  void field_error(std::string_view type, errc e, std::uint16_t field,
-                   std::string_view field_name) {
+  // "precision" must be an object whose keys are position fields of the message and whose values
+  // are whole numbers of fraction digits in the field's range: a misspelt key would otherwise
+  // silently send the default precision. places(key) gives the range, nullopt for a key that is
+  // no position field; `names` lists the position fields for the error message.
+  template <class Places>
+  bool known_precision(std::string_view type, Places&& places, std::string_view names) {
+    const json_value p = obj_({}, "precision");
+    if (p.blank()) return true;
+    const std::string t(type);
+    if (p.kind != json_kind::other || p.text != "{") {
+      reject(t + ": \"precision\" must be an object giving position fields their fraction digits" +
+             " (e.g. \"precision\":{\"latitude\":5})");
+      return false;
+    }
+    for (const auto& [key, value] : obj_.precision()) {
+      const std::optional<place_range> range = places(key);
+      if (!range) {
+        reject(t + ": unknown key \"" + std::string(key) + "\" in \"precision\" (" +
+               (names.empty() ? t + " has no position fields"
+                              : "allowed: the position fields " + std::string(names)) +
+               ")");
+        return false;
+      }
+      if (value.blank()) continue;  // null: the default precision
+      unsigned n = 0;
+      bool whole = (value.kind == json_kind::number || value.kind == json_kind::string) &&
+                   !value.text.empty() && value.text.size() <= 3;
+      for (const char c : value.text) {
+        whole = whole && seawire::detail::is_digit(c);
+        n = n * 10 + static_cast<unsigned>(c - '0');
+      }
+      if (!whole || n < range->lo || n > range->hi) {
+        const std::string_view quote = value.kind == json_kind::string ? "\"" : "";
+        std::string why = t;
+        why += ": \"precision\" of \"";
+        why += key;
+        why += "\" is ";
+        why += quote;
+        why += value.text;
+        why += quote;
+        why += ": must be a whole number from " + std::to_string(range->lo) + " to " +
+               std::to_string(range->hi) + " (" + std::string(range->what) + ")";
+        reject(why);
+        return false;
+      }
+    }
+    return true;
+  }
+
+  void field_error(std::string_view type, errc e, std::uint16_t field, std::string_view field_name,
+                   std::string_view note = {}) {
     std::string what(type);
     if (field != 0) {
       what += " field " + std::to_string(field);
@@ -304,7 +502,7 @@ class encoder {
         }
       }
     }
-    reject(what + ": " + std::string(name(e)) + ": " + std::string(message(e)));
+    reject(what + ": " + std::string(name(e)) + ": " + std::string(message(e)) + std::string(note));
   }
 
   void reject(const std::string& why) {
@@ -363,10 +561,12 @@ int main(int argc, char** argv) {
       "seawire-encode: JSON Lines on stdin -> sentences on stdout (CR LF, uppercase checksum),\n"
       "in the schema seawire-decode writes: \"type\" (the address as on the wire: \"PYDIR\",\n"
       "\"GPRMC\"; \"AB00\" for an ANELLO binary frame) plus the message's fields by name.\n"
-      "Numbers are sent with the digits written (1.50 stays 1.50). Positions are signed decimal\n"
-      "degrees; a DDMM.mmm field gets (fraction digits - 2) minute places, 4 when the number has\n"
-      "fewer than 3; override per field with \"precision\": {\"latitude\": 5}. Blank or absent\n"
-      "fields: null or left out. {\"type\":\"XXABC\",\"fields\":[\"1\",\"2\"]} sends any other\n"
+      "Numbers are sent with the digits written (1.50 stays 1.50; 1e-05, as jq prints 0.00001,\n"
+      "is sent as 0.00001). Positions are signed decimal degrees; a DDMM.mmm field gets\n"
+      "(fraction digits - 2) minute places, 4 when the number has fewer than 3; override per\n"
+      "field with \"precision\": {\"latitude\": 5} (1-12 minute places; 0-18 degree places for\n"
+      "decimal-degree fields). Blank or absent fields: null or left out; unknown keys are\n"
+      "refused. {\"type\":\"XXABC\",\"fields\":[\"1\",\"2\"]} sends any other\n"
       "sentence as given. Error objects from seawire-decode are passed over. A line that cannot\n"
       "be sent is reported on stderr (line number, field, reason) and the next line is read.\n\n"
       "Examples:\n"

@@ -279,6 +279,22 @@ case_options() {
   expect_rc "spaces around a number, --strict" 1 "$decode" --strict <"$work/in"
   printf '$PYDIR,45,55\r\n' >"$work/in"
   expect_rc "--strict --checksum verify" 0 "$decode" --strict --checksum verify <"$work/in"
+  # A checksum that is not checked has no case either; one that is verified keeps --strict's.
+  printf '$BPLOG,ACK,ON*1e\r\n$BPLOG,ACK,ON*0f\r\n$PYDIR,45,55*5a\r\n' >"$work/in"
+  expect_rc "--strict --checksum ignore, lowercase hex" 0 "$decode" --strict --checksum ignore <"$work/in"
+  expect_eq "lowercase checksums, right or wrong, are not checked" "$(printf '%s\n' \
+    '{"type":"BPLOG","code":"ACK","state":"ON"}' '{"type":"BPLOG","code":"ACK","state":"ON"}' \
+    '{"type":"PYDIR","thrust_left":45,"thrust_right":55}')" "$(cat "$work/out")"
+  expect_rc "--strict --checksum verify, lowercase hex" 1 "$decode" --strict --checksum verify \
+    --format none <"$work/in"
+  expect_eq "a verified checksum is still uppercase under --strict" \
+    "$(printf '%s\n' 'line 1: bad_checksum_format' 'line 2: bad_checksum_format' 'line 3: bad_checksum_format')" \
+    "$(sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/' "$work/err")"
+  printf '$BPLOG,ACK,ON*1\r\n$BPLOG,ACK,ON*1g\r\n' >"$work/in"
+  expect_rc "--checksum ignore, not two hex digits" 1 "$decode" --checksum ignore --format none <"$work/in"
+  expect_eq "what follows '*' must still be two hex digits" \
+    "$(printf '%s\n' 'line 1: bad_checksum_format' 'line 2: bad_checksum_format')" \
+    "$(sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/' "$work/err")"
   expect_rc "--line-buffered" 0 "$decode" --line-buffered <"$data/sandshark.nmea"
   if ! cmp -s "$work/out" <("$decode" <"$data/sandshark.nmea"); then
     fail "--line-buffered changes the output"
@@ -297,6 +313,22 @@ case_options() {
 
 # hex2bin <hex>: the bytes.
 hex2bin() { printf "$(sed 's/../\\x&/g' <<<"$1")"; }
+
+# crc32 <hex>: zlib's CRC-32 of the bytes, as 8 uppercase hex digits.
+crc32() {
+  local hex=$1 crc=0xFFFFFFFF i k
+  for ((i = 0; i < ${#hex}; i += 2)); do
+    crc=$((crc ^ 16#${hex:i:2}))
+    for ((k = 0; k < 8; k++)); do crc=$(((crc >> 1) ^ (0xEDB88320 & -(crc & 1)))); done
+  done
+  printf '%08X' $((crc ^ 0xFFFFFFFF))
+}
+
+# frame <payload hex>: the 56-byte AB00 frame around a 48-byte payload, as hex.
+frame() { printf 'AB000030%s%s' "$(crc32 "$1")" "$1"; }
+
+# set_field <payload hex> <hex offset> <hex value>: the payload with the value written there.
+set_field() { printf '%s%s%s' "${1:0:$2}" "$3" "${1:$2+${#3}}"; }
 seed_frame=AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF000000000002006C0003005AFFFFFFFF
 
 case_frames() {
@@ -340,6 +372,161 @@ case_frames() {
   expect_eq "frame errors name the field" "$(printf '%s\n' \
     'seawire-encode: line 2: AB00 field 1 (heading_deg) 361: out_of_range: value outside the range the spec allows' \
     'seawire-encode: line 3: AB00: unknown key "latitude_deg" (not a field of AB00)')" "$(cat "$work/err")"
+  # A measured value is rounded to the field's resolution; a code (the GGA fix quality) is not.
+  printf '%s\n' '{"type":"AB00","heading_deg":89.5,"sog_mps":1.25,"fix_quality":7}' \
+    '{"type":"AB00","fix_quality":7.5}' '{"type":"AB00","fix_quality":7.0}' \
+    '{"type":"AB00","precision":{"latitude":3}}' >"$work/in"
+  expect_rc "encode frames with fractions" 1 "$encode" <"$work/in"
+  expect_eq "heading 89.5 sent as 90, SOG 1.25 as 1.3, fix quality 7" "90 1.3 7" \
+    "$("$decode" <"$work/out" | sed 's/.*"heading_deg":\([^,]*\),.*"sog_mps":\([^,]*\),.*"fix_quality":\([^,]*\),.*/\1 \2 \3/')"
+  expect_eq "a fix quality with a fraction is refused; frames take no precision" "$(printf '%s\n' \
+    'seawire-encode: line 2: AB00 field 10 (fix_quality) 7.5: bad_number: not a decimal number (a code: a whole number, not rounded)' \
+    'seawire-encode: line 3: AB00 field 10 (fix_quality) 7.0: bad_number: not a decimal number (a code: a whole number, not rounded)' \
+    'seawire-encode: line 4: AB00: unknown key "precision" (not a field of AB00)')" "$(cat "$work/err")"
+}
+
+# seawire-decode holds frames to the spec's ranges (as sentences), without --strict: whatever it
+# decodes, seawire-encode sends back unchanged.
+case_frame_ranges() {
+  local seed=${seed_frame:16} spec h bad=() good=()
+  # Payload offsets in hex digits: heading 0, latitude 4, longitude 12, SOG 20, COG 24, time 28,
+  # altitude 44, geoid 52, HDOP 60, fix quality 62, motor 64, rudder 66, STW 68, wind 72 76 80 84,
+  # air temperature 88, pressure 92.
+  for spec in 0:0169 4:055D4A81 12:F5456AFF 24:0169 28:8000000000000000 62:09 64:80 66:65 \
+    76:0169 84:FFFE; do
+    bad+=("$(frame "$(set_field "$seed" "${spec%%:*}" "${spec#*:}")")")
+  done
+  {
+    crlf "$(seal PYDIR,1,2)"
+    for h in "${bad[@]}"; do hex2bin "$h"; done
+    crlf "$(seal PYDIR,3,4)"
+  } >"$work/in"
+  expect_rc "frames outside the spec's ranges" 1 "$decode" <"$work/in"
+  expect_eq "each is rejected, naming its field, and the sentences around them decode" \
+    "$(printf '%s\n' PYDIR 2:out_of_range:1 2:out_of_range:2 2:out_of_range:3 2:out_of_range:5 \
+      2:value_too_large:6 2:out_of_range:10 2:out_of_range:11 2:out_of_range:12 2:out_of_range:15 \
+      2:out_of_range:17 PYDIR)" \
+    "$(sed -e 's/^{"line":\([0-9]*\),"error":"\([a-z_]*\)","field":\([0-9]*\),.*/\1:\2:\3/' \
+      -e 's/^{"type":"PYDIR".*/PYDIR/' "$work/out")"
+  expect_eq "an out-of-range frame in full" \
+    "{\"line\":2,\"error\":\"out_of_range\",\"field\":2,\"detail\":\"AB00 field 2 (latitude) 90.000001: value outside the range the spec allows\",\"input\":\"${bad[1]}\"}" \
+    "$(line 3 "$work/out")"
+  expect_eq "motor -128, as the decoder reads it" \
+    '"detail":"AB00 field 11 (motor_pct) -128: value outside the range the spec allows",' \
+    "$(grep -o '"detail":"AB00 field 11[^"]*",' "$work/out")"
+  expect_rc "--format nmea drops them" 1 "$decode" --format nmea <"$work/in"
+  expect_eq "only the sentences are written" "$(crlf "$(seal PYDIR,1,2)" "$(seal PYDIR,3,4)")" \
+    "$(cat "$work/out")"
+  expect_eq "one reason per frame on stderr" 10 "$(wc -l <"$work/err")"
+  # The edges of every range, and "not available" (the seed's 0xFFFF air temperature too), decode
+  # and come back from seawire-encode bit for bit (0xFFFF as the spec's 0x7FFF). Fields are
+  # separated by '_' for reading.
+  local na=FFFF_7FFFFFFF_7FFFFFFF_FFFF_FFFF
+  good=(
+    0168_055D4A80_F5456B00_FFFE_0000_7FFFFFFFFFFFFFFF_80000000_7FFFFFFE_FE_08_9C_64_0000_FFFE_0168_0000_0000_8000_FFFE
+    0000_FAA2B580_0ABA9500_0000_0168_0000000000000000_7FFFFFFE_80000000_00_00_64_9C_FFFE_0000_0000_FFFE_0168_7FFE_0000
+    "${na}_0000E677D21FDBFF_7FFFFFFF_7FFFFFFF_FF_FF_7F_7F_FFFF_FFFF_FFFF_FFFF_FFFF_FFFF_FFFF"
+    "${na}_0000E677D21FDC00_7FFFFFFF_7FFFFFFF_FF_FF_7F_7F_FFFF_FFFF_FFFF_FFFF_FFFF_7FFF_FFFF"
+  )
+  good=("${good[@]//_/}")
+  : >"$work/in"
+  for h in "${good[@]}"; do hex2bin "$(frame "$h")" >>"$work/in"; done
+  expect_rc "frames at the edges of the ranges" 0 "$decode" <"$work/in"
+  cp "$work/out" "$work/edges.json"
+  expect_eq "four frames" 4 "$(grep -c '^{"type":"AB00",' "$work/edges.json")"
+  expect_eq "the edges, as decoded" \
+    '"heading_deg":360,"latitude":90.000000,"longitude":-180.000000,"sog_mps":6553.4,"cog_deg":0,"gps_time":9223372036854775807,"alt_msl_m":-214748364.8,"geoid_sep_m":214748364.6,"hdop":25.4,"fix_quality":8,"motor_pct":-100,"rudder_pct":100,' \
+    "$(line 1 "$work/edges.json" | grep -o '"heading_deg".*"rudder_pct":[^,]*,')"
+  expect_eq "the last ISO time, and the first in milliseconds" \
+    '"gps_time":"9999-12-31T23:59:59.999Z" "gps_time":253402300800000' \
+    "$(line 3 "$work/edges.json" | grep -o '"gps_time":[^,]*') $(line 4 "$work/edges.json" | grep -o '"gps_time":[^,]*')"
+  expect_rc "encode the edges" 0 "$encode" <"$work/edges.json"
+  good[2]=${good[2]:0:88}7FFF${good[2]:92}
+  if ! cmp -s "$work/out" <(for h in "${good[@]}"; do hex2bin "$(frame "$h")"; done); then
+    fail "decode | encode changes a frame at the edges"
+  fi
+  # The sample log: every frame that decodes is sent back, and decodes to the same JSON.
+  "$decode" <"$data/anello_mixed.nmea" >"$work/mixed.json"
+  grep '^{"type":"AB00",' "$work/mixed.json" >"$work/frames.json"
+  expect_rc "encode the sample log's frames" 0 "$encode" <"$work/frames.json"
+  expect_eq "43 frames of 56 bytes" $((43 * 56)) "$(wc -c <"$work/out")"
+  cp "$work/out" "$work/frames.bin"
+  expect_rc "decode them again" 0 "$decode" <"$work/frames.bin"
+  expect_eq "decode | encode | decode reproduces the frames" "$(cat "$work/frames.json")" \
+    "$(cat "$work/out")"
+}
+
+# Numbers in exponent form (jq 1.6 prints 0.00001 as 1e-05) are written out, digit for digit.
+case_exponents() {
+  cat >"$work/in" <<'JSON'
+{"type":"PYDIR","thrust_left":1e-05,"thrust_right":-2.50E+1}
+{"type":"PYDIR","thrust_left":1.5e1,"thrust_right":1e0}
+{"type":"PYDIR","thrust_left":1.50e-1,"thrust_right":0.5E1}
+{"type":"PYDIR","thrust_left":123e-1,"thrust_right":-1.23e+1}
+{"type":"CPNVG","timestamp":"08:10:25.987","latitude":-0.0e1,"longitude":-7125e-2,"position_quality":true}
+{"type":"CPNVG","timestamp":"08:10:25.987","latitude":4.25E+1,"longitude":-71.25,"position_quality":true,"precision":{"latitude":2e0}}
+{"type":"PYDIR","thrust_left":-2.50E+2,"thrust_right":1}
+{"type":"PYDIR","thrust_left":1e41,"thrust_right":1}
+{"type":"PYDIR","thrust_left":1,"thrust_right":1E-41}
+{"type":"PYDIR","thrust_left":1234567890123456789012345678901234567890123456789e-1,"thrust_right":1}
+{"type":"CPNVG","timestamp":"08:10:25.987","latitude":42.5,"longitude":-71.25,"position_quality":true,"precision":{"latitude":2e99}}
+{"type":"PYDIR","thrust_left":1e-0000000000000000000000000000000000000005,"thrust_right":1}
+JSON
+  expect_rc "encode numbers with exponents" 1 "$encode" <"$work/in"
+  expect_eq "sent with the mantissa's digits, the point moved" "$(crlf "$(seal PYDIR,0.00001,-25.0)" \
+    "$(seal PYDIR,15,1)" "$(seal PYDIR,0.150,5)" "$(seal PYDIR,12.3,-12.3)" \
+    "$(seal CPNVG,081025.987,0000.0000,S,07115.0000,W,1,,,,,,)" \
+    "$(seal CPNVG,081025.987,4230.00,N,07115.0000,W,1,,,,,,)" "$(seal PYDIR,0.00001,1)")" \
+    "$(cat "$work/out")"
+  expect_eq "absurd exponents are refused, naming line and field" "$(printf '%s\n' \
+    'seawire-encode: line 7: PYDIR field 1 (thrust_left) -250: out_of_range: value outside the range the spec allows' \
+    'seawire-encode: line 8: field "thrust_left" 1e41: an exponent beyond +-40 is not written out (write the number without an exponent)' \
+    'seawire-encode: line 9: field "thrust_right" 1E-41: an exponent beyond +-40 is not written out (write the number without an exponent)' \
+    'seawire-encode: line 10: field "thrust_left" 1234567890123456789012345678901234567890123456789e-1: more than 48 digits written out (write the number without an exponent)' \
+    'seawire-encode: line 11: "precision" of "latitude" 2e99: an exponent beyond +-40 is not written out (write the number without an exponent)')" \
+    "$(cat "$work/err")"
+  # seawire-decode | jq | seawire-encode, with jq 1.6's number printing: the same bytes.
+  "$decode" <"$data/anello_mixed.nmea" >"$work/mixed.json"
+  sed -e 's/"longitude":-0\.000013,/"longitude":-1.3e-05,/' \
+    -e 's/"wind_speed_abs_mps":0\.2,/"wind_speed_abs_mps":2e-1,/' "$work/mixed.json" >"$work/jq.json"
+  expect_eq "lines with exponents" 2 \
+    "$(grep -c -e '"longitude":-1.3e-05,' -e '"wind_speed_abs_mps":2e-1,' "$work/jq.json")"
+  "$encode" <"$work/mixed.json" >"$work/plain.out"
+  expect_rc "encode the log as jq 1.6 prints it" 0 "$encode" <"$work/jq.json"
+  if ! cmp -s "$work/out" "$work/plain.out"; then
+    fail "exponent forms are not sent as the plain numbers"
+  fi
+}
+
+# "precision" is checked like the message's keys: position fields only, whole numbers in range.
+case_precision() {
+  local nvg='{"type":"CPNVG","timestamp":"08:10:25.987","latitude":42.5,"longitude":-71.25,"position_quality":true'
+  local hrb='{"type":"RXHRB","date":"2018-12-10","time":"16:12:29","latitude":21.31198,"longitude":-157.88972,"team_id":"AUVSI","system_mode":"2","auv_status":"1"'
+  printf '%s\n' "$nvg"',"precision":{"latitud":2}}' "$nvg"',"precision":5}' \
+    "$nvg"',"precision":[2]}' "$nvg"',"precision":{"latitude":13}}' \
+    "$nvg"',"precision":{"latitude":0}}' "$nvg"',"precision":{"latitude":2.5}}' \
+    "$nvg"',"precision":{"latitude":-1}}' \
+    '{"type":"PYDIR","thrust_left":1,"thrust_right":2,"precision":{"foo":3}}' \
+    "$hrb"',"precision":{"latitude":19}}' "$hrb"',"precision":{"latitude":0,"longitude":7}}' \
+    "$nvg"',"precision":{"latitude":12,"longitude":"1"}}' "$nvg"',"precision":{"latitude":null}}' \
+    '{"type":"XXABC","fields":["1"],"foo":2}' >"$work/in"
+  expect_rc "encode with precision objects" 1 "$encode" <"$work/in"
+  expect_eq "in-range precisions are used" "$(crlf \
+    "$(seal RXHRB,101218,161229,21,N,157.8897200,W,AUVSI,2,1)" \
+    "$(seal CPNVG,081025.987,4230.000000000000,N,07115.0,W,1,,,,,,)" \
+    "$(seal CPNVG,081025.987,4230.0000,N,07115.0000,W,1,,,,,,)")" "$(cat "$work/out")"
+  expect_eq "unknown precision keys and bad values are refused, naming line and key" "$(printf '%s\n' \
+    'seawire-encode: line 1: CPNVG: unknown key "latitud" in "precision" (allowed: the position fields latitude, longitude)' \
+    'seawire-encode: line 2: CPNVG: "precision" must be an object giving position fields their fraction digits (e.g. "precision":{"latitude":5})' \
+    'seawire-encode: line 3: CPNVG: "precision" must be an object giving position fields their fraction digits (e.g. "precision":{"latitude":5})' \
+    'seawire-encode: line 4: CPNVG: "precision" of "latitude" is 13: must be a whole number from 1 to 12 (minute places of a DDMM.mmm position)' \
+    'seawire-encode: line 5: CPNVG: "precision" of "latitude" is 0: must be a whole number from 1 to 12 (minute places of a DDMM.mmm position)' \
+    'seawire-encode: line 6: CPNVG: "precision" of "latitude" is 2.5: must be a whole number from 1 to 12 (minute places of a DDMM.mmm position)' \
+    'seawire-encode: line 7: CPNVG: "precision" of "latitude" is -1: must be a whole number from 1 to 12 (minute places of a DDMM.mmm position)' \
+    'seawire-encode: line 8: PYDIR: unknown key "foo" in "precision" (PYDIR has no position fields)' \
+    'seawire-encode: line 9: RXHRB: "precision" of "latitude" is 19: must be a whole number from 0 to 18 (degree places of a decimal-degree position)' \
+    'seawire-encode: line 13: XXABC: unknown key "foo" (a sentence no message describes takes only "type" and "fields")')" \
+    "$(cat "$work/err")"
 }
 
 case_usage() {

@@ -11,9 +11,14 @@
 // six. "Not available" is null. gps_time is ISO 8601 UTC with milliseconds (a time outside the
 // years 1970..9999 is written as its integer milliseconds).
 //
-// Reading (read_frame_json) is strict like build_frame: a value is rounded to the field's
+// Reading (read_frame_json) is strict like build_frame: a measured value is rounded to the field's
 // resolution (halves away from zero) and refused, with the field number 1..19, when it is outside
-// the spec's range or not carried by the wire type; null or absent is "not available".
+// the spec's range or not carried by the wire type; null or absent is "not available". A code
+// (fix_quality, an int in sensor_values) is no measurement and is not rounded: it must be written
+// as an integer (7, not 7.5 or 7.0; bad_number otherwise), as the integer fields of sentences
+// must. Every frame validate() accepts is written by write_json as JSON that reads back as the
+// same frame (with "not available" as each type's maximum: the seed's 0xFFFF air temperature
+// comes back as 0x7FFF); a frame validate() refuses gives JSON that is refused.
 
 #include <chrono>
 #include <cstddef>
@@ -233,6 +238,10 @@ template <class Lookup>
     } else {
       nmea::decimal d;
       e = nmea::detail::json_number(v, d);
+      // A code or count (an integer physical type) is never rounded: 7.5 is no fix quality.
+      if constexpr (std::is_integral_v<typename field_type::value_type>) {
+        if (e == errc::ok && d.places != 0) e = errc::bad_number;
+      }
       if (e == errc::ok) e = detail::scale_decimal(d, detail::divisor_places(field.divisor), wire);
       if (e == errc::value_too_large) e = field.refusal();
     }
