@@ -185,6 +185,31 @@ TEST_CASE("scheduler: no heartbeat until there is something to say") {
   CHECK(s.next_due() == rx::instant::min());
 }
 
+TEST_CASE("scheduler and validator: the extreme instants do not overflow") {
+  // now + 1 s at instant::max() would wrap to the far past: a heartbeat on every poll.
+  rx::scheduler s;
+  REQUIRE(s.status(heartbeat_content()).ok());
+  (void)drain(s, rx::instant::max());
+  CHECK(s.next_due() == rx::instant::max());
+  CHECK_FALSE(s.heartbeat_due(rx::instant::max() - 1s));
+  REQUIRE(s.submit(code_report("RGB"), rx::instant::max()).accepted());
+  (void)drain(s, rx::instant::max());  // sent: the next RXCOD may go 1 s later, "never"
+  const auto again = s.submit(code_report("RBG"), rx::instant::max());
+  CHECK(again.accepted());
+  CHECK(again.release_at == rx::instant::max());
+
+  // The validator measures time between sentences: min() to max() is held at the limit.
+  rx::validator v;
+  v.start(rx::instant::min());
+  const std::string line = sealed("RXCOD,101218,161229,AUVSI,RGB");
+  (void)v.check(line, rx::instant::min());
+  const auto late = v.check(line, rx::instant::max());
+  for (const auto& f : late.findings) CHECK(f.broken != rx::rule::rate);
+  const auto gap = v.advance(rx::instant::max());
+  REQUIRE(gap.size() == 1);
+  CHECK(gap[0].elapsed == rx::instant::duration::max());
+}
+
 TEST_CASE("scheduler: heartbeat at 1 Hz, due exactly at the second, stamped in HST") {
   rx::scheduler s;
   REQUIRE(s.status(heartbeat_content()).ok());

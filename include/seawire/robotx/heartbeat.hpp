@@ -131,7 +131,7 @@ class scheduler {
   [[nodiscard]] constexpr std::optional<outgoing> poll(instant now) noexcept {
     if (heartbeat_ && heartbeat_due(now)) {
       std::optional<outgoing> out = release(*heartbeat_, now);
-      next_heartbeat_ = now + config_.heartbeat_period;
+      next_heartbeat_ = detail::later_by(now, config_.heartbeat_period);
       return out;
     }
     std::size_t best = report_type_count;
@@ -155,7 +155,9 @@ class scheduler {
 
   /// Whether the heartbeat is due at `now` (false before the first status()).
   [[nodiscard]] constexpr bool heartbeat_due(instant now) const noexcept {
-    return heartbeat_ && (!next_heartbeat_ || now >= *next_heartbeat_);
+    // instant::max() is "never" (where the next second would be past the end of time).
+    return heartbeat_ &&
+           (!next_heartbeat_ || (now >= *next_heartbeat_ && *next_heartbeat_ != instant::max()));
   }
 
   /// When poll() next has something to send: instant::min() if it has now (or as soon as
@@ -207,13 +209,12 @@ class scheduler {
     }
     slot& s = slot_[i];
     instant allowed = now;
-    if (last_sent_[i] && *last_sent_[i] + config_.min_interval > now)
-      allowed = *last_sent_[i] + config_.min_interval;
+    if (last_sent_[i] && detail::later_by(*last_sent_[i], config_.min_interval) > now)
+      allowed = detail::later_by(*last_sent_[i], config_.min_interval);
     if (config_.when_too_soon == too_soon::refuse && (allowed > now || s.waiting)) {
       r.status = submit_status::refused;
-      r.release_at = s.waiting && s.release_at + config_.min_interval > allowed
-                         ? s.release_at + config_.min_interval
-                         : allowed;
+      const instant after_waiting = detail::later_by(s.release_at, config_.min_interval);
+      r.release_at = s.waiting && after_waiting > allowed ? after_waiting : allowed;
       return r;
     }
     r.status = s.waiting       ? submit_status::replaced

@@ -18,6 +18,24 @@ namespace seawire::robotx {
 /// system_clock::time_point or any sys_time of a coarser duration converts implicitly.
 using instant = std::chrono::sys_time<std::chrono::nanoseconds>;
 
+namespace detail {
+/// t + d, held at instant::max() (or min()) where the sum would overflow: a caller may pass
+/// any instant, instant::max() included.
+[[nodiscard]] constexpr instant later_by(instant t, instant::duration d) noexcept {
+  if (d > instant::duration::zero() && t > instant::max() - d) return instant::max();
+  if (d < instant::duration::zero() && t < instant::min() - d) return instant::min();
+  return t + d;
+}
+/// a - b, held at the duration's limits where the difference would overflow.
+[[nodiscard]] constexpr instant::duration elapsed(instant a, instant b) noexcept {
+  using rep = instant::duration::rep;
+  rep out = 0;
+  if (__builtin_sub_overflow(a.time_since_epoch().count(), b.time_since_epoch().count(), &out))
+    return a > b ? instant::duration::max() : instant::duration::min();
+  return instant::duration(out);
+}
+}  // namespace detail
+
 /// HST = UTC + hst_offset.
 inline constexpr std::chrono::hours hst_offset{-10};
 

@@ -278,13 +278,13 @@ class validator {
   [[nodiscard]] constexpr finding_list advance(instant now) noexcept {
     finding_list out;
     if (since_heartbeat_ && !gap_reported_ &&
-        now - *since_heartbeat_ > config_.heartbeat_gap_limit) {
+        detail::elapsed(now, *since_heartbeat_) > config_.heartbeat_gap_limit) {
       gap_reported_ = true;
       finding f;
       f.broken = rule::heartbeat_gap;
       (void)f.address.assign(rxhrb::nmea.address);
       f.at = now;
-      f.elapsed = now - *since_heartbeat_;
+      f.elapsed = detail::elapsed(now, *since_heartbeat_);
       out.push(f);
       ++totals_.findings[static_cast<std::size_t>(rule::heartbeat_gap)];
     }
@@ -380,10 +380,10 @@ class validator {
 
   constexpr void heartbeat(const rxhrb& hb, instant at, const finding& base, verdict& v) noexcept {
     if (since_heartbeat_ && !gap_reported_ &&
-        at - *since_heartbeat_ > config_.heartbeat_gap_limit) {
+        detail::elapsed(at, *since_heartbeat_) > config_.heartbeat_gap_limit) {
       finding f = base;
       f.broken = rule::heartbeat_gap;
-      f.elapsed = at - *since_heartbeat_;
+      f.elapsed = detail::elapsed(at, *since_heartbeat_);
       v.findings.push(f);
     }
     since_heartbeat_ = at;
@@ -485,10 +485,10 @@ class validator {
 
     // Rate, per address, on every transmission.
     const auto ti = static_cast<std::size_t>(*type);
-    if (last_seen_[ti] && at - *last_seen_[ti] < config_.min_interval) {
+    if (last_seen_[ti] && detail::elapsed(at, *last_seen_[ti]) < config_.min_interval) {
       finding f = base;
       f.broken = rule::rate;
-      f.elapsed = at - *last_seen_[ti];
+      f.elapsed = detail::elapsed(at, *last_seen_[ti]);
       v.findings.push(f);
     }
     last_seen_[ti] = at;
