@@ -170,12 +170,7 @@ class decoder {
     anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
       if (number != v.field) return true;
       using field_type = std::remove_cvref_t<decltype(field)>;
-      const auto raw = frame.*field_type::raw_member;
-      nmea::decimal d;
-      d.negative = raw < 0;
-      d.mantissa = raw < 0 ? 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(raw))
-                           : static_cast<std::uint64_t>(raw);
-      d.places = static_cast<std::uint8_t>(anello::detail::divisor_places(field.divisor));
+      const nmea::decimal d = anello::detail::raw_decimal(field, frame.*field_type::raw_member);
       std::string value;
       struct sink {
         std::string& s;

@@ -58,6 +58,18 @@ namespace detail {
   return n;
 }
 
+/// A sensor field's raw wire value as the decimal it stands for (raw / divisor, exactly).
+template <class Field>
+[[nodiscard]] constexpr nmea::decimal raw_decimal(const Field& field,
+                                                  typename Field::raw_type raw) noexcept {
+  nmea::decimal d;
+  d.negative = raw < 0;
+  d.mantissa = raw < 0 ? 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(raw))
+                       : static_cast<std::uint64_t>(raw);
+  d.places = static_cast<std::uint8_t>(divisor_places(field.divisor));
+  return d;
+}
+
 // Civil date of days since 1970-01-01 (proleptic Gregorian; Howard Hinnant's algorithm).
 struct civil {
   std::int64_t year;
@@ -200,12 +212,7 @@ constexpr void write_json(Sink& s, const sensor_frame_raw& frame) noexcept {
     } else if constexpr (std::is_same_v<typename field_type::value_type, time_ms>) {
       detail::write_time_ms(s, static_cast<std::uint64_t>(raw));
     } else {
-      nmea::decimal d;
-      d.negative = raw < 0;
-      d.mantissa = raw < 0 ? 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(raw))
-                           : static_cast<std::uint64_t>(raw);
-      d.places = static_cast<std::uint8_t>(detail::divisor_places(field.divisor));
-      nmea::write_json_value(s, d);
+      nmea::write_json_value(s, detail::raw_decimal(field, raw));
     }
     return true;
   });
