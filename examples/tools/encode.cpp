@@ -274,9 +274,11 @@ std::optional<place_range> position_places(std::string_view key) {
           using V = typename std::remove_cvref_t<decltype(desc)>::value_type;
           if (desc.name != key) return;
           if constexpr (nmea::detail::is_nmea_coordinate<V>::value) {
-            out = place_range{1, 12, "minute places of a DDMM.mmm position"};
+            out = place_range{nmea::min_minute_places, nmea::max_minute_places,
+                              "minute places of a DDMM.mmm position"};
           } else if constexpr (nmea::detail::is_decimal_coordinate<V>::value) {
-            out = place_range{0, 18, "degree places of a decimal-degree position"};
+            out = place_range{0, nmea::max_degree_places,
+                              "degree places of a decimal-degree position"};
           }
         }(d),
         ...);

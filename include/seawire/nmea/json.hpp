@@ -156,6 +156,13 @@ template <class Axis>
   return d;
 }
 
+/// The fraction digits a position may be written with (a "precision"): minutes of a DDMM.mmm
+/// field (at least one digit after the point, as every spec writes it; gpsd and others drop a
+/// fix written "4221,N"), degrees of a decimal-degree field.
+inline constexpr unsigned min_minute_places = 1;
+inline constexpr unsigned max_minute_places = 12;
+inline constexpr unsigned max_degree_places = 18;
+
 /// The NMEA position of signed decimal degrees given as written, exactly (no double):
 /// minutes rounded to `minute_places` digits (halves up), hemisphere from the sign (so -0.0 is
 /// S or W). minute_places < 0 picks the default: the number's fraction digits - 2, which gives
@@ -171,7 +178,7 @@ template <class Coordinate>
     const unsigned p = minute_places >= 0 ? static_cast<unsigned>(minute_places)
                        : deg.places >= 3  ? deg.places - 2u
                                           : 4u;
-    if (p < 1 || p > 12) {  // DDMM.m: at least one digit after the point, as every spec writes
+    if (p < min_minute_places || p > max_minute_places) {
       r.ec = errc::out_of_range;
       return r;
     }
@@ -212,7 +219,7 @@ template <class Coordinate>
   } else {
     decimal v = deg;
     if (minute_places >= 0) {
-      if (minute_places > 18) {
+      if (static_cast<unsigned>(minute_places) > max_degree_places) {
         r.ec = errc::out_of_range;
         return r;
       }
@@ -645,7 +652,7 @@ template <message_like T, class Lookup>
       if (!p.blank()) {
         std::uint8_t n = 0;
         e = read_json_value(p, n);
-        if (e == errc::ok && n > 18) e = errc::out_of_range;
+        if (e == errc::ok && n > max_degree_places) e = errc::out_of_range;
         precision = n;
       }
     }
