@@ -473,19 +473,7 @@ class vehicle_session {
   }
   constexpr void on_message(client_id c, const bplog& m, std::uint32_t ticket,
                             time_point now) noexcept {
-    if (!valid_log_code(m.code.view())) {
-      vehicle_event e;
-      e.kind = vehicle_event_kind::invalid_command;
-      e.client = c;
-      e.ticket = ticket;
-      e.error = errc::bad_text;
-      e.field = 1;
-      (void)e.command.assign(bplog::nmea.address);
-      events_.push(e);
-      ack(c, bplog::nmea.address, std::nullopt, ack_status::invalid,
-          explain(errc::bad_text, 1, "code").view(), now);
-      return;
-    }
+    // The code is 3 upper-case letters or digits: BPLOG's description refuses any other.
     const bool applied = clients_[c].subscriptions.apply(m);
     acknowledge(c, bplog::nmea.address, std::nullopt, applied ? ack_status::ok : ack_status::failed,
                 applied ? "" : "too many subscriptions", ticket, now);
