@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <limits>
 
 #include "seawire/error.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -29,10 +30,13 @@ namespace detail {
 /// a - b, held at the duration's limits where the difference would overflow.
 [[nodiscard]] constexpr instant::duration elapsed(instant a, instant b) noexcept {
   using rep = instant::duration::rep;
-  rep out = 0;
-  if (__builtin_sub_overflow(a.time_since_epoch().count(), b.time_since_epoch().count(), &out))
-    return a > b ? instant::duration::max() : instant::duration::min();
-  return instant::duration(out);
+  constexpr rep lo = std::numeric_limits<rep>::min();
+  constexpr rep hi = std::numeric_limits<rep>::max();
+  const rep x = a.time_since_epoch().count();
+  const rep y = b.time_since_epoch().count();
+  if (y < 0 && x > hi + y) return instant::duration::max();
+  if (y > 0 && x < lo + y) return instant::duration::min();
+  return instant::duration(x - y);
 }
 }  // namespace detail
 
