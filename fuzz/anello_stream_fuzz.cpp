@@ -8,6 +8,9 @@
 //    offset: a sentence is '$' + printable ASCII within the capacity, a frame is 56 bytes that
 //    decode_frame accepts and decodes to the item's frame;
 //  - every byte fed is accounted for (the rule in stream.hpp's comment);
+//  - with report_drops(true): the same items with drop reports between them, in stream order,
+//    the same for every chunking; each report shows the stream's own bytes at its offset, there
+//    is one per counted event, and their sizes add up to noise_bytes + dropped_bytes;
 //  - valid data after hostile data still comes out: a good sentence and a good frame appended
 //    after a line break are the last two items, whatever came before (unless the fuzzer built a
 //    frame with a right CRC over the appended bytes themselves).
@@ -39,6 +42,8 @@ struct owned_item {
   std::uint64_t line = 0;
   anello::frame_bytes bytes{};
   anello::sensor_frame_raw frame{};
+  anello::drop_reason reason{};  // drops: text is what the report shows
+  std::uint64_t size = 0;
   friend bool operator==(const owned_item&, const owned_item&) = default;
 };
 
@@ -49,13 +54,18 @@ struct outcome {
 };
 
 owned_item own(const anello::stream_item& i) {
+  if (i.is_drop()) {
+    return {i.kind,        i.offset,   std::string(i.drop.bytes), {}, i.line, {}, {},
+            i.drop.reason, i.drop.size};
+  }
   return {i.kind,  i.offset, std::string(i.sentence.text), i.sentence.ending, i.sentence.line,
           i.bytes, i.frame};
 }
 
 template <std::size_t Capacity, class NextSize>
-outcome run(std::string_view stream, NextSize&& next_size) {
+outcome run(std::string_view stream, NextSize&& next_size, bool drops = false) {
   anello::stream_reader<Capacity> reader;
+  reader.report_drops(drops);
   outcome out;
   const auto take = [&](const anello::stream_item& i) { out.items.push_back(own(i)); };
   std::size_t at = 0;
@@ -122,6 +132,58 @@ void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too)
       number(s.dropped_bytes), number(s.line_break_bytes));
 }
 
+// The same stream with drop reports.
+template <std::size_t Capacity>
+void check_drops(std::string_view stream, std::uint8_t seed) {
+  using anello::drop_reason;
+  const outcome plain = run<Capacity>(stream, [&] { return stream.size(); });
+  const outcome whole = run<Capacity>(
+      stream, [&] { return stream.size(); }, true);
+  const outcome chunked =
+      run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed ^ 0x5AU), true);
+  SEAWIRE_FUZZ_CHECK(chunked == whole, "drop reports depend on the chunking", stream);
+  outcome filtered = whole;
+  std::erase_if(filtered.items,
+                [](const owned_item& i) { return i.kind == anello::stream_item_kind::dropped; });
+  SEAWIRE_FUZZ_CHECK(filtered == plain, "reporting drops changed the items", stream);
+
+  std::array<std::uint64_t, 7> by_reason{};
+  std::uint64_t sizes = 0;
+  std::uint64_t last = 0;
+  bool first = true;
+  for (const owned_item& i : whole.items) {
+    SEAWIRE_FUZZ_CHECK(first || i.offset > last, "items out of stream order", stream,
+                       number(i.offset));
+    first = false;
+    last = i.offset;
+    if (i.kind != anello::stream_item_kind::dropped) continue;
+    SEAWIRE_FUZZ_CHECK(i.size >= 1 && !i.text.empty() &&
+                           i.text.size() <= anello::stream_drop::max_shown &&
+                           stream.substr(i.offset, i.text.size()) == i.text,
+                       "a drop report does not show the stream's bytes", stream, i.text);
+    const bool candidate = i.reason == drop_reason::bad_crc ||
+                           i.reason == drop_reason::bad_length ||
+                           i.reason == drop_reason::truncated_frame;
+    SEAWIRE_FUZZ_CHECK(candidate ? static_cast<std::uint8_t>(i.text[0]) == 0xAB
+                                 : i.text.size() == std::min<std::uint64_t>(
+                                                        i.size, anello::stream_drop::max_shown),
+                       "a drop report shows the wrong bytes", stream, i.text);
+    ++by_reason.at(static_cast<std::size_t>(i.reason));
+    sizes += i.size;
+  }
+  const anello::stream_stats& s = whole.stats;
+  SEAWIRE_FUZZ_CHECK(sizes == s.noise_bytes + s.dropped_bytes, "drop sizes unaccounted for", stream,
+                     number(sizes));
+  const auto count = [&](drop_reason r) { return by_reason[static_cast<std::size_t>(r)]; };
+  SEAWIRE_FUZZ_CHECK(count(drop_reason::invalid_byte) == s.invalid_bytes &&
+                         count(drop_reason::overlong) == s.overlong &&
+                         count(drop_reason::interrupted) == s.interrupted &&
+                         count(drop_reason::bad_crc) == s.bad_crc_frames &&
+                         count(drop_reason::bad_length) == s.bad_length_frames &&
+                         count(drop_reason::truncated_frame) == s.truncated_frames,
+                     "not one drop report per counted event", stream);
+}
+
 // The seed's example frame (valid CRC).
 constexpr std::array<std::uint8_t, 56> seed_frame = {
     0xAB, 0x00, 0x00, 0x30, 0x8E, 0xF7, 0xF1, 0x76, 0x00, 0x59, 0x01, 0xF4, 0xEC, 0xFF,
@@ -174,6 +236,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string fixed = (data[0] & 1U) != 0 ? with_good_crcs(raw) : std::string(raw);
   check_stream<80>(fixed, data[0], true);
   check_stream<1024>(fixed, data[0], false);
+  check_drops<80>(fixed, data[0]);
   check_recovery(fixed);
   return 0;
 }

@@ -68,9 +68,11 @@ frame_bytes sealed(frame_bytes f) {
 struct rec {
   stream_item_kind kind = stream_item_kind::sentence;
   std::uint64_t offset = 0;
-  std::string text;  // the sentence, or the frame's 56 bytes
+  std::string text;  // the sentence, the frame's 56 bytes, or the bytes a drop shows
   line_ending ending = line_ending::none;
-  std::uint64_t line = 0;
+  std::uint64_t line = 0;                   // a sentence's or a drop's (0 for frames)
+  drop_reason reason = drop_reason::noise;  // drops only
+  std::uint64_t size = 0;                   // drops only
   friend bool operator==(const rec&, const rec&) = default;
 };
 
@@ -85,10 +87,16 @@ const char* ending_name(line_ending e) {
 }
 
 std::ostream& operator<<(std::ostream& os, const rec& r) {
-  os << '{' << (r.kind == stream_item_kind::frame ? "frame" : "sentence") << " @" << r.offset;
+  switch (r.kind) {
+    case stream_item_kind::sentence: os << "{sentence"; break;
+    case stream_item_kind::frame: os << "{frame"; break;
+    case stream_item_kind::dropped: os << "{dropped " << name(r.reason) << ' ' << r.size; break;
+  }
+  os << " @" << r.offset;
   if (r.kind == stream_item_kind::sentence) {
     os << " line " << r.line << ' ' << ending_name(r.ending);
   }
+  if (r.kind == stream_item_kind::dropped) os << " line " << r.line;
   os << " \"";
   for (const char c : r.text.substr(0, 60)) {
     const auto u = static_cast<unsigned char>(c);
@@ -111,8 +119,20 @@ rec frame(const frame_bytes& bytes, std::uint64_t offset) {
   return {stream_item_kind::frame, offset, str(bytes), line_ending::none, 0};
 }
 
+rec drop(drop_reason why, std::uint64_t offset, std::uint64_t size, std::string_view shown,
+         std::uint64_t line) {
+  return {
+      stream_item_kind::dropped, offset, std::string(shown), line_ending::none, line, why, size};
+}
+
 // Frame items also check that the decoded frame is the decoding of the bytes it carries.
 rec own(const stream_item& item) {
+  if (item.is_drop()) {
+    CHECK(item.sentence.text.empty());
+    CHECK(item.drop.bytes.size() <= stream_drop::max_shown);
+    return drop(item.drop.reason, item.offset, item.drop.size, item.drop.bytes, item.line);
+  }
+  CHECK(item.drop == stream_drop{});
   if (item.is_frame()) {
     const auto decoded = decode_frame(item.bytes);
     CHECK(decoded.ok());
@@ -142,8 +162,9 @@ void finish(stream_reader<N>& r, std::vector<rec>& out) {
 
 // Feeds `chunks` in order, then finishes.
 template <std::size_t N = 1024>
-outcome read(const std::vector<std::string_view>& chunks) {
+outcome read(const std::vector<std::string_view>& chunks, bool drops = false) {
   stream_reader<N> r;
+  r.report_drops(drops);
   outcome o;
   for (const auto c : chunks) {
     r.feed(c);
@@ -155,15 +176,21 @@ outcome read(const std::vector<std::string_view>& chunks) {
 }
 
 template <std::size_t N = 1024>
-outcome read(std::string_view stream) {
-  return read<N>(std::vector<std::string_view>{stream});
+outcome read(std::string_view stream, bool drops = false) {
+  return read<N>(std::vector<std::string_view>{stream}, drops);
 }
 
 template <std::size_t N = 1024>
-outcome read_bytewise(std::string_view stream) {
+outcome read_bytewise(std::string_view stream, bool drops = false) {
   std::vector<std::string_view> chunks;
   for (std::size_t i = 0; i < stream.size(); ++i) chunks.push_back(stream.substr(i, 1));
-  return read<N>(chunks);
+  return read<N>(chunks, drops);
+}
+
+// The same stream read with drop reports: the items without them.
+outcome without_drops(outcome o) {
+  std::erase_if(o.items, [](const rec& r) { return r.kind == stream_item_kind::dropped; });
+  return o;
 }
 
 // splitmix64: tiny, deterministic on every platform (std distributions are not).
@@ -297,8 +324,9 @@ std::string random_stream(prng& r, std::size_t pieces) {
 
 // The reader's contract written as the plainest loop over a whole stream, with random access:
 // it looks ahead and backs up instead of holding bytes, so it shares no code and no states with
-// the reader. Differential tests compare the two.
-outcome reference_read(std::string_view s, std::size_t capacity) {
+// the reader. Differential tests compare the two. With `drops`, it reports what it drops as
+// the reader's report_drops(true) promises.
+outcome reference_read(std::string_view s, std::size_t capacity, bool drops = false) {
   enum class st { idle, in, discard } state = st::idle;
   outcome o;
   stream_stats& k = o.stats;
@@ -307,6 +335,22 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
   std::uint64_t line = 1;
   bool prev_cr = false;
   const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(s[i]); };
+  // The drop being collected (a noise run or a dropped line): reason, offset, size, line.
+  std::optional<rec> open;
+  const auto shown = [&](std::uint64_t at, std::uint64_t n) {
+    return s.substr(at, std::min<std::uint64_t>(n, stream_drop::max_shown));
+  };
+  const auto close = [&] {
+    if (open && drops) {
+      open->text = std::string(shown(open->offset, open->size));
+      o.items.push_back(*open);
+    }
+    open.reset();
+  };
+  const auto report = [&](drop_reason why, std::uint64_t at, std::uint64_t size,
+                          std::string_view bytes) {
+    if (drops) o.items.push_back(drop(why, at, size, bytes, line));
+  };
   std::size_t i = 0;
   while (i < s.size()) {
     const char c = s[i];
@@ -325,10 +369,12 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
       } else if (c == '$' || u == 0xAB) {
         ++k.interrupted;
         k.dropped_bytes += cur.size();
+        report(drop_reason::interrupted, cur_offset, cur.size(), shown(cur_offset, cur.size()));
         state = st::idle;  // and read c again
       } else if (u < 0x20 || u > 0x7E) {
         ++k.invalid_bytes;
         k.dropped_bytes += cur.size() + 1;
+        open = drop(drop_reason::invalid_byte, cur_offset, cur.size() + 1, "", line);
         state = st::discard;
         ++i;
       } else {
@@ -337,6 +383,7 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
         if (cur.size() > capacity) {
           ++k.overlong;
           k.dropped_bytes += cur.size();
+          open = drop(drop_reason::overlong, cur_offset, cur.size(), "", line);
           state = st::discard;
         }
       }
@@ -344,13 +391,18 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
     }
     if (state == st::discard) {
       if (c == '$' || u == 0xAB || c == '\r' || c == '\n') {
+        close();
         state = st::idle;
       } else {
         ++k.dropped_bytes;
+        ++open->size;
         ++i;
       }
       continue;
     }
+    // Between items: anything but noise ends a noise run.
+    const bool noise = c != '$' && u != 0xAB && c != '\r' && c != '\n';
+    if (!noise) close();
     if (c == '$') {
       state = st::in;
       cur = "$";
@@ -365,10 +417,12 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
       if (m < 4 && i + m < s.size()) {  // the header breaks at byte m: read it again
         if (m == 1) {
           ++k.noise_bytes;
+          open = drop(drop_reason::noise, i, 1, "", line);  // a noise run starting with the AB
         } else {
           ++k.bad_length_frames;
           ++k.dropped_bytes;
           k.noise_bytes += m - 1;
+          report(drop_reason::bad_length, i, m, s.substr(i, m));
         }
         i += m;
       } else if (i + frame_size <= s.size()) {
@@ -383,14 +437,17 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
         } else {
           ++k.bad_crc_frames;
           ++k.dropped_bytes;
+          report(drop_reason::bad_crc, i, 1, s.substr(i, frame_size));
           ++i;  // back up to the byte after the AB
         }
       } else if (s.size() - i == 1) {
         ++k.noise_bytes;
+        open = drop(drop_reason::noise, i, 1, "", line);
         ++i;
       } else {
         ++k.truncated_frames;
         ++k.dropped_bytes;
+        report(drop_reason::truncated_frame, i, 1, s.substr(i));
         ++i;
       }
     } else if (c == '\r' || c == '\n') {
@@ -401,6 +458,8 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
     } else {
       ++k.noise_bytes;
       prev_cr = false;
+      if (!open) open = drop(drop_reason::noise, i, 0, "", line);
+      ++open->size;
       ++i;
     }
   }
@@ -408,16 +467,27 @@ outcome reference_read(std::string_view s, std::size_t capacity) {
     o.items.push_back(sentence(cur, cur_offset, line_ending::none, line));
     ++k.sentences;
   }
+  close();
   return o;
 }
 
 // The accounting identity the header promises: every byte lands in exactly one bucket.
 void check_accounting(std::string_view stream, const outcome& o) {
   std::uint64_t item_bytes = 0;
-  for (const auto& it : o.items) item_bytes += it.text.size();
+  std::uint64_t drop_bytes = 0;
+  std::size_t reports = 0;
+  for (const auto& it : o.items) {
+    if (it.kind == stream_item_kind::dropped) {
+      drop_bytes += it.size;
+      ++reports;
+    } else {
+      item_bytes += it.text.size();
+    }
+  }
   const stream_stats& k = o.stats;
   CHECK(item_bytes + k.noise_bytes + k.dropped_bytes + k.line_break_bytes == stream.size());
-  CHECK(k.sentences + k.frames == o.items.size());
+  CHECK(k.sentences + k.frames + reports == o.items.size());
+  if (reports > 0) CHECK(drop_bytes == k.noise_bytes + k.dropped_bytes);
 }
 
 // Whether `want` appears in `got` in order (other items may come between), comparing what was
@@ -467,8 +537,31 @@ constexpr bool reads_at_compile_time() {
 }
 static_assert(reads_at_compile_time());
 
+// Drop reports too.
+constexpr bool reports_drops_at_compile_time() {
+  stream_reader<16> r;
+  r.report_drops(true);
+  r.feed("##\r\n$A\x01z\n\xAB\x00"sv);
+  const auto noise = r.next();  // its bytes are valid until the next call
+  bool ok = noise && noise->is_drop() && noise->drop.reason == drop_reason::noise &&
+            noise->drop.bytes == "##" && noise->line == 1;
+  const auto line = r.next();
+  ok = ok && line && line->is_drop() && line->drop.reason == drop_reason::invalid_byte &&
+       line->drop.size == 4 && line->drop.bytes == "$A\x01z" && line->offset == 4 &&
+       line->line == 2;
+  ok = ok && !r.next();
+  const auto truncated = r.finish();
+  ok = ok && truncated && truncated->drop.reason == drop_reason::truncated_frame &&
+       truncated->offset == 9 && truncated->drop.bytes == "\xAB\x00"sv;
+  const auto zeros = r.finish();  // the 00 after the AB, read again
+  return ok && zeros && zeros->drop.reason == drop_reason::noise && zeros->offset == 10 &&
+         !r.finish();
+}
+static_assert(reports_drops_at_compile_time());
+
 // Fixed memory: the line buffer, a frame, the bytes to read again, and a few counters.
-static_assert(sizeof(stream_reader<82>) <= 82 + frame_size + (frame_size - 1) + 256);
+static_assert(sizeof(stream_reader<82>) <=
+              82 + frame_size + (frame_size - 1) + stream_drop::max_shown + 256);
 static_assert(sizeof(stream_reader<1024>) <= sizeof(stream_reader<82>) + (1024 - 82) + 8);
 
 }  // namespace
@@ -899,6 +992,116 @@ TEST_CASE("what was sent comes out in order whatever garbage is between", "[anel
     const outcome o = read(chop(stream, r, pick_max_chunk(r)));
     CHECK(in_order(sent, o.items));
   }
+}
+
+TEST_CASE("drop reports: one per event, where it happened, in order", "[anello][stream]") {
+  const std::string bad_crc = "\xAB\x00\x00\x30"s + std::string(52, 'x');
+  const std::string stream = "junk\r\n$A*00\r\n$B\x01zz\rxx$C,1$D*00\n\xAB\x01hi\n"s +
+                             "\xAB\x00\x00\x31\r\n"s + bad_crc + "\n$" + std::string(30, 'E') +
+                             "tail\r\n\xAB\x00\x00"s;
+  const outcome o = read<24>(stream, true);
+  const std::vector<rec> want{
+      drop(drop_reason::noise, 0, 4, "junk", 1),
+      sentence("$A*00", 6, line_ending::crlf, 2),
+      drop(drop_reason::invalid_byte, 13, 5, "$B\x01zz", 3),
+      drop(drop_reason::noise, 19, 2, "xx", 4),
+      drop(drop_reason::interrupted, 21, 4, "$C,1", 4),
+      sentence("$D*00", 25, line_ending::lf, 4),
+      drop(drop_reason::noise, 31, 4, "\xAB\x01hi", 5),
+      drop(drop_reason::bad_length, 36, 3, "\xAB\x00\x00"s, 6),
+      drop(drop_reason::noise, 39, 1, "\x31", 6),
+      drop(drop_reason::bad_crc, 42, 1, bad_crc, 7),
+      drop(drop_reason::noise, 43, 55, bad_crc.substr(1), 7),
+      drop(drop_reason::overlong, 99, 35, "$" + std::string(30, 'E') + "tail", 8),
+      drop(drop_reason::truncated_frame, 136, 1, "\xAB\x00\x00"s, 9),
+      drop(drop_reason::noise, 137, 2, "\x00\x00"s, 9),
+  };
+  CHECK(o.items == want);
+  check_accounting(stream, o);
+  CHECK(o == reference_read(stream, 24, true));
+  CHECK(read_bytewise<24>(stream, true) == o);
+  CHECK(without_drops(o) == read<24>(stream));
+
+  SECTION("off by default, and reset keeps the setting") {
+    stream_reader<> r;
+    CHECK_FALSE(r.reports_drops());
+    r.feed("junk\r\n$A\r\n"sv);
+    auto item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(item->is_sentence());
+    r.report_drops(true);
+    r.reset();
+    CHECK(r.reports_drops());
+    r.feed("junk\r\n"sv);
+    item = r.next();  // the run ends at the CR
+    REQUIRE(item.has_value());
+    CHECK(own(*item) == drop(drop_reason::noise, 0, 4, "junk", 1));
+    CHECK_FALSE(r.next().has_value());
+    CHECK_FALSE(r.finish().has_value());
+  }
+  SECTION("a noise run is reported when it ends, whatever the chunks") {
+    stream_reader<> r;
+    r.report_drops(true);
+    r.feed("ab"sv);
+    CHECK_FALSE(r.next().has_value());
+    r.feed("cd"sv);
+    CHECK_FALSE(r.next().has_value());
+    r.feed("e$A\n"sv);
+    auto item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(own(*item) == drop(drop_reason::noise, 0, 5, "abcde", 1));
+    item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(own(*item) == sentence("$A", 5, line_ending::lf, 1));
+  }
+  SECTION("a long run shows its first 256 bytes and counts them all") {
+    const std::string noise(1000, '#');
+    const outcome n = read(noise + "\n", true);
+    CHECK(n.items == std::vector<rec>{drop(drop_reason::noise, 0, 1000, noise.substr(0, 256), 1)});
+  }
+}
+
+TEST_CASE("drop reports match the reference for every chunking", "[anello][stream]") {
+  for (std::uint64_t seed_value = 2000; seed_value < 2120; ++seed_value) {
+    prng r{seed_value};
+    const std::string stream = random_stream(r, 20 + r.below(150));
+    INFO("seed " << seed_value << ", " << stream.size() << " bytes");
+    const outcome whole = read(stream, true);
+    CHECK(whole == reference_read(stream, 1024, true));
+    CHECK(without_drops(whole) == read(stream));
+    check_accounting(stream, whole);
+    std::uint64_t last = 0;
+    bool first = true;
+    for (const rec& it : whole.items) {
+      // In stream order, and a drop shows the stream's own bytes at its offset.
+      CHECK((first || it.offset > last));
+      first = false;
+      last = it.offset;
+      if (it.kind == stream_item_kind::dropped)
+        CHECK(stream.substr(it.offset, it.text.size()) == it.text);
+    }
+    for (int cut = 0; cut < 4; ++cut) {
+      CHECK(read(chop(stream, r, pick_max_chunk(r)), true) == whole);
+    }
+    const outcome small = read<24>(stream, true);
+    CHECK(small == reference_read(stream, 24, true));
+    CHECK(read<24>(chop(stream, r, pick_max_chunk(r)), true) == small);
+  }
+}
+
+TEST_CASE("frames carry the line they start on", "[anello][stream]") {
+  sensor_frame_raw raw;
+  raw.heading = 0x0D0A;  // CR LF inside the frame are no line breaks
+  const frame_bytes f = encode_frame(raw);
+  const std::string stream = "$A\r\n"s + str(f) + str(f) + "\n\n"s + str(seed);
+  stream_reader<> r;
+  std::vector<std::uint64_t> lines;
+  r.feed(stream, [&](const stream_item& item) {
+    CHECK(item.is_frame() == (item.offset != 0));
+    lines.push_back(item.line);
+  });
+  r.finish([](const stream_item&) { FAIL("nothing is pending"); });
+  CHECK(lines == std::vector<std::uint64_t>{1, 2, 2, 4});
 }
 
 TEST_CASE("bytes, callbacks, reset", "[anello][stream]") {

@@ -10,7 +10,6 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <optional>
 #include <span>
@@ -55,33 +54,17 @@ class decoder {
   explicit decoder(const options& o) : opt_(o), policy_(o.policy), out_(stdout) {
     // The reader has taken the line ending off: it is checked here, from what the reader saw.
     policy_.require_crlf = false;
+    // What the reader drops comes as items of its own, in order with the messages.
+    reader_.report_drops(true);
   }
 
-  // Feeds one piece of input; `ends_line` when it ends with an LF.
-  void piece(std::string_view bytes, bool ends_line) {
-    piece_ = bytes;
-    reader_.feed(bytes);
-    while (const std::optional<anello::stream_item> item = reader_.next()) {
-      check_drops();  // what was dropped before this item is reported before it
-      handle(*item);
-    }
-    check_drops();
-    if (ends_line) {
-      line_head_.clear();
-      line_reported_ = false;
-      ++line_;
-    } else if (line_head_.size() < max_input_shown) {  // the line goes on in the next chunk
-      line_head_.append(bytes.substr(0, max_input_shown - line_head_.size()));
-    }
+  void feed(std::string_view chunk) {
+    reader_.feed(chunk);
+    while (const std::optional<anello::stream_item> item = reader_.next()) handle(*item);
   }
 
   void finish() {
-    piece_ = {};
-    while (const std::optional<anello::stream_item> item = reader_.finish()) {
-      check_drops();
-      handle(*item);
-    }
-    check_drops();
+    while (const std::optional<anello::stream_item> item = reader_.finish()) handle(*item);
     out_.flush();
   }
 
@@ -125,24 +108,21 @@ class decoder {
 
  private:
   void handle(const anello::stream_item& item) {
-    if (item.is_frame()) {
-      frame(item);
-    } else {
-      sentence(item.sentence);
+    switch (item.kind) {
+      case anello::stream_item_kind::sentence: sentence(item.sentence); break;
+      case anello::stream_item_kind::frame: frame(item); break;
+      case anello::stream_item_kind::dropped: dropped(item); break;
     }
   }
 
   // ---- one binary frame ----
 
   void frame(const anello::stream_item& item) {
-    // CR and LF bytes inside the frame are no line breaks: take back what piece() counted.
-    for (const std::uint8_t b : item.bytes)
-      if (b == '\n') --line_;
     // Values outside the spec's ranges are rejected, as in sentences (strict where it matters):
     // what is decoded here, seawire-encode sends back. "Not available" values pass.
     const result<anello::sensor_frame_raw> v = anello::validate(item.frame);
     if (!v) {
-      reject(line_, v.ec, v.field, frame_error(item.frame, v), hex(item.bytes));
+      reject(item.line, v.ec, v.field, frame_error(item.frame, v), hex(item.bytes));
       return;
     }
     switch (opt_.fmt) {
@@ -184,9 +164,11 @@ class decoder {
     return detail + ": " + std::string(message(v.ec));
   }
 
-  static std::string hex(const anello::frame_bytes& bytes) {
+  template <class Bytes>
+  static std::string hex(const Bytes& bytes) {
     std::string h;
-    for (const std::uint8_t b : bytes) {
+    for (const auto c : bytes) {
+      const auto b = static_cast<std::uint8_t>(c);
       h += seawire::detail::hex_digit_upper(b >> 4U);
       h += seawire::detail::hex_digit_upper(b);
     }
@@ -314,53 +296,75 @@ class decoder {
 
   // ---- what the reader dropped ----
 
-  // Did the reader drop anything since the last look? If so, report the line it is on, once.
-  void check_drops() {
-    const anello::stream_stats& now = reader_.stats();
-    // Whatever the reader drops adds to one of these two: the common case is two comparisons.
-    if (now.noise_bytes == seen_.noise_bytes && now.dropped_bytes == seen_.dropped_bytes) return;
-    errc e = errc::ok;
-    std::string_view detail;
-    if (now.invalid_bytes != seen_.invalid_bytes) {
-      e = errc::bad_character;
-      detail = "a byte outside printable ASCII in a sentence; dropped up to the line's end";
-    } else if (now.overlong != seen_.overlong) {
-      e = errc::too_long;
-      detail = "a sentence longer than 1024 bytes; dropped";
-    } else if (now.interrupted != seen_.interrupted) {
-      e = errc::truncated;
-      detail = "a sentence cut short by the next '$' or 0xAB; dropped";
-    } else if (now.bad_crc_frames != seen_.bad_crc_frames) {
-      e = errc::crc_mismatch;
-      detail = "an AB00 frame whose CRC-32 does not match its payload; dropped";
-    } else if (now.bad_length_frames != seen_.bad_length_frames) {
-      e = errc::bad_length;
-      detail = "AB 00 followed by a length other than 48; dropped";
-    } else if (now.truncated_frames != seen_.truncated_frames) {
-      e = errc::truncated;
-      detail = "an AB00 frame cut short by the end of the input; dropped";
-    } else if (now.noise_bytes != seen_.noise_bytes) {
-      e = errc::missing_start;
-      detail = "bytes outside any sentence or frame (no '$' before them); dropped";
+  // One report per run of dropped bytes: where it began, why, and the bytes (frame candidates
+  // in hex, since they are binary).
+  void dropped(const anello::stream_item& item) {
+    const anello::stream_drop& d = item.drop;
+    if (d.reason == anello::drop_reason::bad_crc ||
+        d.reason == anello::drop_reason::truncated_frame) {
+      candidate_end_ = item.offset + d.bytes.size();
+    } else if (d.reason == anello::drop_reason::noise && item.offset + d.size <= candidate_end_) {
+      return;  // the rest of a rejected candidate, read again: part of its report
     }
-    seen_ = now;
-    if (e == errc::ok || line_reported_) return;
-    line_reported_ = true;
-    std::string text = line_head_;
-    text.append(piece_.substr(0, max_input_shown));
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-    reject(line_, e, 0, detail, text);
+    const auto bytes = static_cast<unsigned long long>(d.size);
+    const char* plural = d.size == 1 ? "" : "s";
+    char detail[160];
+    errc e = errc::missing_start;
+    switch (d.reason) {
+      case anello::drop_reason::noise:
+        std::snprintf(detail, sizeof detail,
+                      "%llu byte%s outside any sentence or frame (no '$' before them); dropped",
+                      bytes, plural);
+        break;
+      case anello::drop_reason::invalid_byte:
+        e = errc::bad_character;
+        std::snprintf(detail, sizeof detail,
+                      "a byte outside printable ASCII in a sentence; %llu byte%s dropped up to "
+                      "the line's end",
+                      bytes, plural);
+        break;
+      case anello::drop_reason::overlong:
+        e = errc::too_long;
+        std::snprintf(detail, sizeof detail,
+                      "a sentence longer than %zu bytes; %llu bytes dropped up to the line's end",
+                      decltype(reader_)::capacity, bytes);
+        break;
+      case anello::drop_reason::interrupted:
+        e = errc::truncated;
+        std::snprintf(detail, sizeof detail,
+                      "a sentence cut short by the next '$' or 0xAB; %llu byte%s dropped", bytes,
+                      plural);
+        break;
+      case anello::drop_reason::bad_crc:
+        e = errc::crc_mismatch;
+        std::snprintf(detail, sizeof detail,
+                      "an AB00 frame whose CRC-32 does not match its payload; its 0xAB dropped, "
+                      "the bytes after it read again");
+        break;
+      case anello::drop_reason::bad_length:
+        e = errc::bad_length;
+        std::snprintf(detail, sizeof detail,
+                      "AB 00 followed by a length other than 00 30 (48); %llu bytes dropped",
+                      bytes);
+        break;
+      case anello::drop_reason::truncated_frame:
+        e = errc::truncated;
+        std::snprintf(detail, sizeof detail,
+                      "an AB00 frame cut short by the end of the input; its 0xAB dropped, the "
+                      "bytes after it read again");
+        break;
+    }
+    const bool binary = d.reason == anello::drop_reason::bad_crc ||
+                        d.reason == anello::drop_reason::bad_length ||
+                        d.reason == anello::drop_reason::truncated_frame;
+    reject(item.line, e, 0, detail, binary ? hex(d.bytes) : std::string(d.bytes));
   }
 
   const options& opt_;
   nmea::parse_policy policy_;  // opt_.policy, but for the line ending
   tools::output out_;
   anello::stream_reader<1024> reader_;
-  anello::stream_stats seen_{};
-  std::string_view piece_;  // the piece of input being read
-  std::string line_head_;   // the start of the line, when it began in an earlier chunk
-  bool line_reported_ = false;
-  std::uint64_t line_ = 1;
+  std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
   std::uint64_t decoded_ = 0;
   std::uint64_t rejected_ = 0;
   std::uint64_t reencode_failures_ = 0;
@@ -371,17 +375,7 @@ class decoder {
 int run(const options& o) {
   decoder d(o);
   tools::chunk_reader in(0);
-  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
-    // One line at a time, so whatever the reader drops is charged to the line it was on.
-    while (!chunk.empty()) {
-      const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
-      const std::size_t n =
-          nl != nullptr ? static_cast<std::size_t>(static_cast<const char*>(nl) - chunk.data()) + 1
-                        : chunk.size();
-      d.piece(chunk.substr(0, n), nl != nullptr);
-      chunk.remove_prefix(n);
-    }
-  }
+  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) d.feed(chunk);
   d.finish();
   if (o.stats) d.print_stats();
   if (in.failed()) {

@@ -165,11 +165,14 @@ case_bad() {
     '{"line":5,"error":"minute_out_of_range","field":2,"detail":"CPNVG field 2 (latitude) \"4261.81092\": minutes out of range (00-59)","input":"$CPNVG,081025.987,4261.81092,N,07106.84603,W,1,0,0,203.1,-3.4,4.5,081025.980*5C"}' \
     "$(line 5 "$o")"
   expect_eq "garbage line" \
-    '{"line":7,"error":"missing_start","field":0,"detail":"bytes outside any sentence or frame (no '"'"'$'"'"' before them); dropped","input":"### vehicle rebooted ###"}' \
+    '{"line":7,"error":"missing_start","field":0,"detail":"24 bytes outside any sentence or frame (no '"'"'$'"'"' before them); dropped","input":"### vehicle rebooted ###"}' \
     "$(line 7 "$o")"
   expect_eq "a control byte, escaped in the report" \
     '"input":"$CPNVR,164959.063,0.029\u000141,-0.068552,0,0.060938,0,-0.061132*59"}' \
     "$(line 10 "$o" | grep -o '"input".*')"
+  expect_eq "an interrupted sentence: only its own bytes shown" \
+    '{"line":12,"error":"truncated","field":0,"detail":"a sentence cut short by the next '"'"'$'"'"' or 0xAB; 25 bytes dropped","input":"$CPRCM,164959.065,0,234.3"}' \
+    "$(line 12 "$o")"
   expect_eq "the sentence after an interrupted one still decodes, after the report" \
     '{"type":"PYDIR","thrust_left":45,"thrust_right":55}' "$(line 13 "$o")"
   expect_eq "good lines around the bad ones" "$(line 1 "$o")" "$(line 15 "$o")"
@@ -309,6 +312,67 @@ case_options() {
     "$(printf '%s\n' 1:missing_start '{"type":"PYDIR","thrust_left":1,"thrust_right":2}' \
       '{"type":"PYDIR","thrust_left":3,"thrust_right":4}' '{"type":"PYDIR","thrust_left":5,"thrust_right":6}')" \
     "$(sed 's/^{"line":\([0-9]*\),"error":"\([a-z_]*\)".*/\1:\2/' "$work/out")"
+}
+
+# What the stream reader drops is reported where it happened, in order with the messages,
+# whatever the line endings and however read() cuts the input.
+case_drops() {
+  local a b c d
+  a=$(seal PYDIR,1,2) b=$(seal PYDIR,3,4) c=$(seal PYDIR,5,6) d=$(seal PYDIR,7,8)
+  local summary=(sed -e 's/^{"line":\([0-9]*\),"error":"\([a-z_]*\)".*/\1:\2/'
+    -e 's/^{"type":"PYDIR","thrust_left":\([0-9]*\).*/PYDIR \1/')
+  # CR-only line endings: the junk is on line 2, the interrupted sentence on line 4.
+  printf '%s\r### junk\r%s\r$CPRCM,1%s\r' "$a" "$b" "$c" >"$work/in"
+  expect_rc "CR line endings" 1 "$decode" <"$work/in"
+  expect_eq "CR line endings: each report on its own line, in order" \
+    "$(printf '%s\n' 'PYDIR 1' 2:missing_start 'PYDIR 3' 4:truncated 'PYDIR 5')" \
+    "$("${summary[@]}" "$work/out")"
+  expect_eq "noise shows only its own bytes" '"input":"### junk"}' \
+    "$(line 2 "$work/out" | grep -o '"input".*')"
+  # A false frame start (AB 00 00 30) swallows the next 52 bytes; its CRC fails, the bytes
+  # after the AB are read again and the sentences in them come out, after the report.
+  { hex2bin AB000030; crlf "$a" "$b" "$c" "$d"; } >"$work/in"
+  expect_rc "false frame start" 1 "$decode" <"$work/in"
+  expect_eq "false frame start: reported once (its 00 00 30 with it), then every sentence" \
+    "$(printf '%s\n' 1:crc_mismatch 'PYDIR 1' 'PYDIR 3' 'PYDIR 5' 'PYDIR 7')" \
+    "$("${summary[@]}" "$work/out")"
+  local shown start
+  shown=$(line 1 "$work/out" | grep -o '"input":"[0-9A-F]*"' | cut -d'"' -f4)
+  start=AB000030$(crlf "$a" | od -An -tx1 | tr -d ' \n' | tr a-f A-F)
+  expect_eq "the 56-byte candidate shown in hex" "112 $start" "${#shown} ${shown:0:${#start}}"
+  # Noise after a rejected candidate, beyond its 56 bytes, is a report of its own.
+  { hex2bin AB000030; crlf "$a" "$b" "$c" "$d" "junk"; } >"$work/in"
+  expect_rc "false frame start, then junk" 1 "$decode" <"$work/in"
+  expect_eq "the junk past the candidate reported on its own line" \
+    "$(printf '%s\n' 1:crc_mismatch 'PYDIR 1' 'PYDIR 3' 'PYDIR 5' 'PYDIR 7' 5:missing_start)" \
+    "$("${summary[@]}" "$work/out")"
+  # An overlong sentence across read() chunks (64 KiB), then a good one on the next line.
+  {
+    printf '$PYDIR,'
+    head -c 70000 /dev/zero | tr '\0' 9
+    printf '\r\n%s\r\n' "$b"
+  } >"$work/in"
+  expect_rc "overlong sentence" 1 "$decode" <"$work/in"
+  expect_eq "overlong: one report, then the next line" "$(printf '%s\n' 1:too_long 'PYDIR 3')" \
+    "$("${summary[@]}" "$work/out")"
+  expect_eq "overlong: the whole line counted, its start shown" \
+    "a sentence longer than 1024 bytes; 70007 bytes dropped up to the line's end 256" \
+    "$(line 1 "$work/out" | sed 's/.*"detail":"\([^"]*\)","input":"\([^"]*\)".*/\1 \2/' |
+      awk '{ n = length($NF); $NF = ""; print $0 n }')"
+  # A bad byte after a chunk boundary, then a frame on the same line.
+  {
+    head -c 65530 /dev/zero | tr '\0' ' '
+    printf '%s\r\n$PYDIR,1\001,2*00' "$a"
+    hex2bin "$seed_frame"
+    printf '\r\n'
+  } >"$work/in"
+  expect_rc "bad byte across a chunk boundary" 1 "$decode" <"$work/in"
+  expect_eq "noise, the sentence, the bad line, then the frame on line 2" \
+    "$(printf '%s\n' 1:missing_start 'PYDIR 1' 2:bad_character AB00)" \
+    "$("${summary[@]}" -e 's/^{"type":"AB00".*/AB00/' "$work/out")"
+  expect_eq "--format none: the same reports on stderr" \
+    "$(printf '%s\n' 'line 1: missing_start' 'line 2: bad_character')" \
+    "$("$decode" --format none <"$work/in" 2>&1 | sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/')"
 }
 
 # hex2bin <hex>: the bytes.

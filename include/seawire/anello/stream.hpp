@@ -49,9 +49,18 @@
 // A rejected candidate contributes its AB to dropped_bytes; its other bytes land wherever their
 // re-read puts them (mostly noise_bytes).
 //
+// Drop reports: with report_drops(true), each event behind those counters also comes out as an
+// item of kind dropped, in stream order among the sentences and frames: a run of noise bytes, a
+// dropped line (invalid byte, overlong), an interrupted sentence, a rejected frame candidate.
+// The item says where (offset, line), why, how many bytes, and shows the first of them, so a
+// program can tell its user exactly what was lost instead of only counting it:
+//   reader.report_drops(true);
+//   ... if (item->is_drop()) warn(item->line, name(item->drop.reason), item->drop.bytes);
+// Their sizes add up to noise_bytes + dropped_bytes.
+//
 // Memory is fixed: Capacity bytes for a sentence cut by a chunk boundary, 56 for a frame, 55 to
-// re-read; no heap, noexcept, usable in constant expressions (the std::span feed() excepted: it
-// has to reinterpret the bytes as chars).
+// re-read, 256 to show a drop; no heap, noexcept, usable in constant expressions (the std::span
+// feed() excepted: it has to reinterpret the bytes as chars).
 
 #include <algorithm>
 #include <cassert>
@@ -71,6 +80,53 @@ namespace seawire::anello {
 enum class stream_item_kind : std::uint8_t {
   sentence,  ///< an NMEA 0183 line: stream_item::sentence
   frame,     ///< a 0xAB00 binary frame with a good CRC: stream_item::bytes and ::frame
+  dropped,   ///< bytes the reader dropped, and why: stream_item::drop (only after
+             ///< stream_reader::report_drops(true))
+};
+
+/// Why a stream_reader dropped bytes (the counters of stream_stats, one report per event).
+enum class drop_reason : std::uint8_t {
+  noise,            ///< bytes between items that start none (no '$' or 0xAB before them)
+  invalid_byte,     ///< a sentence holding a byte outside 0x20..0x7E: it and the rest of its line
+  overlong,         ///< a sentence longer than the reader's capacity: it and the rest of its line
+  interrupted,      ///< a sentence cut short by a '$' or a 0xAB before its line ended
+  bad_crc,          ///< a 56-byte frame candidate whose CRC-32 did not match its payload
+  bad_length,       ///< AB 00 followed by a length other than 00 30
+  truncated_frame,  ///< a frame candidate (AB 00 at least) cut short by finish()
+};
+
+/// "noise", "invalid_byte", ...: the enumerator's name.
+[[nodiscard]] constexpr std::string_view name(drop_reason r) noexcept {
+  switch (r) {
+    case drop_reason::noise: return "noise";
+    case drop_reason::invalid_byte: return "invalid_byte";
+    case drop_reason::overlong: return "overlong";
+    case drop_reason::interrupted: return "interrupted";
+    case drop_reason::bad_crc: return "bad_crc";
+    case drop_reason::bad_length: return "bad_length";
+    case drop_reason::truncated_frame: return "truncated_frame";
+  }
+  return "unknown";
+}
+
+/// One drop: which bytes of the stream the reader gave up on, and why. The stream_item's offset
+/// and line are those of the first byte concerned.
+struct stream_drop {
+  /// Most bytes a report shows (a longer run of dropped bytes is shown by its start).
+  static constexpr std::size_t max_shown = 256;
+
+  drop_reason reason = drop_reason::noise;
+  /// Bytes taken out of the stream by this event. Over all reports of a finished stream they add
+  /// up to stream_stats::noise_bytes + dropped_bytes. A rejected frame candidate (bad_crc,
+  /// truncated_frame) drops only its 0xAB: the bytes after it are read again and may still be
+  /// items or drops of their own, reported after this one.
+  std::uint64_t size = 0;
+  /// The bytes concerned, from the report's offset, at most max_shown of them: the dropped
+  /// bytes, or for a rejected frame candidate the whole candidate (up to 56 bytes). Valid until
+  /// the next call of next(), feed() or finish().
+  std::string_view bytes{};
+
+  friend constexpr bool operator==(const stream_drop&, const stream_drop&) noexcept = default;
 };
 
 /// One item of a mixed NMEA + binary stream.
@@ -78,19 +134,27 @@ struct stream_item {
   stream_item_kind kind = stream_item_kind::sentence;
   /// Of the item's first byte ('$' or 0xAB), counted from 0 at construction or reset().
   std::uint64_t offset = 0;
+  /// Line number of the item's first byte: line breaks before it, plus one (CR LF is one break;
+  /// CR and LF inside frames are none). For a sentence, the same as sentence.line.
+  std::uint64_t line = 1;
   /// kind == sentence: the line from its '$' up to its line ending, the ending, and the line
   /// number (line breaks before it, plus one; CR and LF inside frames are not line breaks). The
   /// text is valid until the next call of next(), feed() or finish(). Empty for a frame.
   nmea::framed_line sentence{};
   /// kind == frame: the 56 bytes as received (owned, unlike the sentence text).
   frame_bytes bytes{};
-  /// kind == frame: the bytes decoded; all "not available" for a sentence.
+  /// kind == frame: the bytes decoded; all "not available" otherwise.
   sensor_frame_raw frame{};
+  /// kind == dropped: what was dropped and why.
+  stream_drop drop{};
 
   [[nodiscard]] constexpr bool is_sentence() const noexcept {
     return kind == stream_item_kind::sentence;
   }
   [[nodiscard]] constexpr bool is_frame() const noexcept { return kind == stream_item_kind::frame; }
+  [[nodiscard]] constexpr bool is_drop() const noexcept {
+    return kind == stream_item_kind::dropped;
+  }
 
   friend constexpr bool operator==(const stream_item&, const stream_item&) noexcept = default;
 };
@@ -164,7 +228,8 @@ class stream_reader {
         if (auto item = step(chunk_.data(), pos_, chunk_.size())) return item;
       } else if (ending_) {
         if (auto item = end_of_stream()) return item;
-        if (rpos_ < rlen_) continue;  // a truncated candidate's bytes to read again
+        // A truncated candidate's bytes to read again, or a drop report to close.
+        if (rpos_ < rlen_ || drop_open_) continue;
         ending_ = false;
         prev_cr_ = false;
         return std::nullopt;
@@ -192,8 +257,17 @@ class stream_reader {
 
   [[nodiscard]] constexpr const stream_stats& stats() const noexcept { return stats_; }
 
+  /// With `on`, next() and finish() also yield a stream_item of kind dropped for each run of bytes
+  /// the reader gives up on, in stream order among the other items (off by default: only
+  /// sentences and frames, and the counters). A report comes once its run has ended: a noise run
+  /// at the next '$', 0xAB or line break, a dropped line at its end, so it does not depend on how
+  /// the stream is chunked either. Takes effect from the next byte read; keep it the same for a
+  /// whole stream.
+  constexpr void report_drops(bool on) noexcept { report_drops_ = on; }
+  [[nodiscard]] constexpr bool reports_drops() const noexcept { return report_drops_; }
+
   /// Back to the freshly constructed state: no chunk, nothing pending, offset 0, line 1, zero
-  /// stats.
+  /// stats. Keeps the report_drops() setting.
   constexpr void reset() noexcept {
     // Field by field: a whole new reader would put Capacity bytes on the stack.
     chunk_ = {};
@@ -210,6 +284,9 @@ class stream_reader {
     state_ = state::idle;
     prev_cr_ = false;
     ending_ = false;
+    drop_open_ = false;
+    dlen_ = 0;
+    dsize_ = 0;
   }
 
  private:
@@ -260,9 +337,10 @@ class stream_reader {
           const char c = s[i];
           if (c == '$' || c == sync || c == '\r' || c == '\n') {
             state_ = state::idle;  // idle starts the item or counts the line break
-            break;
+            return close_drop();
           }
           ++stats_.dropped_bytes;
+          add_drop(s + i, 1);
         }
         return std::nullopt;
       case state::frame: return scan_frame(s, i, end);
@@ -276,10 +354,12 @@ class stream_reader {
     for (; i < end; ++i) {
       const char c = s[i];
       if (c == '$') {
+        if (drop_open_) return close_drop();  // the noise before it; the '$' is read again
         prev_cr_ = false;
         return scan_sentence(s, i, end, 0);
       }
       if (c == sync) {
+        if (drop_open_) return close_drop();
         prev_cr_ = false;
         frame_start_ = offset_of(s, i);
         fbuf_[0] = 0xAB;
@@ -289,12 +369,15 @@ class stream_reader {
         return scan_frame(s, i, end);
       }
       if (c == '\r' || c == '\n') {
+        if (drop_open_) return close_drop();
         ++stats_.line_break_bytes;
         if (c == '\r' || !prev_cr_) ++line_;
         prev_cr_ = c == '\r';
       } else {
         ++stats_.noise_bytes;
         prev_cr_ = false;
+        if (!drop_open_) open_drop(drop_reason::noise, offset_of(s, i));
+        add_drop(s + i, 1);
       }
     }
     return std::nullopt;
@@ -317,6 +400,9 @@ class stream_reader {
       if (n > Capacity) {
         ++stats_.overlong;
         stats_.dropped_bytes += n;
+        open_drop(drop_reason::overlong, sentence_start_);
+        add_drop(lbuf_, have);
+        add_drop(s + start, q - start);
         i = q;
         state_ = state::discard;
       } else {  // q == end: the sentence goes on in the next source
@@ -355,10 +441,16 @@ class stream_reader {
       stats_.dropped_bytes += n;
       i = q;
       state_ = state::idle;
-      return std::nullopt;
+      open_drop(drop_reason::interrupted, sentence_start_);
+      add_drop(lbuf_, have);
+      add_drop(s + start, q - start);
+      return close_drop();
     }
     ++stats_.invalid_bytes;
     stats_.dropped_bytes += n + 1;
+    open_drop(drop_reason::invalid_byte, sentence_start_);
+    add_drop(lbuf_, have);
+    add_drop(s + start, q + 1 - start);
     i = q + 1;
     state_ = state::discard;
     return std::nullopt;
@@ -373,10 +465,7 @@ class stream_reader {
     static_assert(payload_size <= 0xFF, "the length field's high byte is 0");
     for (; flen_ < 4 && i < end; ++i) {
       const auto b = static_cast<std::uint8_t>(s[i]);
-      if (b != header[flen_]) {
-        reject_header();  // s[i] is read again from the idle state
-        return std::nullopt;
-      }
+      if (b != header[flen_]) return reject_header();  // s[i] is read again from the idle state
       fbuf_[flen_++] = b;
     }
     const std::size_t n = std::min(frame_size - flen_, end - i);
@@ -392,27 +481,80 @@ class stream_reader {
       stream_item item;
       item.kind = stream_item_kind::frame;
       item.offset = frame_start_;
+      item.line = line_;
       item.bytes = fbuf_;
       item.frame = r.value;
       return item;
     }
     ++stats_.bad_crc_frames;
+    std::optional<stream_item> drop = candidate_drop(drop_reason::bad_crc, 1);
     read_again();
-    return std::nullopt;
+    return drop;
   }
 
   // AB then not 00 is a lone noise byte. AB 00 then a wrong length byte is a bad length: the AB
   // is dropped and the 00s are noise (read again, they would be nothing else).
-  constexpr void reject_header() noexcept {
+  // A lone AB joins (starts) a noise report; a bad length is a report of its own.
+  constexpr std::optional<stream_item> reject_header() noexcept {
+    std::optional<stream_item> drop;
     if (flen_ == 1) {
       ++stats_.noise_bytes;
+      open_drop(drop_reason::noise, frame_start_);
+      add_drop(&sync, 1);
     } else {
       ++stats_.bad_length_frames;
       ++stats_.dropped_bytes;
       stats_.noise_bytes += flen_ - 1;
+      drop = candidate_drop(drop_reason::bad_length, flen_);  // the header is gone, not read again
     }
     flen_ = 0;
     state_ = state::idle;
+    return drop;
+  }
+
+  // ---- drop reports (cold) ----
+
+  // Starts a report, when reports are wanted.
+  constexpr void open_drop(drop_reason why, std::uint64_t offset) noexcept {
+    if (!report_drops_) return;
+    drop_open_ = true;
+    dreason_ = why;
+    doffset_ = offset;
+    dline_ = line_;
+    dsize_ = 0;
+    dlen_ = 0;
+  }
+
+  // n more bytes of the open report (nothing when none is open): counted, and kept while the
+  // report shows fewer than max_shown.
+  constexpr void add_drop(const char* p, std::size_t n) noexcept {
+    if (!drop_open_) return;
+    dsize_ += n;
+    const std::size_t keep = std::min(n, stream_drop::max_shown - dlen_);
+    std::copy_n(p, keep, dbuf_ + dlen_);
+    dlen_ += keep;
+  }
+
+  // The open report as an item (nullopt when none is open).
+  constexpr std::optional<stream_item> close_drop() noexcept {
+    if (!drop_open_) return std::nullopt;
+    drop_open_ = false;
+    stream_item item;
+    item.kind = stream_item_kind::dropped;
+    item.offset = doffset_;
+    item.line = dline_;
+    item.drop = stream_drop{dreason_, dsize_, std::string_view(dbuf_, dlen_)};
+    return item;
+  }
+
+  // The candidate in fbuf_[0, flen_) as a report of `size` dropped bytes.
+  constexpr std::optional<stream_item> candidate_drop(drop_reason why, std::size_t size) noexcept {
+    open_drop(why, frame_start_);
+    if (!drop_open_) return std::nullopt;
+    for (std::size_t k = 0; k < flen_; ++k) dbuf_[k] = static_cast<char>(fbuf_[k]);
+    dlen_ = flen_;
+    dsize_ = size;
+    return close_drop();
   }
 
   // A rejected candidate: drop its AB and read fbuf_[1, flen_) again. They are followed in the
@@ -437,16 +579,20 @@ class stream_reader {
       case state::sentence:
         return yield_sentence(std::string_view(lbuf_, llen_), line_ending::none);
       case state::frame:
-        if (flen_ == 1) {
-          ++stats_.noise_bytes;  // a lone AB: not even a frame id
+        if (flen_ == 1) {  // a lone AB: not even a frame id
+          ++stats_.noise_bytes;
+          open_drop(drop_reason::noise, frame_start_);
+          add_drop(&sync, 1);
           flen_ = 0;
+          return std::nullopt;  // the report closes on the next call
         } else {
           ++stats_.truncated_frames;
+          std::optional<stream_item> drop = candidate_drop(drop_reason::truncated_frame, 1);
           read_again();
+          return drop;
         }
-        break;
       case state::idle:
-      case state::discard: break;
+      case state::discard: return close_drop();
     }
     return std::nullopt;
   }
@@ -456,6 +602,7 @@ class stream_reader {
     stream_item item;
     item.kind = stream_item_kind::sentence;
     item.offset = sentence_start_;
+    item.line = line_;
     item.sentence = nmea::framed_line{line_text, e, line_};
     if (e != line_ending::none) ++line_;
     return item;
@@ -488,6 +635,14 @@ class stream_reader {
   state state_ = state::idle;
   bool prev_cr_ = false;  // the last byte read between items was a CR: an LF now ends no line
   bool ending_ = false;   // finish() was called: resolve what is pending at the end of input
+  bool report_drops_ = false;
+  bool drop_open_ = false;  // a drop report is collecting bytes: the d* members
+  drop_reason dreason_ = drop_reason::noise;
+  std::uint64_t doffset_ = 0;  // stream offset of its first byte
+  std::uint64_t dline_ = 1;    // line of its first byte
+  std::uint64_t dsize_ = 0;    // bytes dropped so far
+  std::size_t dlen_ = 0;       // bytes of it kept in dbuf_
+  char dbuf_[stream_drop::max_shown]{};
   frame_bytes fbuf_{};
   char replay_[replay_capacity]{};
   char lbuf_[Capacity]{};
