@@ -832,6 +832,20 @@ TEST_CASE("field names are what users see") {
   CHECK(nmea::field_name<kf::cpnvg>(12) == "nav_timestamp");
   CHECK(nmea::field_name<kf::cprcm>(2) == "compass_id");
   CHECK(nmea::field_name<kf::cprbs>(6) == "temperature_c");
+  // The five-field CPRBS (no battery id) numbered as it comes on the wire.
+  CHECK(nmea::field_name<kf::cprbs>(2) == "battery_id");
+  CHECK(nmea::field_name<kf::cprbs>(2, 5) == "stack_voltage_v");
+  CHECK(nmea::field_name<kf::cprbs>(5, 5) == "temperature_c");
+  CHECK(nmea::field_name<kf::cprbs>(6, 5).empty());
+  CHECK(nmea::field_name<kf::cprbs>(2, 6) == "battery_id");
+  CHECK(kf::from_vehicle::field_name("CPRBS", 5, 5) == "temperature_c");
+  const auto bad = kf::decode_from_vehicle(sealed("CPRBS,172909.322,15.1,15.1,15.1,x"));
+  CHECK(bad.ec == errc::bad_number);
+  CHECK(bad.field == 5);
+  const auto parsed = nmea::parse(sealed("CPRBS,172909.322,15.1,15.1,15.1,x"));
+  REQUIRE(parsed);
+  CHECK(kf::from_vehicle::field_name("CPRBS", bad.field, parsed.value.field_count) ==
+        "temperature_c");
   CHECK(nmea::field_name<kf::cpimu>(8) == "nav_timestamp");
   CHECK(nmea::field_name<kf::cpalt>(2) == "lights_on");
   CHECK(nmea::field_name<kf::pydep>(1) == "yaw_rate");

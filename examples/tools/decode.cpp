@@ -232,7 +232,7 @@ class decoder {
       std::string detail = std::string(s.address) + " cannot be re-encoded";
       if (r.field != 0) {
         detail += ": field " + std::to_string(r.field) + " (" +
-                  std::string(all_messages::field_name(s.address, r.field)) + ")";
+                  std::string(all_messages::field_name(s.address, r.field, s.field_count)) + ")";
       }
       detail += ": " + std::string(message(r.ec));
       reject(l.line, r.ec, r.field, detail, l.text);
@@ -267,7 +267,8 @@ class decoder {
     std::string detail(s.address);
     if (r.field != 0) {
       detail += " field " + std::to_string(r.field);
-      const std::string_view field_name = all_messages::field_name(s.address, r.field);
+      const std::string_view field_name =
+          all_messages::field_name(s.address, r.field, s.field_count);
       if (!field_name.empty()) detail += " (" + std::string(field_name) + ")";
       const nmea::field_token t = nmea::field(s, r.field);
       if (t.present) detail += " \"" + std::string(t.text) + "\"";

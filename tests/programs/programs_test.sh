@@ -259,6 +259,13 @@ case_roundtrip() {
 }
 
 case_options() {
+  # The five-field CPRBS (no battery id): errors name the field as it is on the wire.
+  crlf "$(seal CPRBS,172909.322,15.1,15.1,15.1,x)" "$(seal CPRBS,172909.322,1,15.1,15.1,x,0)" \
+    >"$work/in"
+  expect_rc "CPRBS, both forms" 1 "$decode" --format none <"$work/in"
+  expect_eq "field 5 of the short form is the temperature, of the long one the max cell voltage" \
+    "$(printf '%s\n' 'line 1: CPRBS field 5 (temperature_c)' 'line 2: CPRBS field 5 (max_cell_voltage_v)')" \
+    "$(sed 's/^seawire-decode: \(line [0-9]*\): bad_number: \(.*)\) .*/\1: \2/' "$work/err")"
   printf '$PYDIR,45,55\r\n' >"$work/in"
   expect_rc "no checksum, default" 0 "$decode" <"$work/in"
   expect_rc "no checksum, --checksum required" 1 "$decode" --checksum required <"$work/in"

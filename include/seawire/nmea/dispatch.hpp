@@ -85,11 +85,15 @@ struct message_set {
     return (detail::key_matches<Ms>(k, address) || ...);
   }
 
-  /// The declared name of wire field `n` of the message with this address ("" if unknown).
-  [[nodiscard]] static constexpr std::string_view field_name(std::string_view address,
-                                                             std::size_t n) noexcept {
+  /// The declared name of wire field `n` of the message with this address ("" if unknown);
+  /// `field_count` as nmea::field_name's (the sentence's, for a sentence with a shorter form).
+  [[nodiscard]] static constexpr std::string_view field_name(
+      std::string_view address, std::size_t n,
+      std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
     std::string_view name;
-    (void)((Ms::nmea.matches(address) ? (name = nmea::field_name<Ms>(n), true) : false) || ...);
+    (void)((Ms::nmea.matches(address) ? (name = nmea::field_name<Ms>(n, field_count), true)
+                                      : false) ||
+           ...);
     return name;
   }
 

@@ -640,13 +640,19 @@ constexpr void for_each_field(T& msg, F&& f) {
 }
 
 /// The declared name of the field that holds wire field `n` (1-based), or "" if none.
+/// Numbered as in the longest form of the sentence; give the sentence's field count (e.g.
+/// sentence_view::field_count) to number a shorter form as it came: a five-field CPRBS has no
+/// battery id, so its field 2 is the stack voltage.
 template <message_like T>
-[[nodiscard]] constexpr std::string_view field_name(std::size_t n) noexcept {
+[[nodiscard]] constexpr std::string_view field_name(
+    std::size_t n, std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
   std::string_view name;
   std::size_t first = 1;
   T::nmea.fields.apply([&](const auto&... d) {
-    (void)((n >= first && n < first + d.width() ? (name = d.name, true)
-                                                : (first += d.width(), false)) ||
+    (void)(((d.opts.when_count != 0 && field_count < d.opts.when_count)
+                ? false  // the shorter form has no such field
+                : (n >= first && n < first + d.width() ? (name = d.name, true)
+                                                       : (first += d.width(), false))) ||
            ...);
   });
   return name;
