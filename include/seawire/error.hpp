@@ -123,7 +123,7 @@ enum class errc : std::uint8_t {
     case errc::too_few_fields: return "sentence ends before a required field";
     case errc::too_many_fields: return "unexpected extra fields";
     case errc::missing_field: return "required field is blank";
-    case errc::bad_number: return "not a decimal number";
+    case errc::bad_number: return "not a number of the field's form";
     case errc::number_too_long: return "number has too many digits";
     case errc::out_of_range: return "value outside the range the spec allows";
     case errc::bad_time: return "time is not hhmmss[.fff]";
@@ -133,8 +133,8 @@ enum class errc : std::uint8_t {
     case errc::bad_date: return "date is not ddmmyy";
     case errc::month_out_of_range: return "month out of range (01-12)";
     case errc::day_out_of_range: return "day out of range for its month";
-    case errc::bad_latitude: return "latitude is not DDMM.mmm within 90 degrees";
-    case errc::bad_longitude: return "longitude is not DDDMM.mmm within 180 degrees";
+    case errc::bad_latitude: return "latitude malformed or beyond 90 degrees";
+    case errc::bad_longitude: return "longitude malformed or beyond 180 degrees";
     case errc::bad_hemisphere: return "hemisphere letter is not N/S or E/W";
     case errc::bad_enum: return "value is not one of the field's allowed values";
     case errc::bad_flag: return "flag is not 0 or 1";

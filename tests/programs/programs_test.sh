@@ -451,8 +451,8 @@ case_frames() {
   expect_eq "heading 89.5 sent as 90, SOG 1.25 as 1.3, fix quality 7" "90 1.3 7" \
     "$("$decode" <"$work/out" | sed 's/.*"heading_deg":\([^,]*\),.*"sog_mps":\([^,]*\),.*"fix_quality":\([^,]*\),.*/\1 \2 \3/')"
   expect_eq "a fix quality with a fraction is refused; frames take no precision" "$(printf '%s\n' \
-    'seawire-encode: line 2: AB00 field 10 (fix_quality) 7.5: bad_number: not a decimal number (a code: a whole number, not rounded)' \
-    'seawire-encode: line 3: AB00 field 10 (fix_quality) 7.0: bad_number: not a decimal number (a code: a whole number, not rounded)' \
+    'seawire-encode: line 2: AB00 field 10 (fix_quality) 7.5: bad_number: not a number of the field'"'"'s form (a code: a whole number, not rounded)' \
+    'seawire-encode: line 3: AB00 field 10 (fix_quality) 7.0: bad_number: not a number of the field'"'"'s form (a code: a whole number, not rounded)' \
     'seawire-encode: line 4: AB00: unknown key "precision" (not a field of AB00)')" "$(cat "$work/err")"
 }
 
@@ -650,7 +650,7 @@ EOF
     'seawire-encode: line 3: no "type" string' \
     'seawire-encode: line 4: PYDIR field 1 (thrust_left) 120: out_of_range: value outside the range the spec allows' \
     'seawire-encode: line 5: PYDEV: unknown key "speeed" (not a field of PYDEV)' \
-    'seawire-encode: line 8: CPNVG field 2 (latitude) "north": bad_latitude: latitude is not DDMM.mmm within 90 degrees' \
+    'seawire-encode: line 8: CPNVG field 2 (latitude) "north": bad_latitude: latitude malformed or beyond 90 degrees' \
     'seawire-encode: line 12: unknown_address: no known message is "XXABC" (and there is no "fields" array to send it as is)' \
     'seawire-encode: line 13: XXABC field 1 (fields): bad_text: text contains a character the field may not carry' \
     'seawire-encode: line 15: RXHRB field 2 (time) "16:12:29.5": bad_time: time is not hhmmss[.fff]' \
