@@ -58,8 +58,31 @@ owned_item own(const anello::stream_item& i) {
     return {i.kind,        i.offset,   std::string(i.drop.bytes), {}, i.line, {}, {},
             i.drop.reason, i.drop.size};
   }
-  return {i.kind,  i.offset, std::string(i.sentence.text), i.sentence.ending, i.sentence.line,
+  SEAWIRE_FUZZ_CHECK(!i.is_sentence() || i.sentence.line == i.line, "two line numbers differ");
+  return {i.kind,  i.offset, std::string(i.sentence.text), i.sentence.ending, i.line,
           i.bytes, i.frame};
+}
+
+// The line each byte of the stream is on, counted independently of the reader from the frames
+// it yielded: CR, LF and CR LF outside those frames are line breaks (a '$', an AB, a frame or
+// any other byte between a CR and an LF makes them two).
+std::vector<std::uint64_t> lines_of(std::string_view stream, const std::vector<owned_item>& items) {
+  std::vector<bool> in_frame(stream.size(), false);
+  for (const owned_item& i : items) {
+    if (i.kind != anello::stream_item_kind::frame) continue;
+    for (std::size_t k = 0; k < anello::frame_size; ++k) in_frame[i.offset + k] = true;
+  }
+  std::vector<std::uint64_t> line(stream.size() + 1, 1);
+  std::uint64_t n = 1;
+  bool prev_cr = false;
+  for (std::size_t k = 0; k < stream.size(); ++k) {
+    line[k] = n;
+    const char c = stream[k];
+    if (!in_frame[k] && (c == '\r' || (c == '\n' && !prev_cr))) ++n;
+    prev_cr = !in_frame[k] && c == '\r';
+  }
+  line[stream.size()] = n;
+  return line;
 }
 
 template <std::size_t Capacity, class NextSize>
@@ -97,9 +120,12 @@ void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too)
   std::uint64_t next_free = 0;
   std::uint64_t text = 0;
   std::uint64_t frames = 0;
+  const std::vector<std::uint64_t> lines = lines_of(stream, whole.items);
   for (const owned_item& i : whole.items) {
     SEAWIRE_FUZZ_CHECK(i.offset >= next_free, "items overlap or go backwards", stream,
                        number(i.offset));
+    SEAWIRE_FUZZ_CHECK(i.line == lines[i.offset], "an item's line number is wrong", stream,
+                       number(i.offset), number(i.line));
     if (i.kind == anello::stream_item_kind::frame) {
       SEAWIRE_FUZZ_CHECK(i.offset + anello::frame_size <= stream.size(), stream);
       const std::string_view here = stream.substr(i.offset, anello::frame_size);
@@ -151,9 +177,12 @@ void check_drops(std::string_view stream, std::uint8_t seed) {
   std::uint64_t sizes = 0;
   std::uint64_t last = 0;
   bool first = true;
+  const std::vector<std::uint64_t> lines = lines_of(stream, whole.items);
   for (const owned_item& i : whole.items) {
     SEAWIRE_FUZZ_CHECK(first || i.offset > last, "items out of stream order", stream,
                        number(i.offset));
+    SEAWIRE_FUZZ_CHECK(i.line == lines[i.offset], "a report's line number is wrong", stream,
+                       number(i.offset), number(i.line));
     first = false;
     last = i.offset;
     if (i.kind != anello::stream_item_kind::dropped) continue;

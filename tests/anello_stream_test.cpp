@@ -400,9 +400,9 @@ outcome reference_read(std::string_view s, std::size_t capacity, bool drops = fa
       }
       continue;
     }
-    // Between items: anything but noise ends a noise run.
-    const bool noise = c != '$' && u != 0xAB && c != '\r' && c != '\n';
-    if (!noise) close();
+    // Between items: '$' and line breaks end a noise run; an AB ends it only as AB 00.
+    if (c == '$' || c == '\r' || c == '\n') close();
+    if (u == 0xAB && i + 1 < s.size() && byte(i + 1) == 0x00) close();
     if (c == '$') {
       state = st::in;
       cur = "$";
@@ -417,12 +417,13 @@ outcome reference_read(std::string_view s, std::size_t capacity, bool drops = fa
       if (m < 4 && i + m < s.size()) {  // the header breaks at byte m: read it again
         if (m == 1) {
           ++k.noise_bytes;
-          open = drop(drop_reason::noise, i, 1, "", line);  // a noise run starting with the AB
+          if (!open) open = drop(drop_reason::noise, i, 0, "", line);
+          ++open->size;  // the AB is noise, in the run it follows
         } else {
           ++k.bad_length_frames;
           ++k.dropped_bytes;
           k.noise_bytes += m - 1;
-          report(drop_reason::bad_length, i, m, s.substr(i, m));
+          report(drop_reason::bad_length, i, m, s.substr(i, m + 1));  // and the byte that broke it
         }
         i += m;
       } else if (i + frame_size <= s.size()) {
@@ -442,7 +443,8 @@ outcome reference_read(std::string_view s, std::size_t capacity, bool drops = fa
         }
       } else if (s.size() - i == 1) {
         ++k.noise_bytes;
-        open = drop(drop_reason::noise, i, 1, "", line);
+        if (!open) open = drop(drop_reason::noise, i, 0, "", line);
+        ++open->size;
         ++i;
       } else {
         ++k.truncated_frames;
@@ -1008,7 +1010,7 @@ TEST_CASE("drop reports: one per event, where it happened, in order", "[anello][
       drop(drop_reason::interrupted, 21, 4, "$C,1", 4),
       sentence("$D*00", 25, line_ending::lf, 4),
       drop(drop_reason::noise, 31, 4, "\xAB\x01hi", 5),
-      drop(drop_reason::bad_length, 36, 3, "\xAB\x00\x00"s, 6),
+      drop(drop_reason::bad_length, 36, 3, "\xAB\x00\x00\x31"s, 6),
       drop(drop_reason::noise, 39, 1, "\x31", 6),
       drop(drop_reason::bad_crc, 42, 1, bad_crc, 7),
       drop(drop_reason::noise, 43, 55, bad_crc.substr(1), 7),
@@ -1053,6 +1055,34 @@ TEST_CASE("drop reports: one per event, where it happened, in order", "[anello][
     item = r.next();
     REQUIRE(item.has_value());
     CHECK(own(*item) == sentence("$A", 5, line_ending::lf, 1));
+  }
+  SECTION("an AB that starts no frame is noise in the run around it; AB 00 ends the run") {
+    const outcome n = read(
+        "ab\xAB"
+        "cd\r\nxy\xAB\x00\x00\x30zz\r\n"s,
+        true);
+    CHECK(n.items ==
+          std::vector<rec>{drop(drop_reason::noise, 0, 5,
+                                "ab\xAB"
+                                "cd",
+                                1),
+                           drop(drop_reason::noise, 7, 2, "xy", 2),
+                           drop(drop_reason::truncated_frame, 9, 1, "\xAB\x00\x00\x30zz\r\n"s, 2),
+                           drop(drop_reason::noise, 10, 5, "\x00\x00\x30zz"s, 2)});
+    CHECK(read_bytewise("ab\xAB"
+                        "cd\r\nxy\xAB\x00\x00\x30zz\r\n"s,
+                        true) == n);
+  }
+  SECTION("turned off while a run is open: no report") {
+    stream_reader<> r;
+    r.report_drops(true);
+    r.feed("abc"sv);
+    CHECK_FALSE(r.next().has_value());
+    r.report_drops(false);
+    r.feed("de$A\n"sv);
+    const auto item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(item->is_sentence());
   }
   SECTION("a long run shows its first 256 bytes and counts them all") {
     const std::string noise(1000, '#');

@@ -3,7 +3,7 @@
 // one JSON object per message (or re-encoded messages, or nothing but a verdict). A thin program
 // over the library: anello::stream_reader cuts the stream into sentences and frames,
 // message_set::visit decodes each sentence by its address, nmea/json.hpp and
-// anello/frame_json.hpp write them. See --help, and README.programs.md for the manual.
+// anello/frame_json.hpp write them. See --help, and the README's seawire-decode(1) for the manual.
 
 #include <CLI/CLI.hpp>
 
@@ -301,11 +301,11 @@ class decoder {
   // in hex, since they are binary).
   void dropped(const anello::stream_item& item) {
     const anello::stream_drop& d = item.drop;
-    if (d.reason == anello::drop_reason::bad_crc ||
+    if (d.reason == anello::drop_reason::bad_crc || d.reason == anello::drop_reason::bad_length ||
         d.reason == anello::drop_reason::truncated_frame) {
       candidate_end_ = item.offset + d.bytes.size();
     } else if (d.reason == anello::drop_reason::noise && item.offset + d.size <= candidate_end_) {
-      return;  // the rest of a rejected candidate, read again: part of its report
+      return;  // bytes of a rejected candidate read again, shown in its report: part of it
     }
     const auto bytes = static_cast<unsigned long long>(d.size);
     const char* plural = d.size == 1 ? "" : "s";

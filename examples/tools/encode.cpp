@@ -4,7 +4,7 @@
 // each line, handing over every number's text, so 203.10 is sent as 203.10 (a number in exponent
 // form, as jq prints 0.00001, is first written out: 1e-05 is sent as 0.00001); the library reads
 // the values (nmea::read_json, anello::read_frame_json) and encodes them strictly.
-// See --help, and README.programs.md for the manual.
+// See --help, and the README's seawire-encode(1) for the manual.
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -353,6 +353,14 @@ case_drops() {
   expect_eq "the junk past the candidate reported on its own line" \
     "$(printf '%s\n' 1:crc_mismatch 'PYDIR 1' 'PYDIR 3' 'PYDIR 5' 'PYDIR 7' 5:missing_start)" \
     "$("${summary[@]}" "$work/out")"
+  # A wrong length: one report showing the header and the length byte; a lone AB in noise is
+  # part of that noise.
+  { hex2bin AB000031; printf '\r\nab'; hex2bin AB; printf 'cd\r\n%s\r\n' "$a"; } >"$work/in"
+  expect_rc "bad length, lone AB" 1 "$decode" <"$work/in"
+  expect_eq "one report each, then the sentence" \
+    "$(printf '%s\n' '1 bad_length AB000031' '2 missing_start ab\u00ABcd' 'PYDIR 1')" \
+    "$(sed -e 's/^{"line":\([0-9]*\),"error":"\([a-z_]*\)".*"input":"\(.*\)"}$/\1 \2 \3/' \
+      -e 's/^{"type":"PYDIR","thrust_left":\([0-9]*\).*/PYDIR \1/' "$work/out")"
   # An overlong sentence across read() chunks (64 KiB), then a good one on the next line.
   {
     printf '$PYDIR,'

@@ -86,7 +86,8 @@ enum class stream_item_kind : std::uint8_t {
 
 /// Why a stream_reader dropped bytes (the counters of stream_stats, one report per event).
 enum class drop_reason : std::uint8_t {
-  noise,            ///< bytes between items that start none (no '$' or 0xAB before them)
+  noise,            ///< bytes between items that start none (no '$' before them; an 0xAB not
+                    ///< followed by 00 is one of them)
   invalid_byte,     ///< a sentence holding a byte outside 0x20..0x7E: it and the rest of its line
   overlong,         ///< a sentence longer than the reader's capacity: it and the rest of its line
   interrupted,      ///< a sentence cut short by a '$' or a 0xAB before its line ended
@@ -122,8 +123,9 @@ struct stream_drop {
   /// items or drops of their own, reported after this one.
   std::uint64_t size = 0;
   /// The bytes concerned, from the report's offset, at most max_shown of them: the dropped
-  /// bytes, or for a rejected frame candidate the whole candidate (up to 56 bytes). Valid until
-  /// the next call of next(), feed() or finish().
+  /// bytes; for bad_crc and truncated_frame the whole candidate (up to 56 bytes); for bad_length
+  /// the header up to and including the byte that broke it (that byte is read again). Valid
+  /// until the next call of next(), feed() or finish().
   std::string_view bytes{};
 
   friend constexpr bool operator==(const stream_drop&, const stream_drop&) noexcept = default;
@@ -358,8 +360,7 @@ class stream_reader {
         prev_cr_ = false;
         return scan_sentence(s, i, end, 0);
       }
-      if (c == sync) {
-        if (drop_open_) return close_drop();
+      if (c == sync) {  // an open noise run stays open: a lone AB is noise too (scan_frame)
         prev_cr_ = false;
         frame_start_ = offset_of(s, i);
         fbuf_[0] = 0xAB;
@@ -465,8 +466,12 @@ class stream_reader {
     static_assert(payload_size <= 0xFF, "the length field's high byte is 0");
     for (; flen_ < 4 && i < end; ++i) {
       const auto b = static_cast<std::uint8_t>(s[i]);
-      if (b != header[flen_]) return reject_header();  // s[i] is read again from the idle state
+      if (b != header[flen_]) return reject_header(b);  // s[i] is read again from the idle state
       fbuf_[flen_++] = b;
+      if (flen_ == 2 && drop_open_) {  // AB 00: a candidate, so the noise before it is reported
+        ++i;
+        return close_drop();
+      }
     }
     const std::size_t n = std::min(frame_size - flen_, end - i);
     for (std::size_t k = 0; k < n; ++k) fbuf_[flen_ + k] = static_cast<std::uint8_t>(s[i + k]);
@@ -487,29 +492,37 @@ class stream_reader {
       return item;
     }
     ++stats_.bad_crc_frames;
-    std::optional<stream_item> drop = candidate_drop(drop_reason::bad_crc, 1);
+    std::optional<stream_item> drop = candidate_drop(drop_reason::bad_crc, 1, flen_);
     read_again();
     return drop;
   }
 
   // AB then not 00 is a lone noise byte. AB 00 then a wrong length byte is a bad length: the AB
   // is dropped and the 00s are noise (read again, they would be nothing else).
-  // A lone AB joins (starts) a noise report; a bad length is a report of its own.
-  constexpr std::optional<stream_item> reject_header() noexcept {
+  // A lone AB joins the noise run before it (or starts one); a bad length is a report of its
+  // own, showing the header so far and the byte that broke it (`broke`, which is read again).
+  constexpr std::optional<stream_item> reject_header(std::uint8_t broke) noexcept {
     std::optional<stream_item> drop;
     if (flen_ == 1) {
-      ++stats_.noise_bytes;
-      open_drop(drop_reason::noise, frame_start_);
-      add_drop(&sync, 1);
+      lone_sync();
     } else {
       ++stats_.bad_length_frames;
       ++stats_.dropped_bytes;
       stats_.noise_bytes += flen_ - 1;
-      drop = candidate_drop(drop_reason::bad_length, flen_);  // the header is gone, not read again
+      fbuf_[flen_] = broke;  // shown only: flen_ stays the header's length
+      drop = candidate_drop(drop_reason::bad_length, flen_, flen_ + 1);
     }
     flen_ = 0;
     state_ = state::idle;
     return drop;
+  }
+
+  // An AB that turned out to start no frame: one noise byte, in the noise run it follows.
+  constexpr void lone_sync() noexcept {
+    ++stats_.noise_bytes;
+    if (!drop_open_) open_drop(drop_reason::noise, frame_start_);
+    add_drop(&sync, 1);
+    flen_ = 0;
   }
 
   // ---- drop reports (cold) ----
@@ -539,6 +552,7 @@ class stream_reader {
   constexpr std::optional<stream_item> close_drop() noexcept {
     if (!drop_open_) return std::nullopt;
     drop_open_ = false;
+    if (!report_drops_) return std::nullopt;  // turned off while the report was open
     stream_item item;
     item.kind = stream_item_kind::dropped;
     item.offset = doffset_;
@@ -547,12 +561,13 @@ class stream_reader {
     return item;
   }
 
-  // The candidate in fbuf_[0, flen_) as a report of `size` dropped bytes.
-  constexpr std::optional<stream_item> candidate_drop(drop_reason why, std::size_t size) noexcept {
+  // The candidate fbuf_[0, shown) as a report of `size` dropped bytes.
+  constexpr std::optional<stream_item> candidate_drop(drop_reason why, std::size_t size,
+                                                      std::size_t shown) noexcept {
     open_drop(why, frame_start_);
     if (!drop_open_) return std::nullopt;
-    for (std::size_t k = 0; k < flen_; ++k) dbuf_[k] = static_cast<char>(fbuf_[k]);
-    dlen_ = flen_;
+    for (std::size_t k = 0; k < shown; ++k) dbuf_[k] = static_cast<char>(fbuf_[k]);
+    dlen_ = shown;
     dsize_ = size;
     return close_drop();
   }
@@ -580,14 +595,11 @@ class stream_reader {
         return yield_sentence(std::string_view(lbuf_, llen_), line_ending::none);
       case state::frame:
         if (flen_ == 1) {  // a lone AB: not even a frame id
-          ++stats_.noise_bytes;
-          open_drop(drop_reason::noise, frame_start_);
-          add_drop(&sync, 1);
-          flen_ = 0;
-          return std::nullopt;  // the report closes on the next call
+          lone_sync();
+          return std::nullopt;  // the noise report closes on the next call
         } else {
           ++stats_.truncated_frames;
-          std::optional<stream_item> drop = candidate_drop(drop_reason::truncated_frame, 1);
+          std::optional<stream_item> drop = candidate_drop(drop_reason::truncated_frame, 1, flen_);
           read_again();
           return drop;
         }
