@@ -543,7 +543,12 @@ static_assert(reads_at_compile_time());
 constexpr bool reports_drops_at_compile_time() {
   stream_reader<16> r;
   r.report_drops(true);
-  r.feed("##\r\n$A\x01z\n\xAB\x00"sv);
+  // From an array, not the literal: a literal's address may not be compared in a constant
+  // expression (clang), and the reader compares the source with its own buffer.
+  constexpr std::string_view bytes = "##\r\n$A\x01z\n\xAB\x00"sv;
+  std::array<char, bytes.size()> buf{};
+  std::copy(bytes.begin(), bytes.end(), buf.begin());
+  r.feed(std::string_view(buf.data(), buf.size()));
   const auto noise = r.next();  // its bytes are valid until the next call
   bool ok = noise && noise->is_drop() && noise->drop.reason == drop_reason::noise &&
             noise->drop.bytes == "##" && noise->line == 1;
