@@ -262,9 +262,9 @@ class stream_reader {
   /// With `on`, next() and finish() also yield a stream_item of kind dropped for each run of bytes
   /// the reader gives up on, in stream order among the other items (off by default: only
   /// sentences and frames, and the counters). A report comes once its run has ended: a noise run
-  /// at the next '$', 0xAB or line break, a dropped line at its end, so it does not depend on how
-  /// the stream is chunked either. Takes effect from the next byte read; keep it the same for a
-  /// whole stream.
+  /// at the next '$', line break or AB 00 (a lone AB is noise in the run), a dropped line at its
+  /// end, so it does not depend on how the stream is chunked either. Keep the setting the same
+  /// for a whole stream (turned off while a run is open, that run is not reported).
   constexpr void report_drops(bool on) noexcept { report_drops_ = on; }
   [[nodiscard]] constexpr bool reports_drops() const noexcept { return report_drops_; }
 
