@@ -73,6 +73,14 @@ TEST_CASE("positions built from degrees always carry a fraction of the minute") 
   REQUIRE(d);
   CHECK(d.value.lat->minutes == decimal(21));
   CHECK(encode(d.value).view() == relayed);
+  // Held to the sending rules (seawire-decode --strict), it is refused, at the number.
+  const auto strict = decode<standard::rmc>(relayed, parse_policy::strict());
+  CHECK(strict.ec == errc::bad_latitude);
+  CHECK(strict.field == 3);
+  const auto lon =
+      decode<standard::rmc>("$GPRMC,,A,4221.5,N,07105.,W,,,,,*3C\r\n", parse_policy::strict());
+  CHECK(lon.ec == errc::bad_longitude);
+  CHECK(lon.field == 5);
 }
 
 TEST_CASE("encode and decode name the same field for a wrong hemisphere letter") {

@@ -259,6 +259,12 @@ case_roundtrip() {
 }
 
 case_options() {
+  # A position without a fraction: read by default, refused under --strict.
+  crlf "$(seal GPRMC,164959.00,A,4221,N,07105.44878,W,0.145,156.78,311214,,,A)" >"$work/in"
+  expect_rc "position without a fraction" 0 "$decode" --format none <"$work/in"
+  expect_rc "position without a fraction, --strict" 1 "$decode" --strict --format none <"$work/in"
+  expect_eq "--strict: the latitude" 'line 1: bad_latitude: GPRMC field 3 (latitude) "4221"' \
+    "$(sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*: [^:]*\):.*/\1/' "$work/err")"
   # The five-field CPRBS (no battery id): errors name the field as it is on the wire.
   crlf "$(seal CPRBS,172909.322,15.1,15.1,15.1,x)" "$(seal CPRBS,172909.322,1,15.1,15.1,x,0)" \
     >"$work/in"

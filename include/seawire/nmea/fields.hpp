@@ -354,7 +354,8 @@ struct nmea_coordinate {
   /// From signed decimal degrees, minutes rounded to `minute_places` digits, 1 to 12: every
   /// spec writes DDMM.m with at least one digit after the point, and receivers rely on it (gpsd
   /// drops a fix whose position reads "4221,N"), so 0 places is out_of_range. A position
-  /// received without a fraction is still decoded, and written back as it came.
+  /// received without a fraction is still decoded, and written back as it came, except under a
+  /// strict policy (parse_policy::strict(), seawire-decode --strict), which refuses it.
   [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
       double deg, unsigned minute_places = 4) noexcept {
     result<nmea_coordinate> r;
@@ -707,6 +708,10 @@ struct codec<nmea_coordinate<Axis>> {
       if (i != n || places > 12) [[unlikely]]
         return Axis::error;
     }
+    // Senders write at least one fraction digit (every spec's DDMM.m); accepted without one
+    // unless the policy holds input to the sending rules.
+    if (places == 0 && r.policy().strict_values) [[unlikely]]
+      return Axis::error;
     const auto deg = static_cast<unsigned>(ddmm / 100);
     const std::uint64_t whole_minutes = ddmm % 100;
     if (whole_minutes >= 60) [[unlikely]]
