@@ -385,6 +385,10 @@ errc reference_position(std::string_view s, nmea_coordinate<Axis>& v) {
       minutes.negative || minutes.places > 12)
     return Axis::error;
   minutes.int_width = 0;
+  if (minutes.places == 0) {  // no fraction: read as one zero fraction digit
+    minutes.mantissa *= 10;
+    minutes.places = 1;
+  }
   if (minutes.mantissa >= 60 * seawire::detail::pow10_table[minutes.places])
     return errc::minute_out_of_range;
   if (deg > Axis::max_degrees || (deg == Axis::max_degrees && minutes.mantissa != 0))

@@ -66,15 +66,26 @@ TEST_CASE("positions built from degrees always carry a fraction of the minute") 
   m.lat = lat.value;
   CHECK(encode(m).view().starts_with("$GPRMC,,A,4230.0,N,"));
 
-  // A position received without a fraction is still read, and relayed as it came (as unpadded
-  // degrees are): decode -> encode is the identity.
-  constexpr std::string_view relayed = "$GPRMC,,A,4221,N,07105,W,,,,,*09\r\n";
-  const auto d = decode<standard::rmc>(relayed);
+  // A position received without a fraction is still read, as a zero fraction digit, and
+  // relayed with it: seawire never sends "4221,N".
+  constexpr std::string_view received = "$GPRMC,,A,4221,N,07105,W,,,,,*09\r\n";
+  const auto d = decode<standard::rmc>(received);
   REQUIRE(d);
-  CHECK(d.value.lat->minutes == decimal(21));
-  CHECK(encode(d.value).view() == relayed);
+  CHECK(d.value.lat->minutes == decimal(210, 1));
+  CHECK(d.value.lat->degrees() == Approx(42.35));
+  const auto relayed = encode(d.value);
+  REQUIRE(relayed);
+  CHECK(relayed.view().starts_with("$GPRMC,,A,4221.0,N,07105.0,W,,,,,*"));
+  const auto again = decode<standard::rmc>(relayed.view(), parse_policy::strict());
+  REQUIRE(again);
+  CHECK(again.value == d.value);
+  // Minutes set in code with no fraction digits are written with one, and compare equal to it.
+  standard::rmc m0;
+  m0.lat = latitude{42, decimal(21), hemisphere::north, 2};
+  CHECK(encode(m0).view().starts_with("$GPRMC,,A,4221.0,N,"));
+  CHECK(m0.lat == d.value.lat);
   // Held to the sending rules (seawire-decode --strict), it is refused, at the number.
-  const auto strict = decode<standard::rmc>(relayed, parse_policy::strict());
+  const auto strict = decode<standard::rmc>(received, parse_policy::strict());
   CHECK(strict.ec == errc::bad_latitude);
   CHECK(strict.field == 3);
   const auto lon =

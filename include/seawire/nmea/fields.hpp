@@ -354,8 +354,9 @@ struct nmea_coordinate {
   /// From signed decimal degrees, minutes rounded to `minute_places` digits, 1 to 12: every
   /// spec writes DDMM.m with at least one digit after the point, and receivers rely on it (gpsd
   /// drops a fix whose position reads "4221,N"), so 0 places is out_of_range. A position
-  /// received without a fraction is still decoded, and written back as it came, except under a
-  /// strict policy (parse_policy::strict(), seawire-decode --strict), which refuses it.
+  /// received without a fraction is still decoded (as "4221.0": one fraction digit, zero),
+  /// except under a strict policy (parse_policy::strict(), seawire-decode --strict), which
+  /// refuses it; minutes given with no fraction digits are written with one ("4221.0").
   [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
       double deg, unsigned minute_places = 4) noexcept {
     result<nmea_coordinate> r;
@@ -393,12 +394,23 @@ struct nmea_coordinate {
     return natural > degree_digits ? natural : degree_digits;
   }
 
+  /// Minutes as written: at least one fraction digit ("21" is written "21.0").
+  [[nodiscard]] constexpr decimal written_minutes() const noexcept {
+    decimal m = minutes;
+    if (m.places == 0) {
+      m.mantissa *= 10;
+      m.places = 1;
+    }
+    return m;
+  }
+
   /// The same written form. The minutes are always written with two integer digits, so their
   /// int_width is no part of it.
   friend constexpr bool operator==(const nmea_coordinate& a, const nmea_coordinate& b) noexcept {
-    return a.whole_degrees == b.whole_degrees && a.hemi == b.hemi &&
-           a.minutes.mantissa == b.minutes.mantissa && a.minutes.places == b.minutes.places &&
-           a.minutes.negative == b.minutes.negative &&
+    const decimal am = a.written_minutes();
+    const decimal bm = b.written_minutes();
+    return a.whole_degrees == b.whole_degrees && a.hemi == b.hemi && am.mantissa == bm.mantissa &&
+           am.places == bm.places && am.negative == bm.negative &&
            a.written_degree_digits() == b.written_degree_digits();
   }
 };
@@ -708,10 +720,12 @@ struct codec<nmea_coordinate<Axis>> {
       if (i != n || places > 12) [[unlikely]]
         return Axis::error;
     }
-    // Senders write at least one fraction digit (every spec's DDMM.m); accepted without one
-    // unless the policy holds input to the sending rules.
-    if (places == 0 && r.policy().strict_values) [[unlikely]]
-      return Axis::error;
+    // Senders write at least one fraction digit (every spec's DDMM.m); accepted without one,
+    // as a zero fraction digit, unless the policy holds input to the sending rules.
+    if (places == 0) [[unlikely]] {
+      if (r.policy().strict_values) return Axis::error;
+      places = 1;
+    }
     const auto deg = static_cast<unsigned>(ddmm / 100);
     const std::uint64_t whole_minutes = ddmm % 100;
     if (whole_minutes >= 60) [[unlikely]]
@@ -738,7 +752,8 @@ struct codec<nmea_coordinate<Axis>> {
   }
   static constexpr void write(writer& w, const value_type& v) noexcept {
     w.put_uint(v.whole_degrees, v.degree_digits);
-    w.put_fixed(v.minutes.mantissa, v.minutes.places, 2);
+    const decimal m = v.written_minutes();
+    w.put_fixed(m.mantissa, m.places, 2);
     w.next_field();
     w.put(static_cast<char>(v.hemi));
   }
