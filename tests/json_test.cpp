@@ -445,6 +445,34 @@ TEST_CASE("read_json: values, blanks, errors name the wire field") {
   o.members["heading_deg"] = {json_kind::boolean, "true"};
   CHECK(read_json<kingfisher::cpnvg>("CPNVG", o).ec == errc::bad_number);
 
+  // A sentence with a shorter form: numbered in the form the object gives, as encode_to does.
+  object b;
+  b.members["timestamp"] = {json_kind::string, "17:29:09.322"};
+  b.members["stack_voltage_v"] = {json_kind::number, "15.1"};
+  b.members["min_cell_voltage_v"] = {json_kind::number, "15.1"};
+  b.members["max_cell_voltage_v"] = {json_kind::number, "15.2"};
+  b.members["temperature_c"] = {json_kind::string, "warm"};
+  const auto five = read_json<kingfisher::cprbs>("CPRBS", b);
+  CHECK(five.ec == errc::bad_number);
+  CHECK(five.field == 5);
+  CHECK(form_field_count(five.value) == 5);
+  CHECK(field_name<kingfisher::cprbs>(five.field, form_field_count(five.value)) == "temperature_c");
+  b.members["battery_id"] = {json_kind::number, "1"};
+  const auto six = read_json<kingfisher::cprbs>("CPRBS", b);
+  CHECK(six.field == 6);
+  CHECK(form_field_count(six.value) == 6);
+  CHECK(field_name<kingfisher::cprbs>(six.field, form_field_count(six.value)) == "temperature_c");
+  b.members["temperature_c"] = {json_kind::number, "20"};
+  const auto written = read_json<kingfisher::cprbs>("CPRBS", b);
+  REQUIRE(written);
+  kingfisher::cprbs no_id = written.value;
+  no_id.battery_id.reset();
+  no_id.max_cell_voltage_v->places = 40;  // no such decimal: encode refuses it, at wire field 4
+  const auto enc = encode(no_id);
+  REQUIRE_FALSE(enc);
+  CHECK(enc.field == 4);
+  CHECK(field_name<kingfisher::cprbs>(enc.field, form_field_count(no_id)) == "max_cell_voltage_v");
+
   CHECK(has_field<kingfisher::cpnvg>("heading_deg"));
   CHECK_FALSE(has_field<kingfisher::cpnvg>("heading"));
   CHECK_FALSE(has_field<kingfisher::cpnvg>("type"));

@@ -348,13 +348,16 @@ class encoder {
       return;
     const result<M> m = nmea::read_json<M>(type, obj_);
     if (!m) {
-      field_error(type, m.ec, m.field, nmea::field_name<M>(m.field));
+      // Numbered in the form the object gives (a CPRBS without battery_id has five fields).
+      field_error(type, m.ec, m.field,
+                  nmea::field_name<M>(m.field, nmea::form_field_count(m.value)));
       return;
     }
     std::array<char, 1100> buf;
     const result<std::size_t> r = nmea::encode_to(m.value, std::span<char>(buf.data(), buf.size()));
     if (!r) {
-      field_error(type, r.ec, r.field, nmea::field_name<M>(r.field));
+      field_error(type, r.ec, r.field,
+                  nmea::field_name<M>(r.field, nmea::form_field_count(m.value)));
       return;
     }
     out_.put(std::string_view(buf.data(), r.value));

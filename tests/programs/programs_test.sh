@@ -259,6 +259,14 @@ case_roundtrip() {
 }
 
 case_options() {
+  # seawire-encode numbers a CPRBS field in the form it writes (no battery_id: five fields).
+  printf '%s\n' '{"type":"CPRBS","timestamp":"17:29:09.322","stack_voltage_v":15.1,"min_cell_voltage_v":15.1,"max_cell_voltage_v":15.2,"temperature_c":"warm"}' \
+    '{"type":"CPRBS","timestamp":"17:29:09.322","battery_id":1,"stack_voltage_v":15.1,"min_cell_voltage_v":15.1,"max_cell_voltage_v":15.2,"temperature_c":"warm"}' \
+    >"$work/in"
+  expect_rc "encode CPRBS, both forms" 1 "$encode" <"$work/in"
+  expect_eq "temperature is field 5 of the short form, 6 of the long" \
+    "$(printf '%s\n' 'line 1: CPRBS field 5 (temperature_c)' 'line 2: CPRBS field 6 (temperature_c)')" \
+    "$(sed 's/^seawire-encode: \(line [0-9]*: CPRBS field [0-9] ([a-z_]*)\).*/\1/' "$work/err")"
   # A position without a fraction: read by default, refused under --strict.
   crlf "$(seal GPRMC,164959.00,A,4221,N,07105.44878,W,0.145,156.78,311214,,,A)" >"$work/in"
   expect_rc "position without a fraction" 0 "$decode" --format none <"$work/in"

@@ -625,7 +625,8 @@ template <message_like T>
 /// talker-agnostic message comes from it). `lookup(object, key)` returns the json_value of
 /// member `key` of the message object (object == "") or of its "precision" object (object ==
 /// "precision"; a number of fraction digits for a position field). On failure: the errc and
-/// the field number on the wire (nmea::field_name<T>(field) names it); wrong_address when
+/// the field number on the wire of the form being read, as encode_to would number it
+/// (nmea::field_name<T>(field, nmea::form_field_count(value)) names it); wrong_address when
 /// `type` is not T's. Values are checked against the spec's ranges when the message is encoded,
 /// not here.
 template <message_like T, class Lookup>
@@ -680,7 +681,9 @@ template <message_like T, class Lookup>
       out.field = wire_field;
       return false;
     }
-    wire_field = static_cast<std::uint16_t>(wire_field + d.width());
+    // Numbered as encode_to numbers: a field of the longer form left out takes no number.
+    if (d.opts.when_count == 0 || !detail::skipped(d, out.value))
+      wire_field = static_cast<std::uint16_t>(wire_field + d.width());
     return true;
   };
   desc.fields.apply([&](const auto&... d) { (void)(one(d) && ...); });

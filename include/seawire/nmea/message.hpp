@@ -639,6 +639,17 @@ constexpr void for_each_field(T& msg, F&& f) {
   T::nmea.fields.apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); });
 }
 
+/// The number of wire fields of the form `msg` is written in, for field_name: every field's,
+/// but for a field only the longer form has (only_with_field_count) that holds no value.
+template <message_like T>
+[[nodiscard]] constexpr std::size_t form_field_count(const T& msg) noexcept {
+  std::size_t n = 0;
+  T::nmea.fields.apply([&](const auto&... d) {
+    ((n += (d.opts.when_count != 0 && detail::skipped(d, msg)) ? 0 : d.width()), ...);
+  });
+  return n;
+}
+
 /// The declared name of the field that holds wire field `n` (1-based), or "" if none.
 /// Numbered as in the longest form of the sentence; give the sentence's field count (e.g.
 /// sentence_view::field_count) to number a shorter form as it came: a five-field CPRBS has no
