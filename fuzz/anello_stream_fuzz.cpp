@@ -190,9 +190,7 @@ void check_drops(std::string_view stream, std::uint8_t seed) {
                            i.text.size() <= anello::stream_drop::max_shown &&
                            stream.substr(i.offset, i.text.size()) == i.text,
                        "a drop report does not show the stream's bytes", stream, i.text);
-    const bool candidate = i.reason == drop_reason::bad_crc ||
-                           i.reason == drop_reason::bad_length ||
-                           i.reason == drop_reason::truncated_frame;
+    const bool candidate = anello::stream_drop{i.reason}.of_frame();
     SEAWIRE_FUZZ_CHECK(candidate ? static_cast<std::uint8_t>(i.text[0]) == 0xAB
                                  : i.text.size() == std::min<std::uint64_t>(
                                                         i.size, anello::stream_drop::max_shown),

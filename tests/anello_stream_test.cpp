@@ -1029,6 +1029,13 @@ TEST_CASE("drop reports: one per event, where it happened, in order", "[anello][
   CHECK(read_bytewise<24>(stream, true) == o);
   CHECK(without_drops(o) == read<24>(stream));
 
+  SECTION("which reports are about a frame candidate") {
+    for (const rec& r : want) {
+      const bool frame = r.reason == drop_reason::bad_crc || r.reason == drop_reason::bad_length ||
+                         r.reason == drop_reason::truncated_frame;
+      CHECK(stream_drop{r.reason}.of_frame() == (r.kind == stream_item_kind::dropped && frame));
+    }
+  }
   SECTION("off by default, and reset keeps the setting") {
     stream_reader<> r;
     CHECK_FALSE(r.reports_drops());

@@ -128,6 +128,13 @@ struct stream_drop {
   /// until the next call of next(), feed() or finish().
   std::string_view bytes{};
 
+  /// Whether the report is about a frame candidate (bad_crc, bad_length, truncated_frame): its
+  /// bytes are binary, and those after its 0xAB are read again.
+  [[nodiscard]] constexpr bool of_frame() const noexcept {
+    return reason == drop_reason::bad_crc || reason == drop_reason::bad_length ||
+           reason == drop_reason::truncated_frame;
+  }
+
   friend constexpr bool operator==(const stream_drop&, const stream_drop&) noexcept = default;
 };
 
@@ -401,9 +408,7 @@ class stream_reader {
       if (n > Capacity) {
         ++stats_.overlong;
         stats_.dropped_bytes += n;
-        open_drop(drop_reason::overlong, sentence_start_);
-        add_drop(lbuf_, have);
-        add_drop(s + start, q - start);
+        sentence_drop(drop_reason::overlong, s, start, q, have);
         i = q;
         state_ = state::discard;
       } else {  // q == end: the sentence goes on in the next source
@@ -442,16 +447,12 @@ class stream_reader {
       stats_.dropped_bytes += n;
       i = q;
       state_ = state::idle;
-      open_drop(drop_reason::interrupted, sentence_start_);
-      add_drop(lbuf_, have);
-      add_drop(s + start, q - start);
+      sentence_drop(drop_reason::interrupted, s, start, q, have);
       return close_drop();
     }
     ++stats_.invalid_bytes;
     stats_.dropped_bytes += n + 1;
-    open_drop(drop_reason::invalid_byte, sentence_start_);
-    add_drop(lbuf_, have);
-    add_drop(s + start, q + 1 - start);
+    sentence_drop(drop_reason::invalid_byte, s, start, q + 1, have);
     i = q + 1;
     state_ = state::discard;
     return std::nullopt;
@@ -546,6 +547,14 @@ class stream_reader {
     const std::size_t keep = std::min(n, stream_drop::max_shown - dlen_);
     std::copy_n(p, keep, dbuf_ + dlen_);
     dlen_ += keep;
+  }
+
+  // A report on the sentence being collected: lbuf_[0, have) then s[from, to).
+  constexpr void sentence_drop(drop_reason why, const char* s, std::size_t from, std::size_t to,
+                               std::size_t have) noexcept {
+    open_drop(why, sentence_start_);
+    add_drop(lbuf_, have);
+    add_drop(s + from, to - from);
   }
 
   // The open report as an item (nullopt when none is open).
