@@ -301,64 +301,50 @@ class decoder {
   // in hex, since they are binary).
   void dropped(const anello::stream_item& item) {
     const anello::stream_drop& d = item.drop;
-    if (d.reason == anello::drop_reason::bad_crc || d.reason == anello::drop_reason::bad_length ||
-        d.reason == anello::drop_reason::truncated_frame) {
+    if (d.of_frame()) {
       candidate_end_ = item.offset + d.bytes.size();
     } else if (d.reason == anello::drop_reason::noise && item.offset + d.size <= candidate_end_) {
       return;  // bytes of a rejected candidate read again, shown in its report: part of it
     }
-    const auto bytes = static_cast<unsigned long long>(d.size);
-    const char* plural = d.size == 1 ? "" : "s";
-    char detail[160];
+    const std::string n = std::to_string(d.size) + (d.size == 1 ? " byte" : " bytes");
     errc e = errc::missing_start;
+    std::string detail;
     switch (d.reason) {
       case anello::drop_reason::noise:
-        std::snprintf(detail, sizeof detail,
-                      "%llu byte%s outside any sentence or frame (no '$' before them); dropped",
-                      bytes, plural);
+        detail = n + " outside any sentence or frame (no '$' before them); dropped";
         break;
       case anello::drop_reason::invalid_byte:
         e = errc::bad_character;
-        std::snprintf(detail, sizeof detail,
-                      "a byte outside printable ASCII in a sentence; %llu byte%s dropped up to "
-                      "the line's end",
-                      bytes, plural);
+        detail =
+            "a byte outside printable ASCII in a sentence; " + n + " dropped up to the line's end";
         break;
       case anello::drop_reason::overlong:
         e = errc::too_long;
-        std::snprintf(detail, sizeof detail,
-                      "a sentence longer than %zu bytes; %llu bytes dropped up to the line's end",
-                      decltype(reader_)::capacity, bytes);
+        detail = "a sentence longer than " + std::to_string(decltype(reader_)::capacity) +
+                 " bytes; " + n + " dropped up to the line's end";
         break;
       case anello::drop_reason::interrupted:
         e = errc::truncated;
-        std::snprintf(detail, sizeof detail,
-                      "a sentence cut short by the next '$' or 0xAB; %llu byte%s dropped", bytes,
-                      plural);
+        detail = "a sentence cut short by the next '$' or 0xAB; " + n + " dropped";
         break;
       case anello::drop_reason::bad_crc:
         e = errc::crc_mismatch;
-        std::snprintf(detail, sizeof detail,
-                      "an AB00 frame whose CRC-32 does not match its payload; its 0xAB dropped, "
-                      "the bytes after it read again");
+        detail =
+            "an AB00 frame whose CRC-32 does not match its payload; its 0xAB dropped, the "
+            "bytes after it read again";
         break;
       case anello::drop_reason::bad_length:
         e = errc::bad_length;
-        std::snprintf(detail, sizeof detail,
-                      "AB 00 followed by a length other than 00 30 (48); %llu bytes dropped",
-                      bytes);
+        detail = "AB 00 followed by a length other than 00 30 (48); " + n + " dropped";
         break;
       case anello::drop_reason::truncated_frame:
         e = errc::truncated;
-        std::snprintf(detail, sizeof detail,
-                      "an AB00 frame cut short by the end of the input; its 0xAB dropped, the "
-                      "bytes after it read again");
+        detail =
+            "an AB00 frame cut short by the end of the input; its 0xAB dropped, the bytes "
+            "after it read again";
         break;
     }
-    const bool binary = d.reason == anello::drop_reason::bad_crc ||
-                        d.reason == anello::drop_reason::bad_length ||
-                        d.reason == anello::drop_reason::truncated_frame;
-    reject(item.line, e, 0, detail, binary ? hex(d.bytes) : std::string(d.bytes));
+    reject(item.line, e, 0, detail, d.of_frame() ? hex(d.bytes) : std::string(d.bytes));
   }
 
   const options& opt_;
