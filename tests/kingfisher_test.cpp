@@ -325,14 +325,29 @@ TEST_CASE("optional and variant forms") {
     CHECK(m.effective_nav_timestamp() == hms(16, 49, 58, 850, 3));
     CHECK(nmea::encode(m).view() == line);
   }
-  SECTION("CPIMU with a blank eighth field reads as no nav timestamp") {
-    const auto r = kf::decode_from_vehicle(
-        sealed("CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172,"));
+  SECTION("CPIMU with a blank eighth field reads as no nav timestamp, and is written back so") {
+    const std::string line =
+        sealed("CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172,");
+    const auto r = kf::decode_from_vehicle(line);
     REQUIRE(r);
-    const auto& m = holds<kf::cpimu>(r.value);
+    auto m = holds<kf::cpimu>(r.value);
     CHECK_FALSE(m.nav_timestamp.has_value());
     CHECK(m.effective_nav_timestamp() == hms(16, 49, 58, 858, 3));
-    CHECK(nmea::encode(m).view() == real_cpimu);  // written in the real vehicle's form
+    CHECK(m.blank_tail == 1);
+    CHECK(nmea::encode(m).view() == line);  // the seed's eight-field form, as it came
+    // The same values without the remembered blank: the real vehicle's seven-field form.
+    m.blank_tail = 0;
+    CHECK(nmea::encode(m).view() == real_cpimu);
+    // A value for the eighth field is written whatever blank_tail says.
+    m.nav_timestamp = hms(16, 49, 58, 850, 3);
+    m.blank_tail = 1;
+    CHECK(nmea::encode(m).view() ==
+          sealed("CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172,"
+                 "164958.850"));
+    // The seven-field form decodes with nothing to keep.
+    const auto seven = kf::decode_from_vehicle(real_cpimu);
+    REQUIRE(seven);
+    CHECK(holds<kf::cpimu>(seven.value).blank_tail == 0);
   }
   SECTION("CPRCM with a blank nav timestamp uses the sentence timestamp") {
     const std::string line = sealed("CPRCM,164959.065,1,234.3,-1.6,-6.6,");

@@ -64,6 +64,10 @@ TEST_CASE("RMC in the forms of NMEA 2.2, 2.3 and 4.1, from any talker") {
       seal("INRMC,235959.99,V,,,,,,,010180,,,N"),
       seal("GNRMC,120000.00,A,0000.0000,S,00000.0000,W,0.00,0.00,290224,3.1,W,D,S"),
       seal("GPRMC,,V,,,,,,,,,,N"),
+      // Blank mode (2.3) and blank navigational status (4.1): written back blank, not left out.
+      seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,"),
+      seal("GNRMC,120000.00,A,0000.0000,S,00000.0000,W,0.00,0.00,290224,3.1,W,D,"),
+      seal("GNRMC,120000.00,V,,,,,,,290224,,,,"),
   };
   for (const auto& line : forms) {
     INFO(line);
@@ -90,6 +94,23 @@ TEST_CASE("RMC in the forms of NMEA 2.2, 2.3 and 4.1, from any talker") {
   CHECK_FALSE(nofix.lat);
   CHECK_FALSE(nofix.date);
   CHECK(nofix.mode == standard::mode_indicator::not_valid);
+
+  // What decode keeps of a blank tail: fields 12-13 carried blank after the last value.
+  CHECK(v22.blank_tail == 0);
+  CHECK(v41.blank_tail == 0);
+  CHECK(decode<rmc>(forms[5]).value.blank_tail == 1);
+  CHECK(decode<rmc>(forms[6]).value.blank_tail == 1);
+  CHECK(decode<rmc>(forms[7]).value.blank_tail == 2);
+  // Built in code, no mode: the 11-field form.
+  rmc built = decode<rmc>(forms[5]).value;
+  built.blank_tail = 0;
+  CHECK(encode(built).view() == seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
+                                     "311214,,"));
+  // A mode set later is written, and the tail past it with it.
+  built.mode = standard::mode_indicator::autonomous;
+  built.blank_tail = 1;
+  CHECK(encode(built).view() == seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
+                                     "311214,,,A,"));
 }
 
 TEST_CASE("GGA from a real receiver") {

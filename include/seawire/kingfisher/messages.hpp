@@ -125,8 +125,9 @@ struct cprbs {
 
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
 /// y starboard, z down; rates by the right-hand rule). The real vehicle sends seven fields, no
-/// nav timestamp; nullopt writes that form. (The seed's sentence id is garbled; it is CPIMU.) A
-/// blank rate or acceleration is "no data" (seed 2.4) and reads as nullopt.
+/// nav timestamp; nullopt writes that form, and an eighth field that came blank is written back
+/// blank (blank_tail). (The seed's sentence id is garbled; it is CPIMU.) A blank rate or
+/// acceleration is "no data" (seed 2.4) and reads as nullopt.
 ///
 ///   $CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57
 ///          1          2         3         4         5         6        7         [8]
@@ -140,6 +141,8 @@ struct cpimu {
   std::optional<decimal> accel_z_mps2;       // 7 [Accel_Z] m/s^2, positive down
   std::optional<time_of_day> nav_timestamp;  // 8 [NavTimestamp] when the IMU measured; blank or
                                              //   absent means "the same as field 1"
+  std::uint8_t blank_tail = 0;  // 1: field 8 came blank and is written back blank (the seed's
+                                //   form); 0: left out when nav_timestamp has no value
 
   /// Field 8, or field 1 when field 8 is blank or absent.
   [[nodiscard]] constexpr time_of_day effective_nav_timestamp() const noexcept {

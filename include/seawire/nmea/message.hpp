@@ -17,6 +17,7 @@
 // absent. An address starting with "--" ("--RMC") matches any talker; such a message has a
 // `talker_id talker` member that decode fills and encode writes.
 
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -256,6 +257,16 @@ concept message_like = requires {
   T::nmea.address;
 };
 
+/// A message whose last fields may be left out (may_be_absent) and that remembers, in a member
+/// `std::uint8_t blank_tail`, how many of them its sentence carried blank after the last one
+/// with a value: decode sets it, encode writes that many back blank. So the seed's eight-field
+/// "$CPIMU,...,-0.932172,*hh" goes back out with its empty eighth field, not as the seven-field
+/// form. 0, the default, writes only the fields the values need.
+template <class T>
+concept keeps_blank_tail = message_like<T> && requires(T& m) {
+  { m.blank_tail } -> std::same_as<std::uint8_t&>;
+};
+
 // ---------------------------------------------------------------------------------------------
 // decode
 
@@ -387,6 +398,48 @@ template <class T>
   return errc::ok;
 }
 
+template <class F, class T>
+[[nodiscard]] constexpr bool skipped(const F& f, const T& msg) noexcept {
+  if constexpr (F::is_optional) {
+    return (f.opts.when_count != 0 || f.opts.may_be_absent) && !(msg.*F::member).has_value();
+  } else {
+    return false;
+  }
+}
+
+/// How many of T's field declarations encode writes for the values `msg` holds: all but the
+/// trailing ones left out for want of a value (may_be_absent, or only in the longer form), then
+/// as many of those again as blank_tail asks to be written blank.
+template <message_like T>
+[[nodiscard]] constexpr std::size_t written_fields(const T& msg) noexcept {
+  constexpr std::size_t n = std::remove_cvref_t<decltype(T::nmea.fields)>::size;
+  std::size_t keep = n;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    const bool skips[] = {skipped(field_at<I>(T::nmea.fields), msg)..., false};
+    while (keep > 0 && skips[keep - 1]) --keep;
+  }
+  (std::make_index_sequence<n>{});
+  if constexpr (keeps_blank_tail<T>) keep = keep + msg.blank_tail < n ? keep + msg.blank_tail : n;
+  return keep;
+}
+
+/// For a message that keeps its blank tail: the field declarations whose first wire field the
+/// sentence of `field_count` fields carried, less those written for the values decoded.
+template <keeps_blank_tail T>
+constexpr void note_blank_tail(T& msg, std::size_t field_count) noexcept {
+  msg.blank_tail = 0;
+  std::size_t carried = 0;
+  std::size_t first = 0;  // 0-based wire field of the declaration
+  T::nmea.fields.apply([&](const auto&... d) {
+    (((d.opts.when_count != 0 && skipped(d, msg))
+          ? void()
+          : (carried += first < field_count ? 1 : 0, first += d.width(), void())),
+     ...);
+  });
+  const std::size_t written = written_fields(msg);
+  msg.blank_tail = static_cast<std::uint8_t>(carried > written ? carried - written : 0);
+}
+
 /// decode<T>() into `msg`, a default-constructed T the caller owns (the value of a result, the
 /// alternative of a variant), so that no finished message is ever copied; the errc, field and
 /// column go to `status` (any result<>). On error `msg` holds what was read before it.
@@ -409,6 +462,9 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
   if (e == errc::ok && !r.at_end() && !policy.extra_fields) {
     (void)r.take();
     e = errc::too_many_fields;
+  }
+  if constexpr (keeps_blank_tail<T>) {
+    if (e == errc::ok) note_blank_tail(msg, s.field_count);
   }
   if (e != errc::ok) {
     status.ec = e;
@@ -447,15 +503,6 @@ template <message_like T>
 // encode
 
 namespace detail {
-
-template <class F, class T>
-[[nodiscard]] constexpr bool skipped(const F& f, const T& msg) noexcept {
-  if constexpr (F::is_optional) {
-    return (f.opts.when_count != 0 || f.opts.may_be_absent) && !(msg.*F::member).has_value();
-  } else {
-    return false;
-  }
-}
 
 /// Which of a codec's wire fields (0 = its first) an error of its check() is about, so that
 /// encode names the field decode would: a position's hemisphere letter is its second.
@@ -532,14 +579,10 @@ template <message_like T>
   } else {
     w.begin(desc.address);
   }
-  // Trailing fields that may be absent and have no value are left out, with their commas.
+  // Trailing fields that may be absent and have no value are left out, with their commas
+  // (but for a blank tail the message keeps).
   constexpr std::size_t n = std::remove_cvref_t<decltype(desc.fields)>::size;
-  std::size_t keep = n;
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    const bool skips[] = {detail::skipped(field_at<I>(desc.fields), msg)..., false};
-    while (keep > 0 && skips[keep - 1]) --keep;
-  }
-  (std::make_index_sequence<n>{});
+  const std::size_t keep = detail::written_fields(msg);
 
   errc e = errc::ok;
   std::uint16_t wire_field = 0;  // spec number of the first wire field of the current one

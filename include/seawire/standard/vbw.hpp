@@ -8,12 +8,14 @@
 // Fields 1-6 are the sentence as the ANELLO spec (and NMEA 0183 before 3.0) has it. NMEA 3.0
 // adds stern transverse speeds, water (7, status 8) and ground (9, status 10); a Doppler log
 // may send them. Both forms are accepted, and each is written back in the form it came in: the
-// stern fields are written only when one of them has a value.
+// stern fields are written when one of them has a value or when they came blank (blank_tail);
+// a message built in code without stern values is written in the six-field form.
 //
 // A sender with no ground track writes its water speeds and leaves 4-5 blank with status V.
 // Every field may be blank; a blank status decodes as nullopt (senders leave it blank as often
 // as they write V) and is written back blank.
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -44,6 +46,8 @@ struct vbw {
   std::optional<vbw_status> stern_water_status;          // 8 NMEA 3.0+
   std::optional<decimal> stern_transverse_ground_knots;  // 9 NMEA 3.0+, knots, negative = port
   std::optional<vbw_status> stern_ground_status;         // 10 NMEA 3.0+
+  std::uint8_t blank_tail = 0;  // fields 7-10 that came blank after the last with a value, to
+                                //   write back blank (nmea::keeps_blank_tail); decode sets it
 
   friend constexpr bool operator==(const vbw&, const vbw&) noexcept = default;
 
