@@ -349,9 +349,17 @@ template <class F, class T>
     // Blank means "no value", except for text, where blank is the empty string and only a
     // field that is not there at all is nullopt.
     if (!t.present || (t.blank() && !codec<V>::allows_blank)) {
+      // A trailing field that came blank, where it could have been left out: one more for the
+      // message's blank tail (a value further on starts it again).
+      if constexpr (keeps_blank_tail<T>) {
+        if (o.may_be_absent && t.present) ++msg.blank_tail;
+      }
       for (unsigned k = 0; k < codec<V>::width; ++k) (void)r.take();
       clear_optional(m);
       return read_unit(r, o, false);
+    }
+    if constexpr (keeps_blank_tail<T>) {
+      if (o.may_be_absent) msg.blank_tail = 0;
     }
     // Read in place: a value built on the side and copied in would be copied through the
     // stack in wide loads that wait on the narrow stores that just wrote it.
@@ -423,23 +431,6 @@ template <message_like T>
   return keep;
 }
 
-/// For a message that keeps its blank tail: the field declarations whose first wire field the
-/// sentence of `field_count` fields carried, less those written for the values decoded.
-template <keeps_blank_tail T>
-constexpr void note_blank_tail(T& msg, std::size_t field_count) noexcept {
-  msg.blank_tail = 0;
-  std::size_t carried = 0;
-  std::size_t first = 0;  // 0-based wire field of the declaration
-  T::nmea.fields.apply([&](const auto&... d) {
-    (((d.opts.when_count != 0 && skipped(d, msg))
-          ? void()
-          : (carried += first < field_count ? 1 : 0, first += d.width(), void())),
-     ...);
-  });
-  const std::size_t written = written_fields(msg);
-  msg.blank_tail = static_cast<std::uint8_t>(carried > written ? carried - written : 0);
-}
-
 /// decode<T>() into `msg`, a default-constructed T the caller owns (the value of a result, the
 /// alternative of a variant), so that no finished message is ever copied; the errc, field and
 /// column go to `status` (any result<>). On error `msg` holds what was read before it.
@@ -462,9 +453,6 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
   if (e == errc::ok && !r.at_end() && !policy.extra_fields) {
     (void)r.take();
     e = errc::too_many_fields;
-  }
-  if constexpr (keeps_blank_tail<T>) {
-    if (e == errc::ok) note_blank_tail(msg, s.field_count);
   }
   if (e != errc::ok) {
     status.ec = e;
