@@ -938,6 +938,51 @@ TEST_CASE("line numbers, offsets and endings across frames", "[anello][stream]")
   }
 }
 
+TEST_CASE("flush(): a sentence held on its CR comes out when the link goes quiet",
+          "[anello][stream]") {
+  SECTION("CR-only sender, then a late LF and a frame") {
+    stream_reader<> r;
+    r.report_drops(true);
+    r.feed("$A\r");
+    CHECK_FALSE(r.next().has_value());
+    auto item = r.flush();
+    REQUIRE(item.has_value());
+    CHECK(own(*item) == sentence("$A", 0, line_ending::cr, 1));
+    CHECK_FALSE(r.flush().has_value());
+    // The LF completes the CR's break (no line, no noise), the frame is on line 2.
+    const std::string rest = "\n" + str(seed) + "$B\r\n";
+    r.feed(rest);
+    item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(own(*item) == frame(seed, 4));
+    CHECK(item->line == 2);
+    item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(own(*item) == sentence("$B", 4 + frame_size, line_ending::crlf, 2));
+    CHECK_FALSE(r.next().has_value());
+    CHECK_FALSE(r.finish().has_value());
+    CHECK(r.stats().noise_bytes == 0);
+    CHECK(r.stats().line_break_bytes == 4);
+  }
+  SECTION("nothing is released but the held sentence") {
+    stream_reader<> r;
+    r.report_drops(true);
+    r.feed("junk$A,1");  // noise, then a sentence without its ending
+    auto item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(item->kind == stream_item_kind::dropped);
+    CHECK_FALSE(r.next().has_value());
+    CHECK_FALSE(r.flush().has_value());
+    r.feed("\xAB\x00");  // ends the sentence as interrupted; a frame candidate waits
+    item = r.next();
+    REQUIRE(item.has_value());
+    CHECK(item->drop.reason == drop_reason::interrupted);
+    CHECK_FALSE(r.next().has_value());
+    CHECK_FALSE(r.flush().has_value());
+    CHECK(r.stats().truncated_frames == 0);
+  }
+}
+
 TEST_CASE("small capacity: overlong lines, also inside bytes read again", "[anello][stream]") {
   const std::string fits = "$" + std::string(15, 'a');  // 16 bytes
   const std::string over = "$" + std::string(16, 'b');  // 17 bytes

@@ -287,6 +287,59 @@ TEST_CASE("CR LF split across chunks", "[framer]") {
   }
 }
 
+TEST_CASE("flush(): a line held on its CR comes out when the link goes quiet", "[framer]") {
+  SECTION("CR-only sender: each line comes out at once, LF-free") {
+    framer<> f;
+    std::vector<rec> out;
+    f.feed("$A,1*00\r");
+    CHECK_FALSE(f.next().has_value());
+    const auto l = f.flush();
+    REQUIRE(l.has_value());
+    CHECK(own(*l) == rec{"$A,1*00", line_ending::cr, 1});
+    CHECK_FALSE(f.flush().has_value());  // once
+    f.feed("$B\r");
+    drain(f, out);
+    CHECK(out.empty());
+    const auto b = f.flush();
+    REQUIRE(b.has_value());
+    CHECK(own(*b) == rec{"$B", line_ending::cr, 2});
+    CHECK(f.stats().sentences == 2);
+  }
+  SECTION("the LF that comes after all the same completes the break: no blank line") {
+    framer<> f;
+    std::vector<rec> out;
+    f.feed("$A\r");
+    drain(f, out);
+    REQUIRE(f.flush().has_value());
+    f.feed("\n$B\r\n");
+    drain(f, out);
+    CHECK(out == std::vector<rec>{{"$B", line_ending::crlf, 2}});
+    CHECK(f.stats().noise_bytes == 0);
+  }
+  SECTION("LF LF after: the second is a blank line") {
+    framer<> f;
+    std::vector<rec> out;
+    f.feed("$A\r");
+    drain(f, out);
+    REQUIRE(f.flush().has_value());
+    f.feed("\n\n$B\n");
+    drain(f, out);
+    CHECK(out == std::vector<rec>{{"$B", line_ending::lf, 3}});
+  }
+  SECTION("nothing held: a sentence without its ending keeps waiting") {
+    framer<> f;
+    std::vector<rec> out;
+    f.feed("$A,1");
+    drain(f, out);
+    CHECK_FALSE(f.flush().has_value());
+    f.feed("2\r\n");
+    drain(f, out);
+    CHECK(out == std::vector<rec>{{"$A,12", line_ending::crlf, 1}});
+    CHECK_FALSE(f.flush().has_value());  // idle
+    CHECK_FALSE(f.finish().has_value());
+  }
+}
+
 TEST_CASE("byte-by-byte feeding gives the same lines and stats as one chunk", "[framer]") {
   const std::string_view stream =
       "noise\r\n$GPRMC,123519,A*6A\r\n\r\n$PYDIR,45,55*57\n$BF\x80X\r\n$GP$GPGGA,1\r"

@@ -68,6 +68,13 @@ class decoder {
     out_.flush();
   }
 
+  // The input went quiet: a sentence ended by a CR that may yet be followed by LF is decoded
+  // now rather than when the next byte comes. Not when CR LF is required: there the LF decides.
+  void quiet() {
+    if (opt_.policy.require_crlf) return;
+    if (const std::optional<anello::stream_item> item = reader_.flush()) handle(*item);
+  }
+
   [[nodiscard]] bool all_good() const { return rejected_ == 0 && !out_.failed(); }
   [[nodiscard]] bool output_failed() const { return out_.failed(); }
 
@@ -362,7 +369,14 @@ class decoder {
 int run(const options& o) {
   decoder d(o);
   tools::chunk_reader in(0);
-  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) d.feed(chunk);
+  // Live streams: a line whose CR ended the input so far is let out after 50 ms without more.
+  constexpr int quiet_ms = 50;
+  for (;;) {
+    if (o.line_buffered && !in.ready_within(quiet_ms)) d.quiet();
+    const std::string_view chunk = in.next();
+    if (chunk.empty()) break;
+    d.feed(chunk);
+  }
   d.finish();
   if (o.stats) d.print_stats();
   if (in.failed()) {
@@ -419,7 +433,8 @@ int main(int argc, char** argv) {
                "dropped-byte counters, to stderr (e.g. --format none --stats)");
   app.add_flag("--line-buffered", o.line_buffered,
                "flush stdout after each message, for live streams (default: large buffers, "
-               "for speed; e.g. nc vehicle 29500 | seawire-decode --line-buffered)");
+               "for speed); a sentence ended by CR alone is let out once the input has been "
+               "quiet for 50 ms (e.g. nc vehicle 29500 | seawire-decode --line-buffered)");
   app.set_version_flag("--version", "seawire-decode (seawire " SEAWIRE_VERSION_STRING ")");
   try {
     app.parse(argc, argv);

@@ -3,6 +3,7 @@
 // Buffered stdin/stdout for the command-line programs: read() in 64 KiB chunks, one large output
 // buffer written with fwrite(). No iostreams, no per-line system calls.
 
+#include <poll.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -32,6 +33,17 @@ class chunk_reader {
     }
   }
   [[nodiscard]] bool failed() const { return failed_; }
+
+  /// Whether input (or its end) arrives within `ms` milliseconds; true too when the descriptor
+  /// cannot be polled, so the caller just reads on.
+  [[nodiscard]] bool ready_within(int ms) const {
+    pollfd p{fd_, POLLIN, 0};
+    for (;;) {
+      const int n = ::poll(&p, 1, ms);
+      if (n < 0 && errno == EINTR) continue;
+      return n != 0;
+    }
+  }
 
  private:
   int fd_;

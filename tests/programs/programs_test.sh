@@ -688,6 +688,39 @@ EOF
     "$(cat "$work/err")"
 }
 
+# A live link whose sender ends lines with CR alone: under --line-buffered each sentence comes
+# out while the input is still open (once the input has been quiet), not when the next one
+# arrives; an LF that comes later completes that CR and is no blank line.
+case_live() {
+  local fifo=$work/fifo first second
+  first=$(seal 'PAPGPSCTRL,1')
+  second=$(seal 'PAPGPSCTRL,0')
+  mkfifo "$fifo"
+  "$decode" --line-buffered <"$fifo" >"$work/out" 2>"$work/err" &
+  local pid=$! rc=0 i
+  exec 3>"$fifo"
+  printf '%s\r' "$first" >&3
+  for ((i = 0; i < 100; i++)); do
+    [[ -s $work/out ]] && break
+    sleep 0.1
+  done
+  expect_eq "a CR-ended sentence comes out while the input stays open" \
+    '{"type":"PAPGPSCTRL","control":"1"}' "$(cat "$work/out")"
+  printf '\n%s\r' "$second" >&3
+  for ((i = 0; i < 100; i++)); do
+    [[ $(wc -l <"$work/out") -ge 2 ]] && break
+    sleep 0.1
+  done
+  expect_eq "and the next one too" 2 "$(wc -l <"$work/out")"
+  printf '$PAPGPSCTRL,7*11\r' >&3
+  exec 3>&-
+  wait "$pid" || rc=$?
+  expect_eq "exit status: the last sentence rejected" 1 "$rc"
+  expect_eq "the late LF was no blank line: the rejected sentence is on line 3" \
+    '{"line":3,"error":"checksum_mismatch","field":0,"detail":"checksum does not match the sentence (sent 11, computed 17) at column 14","input":"$PAPGPSCTRL,7*11"}' \
+    "$(line 3 "$work/out")"
+}
+
 "case_$case_name"
 if ((failures > 0)); then
   echo "$case_name: $failures check(s) failed" >&2

@@ -258,6 +258,20 @@ class stream_reader {
     return next();
   }
 
+  /// The link has gone quiet (a read timed out, a live stream paused): a sentence whose CR was
+  /// the last byte fed, held back to tell CR from CR LF, is yielded now, as ended by CR; an LF
+  /// that arrives next completes that line break (it counts no new line). Nothing else is
+  /// released: a sentence without its line ending, a frame candidate or an open drop report
+  /// waits for more bytes (finish() ends them). So a sender that ends lines with CR alone is
+  /// not one sentence late. Precondition: the current chunk is drained.
+  [[nodiscard]] constexpr std::optional<stream_item> flush() noexcept {
+    assert(drained() && "stream_reader::flush: current chunk not drained by next()");
+    if (state_ != state::held) return std::nullopt;
+    state_ = state::idle;
+    prev_cr_ = true;
+    return yield_sentence(std::string_view(lbuf_, llen_), line_ending::cr);
+  }
+
   /// Finishes, calling on_item(const stream_item&) for each item the end of stream releases.
   template <class F>
   constexpr void finish(F&& on_item) noexcept(std::is_nothrow_invocable_v<F&, const stream_item&>) {

@@ -237,6 +237,19 @@ class framer {
     return std::nullopt;
   }
 
+  /// The link has gone quiet (a read timed out, a live stream paused): a sentence whose CR was
+  /// the last byte fed, held back to tell CR from CR LF, is yielded now, as ended by CR; an LF
+  /// that arrives next completes that line break (it counts no new line). A sentence without
+  /// its line ending keeps waiting (finish() ends it). So a sender that ends lines with CR alone
+  /// is not one sentence late. Precondition: the current chunk is drained.
+  [[nodiscard]] constexpr std::optional<framed_line> flush() noexcept {
+    assert(pos_ == chunk_.size() && "framer::flush: current chunk not drained by next()");
+    if (state_ != state::held) return std::nullopt;
+    state_ = state::idle;
+    after_cr_ = true;
+    return yield(std::string_view(buf_, len_), line_ending::cr);
+  }
+
   /// End of stream: the sentence still waiting for its line ending, if any, once. Precondition:
   /// the current chunk is drained. Afterwards the framer sits at a line start; reset() before
   /// reusing it for an unrelated stream.
