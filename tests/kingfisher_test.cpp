@@ -333,21 +333,49 @@ TEST_CASE("optional and variant forms") {
     auto m = holds<kf::cpimu>(r.value);
     CHECK_FALSE(m.nav_timestamp.has_value());
     CHECK(m.effective_nav_timestamp() == hms(16, 49, 58, 858, 3));
-    CHECK(m.blank_tail == 1);
+    CHECK(m.wire_fields == 8);
     CHECK(nmea::encode(m).view() == line);  // the seed's eight-field form, as it came
     // The same values without the remembered blank: the real vehicle's seven-field form.
-    m.blank_tail = 0;
+    m.wire_fields = 0;
     CHECK(nmea::encode(m).view() == real_cpimu);
-    // A value for the eighth field is written whatever blank_tail says.
+    // A value for the eighth field is written whatever wire_fields says.
     m.nav_timestamp = hms(16, 49, 58, 850, 3);
-    m.blank_tail = 1;
+    m.wire_fields = 7;
     CHECK(nmea::encode(m).view() ==
           sealed("CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172,"
                  "164958.850"));
     // The seven-field form decodes with nothing to keep.
     const auto seven = kf::decode_from_vehicle(real_cpimu);
     REQUIRE(seven);
-    CHECK(holds<kf::cpimu>(seven.value).blank_tail == 0);
+    CHECK(holds<kf::cpimu>(seven.value).wire_fields == 0);
+    // Nor does the eight-field form with a value there.
+    const auto eight = kf::decode_from_vehicle(nmea::encode(m).view());
+    REQUIRE(eight);
+    CHECK(holds<kf::cpimu>(eight.value).wire_fields == 0);
+  }
+  SECTION("CPRBS in the six-field form with a blank battery id keeps its six fields") {
+    const std::string line = sealed("CPRBS,105707.24,,15.2,15.1,15.3,0");
+    const auto r = kf::decode_from_vehicle(line);
+    REQUIRE(r);
+    auto m = holds<kf::cprbs>(r.value);
+    CHECK_FALSE(m.battery_id.has_value());
+    CHECK(m.stack_voltage_v == decimal(152, 1));
+    CHECK(m.wire_fields == 6);
+    CHECK(nmea::encode(m).view() == line);
+    CHECK(nmea::form_field_count(m) == 6);
+    CHECK(nmea::field_name<kf::cprbs>(3, nmea::form_field_count(m)) == "stack_voltage_v");
+    // All blank, the same.
+    const std::string blank = sealed("CPRBS,105707.24,,,,,");
+    const auto b = kf::decode_from_vehicle(blank);
+    REQUIRE(b);
+    CHECK(nmea::encode(holds<kf::cprbs>(b.value)).view() == blank);
+    // Without the remembered form: the vehicle's five fields.
+    m.wire_fields = 0;
+    CHECK(nmea::encode(m).view() == sealed("CPRBS,105707.24,15.2,15.1,15.3,0"));
+    CHECK(nmea::form_field_count(m) == 5);
+    // The five-field form and the six-field form with an id remember nothing.
+    CHECK(holds<kf::cprbs>(kf::decode_from_vehicle(real_cprbs).value).wire_fields == 0);
+    CHECK(holds<kf::cprbs>(kf::decode_from_vehicle(sim_cprbs).value).wire_fields == 0);
   }
   SECTION("CPRCM with a blank nav timestamp uses the sentence timestamp") {
     const std::string line = sealed("CPRCM,164959.065,1,234.3,-1.6,-6.6,");

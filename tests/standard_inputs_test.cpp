@@ -158,13 +158,13 @@ static_assert(round_trips<vhw>("$IIVHW,,T,,M,5.2,N,9.6,K*5D\r\n"));
 static_assert(round_trips<vhw>("$VWVHW,045.0,T,031.3,M,5.20,N,9.63,K*5F\r\n"));
 static_assert(round_trips<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A*7C\r\n"));
 static_assert(round_trips<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,0.05,A,0.04,A*7D\r\n"));
-// NMEA 3.0's stern fields sent blank: they stay, as they came (blank_tail), whole or in part.
+// NMEA 3.0's stern fields sent blank: they stay, as they came (wire_fields), whole or in part.
 static_assert(round_trips<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,,,,*7C\r\n"));
 static_assert(round_trips<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,0.05,A,,*26\r\n"));
-static_assert(nmea::decode<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,,,,*7C\r\n").value.blank_tail ==
-              4);
+static_assert(nmea::decode<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,,,,*7C\r\n").value.wire_fields ==
+              10);
 static_assert(
-    nmea::decode<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,0.05,A,,*26\r\n").value.blank_tail == 2);
+    nmea::decode<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,0.05,A,,*26\r\n").value.wire_fields == 10);
 static_assert(round_trips<vwr>("$WIVWR,45.0,L,12.6,N,6.5,M,23.3,K*7C\r\n"));
 static_assert(round_trips<vwr>("$IIVWR,,,,N,,M,,K*1B\r\n"));
 static_assert(round_trips<vwr>("$WIVWR,045.0,L,12.6,N,6.5,M,23.3,K*4C\r\n"));

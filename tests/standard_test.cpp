@@ -95,20 +95,22 @@ TEST_CASE("RMC in the forms of NMEA 2.2, 2.3 and 4.1, from any talker") {
   CHECK_FALSE(nofix.date);
   CHECK(nofix.mode == standard::mode_indicator::not_valid);
 
-  // What decode keeps of a blank tail: fields 12-13 carried blank after the last value.
-  CHECK(v22.blank_tail == 0);
-  CHECK(v41.blank_tail == 0);
-  CHECK(decode<rmc>(forms[5]).value.blank_tail == 1);
-  CHECK(decode<rmc>(forms[6]).value.blank_tail == 1);
-  CHECK(decode<rmc>(forms[7]).value.blank_tail == 2);
+  // What decode keeps of a blank tail: the sentence's field count, when a value does not
+  // need it anyway.
+  CHECK(v22.wire_fields == 0);
+  CHECK(v41.wire_fields == 0);
+  CHECK(decode<rmc>(forms[5]).value.wire_fields == 12);
+  CHECK(decode<rmc>(forms[6]).value.wire_fields == 13);
+  CHECK(decode<rmc>(forms[7]).value.wire_fields == 13);
+  CHECK(decode<rmc>(seal("GNRMC,120000.00,A,,,,,,,290224,,,,S")).value.wire_fields == 0);
   // Built in code, no mode: the 11-field form.
   rmc built = decode<rmc>(forms[5]).value;
-  built.blank_tail = 0;
+  built.wire_fields = 0;
   CHECK(encode(built).view() == seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
                                      "311214,,"));
-  // A mode set later is written, and the tail past it with it.
+  // A mode set later is written, and the fields wire_fields asks for after it.
   built.mode = standard::mode_indicator::autonomous;
-  built.blank_tail = 1;
+  built.wire_fields = 13;
   CHECK(encode(built).view() == seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
                                      "311214,,,A,"));
 }

@@ -199,12 +199,14 @@ case_nmea() {
   expect_rc "decode --format nmea, liberal input" 0 "$decode" --format nmea <"$work/in"
   expect_eq "canonical output" "$(crlf '$BPLOG,ACK,ON*1E' '$PYDIR,45,55*57' '$PYDIR,45,55*57' \
     "$foo")" "$(cat "$work/out")"
-  # Trailing fields that may be left out but came blank go back blank: the seed's eight-field
-  # CPIMU, RMC 2.3/4.1 with a blank mode or status, VBW with blank NMEA 3.0 stern fields.
+  # Fields that may be left out but came blank go back blank: the seed's eight-field CPIMU, RMC
+  # 2.3/4.1 with a blank mode or status, VBW with blank NMEA 3.0 stern fields, the spec's
+  # six-field CPRBS with a blank battery id.
   crlf "$(seal 'CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172,')" \
     "$(seal 'GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,')" \
     "$(seal 'GNRMC,120000.00,V,,,,,,,290224,,,,')" \
-    "$(seal 'VDVBW,4.91,-0.12,A,5.02,0.08,A,,,,')" >"$work/in"
+    "$(seal 'VDVBW,4.91,-0.12,A,5.02,0.08,A,,,,')" "$(seal 'CPRBS,105707.24,,15.2,15.1,15.3,0')" \
+    >"$work/in"
   expect_rc "decode --format nmea, blank trailing fields" 0 "$decode" --format nmea <"$work/in"
   if ! cmp -s "$work/out" "$work/in"; then fail "blank trailing fields not written back as they came"; fi
 }

@@ -106,11 +106,14 @@ struct cprcm {
 struct cprbs {
   time_of_day timestamp;                      // 1 [Timestamp] when the sentence was made
   std::optional<std::uint16_t> battery_id;    // 2 [ID_Battery] banks numbered from 1; only in the
-                                              //   six-field form, nullopt writes the five-field one
+                                              //   six-field form, nullopt writes the five-field
+                                              //   one unless wire_fields says six
   std::optional<decimal> stack_voltage_v;     // 3 [V_Batt_Stack] volts, the whole bank
   std::optional<decimal> min_cell_voltage_v;  // 4 [V_Batt_Min] volts, lowest cell of the bank
   std::optional<decimal> max_cell_voltage_v;  // 5 [V_Batt_Max] volts, highest cell of the bank
   std::optional<decimal> temperature_c;       // 6 [TemperatureC] degrees Celsius (real: 0)
+  std::uint8_t wire_fields = 0;  // 6 when a six-field sentence's battery id came blank: written
+                                 //   back in that form (0: nullopt writes the five-field one)
 
   friend constexpr bool operator==(const cprbs&, const cprbs&) noexcept = default;
 
@@ -126,7 +129,7 @@ struct cprbs {
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
 /// y starboard, z down; rates by the right-hand rule). The real vehicle sends seven fields, no
 /// nav timestamp; nullopt writes that form, and an eighth field that came blank is written back
-/// blank (blank_tail). (The seed's sentence id is garbled; it is CPIMU.) A blank rate or
+/// blank (wire_fields). (The seed's sentence id is garbled; it is CPIMU.) A blank rate or
 /// acceleration is "no data" (seed 2.4) and reads as nullopt.
 ///
 ///   $CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57
@@ -141,8 +144,8 @@ struct cpimu {
   std::optional<decimal> accel_z_mps2;       // 7 [Accel_Z] m/s^2, positive down
   std::optional<time_of_day> nav_timestamp;  // 8 [NavTimestamp] when the IMU measured; blank or
                                              //   absent means "the same as field 1"
-  std::uint8_t blank_tail = 0;  // 1: field 8 came blank and is written back blank (the seed's
-                                //   form); 0: left out when nav_timestamp has no value
+  std::uint8_t wire_fields = 0;  // 8 when field 8 came blank: written back blank (the seed's
+                                 //   form); 0: left out when nav_timestamp has no value
 
   /// Field 8, or field 1 when field 8 is blank or absent.
   [[nodiscard]] constexpr time_of_day effective_nav_timestamp() const noexcept {

@@ -257,15 +257,40 @@ concept message_like = requires {
   T::nmea.address;
 };
 
-/// A message whose last fields may be left out (may_be_absent) and that remembers, in a member
-/// `std::uint8_t blank_tail`, how many of them its sentence carried blank after the last one
-/// with a value: decode sets it, encode writes that many back blank. So the seed's eight-field
-/// "$CPIMU,...,-0.932172,*hh" goes back out with its empty eighth field, not as the seven-field
-/// form. 0, the default, writes only the fields the values need.
+/// A message with fields that senders may leave out (may_be_absent at the end, or a field of
+/// only the longer form) that remembers, in a member `std::uint8_t wire_fields`, the field count
+/// of the sentence it was decoded from when that is more than its values need: one of those
+/// fields came blank instead of left out. Encode then writes that many fields, so the seed's
+/// eight-field "$CPIMU,...,-0.932172,*hh" goes back out with its empty eighth field, and a
+/// six-field CPRBS with a blank battery id keeps its six. 0 (the default, and what decode
+/// leaves otherwise) writes the fields the values need.
 template <class T>
-concept keeps_blank_tail = message_like<T> && requires(T& m) {
-  { m.blank_tail } -> std::same_as<std::uint8_t&>;
+concept keeps_wire_fields = message_like<T> && requires(T& m) {
+  { m.wire_fields } -> std::same_as<std::uint8_t&>;
 };
+
+namespace detail {
+/// The wire_fields of a message, 0 for one without.
+template <message_like T>
+[[nodiscard]] constexpr std::size_t wire_fields_of(const T& msg) noexcept {
+  if constexpr (keeps_wire_fields<T>) {
+    return msg.wire_fields;
+  } else {
+    return 0;
+  }
+}
+/// Whether T declares a field that only the longer form has, and one that may be left out at
+/// the end: a message that keeps its wire_fields may have one kind or the other, not both.
+template <message_like T>
+[[nodiscard]] consteval bool has_both_optional_kinds() noexcept {
+  bool longer = false;
+  bool absent = false;
+  T::nmea.fields.apply([&](const auto&... d) {
+    ((longer = longer || d.opts.when_count != 0, absent = absent || d.opts.may_be_absent), ...);
+  });
+  return longer && absent;
+}
+}  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
 // decode
@@ -349,17 +374,19 @@ template <class F, class T>
     // Blank means "no value", except for text, where blank is the empty string and only a
     // field that is not there at all is nullopt.
     if (!t.present || (t.blank() && !codec<V>::allows_blank)) {
-      // A trailing field that came blank, where it could have been left out: one more for the
-      // message's blank tail (a value further on starts it again).
-      if constexpr (keeps_blank_tail<T>) {
-        if (o.may_be_absent && t.present) ++msg.blank_tail;
+      // Blank where it could have been left out: the form to write back is the sentence's
+      // (unless a trailing value further on needs it anyway, which resets it below).
+      if constexpr (keeps_wire_fields<T>) {
+        if ((o.may_be_absent || o.when_count != 0) && t.present)
+          msg.wire_fields =
+              static_cast<std::uint8_t>(r.field_count() < 255 ? r.field_count() : 255);
       }
       for (unsigned k = 0; k < codec<V>::width; ++k) (void)r.take();
       clear_optional(m);
       return read_unit(r, o, false);
     }
-    if constexpr (keeps_blank_tail<T>) {
-      if (o.may_be_absent) msg.blank_tail = 0;
+    if constexpr (keeps_wire_fields<T>) {
+      if (o.may_be_absent) msg.wire_fields = 0;
     }
     // Read in place: a value built on the side and copied in would be copied through the
     // stack in wide loads that wait on the narrow stores that just wrote it.
@@ -406,18 +433,23 @@ template <class T>
   return errc::ok;
 }
 
+/// Whether encode leaves field `f` out of `msg`'s sentence for want of a value: a field that may
+/// be absent at the end (if nothing after it is written), or one of only the longer form when
+/// the message is not written in that form.
 template <class F, class T>
 [[nodiscard]] constexpr bool skipped(const F& f, const T& msg) noexcept {
   if constexpr (F::is_optional) {
-    return (f.opts.when_count != 0 || f.opts.may_be_absent) && !(msg.*F::member).has_value();
+    if ((msg.*F::member).has_value()) return false;
+    if (f.opts.when_count != 0) return wire_fields_of(msg) < f.opts.when_count;
+    return f.opts.may_be_absent;
   } else {
     return false;
   }
 }
 
 /// How many of T's field declarations encode writes for the values `msg` holds: all but the
-/// trailing ones left out for want of a value (may_be_absent, or only in the longer form), then
-/// as many of those again as blank_tail asks to be written blank.
+/// trailing ones left out for want of a value, and at least those that the wire_fields of a
+/// decoded message reach.
 template <message_like T>
 [[nodiscard]] constexpr std::size_t written_fields(const T& msg) noexcept {
   constexpr std::size_t n = std::remove_cvref_t<decltype(T::nmea.fields)>::size;
@@ -427,7 +459,16 @@ template <message_like T>
     while (keep > 0 && skips[keep - 1]) --keep;
   }
   (std::make_index_sequence<n>{});
-  if constexpr (keeps_blank_tail<T>) keep = keep + msg.blank_tail < n ? keep + msg.blank_tail : n;
+  if constexpr (keeps_wire_fields<T>) {
+    if (msg.wire_fields != 0) [[unlikely]] {
+      std::size_t reached = 0;  // declarations whose first wire field is within wire_fields
+      std::size_t first = 0;
+      T::nmea.fields.apply([&](const auto&... d) {
+        ((reached += first < msg.wire_fields ? 1 : 0, first += d.width()), ...);
+      });
+      if (reached > keep) keep = reached;
+    }
+  }
   return keep;
 }
 
@@ -437,6 +478,9 @@ template <message_like T>
 template <message_like T, class Status>
 constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T& msg,
                            Status& status) noexcept {
+  static_assert(!keeps_wire_fields<T> || !has_both_optional_kinds<T>(),
+                "wire_fields: fields of only the longer form and fields left out at the end in "
+                "one message are not supported");
   status.ec = errc::ok;
   status.field = 0;
   status.column = 0;
@@ -514,7 +558,8 @@ template <class F, class T>
   bool has = true;
   if constexpr (F::is_optional) {
     has = m.has_value();
-    if (!has && o.when_count != 0) return errc::ok;  // the shorter form has no such field
+    if (!has && o.when_count != 0 && wire_fields_of(msg) < o.when_count)
+      return errc::ok;  // the shorter form has no such field
     if (has) v = &*m;
   } else {
     v = &m;

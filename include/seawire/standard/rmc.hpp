@@ -56,8 +56,8 @@ struct rmc {
   std::optional<decimal_longitude> magnetic_variation;      // 10,11 degrees, E/W (W is negative)
   std::optional<mode_indicator> mode;                       // 12 NMEA 2.3+
   std::optional<standard::nav_status> navigational_status;  // 13 NMEA 4.1+
-  std::uint8_t blank_tail = 0;  // fields 12-13 that came blank after the last with a value, to
-                                //   write back blank (nmea::keeps_blank_tail); decode sets it
+  std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 12-13 came
+                                 //   blank, to write back as it came (nmea::keeps_wire_fields)
 
   friend constexpr bool operator==(const rmc&, const rmc&) noexcept = default;
 

@@ -8,7 +8,7 @@
 // Fields 1-6 are the sentence as the ANELLO spec (and NMEA 0183 before 3.0) has it. NMEA 3.0
 // adds stern transverse speeds, water (7, status 8) and ground (9, status 10); a Doppler log
 // may send them. Both forms are accepted, and each is written back in the form it came in: the
-// stern fields are written when one of them has a value or when they came blank (blank_tail);
+// stern fields are written when one of them has a value or when they came blank (wire_fields);
 // a message built in code without stern values is written in the six-field form.
 //
 // A sender with no ground track writes its water speeds and leaves 4-5 blank with status V.
@@ -46,8 +46,8 @@ struct vbw {
   std::optional<vbw_status> stern_water_status;          // 8 NMEA 3.0+
   std::optional<decimal> stern_transverse_ground_knots;  // 9 NMEA 3.0+, knots, negative = port
   std::optional<vbw_status> stern_ground_status;         // 10 NMEA 3.0+
-  std::uint8_t blank_tail = 0;  // fields 7-10 that came blank after the last with a value, to
-                                //   write back blank (nmea::keeps_blank_tail); decode sets it
+  std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 7-10 came
+                                 //   blank, to write back as it came (nmea::keeps_wire_fields)
 
   friend constexpr bool operator==(const vbw&, const vbw&) noexcept = default;
 
