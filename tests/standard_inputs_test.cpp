@@ -478,6 +478,32 @@ TEST_CASE("VHW: round trip over generated values", "[vhw][property]") {
 // =============================================================================================
 // VBW
 
+TEST_CASE("VBW: the two forms only, when written and when strict", "[vbw]") {
+  // One stern value: the NMEA 3.0 form, all four stern fields.
+  vbw m;
+  m.talker = "VD";
+  m.longitudinal_water_knots = decimal(1);
+  m.stern_transverse_water_knots = decimal(5, 1);
+  CHECK(nmea::encode(m).view() == "$VDVBW,1,,,,,,0.5,,,*4B\r\n");
+  m.stern_transverse_water_knots.reset();
+  m.stern_ground_status = vbw_status::valid;
+  CHECK(nmea::encode(m).view() == "$VDVBW,1,,,,,,,,,A*21\r\n");
+  m.stern_ground_status.reset();
+  CHECK(nmea::encode(m).view() == "$VDVBW,1,,,,,*60\r\n");
+  // Strict reading takes 6 and 10 fields; 7 to 9 are a sentence cut short.
+  const auto strict = nmea::parse_policy::strict();
+  CHECK(nmea::decode<vbw>("$VDVBW,1,,,,,*60\r\n", strict));
+  CHECK(nmea::decode<vbw>("$VDVBW,1,,,,,,0.5,,,*4B\r\n", strict));
+  const auto seven = nmea::decode<vbw>("$VDVBW,1,,,,,,0.5*67\r\n", strict);
+  CHECK(seven.ec == errc::too_few_fields);
+  CHECK(seven.field == 8);
+  CHECK(seven.column == 17);
+  // The default reading takes them, as the fields they have.
+  const auto liberal = nmea::decode<vbw>("$VDVBW,1,,,,,,0.5*67\r\n");
+  REQUIRE(liberal);
+  CHECK(liberal.value.stern_transverse_water_knots == decimal(5, 1));
+}
+
 TEST_CASE("VBW: water and ground speeds along and across the hull", "[vbw]") {
   const auto r = nmea::decode<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A*7C\r\n");
   REQUIRE(r.ec == errc::ok);
@@ -504,10 +530,10 @@ TEST_CASE("VBW: the NMEA 3.0 form with stern speeds", "[vbw]") {
   CHECK(r.value.stern_ground_status == vbw_status::valid);
   CHECK(nmea::encode(r.value).view() == "$VDVBW,4.91,-0.12,A,5.02,0.08,A,0.05,A,0.04,A*7D\r\n");
 
-  // One stern value set: the stern fields up to it are written, the rest left out.
+  // One stern value set: the NMEA 3.0 form, the other stern fields blank.
   vbw m;
   m.stern_transverse_water_knots = decimal(-3, 1);
-  CHECK(nmea::encode(m).view() == line("VWVBW,,,,,,,-0.3"));
+  CHECK(nmea::encode(m).view() == line("VWVBW,,,,,,,-0.3,,,"));
 }
 
 TEST_CASE("VBW: water speed only, ground blank and invalid", "[vbw]") {

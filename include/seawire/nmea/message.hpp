@@ -269,6 +269,16 @@ concept keeps_wire_fields = message_like<T> && requires(T& m) {
   { m.wire_fields } -> std::same_as<std::uint8_t&>;
 };
 
+/// A message whose standard forms have only some field counts lists them, in increasing order,
+/// in `static constexpr std::uint8_t field_counts[]` (VBW: {6, 10}): encode then writes the
+/// shortest listed form that holds the values (an NMEA 3.0 stern speed alone is written with
+/// all four stern fields, not as a seven-field sentence), and a strict decode refuses other
+/// counts (too_few_fields).
+template <class T>
+concept lists_field_counts = message_like<T> && requires {
+  T::field_counts[0];
+};
+
 namespace detail {
 /// The wire_fields of a message, 0 for one without.
 template <message_like T>
@@ -459,17 +469,48 @@ template <message_like T>
     while (keep > 0 && skips[keep - 1]) --keep;
   }
   (std::make_index_sequence<n>{});
+  // The declarations whose first wire field is within the first `wire` (declarations of only the
+  // longer form count as written: the messages that need this have none left out).
+  const auto reaching = [](std::size_t wire) {
+    std::size_t reached = 0;
+    std::size_t first = 0;
+    T::nmea.fields.apply(
+        [&](const auto&... d) { ((reached += first < wire ? 1 : 0, first += d.width()), ...); });
+    return reached;
+  };
   if constexpr (keeps_wire_fields<T>) {
     if (msg.wire_fields != 0) [[unlikely]] {
-      std::size_t reached = 0;  // declarations whose first wire field is within wire_fields
-      std::size_t first = 0;
-      T::nmea.fields.apply([&](const auto&... d) {
-        ((reached += first < msg.wire_fields ? 1 : 0, first += d.width()), ...);
-      });
+      const std::size_t reached = reaching(msg.wire_fields);
       if (reached > keep) keep = reached;
     }
   }
+  if constexpr (lists_field_counts<T>) {
+    if (keep < n) {
+      std::size_t wire = 0;
+      std::size_t i = 0;
+      T::nmea.fields.apply([&](const auto&... d) { ((wire += i++ < keep ? d.width() : 0), ...); });
+      for (const std::size_t form : T::field_counts) {
+        if (form >= wire) {
+          const std::size_t reached = reaching(form);
+          if (reached > keep) keep = reached;
+          break;
+        }
+      }
+    }
+  }
   return keep;
+}
+
+/// Whether `count` is one of T's listed field counts (any count, for a message without a list).
+template <message_like T>
+[[nodiscard]] constexpr bool listed_field_count(std::size_t count) noexcept {
+  if constexpr (lists_field_counts<T>) {
+    for (const std::size_t form : T::field_counts)
+      if (form == count) return true;
+    return false;
+  } else {
+    return true;
+  }
 }
 
 /// decode<T>() into `msg`, a default-constructed T the caller owns (the value of a result, the
@@ -502,6 +543,16 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
     status.ec = e;
     status.field = r.index();
     status.column = r.column();
+    return;
+  }
+  if constexpr (lists_field_counts<T>) {
+    // Strict: a count between the standard forms is a sentence cut short; the first field
+    // missing is named.
+    if (policy.strict_values && !listed_field_count<T>(s.field_count)) [[unlikely]] {
+      status.ec = errc::too_few_fields;
+      status.field = static_cast<decltype(status.field)>(s.field_count + 1);
+      status.column = static_cast<decltype(status.column)>(s.body_column() + s.body.size());
+    }
   }
 }
 

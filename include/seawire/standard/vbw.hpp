@@ -8,8 +8,9 @@
 // Fields 1-6 are the sentence as the ANELLO spec (and NMEA 0183 before 3.0) has it. NMEA 3.0
 // adds stern transverse speeds, water (7, status 8) and ground (9, status 10); a Doppler log
 // may send them. Both forms are accepted, and each is written back in the form it came in: the
-// stern fields are written when one of them has a value or when they came blank (wire_fields);
-// a message built in code without stern values is written in the six-field form.
+// four stern fields are written when one of them has a value or when they came blank
+// (wire_fields); a message built in code without stern values is written in the six-field form.
+// Under the strict policy a count between the two (7 to 9 fields) is too_few_fields.
 //
 // A sender with no ground track writes its water speeds and leaves 4-5 blank with status V.
 // Every field may be blank; a blank status decodes as nullopt (senders leave it blank as often
@@ -48,6 +49,9 @@ struct vbw {
   std::optional<vbw_status> stern_ground_status;         // 10 NMEA 3.0+
   std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 7-10 came
                                  //   blank, to write back as it came (nmea::keeps_wire_fields)
+
+  /// The forms: before NMEA 3.0 and since. A stern field is written with all four.
+  static constexpr std::uint8_t field_counts[] = {6, 10};
 
   friend constexpr bool operator==(const vbw&, const vbw&) noexcept = default;
 
