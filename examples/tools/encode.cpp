@@ -513,8 +513,9 @@ class encoder {
   void reject(const std::string& why) {
     ++rejected_;
     out_.flush();  // keep stdout and stderr in input order for a reader of both
+    // The reason quotes the input, which JSON lets hold any byte: NUL and control bytes escaped.
     std::fprintf(stderr, "seawire-encode: line %llu: %s\n", static_cast<unsigned long long>(line_),
-                 why.c_str());
+                 tools::printable(why).c_str());
   }
 
   const options& opt_;

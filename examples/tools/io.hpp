@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -50,6 +51,23 @@ class chunk_reader {
   std::vector<char> buf_;
   bool failed_ = false;
 };
+
+/// `s` made safe for a terminal: control bytes (NUL included) and DEL as \xNN, the rest as is.
+inline std::string printable(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7F) {
+      out += "\\x";
+      out += "0123456789abcdef"[u >> 4];
+      out += "0123456789abcdef"[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
 
 /// A large output buffer in front of a FILE*. put() never fails; flush() reports write errors.
 class output {

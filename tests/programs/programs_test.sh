@@ -688,6 +688,12 @@ EOF
     'seawire-encode: line 15: RXHRB field 2 (time) "16:12:29.5": bad_time: time is not hhmmss[.fff]' \
     'seawire-encode: line 16: BPSTS field 3 (message) "all good, really": bad_text: text contains a character the field may not carry')" \
     "$(cat "$work/err")"
+  # A NUL or a control byte in a JSON string is named escaped, and the reason is not cut there.
+  printf '%s\n' '{"type":"BPSTS","timestamp":"23:11:33.12","all_ok":false,"message":"a\u0000b\u0001"}' >"$work/in"
+  expect_rc "encode: NUL in text" 1 "$encode" <"$work/in"
+  expect_eq "control bytes escaped in the reason" \
+    'seawire-encode: line 1: BPSTS field 3 (message) "a\x00b\x01": bad_text: text contains a character the field may not carry' \
+    "$(cat "$work/err")"
 }
 
 # A live link whose sender ends lines with CR alone: under --line-buffered each sentence comes
