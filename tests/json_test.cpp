@@ -672,6 +672,13 @@ TEST_CASE("ANELLO frame JSON read back: exact, strict, errors by field number") 
   CHECK(r.field == 6);
   o.members["gps_time"] = {json_kind::string, "2024-07-03T15:42:58.0001Z"};
   CHECK(anello::read_frame_json(o).ec == errc::bad_time);
+  // Before the epoch the frame counts from: out of range, not a bad month.
+  o.members["gps_time"] = {json_kind::string, "1969-12-31T23:59:59.999Z"};
+  r = anello::read_frame_json(o);
+  CHECK(r.ec == errc::out_of_range);
+  CHECK(r.field == 6);
+  o.members["gps_time"] = {json_kind::string, "1970-13-01T00:00:00Z"};
+  CHECK(anello::read_frame_json(o).ec == errc::month_out_of_range);
   o.members["gps_time"] = {json_kind::string, "2024-07-03T15:42:58Z"};
   r = anello::read_frame_json(o);
   REQUIRE(r);

@@ -149,7 +149,8 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
       !nmea::detail::parse_fixed_digits(s, 5, 2, mo) ||
       !nmea::detail::parse_fixed_digits(s, 8, 2, d))
     return errc::bad_date;
-  if (y < 1970 || mo < 1 || mo > 12) return errc::month_out_of_range;
+  if (mo < 1 || mo > 12) return errc::month_out_of_range;
+  if (y < 1970) return errc::out_of_range;  // before the epoch the frame counts from
   if (d < 1 || d > nmea::detail::days_in_month(mo, y)) return errc::day_out_of_range;
   const result<nmea::time_of_day> t = nmea::parse_time_text(s.substr(11));
   if (!t) return t.ec;
