@@ -11,6 +11,8 @@
 //  - with report_drops(true): the same items with drop reports between them, in stream order,
 //    the same for every chunking; each report shows the stream's own bytes at its offset, there
 //    is one per counted event, and their sizes add up to noise_bytes + dropped_bytes;
+//  - flush() after every chunk changes nothing but the ending of a sentence whose CR ended a
+//    chunk (CR instead of CR LF), not even a line number;
 //  - valid data after hostile data still comes out: a good sentence and a good frame appended
 //    after a line break are the last two items, whatever came before (unless the fuzzer built a
 //    frame with a right CRC over the appended bytes themselves).
@@ -86,7 +88,7 @@ std::vector<std::uint64_t> lines_of(std::string_view stream, const std::vector<o
 }
 
 template <std::size_t Capacity, class NextSize>
-outcome run(std::string_view stream, NextSize&& next_size, bool drops = false) {
+outcome run(std::string_view stream, NextSize&& next_size, bool drops = false, bool flush = false) {
   anello::stream_reader<Capacity> reader;
   reader.report_drops(drops);
   outcome out;
@@ -95,6 +97,10 @@ outcome run(std::string_view stream, NextSize&& next_size, bool drops = false) {
   while (at < stream.size()) {
     const std::size_t n = std::min(next_size(), stream.size() - at);
     reader.feed(stream.substr(at, n), take);
+    if (flush) {
+      if (const std::optional<anello::stream_item> i = reader.flush()) take(*i);
+      SEAWIRE_FUZZ_CHECK(!reader.flush().has_value(), "flush() yielded twice");
+    }
     at += n;
   }
   reader.feed(std::string_view{}, take);
@@ -211,6 +217,26 @@ void check_drops(std::string_view stream, std::uint8_t seed) {
                      "not one drop report per counted event", stream);
 }
 
+// The link going quiet after every chunk (flush()): the same items and stats, but that a
+// sentence whose CR ended a chunk comes out as ended by CR even when an LF followed.
+template <std::size_t Capacity>
+void check_flush(std::string_view stream, std::uint8_t seed) {
+  using seawire::nmea::line_ending;
+  const outcome whole = run<Capacity>(
+      stream, [&] { return stream.size(); }, true);
+  const outcome flushed =
+      run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed ^ 0x33U), true, true);
+  SEAWIRE_FUZZ_CHECK(flushed.stats == whole.stats, "flush() changed the stats", stream);
+  SEAWIRE_FUZZ_CHECK(flushed.items.size() == whole.items.size(), "flush() changed the items",
+                     stream);
+  for (std::size_t k = 0; k < whole.items.size(); ++k) {
+    owned_item f = flushed.items[k];
+    if (f.ending == line_ending::cr && whole.items[k].ending == line_ending::crlf)
+      f.ending = line_ending::crlf;
+    SEAWIRE_FUZZ_CHECK(f == whole.items[k], "flush() changed an item", stream, number(k));
+  }
+}
+
 // The seed's example frame (valid CRC).
 constexpr std::array<std::uint8_t, 56> seed_frame = {
     0xAB, 0x00, 0x00, 0x30, 0x8E, 0xF7, 0xF1, 0x76, 0x00, 0x59, 0x01, 0xF4, 0xEC, 0xFF,
@@ -264,6 +290,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check_stream<80>(fixed, data[0], true);
   check_stream<1024>(fixed, data[0], false);
   check_drops<80>(fixed, data[0]);
+  check_flush<80>(fixed, data[0]);
   check_recovery(fixed);
   return 0;
 }
