@@ -17,6 +17,7 @@
 // absent. An address starting with "--" ("--RMC") matches any talker; such a message has a
 // `talker_id talker` member that decode fills and encode writes.
 
+#include <array>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -457,44 +458,44 @@ template <class F, class T>
   }
 }
 
+/// The wire field (0-based) each of T's field declarations starts at, as if every one were
+/// written, and the field count of the whole at the end.
+template <message_like T>
+inline constexpr auto field_starts = [] {
+  std::array<std::size_t, std::remove_cvref_t<decltype(T::nmea.fields)>::size + 1> starts{};
+  std::size_t i = 0;
+  T::nmea.fields.apply(
+      [&](const auto&... d) { ((starts[i + 1] = starts[i] + d.width(), ++i), ...); });
+  return starts;
+}();
+
 /// How many of T's field declarations encode writes for the values `msg` holds: all but the
 /// trailing ones left out for want of a value, and at least those that the wire_fields of a
-/// decoded message reach.
+/// decoded message reach, up to the next of the message's standard forms.
 template <message_like T>
 [[nodiscard]] constexpr std::size_t written_fields(const T& msg) noexcept {
   constexpr std::size_t n = std::remove_cvref_t<decltype(T::nmea.fields)>::size;
+  constexpr const auto& starts = field_starts<T>;
   std::size_t keep = n;
   [&]<std::size_t... I>(std::index_sequence<I...>) {
     const bool skips[] = {skipped(field_at<I>(T::nmea.fields), msg)..., false};
     while (keep > 0 && skips[keep - 1]) --keep;
   }
   (std::make_index_sequence<n>{});
-  // The declarations whose first wire field is within the first `wire` (declarations of only the
+  // At least the declarations that start within the first `wire` fields (those of only the
   // longer form count as written: the messages that need this have none left out).
-  const auto reaching = [](std::size_t wire) {
-    std::size_t reached = 0;
-    std::size_t first = 0;
-    T::nmea.fields.apply(
-        [&](const auto&... d) { ((reached += first < wire ? 1 : 0, first += d.width()), ...); });
-    return reached;
+  const auto reach = [&](std::size_t wire) {
+    while (keep < n && starts[keep] < wire) ++keep;
   };
   if constexpr (keeps_wire_fields<T>) {
-    if (msg.wire_fields != 0) [[unlikely]] {
-      const std::size_t reached = reaching(msg.wire_fields);
-      if (reached > keep) keep = reached;
-    }
+    if (msg.wire_fields != 0) [[unlikely]]
+      reach(msg.wire_fields);
   }
   if constexpr (lists_field_counts<T>) {
-    if (keep < n) {
-      std::size_t wire = 0;
-      std::size_t i = 0;
-      T::nmea.fields.apply([&](const auto&... d) { ((wire += i++ < keep ? d.width() : 0), ...); });
-      for (const std::size_t form : T::field_counts) {
-        if (form >= wire) {
-          const std::size_t reached = reaching(form);
-          if (reached > keep) keep = reached;
-          break;
-        }
+    for (const std::size_t form : T::field_counts) {
+      if (form >= starts[keep]) {
+        reach(form);
+        break;
       }
     }
   }
@@ -664,7 +665,7 @@ template <message_like T>
     w.begin(desc.address);
   }
   // Trailing fields that may be absent and have no value are left out, with their commas
-  // (but for a blank tail the message keeps).
+  // (but for those a decoded message's wire_fields or the message's standard forms keep).
   constexpr std::size_t n = std::remove_cvref_t<decltype(desc.fields)>::size;
   const std::size_t keep = detail::written_fields(msg);
 
