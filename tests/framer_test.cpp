@@ -287,6 +287,21 @@ TEST_CASE("CR LF split across chunks", "[framer]") {
   }
 }
 
+namespace {
+// "$A" ended by a CR, the link quiet (flushed), then `rest`: the lines `rest` yields.
+std::vector<rec> after_flushed_cr(std::string_view rest) {
+  framer<> f;
+  std::vector<rec> out;
+  f.feed("$A\r");
+  drain(f, out);
+  REQUIRE(f.flush().has_value());
+  f.feed(rest);
+  drain(f, out);
+  CHECK(f.stats().noise_bytes == 0);
+  return out;
+}
+}  // namespace
+
 TEST_CASE("flush(): a line held on its CR comes out when the link goes quiet", "[framer]") {
   SECTION("CR-only sender: each line comes out at once, LF-free") {
     framer<> f;
@@ -306,25 +321,10 @@ TEST_CASE("flush(): a line held on its CR comes out when the link goes quiet", "
     CHECK(f.stats().sentences == 2);
   }
   SECTION("the LF that comes after all the same completes the break: no blank line") {
-    framer<> f;
-    std::vector<rec> out;
-    f.feed("$A\r");
-    drain(f, out);
-    REQUIRE(f.flush().has_value());
-    f.feed("\n$B\r\n");
-    drain(f, out);
-    CHECK(out == std::vector<rec>{{"$B", line_ending::crlf, 2}});
-    CHECK(f.stats().noise_bytes == 0);
+    CHECK(after_flushed_cr("\n$B\r\n") == std::vector<rec>{{"$B", line_ending::crlf, 2}});
   }
   SECTION("LF LF after: the second is a blank line") {
-    framer<> f;
-    std::vector<rec> out;
-    f.feed("$A\r");
-    drain(f, out);
-    REQUIRE(f.flush().has_value());
-    f.feed("\n\n$B\n");
-    drain(f, out);
-    CHECK(out == std::vector<rec>{{"$B", line_ending::lf, 3}});
+    CHECK(after_flushed_cr("\n\n$B\n") == std::vector<rec>{{"$B", line_ending::lf, 3}});
   }
   SECTION("nothing held: a sentence without its ending keeps waiting") {
     framer<> f;
