@@ -41,7 +41,7 @@ ss::bprmb heading_and_speed() {
   ss::bprmb r;
   r.heading = seawire::nmea::decimal(90);
   r.horizontal_mode = ss::horizontal_mode::heading;
-  r.speed = seawire::nmea::decimal(15, 1);
+  r.speed = seawire::nmea::decimal::scaled(15, 1);
   r.speed_mode = ss::speed_mode::meters_per_second;
   return r;
 }

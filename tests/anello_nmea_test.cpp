@@ -197,7 +197,7 @@ TEST_CASE("nmea_inputs: the ANELLO vectors through the set and its policy", "[an
   const auto* m = std::get_if<standard::vbw>(&vbw.value);
   REQUIRE(m != nullptr);
   CHECK(m->talker == "VM");
-  CHECK(m->longitudinal_water_knots == decimal(0, 1));
+  CHECK(m->longitudinal_water_knots == decimal::scaled(0, 1));
   CHECK(m->water_status == standard::vbw_status::valid);
   CHECK(m->ground_status == standard::vbw_status::valid);
   CHECK(nmea::encode(*m).view() == "$VMVBW,0.0,0.0,A,0.0,0.0,A*58\r\n");
@@ -277,10 +277,10 @@ TEST_CASE("make_vhw: m/s to knots and km/h, headings in degrees", "[anello][si]"
   const auto r = anello::make_vhw(in);
   REQUIRE(r.ec == errc::ok);
   CHECK(r.value.talker == "VW");
-  CHECK(r.value.heading_true_deg == decimal(873, 1));
-  CHECK(r.value.heading_magnetic_deg == decimal(750, 1));
-  CHECK(r.value.speed_knots == decimal(467, 2));
-  CHECK(r.value.speed_kmh == decimal(864, 2));
+  CHECK(r.value.heading_true_deg == decimal::scaled(873, 1));
+  CHECK(r.value.heading_magnetic_deg == decimal::scaled(750, 1));
+  CHECK(r.value.speed_knots == decimal::scaled(467, 2));
+  CHECK(r.value.speed_kmh == decimal::scaled(864, 2));
   CHECK(nmea::encode(r.value).view() == line("VWVHW,87.3,T,75.0,M,4.67,N,8.64,K"));
 
   // One knot is 1852 m per hour, exactly.
@@ -288,8 +288,8 @@ TEST_CASE("make_vhw: m/s to knots and km/h, headings in degrees", "[anello][si]"
   knot.speed_mps = 1852.0 / 3600.0;
   const auto k = anello::make_vhw(knot);
   REQUIRE(k.ec == errc::ok);
-  CHECK(k.value.speed_knots == decimal(100, 2));
-  CHECK(k.value.speed_kmh == decimal(185, 2));  // 1.852 km/h
+  CHECK(k.value.speed_knots == decimal::scaled(100, 2));
+  CHECK(k.value.speed_kmh == decimal::scaled(185, 2));  // 1.852 km/h
   CHECK_FALSE(k.value.heading_true_deg.has_value());
   CHECK(nmea::encode(k.value).view() == line("VWVHW,,T,,M,1.00,N,1.85,K"));
 
@@ -298,8 +298,8 @@ TEST_CASE("make_vhw: m/s to knots and km/h, headings in degrees", "[anello][si]"
   fast.speed_places = 3;
   fast.talker = "IN";
   const auto f = anello::make_vhw(fast);
-  CHECK(f.value.speed_knots == decimal(19438, 3));  // 19.4384...
-  CHECK(f.value.speed_kmh == decimal(36000, 3));
+  CHECK(f.value.speed_knots == decimal::scaled(19438, 3));  // 19.4384...
+  CHECK(f.value.speed_kmh == decimal::scaled(36000, 3));
   CHECK(f.value.talker == "IN");
 
   // Decoded back to m/s.
@@ -307,7 +307,7 @@ TEST_CASE("make_vhw: m/s to knots and km/h, headings in degrees", "[anello][si]"
   REQUIRE(back.has_value());
   CHECK(*back == Approx(10.0).margin(0.0003));
   standard::vhw kmh_only;
-  kmh_only.speed_kmh = decimal(36, 0);
+  kmh_only.speed_kmh = decimal::scaled(36, 0);
   CHECK(anello::speed_through_water_mps(kmh_only) == 10.0);
   CHECK_FALSE(anello::speed_through_water_mps(standard::vhw{}).has_value());
 }
@@ -320,13 +320,13 @@ TEST_CASE("make_vhw: headings wrap into [0, 360)", "[anello][si]") {
     REQUIRE(r.ec == errc::ok);
     return *r.value.heading_true_deg;
   };
-  CHECK(heading(-92.5) == decimal(2675, 1));
-  CHECK(heading(-180.0) == decimal(1800, 1));
-  CHECK(heading(360.0) == decimal(0, 1));
-  CHECK(heading(359.96) == decimal(0, 1));  // rounds to 360.0, which is north
-  CHECK(heading(359.94) == decimal(3599, 1));
-  CHECK(heading(720.25) == decimal(3, 1));
-  CHECK(heading(-0.0) == decimal(0, 1));
+  CHECK(heading(-92.5) == decimal::scaled(2675, 1));
+  CHECK(heading(-180.0) == decimal::scaled(1800, 1));
+  CHECK(heading(360.0) == decimal::scaled(0, 1));
+  CHECK(heading(359.96) == decimal::scaled(0, 1));  // rounds to 360.0, which is north
+  CHECK(heading(359.94) == decimal::scaled(3599, 1));
+  CHECK(heading(720.25) == decimal::scaled(3, 1));
+  CHECK(heading(-0.0) == decimal::scaled(0, 1));
   CHECK_FALSE(heading(-0.0).negative);
 }
 
@@ -373,8 +373,8 @@ TEST_CASE("make_vbw: body-frame speeds, m/s to knots, status from what is given"
   water.transverse_water_mps = -0.1;   // to port, 0.1944 kn
   const auto r = anello::make_vbw(water);
   REQUIRE(r.ec == errc::ok);
-  CHECK(r.value.longitudinal_water_knots == decimal(486, 2));
-  CHECK(r.value.transverse_water_knots == decimal(-19, 2));
+  CHECK(r.value.longitudinal_water_knots == decimal::scaled(486, 2));
+  CHECK(r.value.transverse_water_knots == decimal::scaled(-19, 2));
   CHECK(r.value.water_status == standard::vbw_status::valid);
   CHECK_FALSE(r.value.longitudinal_ground_knots.has_value());
   CHECK(r.value.ground_status == standard::vbw_status::invalid);
@@ -455,8 +455,8 @@ TEST_CASE("RMC output: the 11-field form", "[anello][rmc]") {
   CHECK(m->status == standard::rmc_status::active);
   CHECK(m->lat->degrees() == Approx(32.828671).margin(1e-9));
   CHECK(m->lon->degrees() == Approx(-117.229926).margin(1e-9));
-  CHECK(m->speed_knots == decimal(5, 2));
-  CHECK(m->course_true == decimal(8900, 2));
+  CHECK(m->speed_knots == decimal::scaled(5, 2));
+  CHECK(m->course_true == decimal::scaled(8900, 2));
   CHECK(m->date->year == 2024);
   CHECK(m->date->month == 7);
   CHECK(m->date->day == 3);

@@ -289,8 +289,8 @@ TEST_CASE("the fast decimal parser agrees with the general one") {
     const std::string s = random_text(g, chars, 25);
     INFO(s);
     for (const bool plus : {false, true}) {
-      decimal fast{123, 4};
-      decimal slow{123, 4};
+      decimal fast = decimal::scaled(123, 4);
+      decimal slow = decimal::scaled(123, 4);
       const errc ef = nmea::detail::parse_decimal(s, plus, fast);
       std::size_t i = 0;
       bool neg = false;
@@ -320,8 +320,8 @@ TEST_CASE("a number read under a policy is read as under the policy's two flags"
         parse_policy p;
         p.strict_values = strict;
         p.spaced_numbers = spaced;
-        decimal by_policy{123, 4};
-        decimal by_flags{123, 4};
+        decimal by_policy = decimal::scaled(123, 4);
+        decimal by_flags = decimal::scaled(123, 4);
         const errc ep = nmea::detail::parse_decimal(s, p, by_policy);
         const errc ef = nmea::detail::parse_decimal(s, !strict, by_flags, spaced);
         REQUIRE(ep == ef);

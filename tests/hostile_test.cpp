@@ -585,7 +585,7 @@ TEST_CASE(
     "fuzz: decimal equality is the text form, so int_width that pads nothing is no difference") {
   // encode_fuzz: PYDIR with thrust -25.7 built with int_width 1 came back with int_width 0.
   kingfisher::pydir m;
-  m.thrust_left = decimal(-257, 1);
+  m.thrust_left = decimal::scaled(-257, 1);
   m.thrust_left.int_width = 1;  // "-25.7" has two integer digits: 1 pads nothing
   m.thrust_right = m.thrust_left;
   const auto line = encode(m);

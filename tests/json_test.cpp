@@ -145,7 +145,7 @@ std::string through_json(std::string_view line) {
 // The writers are constexpr: a whole message as JSON at compile time.
 static_assert([] {
   json_buffer<128> b;
-  write_json(b, kingfisher::pydir{decimal(45), decimal(-5, 1)});
+  write_json(b, kingfisher::pydir{decimal(45), decimal::scaled(-5, 1)});
   return b.view() == R"({"type":"PYDIR","thrust_left":45,"thrust_right":-0.5})";
 }());
 
@@ -177,7 +177,7 @@ TEST_CASE("integers, flags, optionals") {
   CHECK(value_json(true) == "true");
   CHECK(value_json(false) == "false");
   CHECK(value_json(std::optional<decimal>{}) == "null");
-  CHECK(value_json(std::optional<decimal>{decimal(15, 1)}) == "1.5");
+  CHECK(value_json(std::optional<decimal>{decimal::scaled(15, 1)}) == "1.5");
 }
 
 TEST_CASE("NMEA positions: signed decimal degrees with minute places + 2") {
@@ -203,7 +203,7 @@ TEST_CASE("NMEA positions: signed decimal degrees with minute places + 2") {
   l.minutes = decimal(59);
   l.hemi = hemisphere::south;
   CHECK(value_json(l) == "-89.98");
-  l.minutes = decimal(599, 1);
+  l.minutes = decimal::scaled(599, 1);
   CHECK(value_json(l) == "-89.998");  // 59.9/60 = 0.998333
 }
 
@@ -328,15 +328,15 @@ TEST_CASE("from_decimal_degrees: rounding, carry, default places, range") {
   auto r = lon("-71.0908130");
   REQUIRE(r);
   CHECK(r.value.whole_degrees == 71);
-  CHECK(r.value.minutes == decimal(544878, 5));
+  CHECK(r.value.minutes == decimal::scaled(544878, 5));
   CHECK(r.value.hemi == hemisphere::west);
   // Fewer than three fraction digits: 4 minute places.
   r = lon("42.5");
   REQUIRE(r);
-  CHECK(r.value.minutes == decimal(300000, 4));
+  CHECK(r.value.minutes == decimal::scaled(300000, 4));
   r = lon("7");
   REQUIRE(r);
-  CHECK((r.value.whole_degrees == 7 && r.value.minutes == decimal(0, 4)));
+  CHECK((r.value.whole_degrees == 7 && r.value.minutes == decimal::scaled(0, 4)));
   // -0 keeps its hemisphere.
   r = lon("-0.0000");
   REQUIRE(r);
@@ -344,10 +344,10 @@ TEST_CASE("from_decimal_degrees: rounding, carry, default places, range") {
   // An explicit precision, and the carry when the minutes round up to 60.
   r = lon("12.9999999", 2);
   REQUIRE(r);
-  CHECK((r.value.whole_degrees == 13 && r.value.minutes == decimal(0, 2)));
+  CHECK((r.value.whole_degrees == 13 && r.value.minutes == decimal::scaled(0, 2)));
   r = lon("12.5", 6);
   REQUIRE(r);
-  CHECK(r.value.minutes == decimal(30000000, 6));
+  CHECK(r.value.minutes == decimal::scaled(30000000, 6));
   // Range.
   CHECK(lon("180.0000").ec == errc::ok);
   CHECK(lon("180.0001").ec == errc::bad_longitude);
@@ -361,11 +361,11 @@ TEST_CASE("from_decimal_degrees: rounding, carry, default places, range") {
   REQUIRE(nmea::detail::parse_decimal("-157.88972", false, d) == errc::ok);
   auto dl = from_decimal_degrees<decimal_longitude>(d);
   REQUIRE(dl);
-  CHECK((dl.value.value == decimal(15788972, 5) && dl.value.hemi == hemisphere::west));
+  CHECK((dl.value.value == decimal::scaled(15788972, 5) && dl.value.hemi == hemisphere::west));
   dl = from_decimal_degrees<decimal_longitude>(d, 2);
-  CHECK(dl.value.value == decimal(15789, 2));
+  CHECK(dl.value.value == decimal::scaled(15789, 2));
   dl = from_decimal_degrees<decimal_longitude>(d, 7);
-  CHECK(dl.value.value == decimal(1578897200, 7));
+  CHECK(dl.value.value == decimal::scaled(1578897200, 7));
 }
 
 TEST_CASE("time and date text") {
@@ -410,11 +410,11 @@ TEST_CASE("read_json: values, blanks, errors name the wire field") {
   o.members["heading_deg"] = {json_kind::number, "234.30"};
   auto r = read_json<kingfisher::cpnvg>("CPNVG", o);
   REQUIRE(r);
-  CHECK(r.value.lat.minutes == decimal(21711142, 6));
+  CHECK(r.value.lat.minutes == decimal::scaled(21711142, 6));
   CHECK(r.value.lon.degree_digits == 3);
   CHECK_FALSE(r.value.altitude_m);
   CHECK_FALSE(r.value.depth_m);  // absent
-  CHECK(*r.value.heading_deg == decimal(23430, 2));
+  CHECK(*r.value.heading_deg == decimal::scaled(23430, 2));
   CHECK(encode(r.value).view() ==
         "$CPNVG,164959.034,4221.711142,N,07105.44878,W,1,,,234.30,,,*62\r\n");
 
@@ -422,7 +422,7 @@ TEST_CASE("read_json: values, blanks, errors name the wire field") {
   o.precision["latitude"] = {json_kind::number, "3"};
   r = read_json<kingfisher::cpnvg>("CPNVG", o);
   REQUIRE(r);
-  CHECK(r.value.lat.minutes == decimal(21711, 3));
+  CHECK(r.value.lat.minutes == decimal::scaled(21711, 3));
   o.precision.clear();
 
   CHECK(read_json<kingfisher::cpnvg>("CPNVR", o).ec == errc::wrong_address);

@@ -119,12 +119,12 @@ static_assert(nmea::decode<kf::cpnvg>("$CPNVG,081025.987,4221.81092,N,07106.8460
                   .ec == errc::checksum_mismatch);
 // Commands built in code encode to the vectors.
 static_assert(nmea::encode(kf::pydir{45, 55}).view() == pydir_45_55);
-static_assert(nmea::encode(kf::pydev{90, decimal(15, 1)}).view() == pydev_90);
+static_assert(nmea::encode(kf::pydev{90, decimal::scaled(15, 1)}).view() == pydev_90);
 static_assert(nmea::encode(kf::pydep{-10, 50}).view() == pydep_vec);
 static_assert(nmea::encode(kf::pyclt{true}).view() == pyclt_on);
 // Decoding gives back the message that was encoded, compared whole.
 static_assert(nmea::decode<kf::pydir>(pydir_45_55).value == kf::pydir{45, 55});
-static_assert(nmea::decode<kf::pydev>(pydev_90).value == kf::pydev{90, decimal(15, 1)});
+static_assert(nmea::decode<kf::pydev>(pydev_90).value == kf::pydev{90, decimal::scaled(15, 1)});
 static_assert(nmea::decode<kf::pyclt>(pyclt_off).value == kf::pyclt{false});
 static_assert(nmea::decode<kf::cpnvg>(sim_cpnvg).value !=
               nmea::decode<kf::cpnvg>(real_cpnvg).value);
@@ -258,9 +258,9 @@ TEST_CASE("simulator and payload driver vectors") {
     REQUIRE(r);
     const auto& m = holds<kf::cprbs>(r.value);
     CHECK(m.battery_id == std::uint16_t{1});
-    CHECK(m.stack_voltage_v == decimal(152, 1));
-    CHECK(m.min_cell_voltage_v == decimal(151, 1));
-    CHECK(m.max_cell_voltage_v == decimal(153, 1));
+    CHECK(m.stack_voltage_v == decimal::scaled(152, 1));
+    CHECK(m.min_cell_voltage_v == decimal::scaled(151, 1));
+    CHECK(m.max_cell_voltage_v == decimal::scaled(153, 1));
     CHECK(m.temperature_c == decimal(0));
     CHECK(nmea::encode(m).view() == sim_cprbs);
   }
@@ -274,9 +274,9 @@ TEST_CASE("simulator and payload driver vectors") {
     REQUIRE(good);
     const auto& m = holds<kf::cpnvg>(good.value);
     CHECK(m.lon.degrees() == Approx(-71.1141005).margin(1e-12));
-    CHECK(m.heading_deg == decimal(2031, 1));
-    CHECK(m.roll_deg == decimal(-34, 1));
-    CHECK(m.pitch_deg == decimal(45, 1));
+    CHECK(m.heading_deg == decimal::scaled(2031, 1));
+    CHECK(m.roll_deg == decimal::scaled(-34, 1));
+    CHECK(m.pitch_deg == decimal::scaled(45, 1));
     CHECK_FALSE(m.altitude_m.has_value());
   }
   SECTION("CPALT lights state") {
@@ -359,7 +359,7 @@ TEST_CASE("optional and variant forms") {
     REQUIRE(r);
     auto m = holds<kf::cprbs>(r.value);
     CHECK_FALSE(m.battery_id.has_value());
-    CHECK(m.stack_voltage_v == decimal(152, 1));
+    CHECK(m.stack_voltage_v == decimal::scaled(152, 1));
     CHECK(m.wire_fields == 6);
     CHECK(nmea::encode(m).view() == line);
     CHECK(nmea::form_field_count(m) == 6);
@@ -415,9 +415,9 @@ TEST_CASE("optional and variant forms") {
   SECTION("CPRBS: an id given in code selects the six-field form") {
     kf::cprbs m;
     m.timestamp = hms(10, 57, 7, 24, 2);
-    m.stack_voltage_v = decimal(152, 1);
-    m.min_cell_voltage_v = decimal(151, 1);
-    m.max_cell_voltage_v = decimal(153, 1);
+    m.stack_voltage_v = decimal::scaled(152, 1);
+    m.min_cell_voltage_v = decimal::scaled(151, 1);
+    m.max_cell_voltage_v = decimal::scaled(153, 1);
     m.temperature_c = decimal(0);
     CHECK(nmea::encode(m).view() == sealed("CPRBS,105707.24,15.2,15.1,15.3,0"));
     m.battery_id = 1;
@@ -625,7 +625,7 @@ TEST_CASE("blank fields from the vehicle are \"no data\" (seed 2.4), not errors"
   REQUIRE(rcm.ec == errc::ok);
   const auto& m = std::get<kf::cprcm>(rcm.value);
   CHECK_FALSE(m.heading_deg.has_value());
-  CHECK(m.pitch_deg == decimal(-16, 1));
+  CHECK(m.pitch_deg == decimal::scaled(-16, 1));
 
   // Blank is not absent: the vehicle writes every field, so a sentence cut short is an error.
   for (const char* cut :
@@ -760,7 +760,7 @@ TEST_CASE("encoders refuse what the spec forbids, naming the field") {
     CHECK(b.field == 2);
   }
   SECTION("PYDEP thrust 100.5") {
-    const auto b = nmea::encode(kf::pydep{0, decimal(1005, 1)});
+    const auto b = nmea::encode(kf::pydep{0, decimal::scaled(1005, 1)});
     CHECK(b.ec == errc::out_of_range);
     CHECK(b.field == 2);
   }
@@ -768,10 +768,10 @@ TEST_CASE("encoders refuse what the spec forbids, naming the field") {
     const auto h = nmea::encode(kf::pydev{360, 1});
     CHECK(h.ec == errc::out_of_range);
     CHECK(h.field == 1);
-    const auto s = nmea::encode(kf::pydev{90, decimal(-5, 1)});
+    const auto s = nmea::encode(kf::pydev{90, decimal::scaled(-5, 1)});
     CHECK(s.ec == errc::out_of_range);
     CHECK(s.field == 2);
-    CHECK(nmea::encode(kf::pydev{decimal(35999, 2), 0}));
+    CHECK(nmea::encode(kf::pydev{decimal::scaled(35999, 2), 0}));
   }
   SECTION("from_double refuses NaN and infinities, with the field") {
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -817,7 +817,7 @@ TEST_CASE("encoders refuse what the spec forbids, naming the field") {
     const auto p = nmea::encode(n);
     CHECK(p.ec == errc::minute_out_of_range);
     CHECK(p.field == 2);
-    n.lat.minutes = decimal(217, 1);
+    n.lat.minutes = decimal::scaled(217, 1);
     n.lon.hemi = nmea::hemisphere::north;
     const auto h = nmea::encode(n);
     CHECK(h.ec == errc::bad_hemisphere);
@@ -844,16 +844,16 @@ TEST_CASE("command helpers") {
     CHECK(nmea::encode(a.value).view() == sealed("PYDEV,90.0,1.5"));
     const auto w = kf::pydev::from_heading(-90, 1);
     REQUIRE(w);
-    CHECK(w.value.heading_deg == decimal(2700, 1));
+    CHECK(w.value.heading_deg == decimal::scaled(2700, 1));
     const auto r = kf::pydev::from_heading(359.97, 1);
     REQUIRE(r);
-    CHECK(r.value.heading_deg == decimal(0, 1));
+    CHECK(r.value.heading_deg == decimal::scaled(0, 1));
     const auto big = kf::pydev::from_heading(725.5, 0, 2);
     REQUIRE(big);
-    CHECK(big.value.heading_deg == decimal(550, 2));
+    CHECK(big.value.heading_deg == decimal::scaled(550, 2));
     const auto full = kf::pydev::from_heading(-360, 0);
     REQUIRE(full);
-    CHECK(full.value.heading_deg == decimal(0, 1));
+    CHECK(full.value.heading_deg == decimal::scaled(0, 1));
     CHECK_FALSE(full.value.heading_deg.negative);
     CHECK(kf::pydev::from_heading(10, 1, 16).ec == errc::value_too_large);
     // The speed is not wrapped or clamped: encode refuses it.

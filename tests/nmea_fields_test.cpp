@@ -116,7 +116,7 @@ TEST_CASE("decimal keeps its written form") {
   CHECK(d == decimal{5});
   CHECK(nmea::detail::parse_decimal("+5", false, d) == errc::bad_number);
   CHECK(nmea::detail::parse_decimal(".5", false, d) == errc::ok);
-  CHECK(d == decimal(5, 1));
+  CHECK(d == decimal::scaled(5, 1));
   for (std::string_view bad : {"", "-", "+", ".", "1e5", "1.2.3", "0x10", "--1", "1-", "inf", "nan",
                                " ", "   ", "1 2", "- 1", "1. 5", " -", "\t1", "1\t"}) {
     INFO(bad);
@@ -128,8 +128,8 @@ TEST_CASE("decimal keeps its written form") {
   // strict (send-side) reading, they are not part of a number.
   for (const auto& [spaced, want] : {std::pair<std::string_view, decimal>{" 1", decimal{1}},
                                      {"1 ", decimal{1}},
-                                     {"  -5.0  ", decimal(-50, 1)},
-                                     {" +12.25", decimal(1225, 2)}}) {
+                                     {"  -5.0  ", decimal::scaled(-50, 1)},
+                                     {" +12.25", decimal::scaled(1225, 2)}}) {
     INFO(spaced);
     REQUIRE(nmea::detail::parse_decimal(spaced, true, d, true) == errc::ok);
     CHECK(d == want);
@@ -148,25 +148,25 @@ TEST_CASE("decimal keeps its written form") {
 }
 
 TEST_CASE("decimal compare, to_double and from_double") {
-  CHECK(decimal(45, 1).compare(decimal(450, 2)) == 0);
-  CHECK(decimal(45, 1) != decimal(450, 2));  // equality is of the written form
+  CHECK(decimal::scaled(45, 1).compare(decimal::scaled(450, 2)) == 0);
+  CHECK(decimal::scaled(45, 1) != decimal::scaled(450, 2));  // equality is of the written form
   CHECK(decimal(-1).compare(decimal(0)) < 0);
   CHECK(decimal(0).compare(decimal(-1)) > 0);
-  CHECK(decimal(-15, 1).compare(decimal(-1)) < 0);
-  CHECK(decimal(100).compare(decimal(99999, 3)) > 0);
+  CHECK(decimal::scaled(-15, 1).compare(decimal(-1)) < 0);
+  CHECK(decimal(100).compare(decimal::scaled(99999, 3)) > 0);
   decimal neg_zero;
   neg_zero.negative = true;
   CHECK(neg_zero.compare(decimal(0)) == 0);
-  CHECK(decimal(156780, 3).to_double() == 156.78);
-  CHECK(decimal(-33, 0).to_double() == -33.0);
+  CHECK(decimal::scaled(156780, 3).to_double() == 156.78);
+  CHECK(decimal::scaled(-33, 0).to_double() == -33.0);
 
   auto r = decimal::from_double(1.5, 2);
   REQUIRE(r);
-  CHECK(r.value == decimal(150, 2));
+  CHECK(r.value == decimal::scaled(150, 2));
   r = decimal::from_double(-0.004, 2);
   REQUIRE(r);
-  CHECK(r.value == decimal(0, 2));  // rounds to zero: no "-0.00"
-  CHECK(decimal::from_double(0.145, 3).value == decimal(145, 3));
+  CHECK(r.value == decimal::scaled(0, 2));  // rounds to zero: no "-0.00"
+  CHECK(decimal::from_double(0.145, 3).value == decimal::scaled(145, 3));
   CHECK(decimal::from_double(std::nan(""), 2).ec == errc::not_finite);
   CHECK(decimal::from_double(HUGE_VAL, 2).ec == errc::not_finite);
   CHECK(decimal::from_double(1e19, 0).ec == errc::value_too_large);
@@ -297,7 +297,7 @@ TEST_CASE("strict values: no '+' signs, no reserved characters in text; spaces b
   parse_policy spi;
   spi.spaced_numbers = true;
   REQUIRE(decode<all_types>(spaced, spi));
-  CHECK(decode<all_types>(spaced, spi).value.value == decimal(-55, 1));
+  CHECK(decode<all_types>(spaced, spi).value.value == decimal::scaled(-55, 1));
   CHECK(encode(decode<all_types>(spaced, spi).value).view().find(",-5.5,") !=
         std::string_view::npos);
   for (parse_policy refuses : {parse_policy{}, parse_policy::strict()}) {
@@ -334,7 +334,7 @@ TEST_CASE("optional fields, units, field-count forms and absent tails") {
   SECTION("blank unit letter is accepted, the right one is written") {
     const auto d = decode<optionals>(seal("TSOPT,5.2,,359.9,1.5"));
     REQUIRE(d);
-    CHECK(*d.value.speed == decimal(52, 1));
+    CHECK(*d.value.speed == decimal::scaled(52, 1));
     CHECK(encode(d.value).view() == seal("TSOPT,5.2,N,359.9,1.5"));
   }
   SECTION("a sentence that stops early: blanks when liberal, too_few_fields when strict") {
@@ -366,25 +366,25 @@ TEST_CASE("optional fields, units, field-count forms and absent tails") {
     const auto d = decode<optionals>(six);
     REQUIRE(d);
     CHECK(*d.value.id == 7);
-    CHECK(*d.value.level == decimal(35, 1));
+    CHECK(*d.value.level == decimal::scaled(35, 1));
     CHECK(*d.value.tail == "tl");
     CHECK(encode(d.value).view() == six);
     const std::string five = seal("TSOPT,1,N,2,3.5,tl");
     const auto e = decode<optionals>(five);
     REQUIRE(e);
     CHECK_FALSE(e.value.id);
-    CHECK(*e.value.level == decimal(35, 1));
+    CHECK(*e.value.level == decimal::scaled(35, 1));
     CHECK(encode(e.value).view() == five);
   }
   SECTION("the longer form with an extra trailing field is still the longer form") {
     const auto d = decode<optionals>(seal("TSOPT,1,N,2,7,3.5,tl,extra"));
     REQUIRE(d);
     CHECK(*d.value.id == 7);
-    CHECK(*d.value.level == decimal(35, 1));
+    CHECK(*d.value.level == decimal::scaled(35, 1));
   }
   SECTION("encode numbers fields as the form written has them") {
     optionals o;
-    o.level = decimal(125, 2);  // max_places(1): refused
+    o.level = decimal::scaled(125, 2);  // max_places(1): refused
     const auto e = encode(o);
     CHECK(e.ec == errc::out_of_range);
     CHECK(e.field == 4);  // no id in the short form
@@ -460,7 +460,7 @@ TEST_CASE("positions from decimal degrees") {
   auto lat = latitude::from_degrees(-33.8568, 4);
   REQUIRE(lat);
   CHECK(lat.value.whole_degrees == 33);
-  CHECK(lat.value.minutes == decimal(514080, 4));
+  CHECK(lat.value.minutes == decimal::scaled(514080, 4));
   CHECK(lat.value.hemi == hemisphere::south);
   // 59.99999 minutes rounds up into the next degree.
   auto lon = longitude::from_degrees(10.9999999999, 3);
@@ -472,7 +472,7 @@ TEST_CASE("positions from decimal degrees") {
   CHECK(longitude::from_degrees(std::nan("")).ec == errc::not_finite);
   auto dl = decimal_latitude::from_degrees(-21.311984, 5);
   REQUIRE(dl);
-  CHECK(dl.value.value == decimal(2131198, 5));
+  CHECK(dl.value.value == decimal::scaled(2131198, 5));
   CHECK(dl.value.hemi == hemisphere::south);
 }
 
@@ -505,7 +505,7 @@ TEST_CASE("round trip over generated values") {
     m.lon = longitude::from_degrees(static_cast<double>(pick(360'000'000)) / 1e6 - 180.0,
                                     static_cast<unsigned>(1 + pick(6)))
                 .value;
-    m.value = decimal(static_cast<std::int64_t>(pick(200'001)) - 100'000, 3);
+    m.value = decimal::scaled(static_cast<std::int64_t>(pick(200'001)) - 100'000, 3);
     m.count = static_cast<std::int16_t>(static_cast<int>(pick(65536)) - 32768);
     m.flag = pick(2) == 1;
     m.state = pick(2) ? status::valid : status::invalid;
@@ -562,8 +562,9 @@ TEST_CASE("from_double rounds to nearest without the x + 0.5 trap") {
   CHECK(decimal::from_double(4503599627370497.0, 0).value.mantissa == 4503599627370497ULL);
   CHECK(decimal::from_double(-4503599627370497.0, 0).value.mantissa == 4503599627370497ULL);
   CHECK(decimal::from_double(2.5, 0).value.mantissa == 3);  // halves still go up
-  CHECK(decimal::from_double(0.125, 2).value == decimal(13, 2));
-  CHECK(latitude::from_degrees(0.49999999999999994 / 60.0, 1).value.minutes == decimal(5, 1));
+  CHECK(decimal::from_double(0.125, 2).value == decimal::scaled(13, 2));
+  CHECK(latitude::from_degrees(0.49999999999999994 / 60.0, 1).value.minutes ==
+        decimal::scaled(5, 1));
 }
 
 TEST_CASE("for_each_field gives declared names in wire order") {

@@ -71,7 +71,7 @@ TEST_CASE("positions built from degrees always carry a fraction of the minute") 
   constexpr std::string_view received = "$GPRMC,,A,4221,N,07105,W,,,,,*09\r\n";
   const auto d = decode<standard::rmc>(received);
   REQUIRE(d);
-  CHECK(d.value.lat->minutes == decimal(210, 1));
+  CHECK(d.value.lat->minutes == decimal::scaled(210, 1));
   CHECK(d.value.lat->degrees() == Approx(42.35));
   const auto relayed = encode(d.value);
   REQUIRE(relayed);
@@ -116,11 +116,11 @@ TEST_CASE("encode and decode name the same field for a wrong hemisphere letter")
 
   robotx::rxhrb h;
   h.team_id = "AUVSI";
-  h.lat = decimal_latitude{decimal(2131198, 5), hemisphere::west};
+  h.lat = decimal_latitude{decimal::scaled(2131198, 5), hemisphere::west};
   CHECK(encode(h).ec == errc::bad_hemisphere);
   CHECK(encode(h).field == 4);
   h.lat->hemi = hemisphere::north;
-  h.lon = decimal_longitude{decimal(18001, 2), hemisphere::west};
+  h.lon = decimal_longitude{decimal::scaled(18001, 2), hemisphere::west};
   CHECK(encode(h).ec == errc::bad_longitude);
   CHECK(encode(h).field == 5);
 }
@@ -146,8 +146,8 @@ TEST_CASE("equality is the written form: padding that writes nothing is no diffe
   CHECK(padded.written_int_digits() == 3);
 
   standard::rmc m;
-  m.lat = latitude{42, decimal(217, 1), hemisphere::north, 1};  // written "4221.7"
-  m.lon = longitude{100, decimal(5, 1), hemisphere::west, 2};   // written "10000.5"
+  m.lat = latitude{42, decimal::scaled(217, 1), hemisphere::north, 1};  // written "4221.7"
+  m.lon = longitude{100, decimal::scaled(5, 1), hemisphere::west, 2};   // written "10000.5"
   const auto r = encode(m);
   REQUIRE(r);
   CHECK(r.view().starts_with("$GPRMC,,A,4221.7,N,10000.5,W,"));
@@ -157,8 +157,8 @@ TEST_CASE("equality is the written form: padding that writes nothing is no diffe
   CHECK(back.value.lon == m.lon);
   CHECK(back.value == m);
   // An unpadded longitude is a different written form from the padded one.
-  CHECK(longitude{71, decimal(5, 1), hemisphere::west, 2} !=
-        longitude{71, decimal(5, 1), hemisphere::west, 3});
+  CHECK(longitude{71, decimal::scaled(5, 1), hemisphere::west, 2} !=
+        longitude{71, decimal::scaled(5, 1), hemisphere::west, 3});
 }
 
 TEST_CASE("an absent text field can only be left out at the end") {

@@ -87,11 +87,11 @@ TEST_CASE("RXHRB: the seed's heartbeat decodes to the values in Table 1") {
   CHECK(m.date == nmea::date{2018, 12, 10});
   CHECK(m.time == nmea::time_of_day{16, 12, 29, 0, 0});
   REQUIRE(m.lat);
-  CHECK(m.lat->value == decimal(2131198, 5));
+  CHECK(m.lat->value == decimal::scaled(2131198, 5));
   CHECK(m.lat->hemi == nmea::hemisphere::north);
   CHECK(m.lat->degrees() == Approx(21.31198));
   REQUIRE(m.lon);
-  CHECK(m.lon->value == decimal(15788972, 5));
+  CHECK(m.lon->value == decimal::scaled(15788972, 5));
   CHECK(m.lon->hemi == nmea::hemisphere::west);
   CHECK(m.lon->degrees() == Approx(-157.88972));
   CHECK(m.team_id == "AUVSI"sv);
@@ -265,7 +265,7 @@ TEST_CASE("positions: unsigned decimal degrees, the sign from the hemisphere onl
   REQUIRE(south.ok());
   CHECK(south.value.lat->degrees() == Approx(-33.8871));
   CHECK(south.value.lon->degrees() == Approx(151.1877));
-  CHECK(south.value.lat->value == decimal(3388710, 5));  // trailing zero kept
+  CHECK(south.value.lat->value == decimal::scaled(3388710, 5));  // trailing zero kept
 
   // 0 with S/W: the letter still gives the sign.
   const auto zero = nmea::decode<rx::rxhrb>(sealed("RXHRB,101218,161229,0.0,S,0.0,W,AUVSI,2,1"),
@@ -412,12 +412,12 @@ TEST_CASE("encode refuses what the spec does not allow, naming the field") {
   CHECK(nmea::encode(bad_day).field == 1);
 
   auto negative = hb;
-  negative.lat = nmea::decimal_latitude{decimal(-2131198, 5), nmea::hemisphere::south};
+  negative.lat = nmea::decimal_latitude{decimal::scaled(-2131198, 5), nmea::hemisphere::south};
   CHECK(nmea::encode(negative).ec == errc::bad_latitude);
   CHECK(nmea::encode(negative).field == 3);
 
   auto wrong_letter = hb;
-  wrong_letter.lon = nmea::decimal_longitude{decimal(1, 0), nmea::hemisphere::north};
+  wrong_letter.lon = nmea::decimal_longitude{decimal::scaled(1, 0), nmea::hemisphere::north};
   CHECK(nmea::encode(wrong_letter).ec == errc::bad_hemisphere);
   CHECK(nmea::encode(wrong_letter).field == 6);  // the letter, as decode says
 

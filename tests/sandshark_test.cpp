@@ -123,11 +123,11 @@ TEST_CASE("BFNVG vector from the training vehicle") {
   CHECK(n->lat.degrees() == Approx(42.3));
   CHECK(n->lon.degrees() == Approx(-71.1));
   CHECK_FALSE(n->gps);
-  CHECK(n->altitude_m == decimal(100, 1));
-  CHECK(n->depth_m == decimal(10, 1));
-  CHECK(n->heading_deg == decimal(450, 1));
-  CHECK(n->roll_deg == decimal(0, 1));
-  CHECK(n->pitch_deg == decimal(0, 1));
+  CHECK(n->altitude_m == decimal::scaled(100, 1));
+  CHECK(n->depth_m == decimal::scaled(10, 1));
+  CHECK(n->heading_deg == decimal::scaled(450, 1));
+  CHECK(n->roll_deg == decimal::scaled(0, 1));
+  CHECK(n->pitch_deg == decimal::scaled(0, 1));
   CHECK(n->nav_timestamp == tod(23, 11, 31, 55, 2));
 }
 
@@ -147,11 +147,11 @@ TEST_CASE("the seed's BFNVG examples carry wrong checksums and are rejected") {
   CHECK(ok.value.lat.degrees() == Approx(42.0 + 21.81092 / 60));
   CHECK(ok.value.lon.degrees() == Approx(-(71.0 + 6.84603 / 60)));
   CHECK(ok.value.gps);
-  CHECK(ok.value.altitude_m == decimal(453, 1));
-  CHECK(ok.value.depth_m == decimal(201, 1));
-  CHECK(ok.value.heading_deg == decimal(2031, 1));
-  CHECK(ok.value.roll_deg == decimal(-34, 1));
-  CHECK(ok.value.pitch_deg == decimal(45, 1));
+  CHECK(ok.value.altitude_m == decimal::scaled(453, 1));
+  CHECK(ok.value.depth_m == decimal::scaled(201, 1));
+  CHECK(ok.value.heading_deg == decimal::scaled(2031, 1));
+  CHECK(ok.value.roll_deg == decimal::scaled(-34, 1));
+  CHECK(ok.value.pitch_deg == decimal::scaled(45, 1));
   CHECK(ok.value.nav_timestamp == tod(8, 10, 25, 980, 3));
 }
 
@@ -301,12 +301,12 @@ TEST_CASE("the seed's other messages") {
   const auto nvr = decode_from_vehicle(sealed("BFNVR,081025.987,0.1,-0.2,0.03,1.5,-2,0.25"));
   REQUIRE(nvr.ok());
   const bfnvr& v = std::get<bfnvr>(nvr.value);
-  CHECK(v.vel_east_mps == decimal(1, 1));
-  CHECK(v.vel_north_mps == decimal(-2, 1));
-  CHECK(v.vel_down_mps == decimal(3, 2));
-  CHECK(v.pitch_rate_dps == decimal(15, 1));
+  CHECK(v.vel_east_mps == decimal::scaled(1, 1));
+  CHECK(v.vel_north_mps == decimal::scaled(-2, 1));
+  CHECK(v.vel_down_mps == decimal::scaled(3, 2));
+  CHECK(v.pitch_rate_dps == decimal::scaled(15, 1));
   CHECK(v.roll_rate_dps == decimal(-2));
-  CHECK(v.yaw_rate_dps == decimal(25, 2));
+  CHECK(v.yaw_rate_dps == decimal::scaled(25, 2));
 
   const auto abt = decode_to_vehicle("$BPABT,081025.987,leak detected,1*6B");
   REQUIRE(abt.ok());
@@ -369,8 +369,8 @@ TEST_CASE("numbers may have spaces before the minus sign (SPI 4.2, Table 1)") {
       "BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,  -3.4, 4.5 ,081025.980"));
   REQUIRE(nvg.ok());
   const auto& n = std::get<bfnvg>(nvg.value);
-  CHECK(n.roll_deg == decimal(-34, 1));
-  CHECK(n.pitch_deg == decimal(45, 1));
+  CHECK(n.roll_deg == decimal::scaled(-34, 1));
+  CHECK(n.pitch_deg == decimal::scaled(45, 1));
   CHECK(encoded(n).find(",-3.4,4.5,") != std::string::npos);  // written without the spaces
 
   const auto rmb = decode_to_vehicle(sealed("BPRMB,231204.72, -15,,,750,0,1"));
@@ -712,7 +712,7 @@ TEST_CASE("every payload sentence fits the 256-byte sentence buffer at full capa
   bpabt a{tod(23, 59, 59, 999999999, 9), {}, abort_reason::with_errors};
   (void)a.message.assign(std::string(128, 'x'));
   CHECK(encode<256>(a).ec == errc::ok);
-  const decimal widest{-999999999999999999, 9};
+  const decimal widest = decimal::scaled(-999999999999999999, 9);
   bprmb r{tod(23, 59, 59, 999999999, 9), widest, widest,
           depth_mode::elevator,          widest, speed_mode::rpm,
           horizontal_mode::rudder};

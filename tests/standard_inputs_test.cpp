@@ -92,7 +92,7 @@ struct rng {
     const auto span = static_cast<std::uint64_t>(hi - lo) * scale;
     const std::int64_t v =
         lo * static_cast<std::int64_t>(scale) + static_cast<std::int64_t>(below(span + 1));
-    decimal d(v, places);
+    decimal d = decimal::scaled(v, places);
     if (v == 0 && lo < 0 && one_in(2)) d.negative = true;
     return d;
   }
@@ -180,8 +180,8 @@ TEST_CASE("RPM: shaft speed and pitch", "[rpm]") {
   CHECK(r.value.talker == "II");
   CHECK(r.value.source == rpm_source::shaft);
   CHECK(r.value.number == 1);
-  CHECK(r.value.speed_rpm == decimal(12005, 1));
-  CHECK(r.value.pitch_percent == decimal(125, 1));
+  CHECK(r.value.speed_rpm == decimal::scaled(12005, 1));
+  CHECK(r.value.pitch_percent == decimal::scaled(125, 1));
   CHECK(r.value.status == rpm_status::valid);
 }
 
@@ -192,7 +192,7 @@ TEST_CASE("RPM: engine turning counter-clockwise, pitch astern", "[rpm]") {
   CHECK(r.value.source == rpm_source::engine);
   CHECK(r.value.number == 2);
   CHECK(r.value.speed_rpm->to_double() == -850.0);
-  CHECK(r.value.pitch_percent == decimal(-250, 1));
+  CHECK(r.value.pitch_percent == decimal::scaled(-250, 1));
   CHECK(nmea::encode(r.value).view() == "$ERRPM,E,2,-850,-25.0,A*66\r\n");
 }
 
@@ -220,7 +220,7 @@ TEST_CASE("RPM: any talker, kept on re-encode", "[rpm]") {
     INFO(text);
     REQUIRE(r.ec == errc::ok);
     CHECK(r.value.talker == t);
-    CHECK(r.value.speed_rpm == decimal(12005, 1));
+    CHECK(r.value.speed_rpm == decimal::scaled(12005, 1));
     CHECK(nmea::encode(r.value).view() == text);
   }
 }
@@ -260,7 +260,7 @@ TEST_CASE("RPM: malformed input, errc and field number", "[rpm]") {
 
 TEST_CASE("RPM: the encoder refuses what the spec forbids", "[rpm]") {
   rpm m;
-  m.pitch_percent = decimal(1005, 1);
+  m.pitch_percent = decimal::scaled(1005, 1);
   const auto out = nmea::encode(m);
   CHECK(out.ec == errc::out_of_range);
   CHECK(out.field == 4);
@@ -296,16 +296,16 @@ TEST_CASE("RSA: twin rudders to port", "[rsa]") {
   const auto r = nmea::decode<rsa>("$AGRSA,-5.2,A,-4.8,A*4D\r\n");
   REQUIRE(r.ec == errc::ok);
   CHECK(r.value.talker == "AG");
-  CHECK(r.value.starboard_angle == decimal(-52, 1));
+  CHECK(r.value.starboard_angle == decimal::scaled(-52, 1));
   CHECK(r.value.starboard_status == rsa_status::valid);
-  CHECK(r.value.port_angle == decimal(-48, 1));
+  CHECK(r.value.port_angle == decimal::scaled(-48, 1));
   CHECK(r.value.port_status == rsa_status::valid);
 }
 
 TEST_CASE("RSA: single rudder, port sensor blank and invalid", "[rsa]") {
   const auto r = nmea::decode<rsa>("$IIRSA,10.5,A,,V*4D\r\n");
   REQUIRE(r.ec == errc::ok);
-  CHECK(r.value.starboard_angle == decimal(105, 1));
+  CHECK(r.value.starboard_angle == decimal::scaled(105, 1));
   CHECK(r.value.starboard_status == rsa_status::valid);
   CHECK_FALSE(r.value.port_angle.has_value());
   CHECK(r.value.port_status == rsa_status::invalid);
@@ -329,7 +329,7 @@ TEST_CASE("RSA: any talker, kept on re-encode", "[rsa]") {
     INFO(text);
     REQUIRE(r.ec == errc::ok);
     CHECK(r.value.talker == t);
-    CHECK(r.value.port_angle == decimal(-20, 1));
+    CHECK(r.value.port_angle == decimal::scaled(-20, 1));
     CHECK(nmea::encode(r.value).view() == text);
   }
 }
@@ -350,7 +350,7 @@ TEST_CASE("RSA: a sentence that stops early leaves the rest blank", "[rsa]") {
   // of the sentence read as blank. Only a value that lost its unit letter is an error (see VHW).
   const auto r = nmea::decode<rsa>(line("IIRSA,10.5,A"));
   REQUIRE(r.ec == errc::ok);
-  CHECK(r.value.starboard_angle == decimal(105, 1));
+  CHECK(r.value.starboard_angle == decimal::scaled(105, 1));
   CHECK_FALSE(r.value.port_angle.has_value());
   CHECK_FALSE(r.value.port_status.has_value());
   // Written back complete.
@@ -381,17 +381,17 @@ TEST_CASE("VHW: heading and speed through water", "[vhw]") {
   const auto r = nmea::decode<vhw>("$VWVHW,45.0,T,31.3,M,5.20,N,9.63,K*5F\r\n");
   REQUIRE(r.ec == errc::ok);
   CHECK(r.value.talker == "VW");
-  CHECK(r.value.heading_true_deg == decimal(450, 1));
-  CHECK(r.value.heading_magnetic_deg == decimal(313, 1));
-  CHECK(r.value.speed_knots == decimal(520, 2));
-  CHECK(r.value.speed_kmh == decimal(963, 2));
+  CHECK(r.value.heading_true_deg == decimal::scaled(450, 1));
+  CHECK(r.value.heading_magnetic_deg == decimal::scaled(313, 1));
+  CHECK(r.value.speed_knots == decimal::scaled(520, 2));
+  CHECK(r.value.speed_kmh == decimal::scaled(963, 2));
 }
 
 TEST_CASE("VHW: zero-padded headings keep their padding", "[vhw]") {
   // Many compasses write three integer digits; decimal remembers the width it was given.
   const auto r = nmea::decode<vhw>("$VWVHW,045.0,T,031.3,M,5.20,N,9.63,K*5F\r\n");
   REQUIRE(r.ec == errc::ok);
-  CHECK(r.value.heading_true_deg->compare(decimal(450, 1)) == 0);
+  CHECK(r.value.heading_true_deg->compare(decimal::scaled(450, 1)) == 0);
   CHECK(r.value.heading_true_deg->int_width == 3);
   CHECK(r.value.heading_magnetic_deg->to_double() == 31.3);
   CHECK(nmea::encode(r.value).view() == "$VWVHW,045.0,T,031.3,M,5.20,N,9.63,K*5F\r\n");
@@ -402,8 +402,8 @@ TEST_CASE("VHW: speed log without a compass: blank headings", "[vhw]") {
   REQUIRE(r.ec == errc::ok);
   CHECK_FALSE(r.value.heading_true_deg.has_value());
   CHECK_FALSE(r.value.heading_magnetic_deg.has_value());
-  CHECK(r.value.speed_knots == decimal(52, 1));
-  CHECK(r.value.speed_kmh == decimal(96, 1));
+  CHECK(r.value.speed_knots == decimal::scaled(52, 1));
+  CHECK(r.value.speed_kmh == decimal::scaled(96, 1));
   CHECK(nmea::encode(r.value).view() == "$IIVHW,,T,,M,5.2,N,9.6,K*5D\r\n");
 }
 
@@ -425,7 +425,7 @@ TEST_CASE("VHW: any talker, kept on re-encode", "[vhw]") {
     INFO(text);
     REQUIRE(r.ec == errc::ok);
     CHECK(r.value.talker == t);
-    CHECK(r.value.heading_true_deg == decimal(2714, 1));
+    CHECK(r.value.heading_true_deg == decimal::scaled(2714, 1));
     CHECK(nmea::encode(r.value).view() == text);
   }
 }
@@ -483,7 +483,7 @@ TEST_CASE("VBW: the two forms only, when written and when strict", "[vbw]") {
   vbw m;
   m.talker = "VD";
   m.longitudinal_water_knots = decimal(1);
-  m.stern_transverse_water_knots = decimal(5, 1);
+  m.stern_transverse_water_knots = decimal::scaled(5, 1);
   CHECK(nmea::encode(m).view() == "$VDVBW,1,,,,,,0.5,,,*4B\r\n");
   m.stern_transverse_water_knots.reset();
   m.stern_ground_status = vbw_status::valid;
@@ -501,18 +501,18 @@ TEST_CASE("VBW: the two forms only, when written and when strict", "[vbw]") {
   // The default reading takes them, as the fields they have.
   const auto liberal = nmea::decode<vbw>("$VDVBW,1,,,,,,0.5*67\r\n");
   REQUIRE(liberal);
-  CHECK(liberal.value.stern_transverse_water_knots == decimal(5, 1));
+  CHECK(liberal.value.stern_transverse_water_knots == decimal::scaled(5, 1));
 }
 
 TEST_CASE("VBW: water and ground speeds along and across the hull", "[vbw]") {
   const auto r = nmea::decode<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A*7C\r\n");
   REQUIRE(r.ec == errc::ok);
   CHECK(r.value.talker == "VD");
-  CHECK(r.value.longitudinal_water_knots == decimal(491, 2));
-  CHECK(r.value.transverse_water_knots == decimal(-12, 2));  // to port
+  CHECK(r.value.longitudinal_water_knots == decimal::scaled(491, 2));
+  CHECK(r.value.transverse_water_knots == decimal::scaled(-12, 2));  // to port
   CHECK(r.value.water_status == vbw_status::valid);
-  CHECK(r.value.longitudinal_ground_knots == decimal(502, 2));
-  CHECK(r.value.transverse_ground_knots == decimal(8, 2));
+  CHECK(r.value.longitudinal_ground_knots == decimal::scaled(502, 2));
+  CHECK(r.value.transverse_ground_knots == decimal::scaled(8, 2));
   CHECK(r.value.ground_status == vbw_status::valid);
   CHECK_FALSE(r.value.stern_transverse_water_knots.has_value());
   CHECK_FALSE(r.value.stern_ground_status.has_value());
@@ -524,22 +524,22 @@ TEST_CASE("VBW: the NMEA 3.0 form with stern speeds", "[vbw]") {
   const auto r = nmea::decode<vbw>("$VDVBW,4.91,-0.12,A,5.02,0.08,A,0.05,A,0.04,A*7D\r\n",
                                    nmea::parse_policy::strict());
   REQUIRE(r.ec == errc::ok);
-  CHECK(r.value.stern_transverse_water_knots == decimal(5, 2));
+  CHECK(r.value.stern_transverse_water_knots == decimal::scaled(5, 2));
   CHECK(r.value.stern_water_status == vbw_status::valid);
-  CHECK(r.value.stern_transverse_ground_knots == decimal(4, 2));
+  CHECK(r.value.stern_transverse_ground_knots == decimal::scaled(4, 2));
   CHECK(r.value.stern_ground_status == vbw_status::valid);
   CHECK(nmea::encode(r.value).view() == "$VDVBW,4.91,-0.12,A,5.02,0.08,A,0.05,A,0.04,A*7D\r\n");
 
   // One stern value set: the NMEA 3.0 form, the other stern fields blank.
   vbw m;
-  m.stern_transverse_water_knots = decimal(-3, 1);
+  m.stern_transverse_water_knots = decimal::scaled(-3, 1);
   CHECK(nmea::encode(m).view() == line("VWVBW,,,,,,,-0.3,,,"));
 }
 
 TEST_CASE("VBW: water speed only, ground blank and invalid", "[vbw]") {
   const auto r = nmea::decode<vbw>("$VWVBW,2.3,,A,,,V*7A\r\n");
   REQUIRE(r.ec == errc::ok);
-  CHECK(r.value.longitudinal_water_knots == decimal(23, 1));
+  CHECK(r.value.longitudinal_water_knots == decimal::scaled(23, 1));
   CHECK_FALSE(r.value.transverse_water_knots.has_value());
   CHECK(r.value.water_status == vbw_status::valid);
   CHECK_FALSE(r.value.longitudinal_ground_knots.has_value());
@@ -571,7 +571,7 @@ TEST_CASE("VBW: any talker, kept on re-encode", "[vbw]") {
     INFO(text);
     REQUIRE(r.ec == errc::ok);
     CHECK(r.value.talker == t);
-    CHECK(r.value.transverse_ground_knots == decimal(-1, 1));
+    CHECK(r.value.transverse_ground_knots == decimal::scaled(-1, 1));
     CHECK(nmea::encode(r.value).view() == text);
   }
 }
@@ -621,12 +621,12 @@ TEST_CASE("VWR: apparent wind on the port bow", "[vwr]") {
   const auto r = nmea::decode<vwr>("$WIVWR,45.0,L,12.6,N,6.5,M,23.3,K*7C\r\n");
   REQUIRE(r.ec == errc::ok);
   CHECK(r.value.talker == "WI");
-  CHECK(r.value.angle_deg == decimal(450, 1));
+  CHECK(r.value.angle_deg == decimal::scaled(450, 1));
   CHECK(r.value.side == bow_side::left);
   CHECK(r.value.signed_angle_deg() == -45.0);
-  CHECK(r.value.speed_knots == decimal(126, 1));
-  CHECK(r.value.speed_mps == decimal(65, 1));
-  CHECK(r.value.speed_kmh == decimal(233, 1));
+  CHECK(r.value.speed_knots == decimal::scaled(126, 1));
+  CHECK(r.value.speed_mps == decimal::scaled(65, 1));
+  CHECK(r.value.speed_kmh == decimal::scaled(233, 1));
 }
 
 TEST_CASE("VWR: only m/s filled, wind from starboard", "[vwr]") {
@@ -636,7 +636,7 @@ TEST_CASE("VWR: only m/s filled, wind from starboard", "[vwr]") {
   CHECK(r.value.side == bow_side::right);
   CHECK(r.value.signed_angle_deg() == 120.5);
   CHECK_FALSE(r.value.speed_knots.has_value());
-  CHECK(r.value.speed_mps == decimal(82, 1));
+  CHECK(r.value.speed_mps == decimal::scaled(82, 1));
   CHECK_FALSE(r.value.speed_kmh.has_value());
   CHECK(nmea::encode(r.value).view() == text);
 }

@@ -48,8 +48,8 @@ TEST_CASE("RMC from a real receiver") {
   CHECK(m.lat->degrees() == Approx(42.0 + 21.71114 / 60.0).epsilon(1e-12));
   REQUIRE(m.lon);
   CHECK(m.lon->degrees() == Approx(-(71.0 + 5.44878 / 60.0)).epsilon(1e-12));
-  CHECK(*m.speed_knots == decimal(145, 3));
-  CHECK(*m.course_true == decimal(15678, 2));
+  CHECK(*m.speed_knots == decimal::scaled(145, 3));
+  CHECK(*m.course_true == decimal::scaled(15678, 2));
   CHECK((m.date->day == 31 && m.date->month == 12 && m.date->year == 2014));
   CHECK_FALSE(m.magnetic_variation);
   CHECK(m.mode == standard::mode_indicator::autonomous);
@@ -122,9 +122,9 @@ TEST_CASE("GGA from a real receiver") {
   CHECK(m.talker == "GP");
   CHECK(m.quality == standard::gps_quality::gps);
   CHECK(*m.satellites == 6);
-  CHECK(*m.hdop == decimal(280, 2));
-  CHECK(*m.altitude_m == decimal(466, 1));
-  CHECK(*m.geoid_separation_m == decimal(-332, 1));
+  CHECK(*m.hdop == decimal::scaled(280, 2));
+  CHECK(*m.altitude_m == decimal::scaled(466, 1));
+  CHECK(*m.geoid_separation_m == decimal::scaled(-332, 1));
   CHECK_FALSE(m.dgps_age_s);
   CHECK_FALSE(m.dgps_station);
   CHECK(m.lat->degrees() == Approx(42.3618523333));
@@ -135,7 +135,7 @@ TEST_CASE("GGA from a real receiver") {
   const auto d = decode<gga>(dgps);
   REQUIRE(d);
   CHECK(d.value.quality == standard::gps_quality::dgps);
-  CHECK(*d.value.dgps_age_s == decimal(12, 1));
+  CHECK(*d.value.dgps_age_s == decimal::scaled(12, 1));
   CHECK(*d.value.dgps_station == 42);
   CHECK(encode(d.value).view() == dgps);
 

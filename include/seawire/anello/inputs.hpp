@@ -138,7 +138,7 @@ template <class T>
   if (w < 0) w += 360.0;
   if (!put_decimal(out, w, places, field, r)) return false;
   // 359.96 rounded to one place is 360.0, which is north: write it as 0.
-  if (out->compare(nmea::decimal(360)) >= 0) out = nmea::decimal(0, out->places);
+  if (out->compare(nmea::decimal(360)) >= 0) out = nmea::decimal::scaled(0, out->places);
   return true;
 }
 

@@ -40,6 +40,13 @@ namespace detail {
 }
 }  // namespace detail
 
+namespace detail {
+/// Whether any of the arguments is floating-point: the value types below refuse such a call
+/// rather than cut 42.5 degrees or 12.5 hours to an integer.
+template <class... A>
+concept any_floating = (std::floating_point<std::remove_cvref_t<A>> || ...);
+}  // namespace detail
+
 /// A decimal number exactly as written: digits, number of fraction digits, sign.
 /// "-0.0" keeps its sign and "4.50" its trailing zero. Equality compares the written form;
 /// `compare()` compares values. At most 19 significant digits and 19 fraction digits.
@@ -52,15 +59,42 @@ struct decimal {
   std::uint8_t int_width = 0;
 
   constexpr decimal() noexcept = default;
-  /// An integer value: decimal{45} is "45".
-  // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
-  constexpr decimal(std::int64_t integer) noexcept
+  /// An integer value: `decimal{45}` is "45", and `msg.thrust = 45;` reads as it should.
+  template <std::integral I>
+  requires(!std::same_as<I, bool>)
+      // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
+      constexpr decimal(I integer) noexcept
       : mantissa(integer < 0 ? 0 - static_cast<std::uint64_t>(integer)
                              : static_cast<std::uint64_t>(integer)),
         negative(integer < 0) {}
-  /// `scaled` / 10^places: decimal{450, 2} is "4.50".
-  constexpr decimal(std::int64_t scaled, std::uint8_t fraction_digits) noexcept : decimal(scaled) {
-    places = fraction_digits;
+  /// A floating-point value is never taken silently: 1.5 would have to be cut to some number of
+  /// places, and a speed or depth command cut to an integer is a different command. Say how many
+  /// places: decimal::from_double(1.5, 1), decimal::parse("1.5"), or the literal 1.5_dec.
+  template <std::floating_point F>
+  decimal(F) = delete;  // use decimal::from_double(v, places), decimal::parse("1.5") or 1.5_dec
+
+  /// `mantissa` / 10^places: decimal::scaled(450, 2) is "4.50". Both are integers (a double
+  /// does not compile); places above 19 is refused when the value is written (value_too_large).
+  template <std::integral I, std::integral P>
+  requires(!std::same_as<I, bool> && !std::same_as<P, bool>) [[nodiscard]] static constexpr decimal
+      scaled(I mantissa, P places) noexcept {
+    decimal d(mantissa);
+    d.places = places < 0 || places > 255 ? std::uint8_t{255} : static_cast<std::uint8_t>(places);
+    return d;
+  }
+  template <class I, class P>
+  requires(std::floating_point<I> || std::floating_point<P>) static decimal
+      scaled(I, P) = delete;  // integers only: use decimal::from_double(v, places)
+
+  /// The number written in `text`: [-] digits [. digits], as a sender writes it (no '+', no
+  /// spaces, no exponent), at most 19 digits. bad_number or number_too_long otherwise.
+  [[nodiscard]] static constexpr result<decimal> parse(std::string_view text) noexcept;
+
+  /// The same number with the other sign ("-1.5" from 1.5_dec).
+  [[nodiscard]] constexpr decimal operator-() const noexcept {
+    decimal d = *this;
+    d.negative = !negative;
+    return d;
   }
 
   /// The value rounded to `places` fraction digits; refuses NaN/inf and what 19 digits cannot
@@ -285,6 +319,34 @@ constexpr void write_decimal(writer& w, const decimal& d) noexcept {
   w.put_fixed(d.mantissa, d.places, d.int_width);
 }
 
+}  // namespace detail
+
+constexpr result<decimal> decimal::parse(std::string_view text) noexcept {
+  result<decimal> r;
+  r.ec = detail::parse_decimal(text, false, r.value);
+  if (!r) r.value = decimal{};
+  return r;
+}
+
+namespace detail {
+// Not constexpr: a literal that reaches it does not compile, and the error names it.
+inline void literal_is_not_a_decimal_with_at_most_19_digits() noexcept {}
+}  // namespace detail
+
+namespace literals {
+/// `1.5_dec` is decimal::parse("1.5"): the digits as written, checked when compiled. Only plain
+/// decimal literals ("1.50", "45"); an exponent, hex or digit separators do not compile.
+template <char... Chars>
+consteval decimal operator""_dec() {
+  constexpr char text[] = {Chars...};
+  const result<decimal> r = decimal::parse(std::string_view(text, sizeof...(Chars)));
+  if (!r) detail::literal_is_not_a_decimal_with_at_most_19_digits();
+  return r.value;
+}
+}  // namespace literals
+
+namespace detail {
+
 /// Parse an unsigned run of digits of exactly `len` characters at s[pos].
 [[nodiscard]] constexpr bool parse_fixed_digits(std::string_view s, std::size_t pos,
                                                 std::size_t len, unsigned& out) noexcept {
@@ -344,6 +406,17 @@ struct nmea_coordinate {
   decimal minutes;  ///< 0 <= minutes < 60, never negative
   hemisphere hemi = static_cast<hemisphere>(Axis::positive);
   std::uint8_t degree_digits = Axis::width;  ///< digits the degrees were written with
+
+  constexpr nmea_coordinate() noexcept = default;
+  /// `latitude{42, 21.71114_dec, hemisphere::north}`: the parts as written.
+  constexpr nmea_coordinate(std::uint16_t whole, decimal mins,
+                            hemisphere h = static_cast<hemisphere>(Axis::positive),
+                            std::uint8_t digits = Axis::width) noexcept
+      : whole_degrees(whole), minutes(mins), hemi(h), degree_digits(digits) {}
+  /// Degrees as a double would be cut to whole degrees: use from_degrees(deg, minute_places).
+  template <class... A>
+  requires detail::any_floating<A...>
+  explicit nmea_coordinate(A...) = delete;  // use latitude::from_degrees(deg, minute_places)
 
   /// Signed decimal degrees; the sign comes from the hemisphere letter only (so 0.0 S is -0.0).
   [[nodiscard]] constexpr double degrees() const noexcept {
@@ -462,6 +535,16 @@ struct time_of_day {
   std::uint32_t fraction = 0;  ///< the fraction digits as an integer: ".980" -> 980
   std::uint8_t places = 0;     ///< number of fraction digits: ".980" -> 3
 
+  constexpr time_of_day() noexcept = default;
+  /// `time_of_day{16, 49, 59, 980, 3}` is 16:49:59.980.
+  constexpr time_of_day(std::uint8_t h, std::uint8_t m, std::uint8_t s, std::uint32_t frac = 0,
+                        std::uint8_t frac_places = 0) noexcept
+      : hour(h), minute(m), second(s), fraction(frac), places(frac_places) {}
+  /// Seconds as a double would lose their fraction: use from_since_midnight() or the parts.
+  template <class... A>
+  requires detail::any_floating<A...>
+  explicit time_of_day(A...) = delete;  // use time_of_day::from_since_midnight(duration, places)
+
   [[nodiscard]] constexpr std::chrono::nanoseconds since_midnight() const noexcept {
     using namespace std::chrono;
     return hours(hour) + minutes(minute) + seconds(second) +
@@ -499,6 +582,14 @@ struct date {
   std::uint16_t year = 2000;
   std::uint8_t month = 1;
   std::uint8_t day = 1;
+
+  constexpr date() noexcept = default;
+  /// `date{2014, 12, 31}`.
+  constexpr date(std::uint16_t y, std::uint8_t m, std::uint8_t d) noexcept
+      : year(y), month(m), day(d) {}
+  template <class... A>
+  requires detail::any_floating<A...>
+  explicit date(A...) = delete;  // a date is whole numbers: date{year, month, day} or date::from()
 
   [[nodiscard]] constexpr std::chrono::year_month_day ymd() const noexcept {
     return std::chrono::year_month_day{std::chrono::year{year}, std::chrono::month{month},
