@@ -194,7 +194,7 @@ class generator {
     m.speed_knots = dec(v_.speed_knots(), 3);
     m.course_true = dec(v_.course_deg, 2);
     m.date = date_of(v_);
-    if (g_.chance(0.5)) m.magnetic_variation = decimal_lon(-14.2 + g_.uniform(-0.05, 0.05), 1);
+    if (g_.chance(0.5)) m.magnetic_variation = variation(-14.2 + g_.uniform(-0.05, 0.05), 1);
     m.mode = g_.chance(0.9) ? standard::mode_indicator::autonomous
                             : standard::mode_indicator::differential;
     return m;
@@ -500,6 +500,9 @@ class generator {
   }
 
  private:
+  nmea::magnetic_variation variation(double deg, unsigned places) noexcept {
+    return must(nmea::magnetic_variation::from_degrees(deg, places), "magnetic variation");
+  }
   nmea::decimal_longitude decimal_lon(double deg, unsigned places) noexcept {
     return must(nmea::decimal_longitude::from_degrees(deg, places), "decimal longitude");
   }

@@ -46,6 +46,7 @@
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/variation.hpp"
 #include "seawire/nmea/writer.hpp"
 
 namespace seawire::fuzz {
@@ -258,6 +259,18 @@ void fill(byte_source& src, nmea::decimal_coordinate<Axis>& c) {
   c.hemi = static_cast<nmea::hemisphere>(letters[src.below(letters.size())]);
 }
 
+inline void fill(byte_source& src, nmea::magnetic_variation& v) {
+  if (src.coin()) {
+    v.value.reset();
+  } else {
+    nmea::decimal d;
+    fill(src, d);
+    v.value = d;
+  }
+  constexpr std::string_view letters = "EWNX";
+  v.direction = static_cast<nmea::hemisphere>(letters[src.below(letters.size())]);
+}
+
 inline void fill(byte_source& src, nmea::time_of_day& t) {
   t.hour = static_cast<std::uint8_t>(src.below(26));
   t.minute = static_cast<std::uint8_t>(src.below(62));
@@ -362,12 +375,20 @@ constexpr std::size_t wire_width() {
 
 /// The policies every decoder target tries besides its roles' own: the most liberal one (any
 /// checksum, anything else the defaults take) and the strict one (what seawire sends).
-inline constexpr nmea::parse_policy liberal_policy{
-    nmea::checksum_policy::ignore, true, true, false, false, 1024, true};
+inline constexpr nmea::parse_policy liberal_policy = [] {
+  nmea::parse_policy p;
+  p.checksum = nmea::checksum_policy::ignore;
+  p.spaced_numbers = true;
+  p.empty_checksum = true;
+  return p;
+}();
 inline constexpr nmea::parse_policy strict_policy = nmea::parse_policy::strict();
 
 inline bool sentence_level(errc e) { return e >= errc::empty_input && e <= errc::too_long; }
-inline bool field_level(errc e) { return e >= errc::too_few_fields && e <= errc::bad_length; }
+inline bool field_level(errc e) {
+  return (e >= errc::too_few_fields && e <= errc::bad_length) || e == errc::bad_variation ||
+         e == errc::bad_variation_direction || e == errc::variation_out_of_range;
+}
 
 /// Property 5 for an encoded sentence of message M.
 template <class Set, nmea::message_like M>

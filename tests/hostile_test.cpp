@@ -369,9 +369,13 @@ TEST_CASE("a checksum of one digit or three, or not hex") {
       CHECK(decode_with(set, lower, liberal).ok());
       CHECK(decode_with(set, lower + "\r\n", strict).ec == errc::bad_checksum_format);
     }
-    // A '*' and nothing after it: no checksum, which only policies that require one refuse.
-    CHECK(decode_with(set, data + "*", liberal).ok());
-    CHECK(decode_with(set, data + "*\r\n", strict).ec == errc::missing_checksum);
+    // A '*' and nothing after it: a checksum cut off, whatever the policy; only a link that
+    // declares it (empty_checksum) reads it as no checksum.
+    CHECK(decode_with(set, data + "*", liberal).ec == errc::bad_checksum_format);
+    CHECK(decode_with(set, data + "*\r\n", strict).ec == errc::bad_checksum_format);
+    parse_policy bare = liberal;
+    bare.empty_checksum = true;
+    CHECK(decode_with(set, data + "*", bare).ok());
   });
 }
 
@@ -389,7 +393,7 @@ struct blank_row {
 };
 constexpr std::array blank_rows = {
     blank_row{"GPRMC", errc::missing_field, 2},
-    blank_row{"GPGGA", errc::missing_field, 6},
+    blank_row{"GPGGA", errc::ok, 0},  // a blank fix quality reads as not available
     blank_row{"IIRPM", errc::missing_field, 1},
     blank_row{"IIRSA", errc::ok, 0},
     blank_row{"VWVHW", errc::ok, 0},

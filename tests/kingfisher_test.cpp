@@ -449,8 +449,9 @@ TEST_CASE("payload role: CP* and GPS sentences known, anything else unknown, che
   SECTION("a CP* line without its checksum is refused") {
     CHECK(kf::decode_from_vehicle("$CPRBS,172909.322,15.121597,15.121597,15.121597,0\r\n").ec ==
           errc::missing_checksum);
+    // '*' then the line end: a checksum cut off, not "no checksum", on the vehicle's link.
     CHECK(kf::decode_from_vehicle("$CPRBS,172909.322,15.121597,15.121597,15.121597,0*\r\n").ec ==
-          errc::missing_checksum);
+          errc::bad_checksum_format);
   }
   SECTION("a wrong checksum is refused") {
     CHECK(

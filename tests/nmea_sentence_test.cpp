@@ -102,14 +102,39 @@ TEST_CASE("checksum policies") {
       CHECK(r.value.field_count == 12);
     }
   }
-  SECTION("missing checksum: '*' with nothing after it, or no '*' at all") {
-    for (std::string_view line : {"$PYDIR,12.5,-3*\r\n", "$PYDIR,12.5,-3\r\n"}) {
-      CHECK(parse(line, required).ec == errc::missing_checksum);
-      const auto r = parse(line, verify);
-      REQUIRE(r);
-      CHECK(r.value.checksum == checksum_state::absent);
-      CHECK(r.value.field_count == 2);
+  SECTION("missing checksum: no '*' at all") {
+    const std::string_view line = "$PYDIR,12.5,-3\r\n";
+    CHECK(parse(line, required).ec == errc::missing_checksum);
+    const auto r = parse(line, verify);
+    REQUIRE(r);
+    CHECK(r.value.checksum == checksum_state::absent);
+    CHECK(r.value.field_count == 2);
+  }
+  SECTION("'*' with nothing after it is a checksum cut off, under every checksum policy") {
+    for (const std::string_view line :
+         {"$PYDIR,12.5,-3*\r\n", "$PYDIR,12.5,-3*", "$GPRMC,,V,*\n"}) {
+      INFO(line);
+      for (const checksum_policy c : {checksum_policy::required, checksum_policy::verify_if_present,
+                                      checksum_policy::ignore}) {
+        parse_policy p;
+        p.checksum = c;
+        const auto r = parse(line, p);
+        CHECK(r.ec == errc::bad_checksum_format);
+        CHECK(r.column == line.find('*') + 1);
+      }
     }
+  }
+  SECTION("where a link allows it, '*' then the line end is no checksum") {
+    parse_policy bare = verify;
+    bare.empty_checksum = true;
+    const auto r = parse("$PYDIR,12.5,-3*\r\n", bare);
+    REQUIRE(r);
+    CHECK(r.value.checksum == checksum_state::absent);
+    CHECK(r.value.field_count == 2);
+    CHECK(r.value.body == "12.5,-3");
+    bare.checksum = checksum_policy::required;
+    CHECK(parse("$PYDIR,12.5,-3*\r\n", bare).ec == errc::missing_checksum);
+    CHECK(parse("$PYDIR,12.5,-3*1\r\n", bare).ec == errc::bad_checksum_format);
   }
   SECTION("lower-case hex is accepted unless refused") {
     CHECK(parse("$BPLOG,ACK,ON*1e", required));

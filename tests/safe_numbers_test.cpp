@@ -44,6 +44,7 @@ static_assert(refuses_floating<nmea::decimal_latitude>());
 static_assert(refuses_floating<nmea::decimal_longitude>());
 static_assert(refuses_floating<nmea::time_of_day>());
 static_assert(refuses_floating<nmea::date>());
+static_assert(refuses_floating<nmea::magnetic_variation>());
 
 // Integers stay implicit where that reads well; bool is not a number.
 static_assert(made_from<decimal, int> && assignable_from<decimal, int>);
@@ -89,6 +90,7 @@ static_assert(member_refuses_floating<&standard::gga::altitude_m>());
 static_assert(member_refuses_floating<&standard::vhw::speed_knots>());
 static_assert(!member_takes<&standard::rmc::lat, double>);
 static_assert(!member_takes<&standard::rmc::time, double>);
+static_assert(!member_takes<&standard::rmc::magnetic_variation, double>);
 static_assert(!member_takes<&robotx::rxhrb::lat, double>);
 
 // The ways that say how many places.

@@ -78,13 +78,13 @@ TEST_CASE("RMC in the forms of NMEA 2.2, 2.3 and 4.1, from any talker") {
   const auto v22 = decode<rmc>(forms[0]).value;
   CHECK(v22.talker == "GP");
   CHECK_FALSE(v22.mode);
-  CHECK(v22.magnetic_variation->degrees() == Approx(11.3));
+  CHECK(*v22.magnetic_variation->degrees() == Approx(11.3));
   CHECK(v22.lat->degrees() == Approx(-(37 + 51.65 / 60)));
   CHECK((v22.date->year == 1998 && v22.date->month == 9 && v22.date->day == 13));
 
   const auto v41 = decode<rmc>(forms[3]).value;
   CHECK(v41.talker == "GN");
-  CHECK(v41.magnetic_variation->degrees() == Approx(-3.1));
+  CHECK(*v41.magnetic_variation->degrees() == Approx(-3.1));
   CHECK(v41.mode == standard::mode_indicator::differential);
   CHECK(v41.navigational_status == standard::nav_status::safe);
 
@@ -175,7 +175,11 @@ TEST_CASE("RMC and GGA malformed input: errc and field number") {
       {"GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,321214,,,A",
        errc::day_out_of_range, 9},
       {"GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,3.1,N,A",
-       errc::bad_hemisphere, 11},
+       errc::bad_variation_direction, 11},
+      {"GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,-3.1,E,A",
+       errc::bad_variation, 10},
+      {"GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,3..1,E,A",
+       errc::bad_variation, 10},
       {"GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,Z", errc::bad_enum, 12},
       {"GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A,X", errc::bad_enum,
        13},
@@ -227,7 +231,7 @@ TEST_CASE("RMC/GGA round trip over generated values") {
                         static_cast<std::uint8_t>(1 + rng() % 12),
                         static_cast<std::uint8_t>(1 + rng() % 28)};
     if (i % 4 == 0)
-      r.magnetic_variation = decimal_longitude::from_degrees(uniform(-30, 30), 1).value;
+      r.magnetic_variation = nmea::magnetic_variation::from_degrees(uniform(-30, 30), 1).value;
     if (i % 5 != 0) r.mode = standard::mode_indicator::differential;
     if (i % 5 > 2) r.navigational_status = standard::nav_status::caution;
     const auto e = encode(r);

@@ -56,6 +56,10 @@ enum class errc : std::uint8_t {
   bad_frame_id,  ///< a binary frame whose identifier is not the expected one
   crc_mismatch,  ///< a binary frame whose CRC does not match its payload
   truncated,     ///< input ends before the frame or message does
+  // -- added later (values are stable, so new ones go last) --
+  bad_variation,            ///< magnetic variation not an unsigned number of degrees
+  bad_variation_direction,  ///< magnetic variation letter other than E or W
+  variation_out_of_range,  ///< magnetic variation to send beyond 0..180 degrees
 };
 
 /// The identifier of an errc as text ("checksum_mismatch"), for logs and JSON.
@@ -101,6 +105,9 @@ enum class errc : std::uint8_t {
     case errc::bad_frame_id: return "bad_frame_id";
     case errc::crc_mismatch: return "crc_mismatch";
     case errc::truncated: return "truncated";
+    case errc::bad_variation: return "bad_variation";
+    case errc::bad_variation_direction: return "bad_variation_direction";
+    case errc::variation_out_of_range: return "variation_out_of_range";
   }
   return "unknown_error";
 }
@@ -148,6 +155,9 @@ enum class errc : std::uint8_t {
     case errc::bad_frame_id: return "frame identifier is not the expected one";
     case errc::crc_mismatch: return "CRC does not match the payload";
     case errc::truncated: return "input ends before the message does";
+    case errc::bad_variation: return "magnetic variation is not an unsigned number of degrees";
+    case errc::bad_variation_direction: return "magnetic variation letter is not E or W";
+    case errc::variation_out_of_range: return "magnetic variation beyond 0..180 degrees";
   }
   return "unknown error";
 }

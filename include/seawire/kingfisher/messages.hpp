@@ -317,10 +317,12 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
 }
 
 /// How a vehicle reads payloads: "sentences sent TO the vehicle may or may not include a
-/// checksum"; one that is present must match.
+/// checksum"; one that is present must match. Without one, "the carriage return and linefeed
+/// must immediately follow the * character", so a bare '*' is read as no checksum.
 [[nodiscard]] constexpr nmea::parse_policy vehicle_policy() noexcept {
   nmea::parse_policy p;
   p.checksum = nmea::checksum_policy::verify_if_present;
+  p.empty_checksum = true;
   return p;
 }
 

@@ -50,6 +50,7 @@
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/variation.hpp"
 #include "seawire/nmea/writer.hpp"
 
 namespace seawire::nmea {
@@ -403,6 +404,16 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
   } else if constexpr (detail::is_nmea_coordinate<T>::value ||
                        detail::is_decimal_coordinate<T>::value) {
     detail::json_decimal(s, to_decimal_degrees(v));
+  } else if constexpr (std::is_same_v<T, magnetic_variation>) {
+    // Signed degrees with the wire's digits, west negative; null for a letter without a value.
+    if (!v.value) {
+      s.put("null");
+      return;
+    }
+    decimal d = *v.value;
+    d.int_width = 0;
+    d.negative = v.direction == hemisphere::west;
+    detail::json_decimal(s, d);
   } else if constexpr (std::is_same_v<T, time_of_day>) {
     if constexpr (Style == json_style::json) s.put('"');
     detail::json_uint(s, v.hour, 2);
@@ -590,6 +601,14 @@ template <class T>
     const result<T> c = from_decimal_degrees<T>(d, precision);
     if (c) out = c.value;
     return c.ec;
+  } else if constexpr (std::is_same_v<T, magnetic_variation>) {
+    decimal d;
+    const errc e = detail::json_number(v, d);
+    if (e != errc::ok) return e == errc::bad_number ? errc::bad_variation : e;
+    out.direction = d.negative ? hemisphere::west : hemisphere::east;
+    d.negative = false;
+    out.value = d;
+    return errc::ok;
   } else if constexpr (std::is_same_v<T, time_of_day>) {
     if (v.kind != json_kind::string && v.kind != json_kind::number) return errc::bad_time;
     const result<time_of_day> t = parse_time_text(v.text);

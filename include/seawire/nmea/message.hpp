@@ -384,7 +384,11 @@ template <class F, class T>
     }
     // Blank means "no value", except for text, where blank is the empty string and only a
     // field that is not there at all is nullopt.
-    if (!t.present || (t.blank() && !codec<V>::allows_blank)) {
+    bool nothing = !t.present || (t.blank() && !codec<V>::allows_blank);
+    if constexpr (requires(const field_reader& probe) { codec<V>::is_nothing(probe); }) {
+      nothing = nothing || codec<V>::is_nothing(r);  // a codec that reads blanks says when not
+    }
+    if (nothing) {
       // Blank where it could have been left out: the form to write back is the sentence's
       // (unless a trailing value further on needs it anyway, which resets it below).
       if constexpr (keeps_wire_fields<T>) {
@@ -533,7 +537,10 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
   if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
     (void)msg.talker.assign(s.address.substr(0, 2));
   }
-  field_reader r(s, policy);
+  // Absent fields read as blank only where a checksum vouches for where the sentence ends.
+  parse_policy p = policy;
+  p.absent_as_blank = policy.absent_as_blank && s.checksum == checksum_state::valid;
+  field_reader r(s, p);
   errc e = read_fields(
       r, msg, std::make_index_sequence<std::remove_cvref_t<decltype(T::nmea.fields)>::size>{});
   if (e == errc::ok && !r.at_end() && !policy.extra_fields) {
@@ -620,7 +627,8 @@ template <class F, class T>
     errc e = codec<V>::check(*v);
     if (e == errc::ok) e = check_options(*v, o);
     if (e != errc::ok) return e;
-  } else if (codec<V>::allows_blank) {
+  } else if (codec<V>::allows_blank &&
+             !requires(const field_reader& probe) { codec<V>::is_nothing(probe); }) {
     // A blank field reads back as nullopt, except text: there blank is the empty string, and
     // only a field left out is nullopt. One that a later field keeps from being left out cannot
     // be written as nullopt at all.

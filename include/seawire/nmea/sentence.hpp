@@ -41,11 +41,18 @@ struct parse_policy {
   /// non-whitespace character" of a number, so the Sandshark roles take them. Off by default:
   /// NMEA 0183 has none. strict_values refuses them whatever this says.
   bool spaced_numbers = false;
-  /// A sentence that stops before optional fields reads them as blank (the liberal default:
-  /// senders drop trailing empty fields). Off: only fields declared droppable (may_be_absent,
-  /// only_with_field_count) may be missing, anything else is too_few_fields, for links whose
-  /// senders always write every field (Kingfisher's vehicle). strict_values implies off.
+  /// A sentence that stops before optional fields reads them as blank, if its checksum is there
+  /// and right (the liberal default: senders drop trailing empty fields). Without a checksum
+  /// nothing says the sender meant to stop there (a line cut off mid-write, as a log's last line
+  /// often is), so such a sentence must reach its message's shortest form (too_few_fields, naming
+  /// the first missing field). Off: only fields declared droppable (may_be_absent,
+  /// only_with_field_count) may be missing, whatever the checksum, for links whose senders always
+  /// write every field (Kingfisher's vehicle). strict_values implies off.
   bool absent_as_blank = true;
+  /// A '*' with nothing after it reads as "no checksum". Off by default: it is a checksum cut
+  /// off (bad_checksum_format, under every checksum_policy). Kingfisher's commands to the vehicle
+  /// may end "*" CR LF when they carry no checksum, so kingfisher::vehicle_policy() turns it on.
+  bool empty_checksum = false;
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.
   [[nodiscard]] static constexpr parse_policy strict() noexcept {
@@ -54,7 +61,7 @@ struct parse_policy {
 };
 
 enum class checksum_state : std::uint8_t {
-  absent,    ///< no '*', or '*' with nothing after it
+  absent,    ///< no '*' (or '*' with nothing after it, where parse_policy::empty_checksum allows)
   valid,     ///< present and matching
   mismatch,  ///< present and wrong (only returned under checksum_policy::ignore)
 };
@@ -293,6 +300,8 @@ namespace detail {
   // Checksum.
   if (star != 0) {
     const std::size_t digits = n - star - 1;
+    if (digits == 0 && !policy.empty_checksum) [[unlikely]]
+      return fail(errc::bad_checksum_format, star + 1);
     if (digits != 0) {
       if (digits != 2) [[unlikely]]
         return fail(errc::bad_checksum_format, star + 1);

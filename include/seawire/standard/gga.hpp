@@ -36,7 +36,7 @@ struct gga {
   std::optional<time_of_day> time;             // 1  UTC time of the fix
   std::optional<latitude> lat;                 // 2,3
   std::optional<longitude> lon;                // 4,5
-  gps_quality quality = gps_quality::invalid;  // 6
+  std::optional<gps_quality> quality;          // 6  blank: not available (the fix is kept)
   std::optional<std::uint8_t> satellites;      // 7  in use, written with two digits
   std::optional<decimal> hdop;                 // 8  horizontal dilution of precision
   std::optional<decimal> altitude_m;           // 9,10  antenna altitude above MSL, metres

@@ -8,7 +8,8 @@
 // 11 fields in NMEA 0183 before 2.3; 2.3 adds the mode indicator (12), 4.1 the navigational
 // status (13). All three forms are accepted and each is written back in the form it came in.
 // Receivers without a fix send the sentence with blank fields; every field but the status may
-// be blank.
+// be blank. A magnetic variation no variation can have (999.9,E from receivers that mean
+// "unknown") reads as not available and does not cost the fix (see nmea/variation.hpp).
 
 #include <array>
 #include <cstdint>
@@ -17,6 +18,7 @@
 
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
+#include "seawire/nmea/variation.hpp"
 
 namespace seawire::standard {
 
@@ -53,7 +55,7 @@ struct rmc {
   std::optional<decimal> speed_knots;                       // 7  speed over ground, knots
   std::optional<decimal> course_true;                       // 8  track made good, degrees true
   std::optional<nmea::date> date;                           // 9  ddmmyy
-  std::optional<decimal_longitude> magnetic_variation;      // 10,11 degrees, E/W (W is negative)
+  std::optional<nmea::magnetic_variation> magnetic_variation;  // 10,11 degrees, E/W
   std::optional<mode_indicator> mode;                       // 12 NMEA 2.3+
   std::optional<standard::nav_status> navigational_status;  // 13 NMEA 4.1+
   std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 12-13 came
