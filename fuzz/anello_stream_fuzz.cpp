@@ -5,7 +5,8 @@
 // Properties:
 //  - every chunking yields the same items (kind, offset, text, ending, line, bytes) and stats;
 //  - items come in stream order without overlapping, and each is the stream's own bytes at its
-//    offset: a sentence is '$' + printable ASCII within the capacity, a frame is 56 bytes that
+//    offset: a sentence is '$' or '!' + printable ASCII without '$' within the capacity, a
+//    frame is 56 bytes that
 //    decode_frame accepts and decodes to the item's frame;
 //  - every byte fed is accounted for (the rule in stream.hpp's comment);
 //  - with report_drops(true): the same items with drop reports between them, in stream order,
@@ -145,8 +146,8 @@ void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too)
       next_free = i.offset + anello::frame_size;
       ++frames;
     } else {
-      SEAWIRE_FUZZ_CHECK(!i.text.empty() && i.text[0] == '$' && i.text.size() <= Capacity &&
-                             i.text.find('$', 1) == std::string::npos,
+      SEAWIRE_FUZZ_CHECK(!i.text.empty() && (i.text[0] == '$' || i.text[0] == '!') &&
+                             i.text.size() <= Capacity && i.text.find('$', 1) == std::string::npos,
                          i.text);
       for (const char c : i.text) SEAWIRE_FUZZ_CHECK(c >= 0x20 && c <= 0x7E, i.text);
       SEAWIRE_FUZZ_CHECK(stream.substr(i.offset, i.text.size()) == i.text,

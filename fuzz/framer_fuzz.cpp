@@ -4,7 +4,8 @@
 // empty ones), at a small capacity (so overlong lines are common) and the default one.
 // Properties:
 //  - every chunking yields exactly the model's lines (text, ending, line number) and stats;
-//  - every yielded line starts with its only '$', is printable ASCII and fits the capacity;
+//  - every yielded line starts with '$' or '!' and holds no other '$', is printable ASCII and
+//    fits the capacity ('!' starts a sentence only between sentences: inside one it is text);
 //  - every byte fed is accounted for: text + noise + dropped + CR/LF bytes = bytes fed;
 //  - valid data after hostile data still comes out: a good sentence appended after a line
 //    break is the last line yielded, whatever came before it.
@@ -62,8 +63,8 @@ class model {
     const auto u = static_cast<unsigned char>(c);
     switch (state_) {
       case state::idle:
-        if (c == '$') {
-          start();
+        if (c == '$' || c == '!') {
+          start(c);
         } else if (c == '\r' || c == '\n') {
           line_break(c);
         } else {
@@ -71,10 +72,10 @@ class model {
         }
         break;
       case state::sentence:
-        if (c == '$') {
+        if (c == '$') {  // a '!' is text here, below
           ++out_.stats.interrupted;
           out_.stats.dropped_bytes += buf_.size();
-          start();
+          start(c);
         } else if (c == '\r') {
           held_ = true;
           pending_cr_ = true;
@@ -95,8 +96,8 @@ class model {
         }
         break;
       case state::discard:
-        if (c == '$') {
-          start();
+        if (c == '$') {  // a '!' is dropped here, below
+          start(c);
         } else if (c == '\r' || c == '\n') {
           state_ = state::idle;
           line_break(c);
@@ -121,8 +122,8 @@ class model {
  private:
   enum class state { idle, sentence, discard };
 
-  void start() {
-    buf_ = "$";
+  void start(char c) {
+    buf_ = std::string(1, c);
     state_ = state::sentence;
   }
   void line_break(char c) {
@@ -205,7 +206,9 @@ void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too)
 
   std::uint64_t text = 0;
   for (const owned_line& l : expected.lines) {
-    SEAWIRE_FUZZ_CHECK(!l.text.empty() && l.text[0] == '$' && l.text.size() <= Capacity, l.text);
+    SEAWIRE_FUZZ_CHECK(
+        !l.text.empty() && (l.text[0] == '$' || l.text[0] == '!') && l.text.size() <= Capacity,
+        l.text);
     SEAWIRE_FUZZ_CHECK(l.text.find('$', 1) == std::string::npos, l.text);
     for (const char c : l.text) SEAWIRE_FUZZ_CHECK(c >= 0x20 && c <= 0x7E, l.text);
     text += l.text.size();

@@ -6,7 +6,8 @@
 //
 // The properties, for a message set S (check_sentence_input):
 //  1. parse() of any line either fails with a sentence-level errc and no field number, or gives
-//     a sentence_view whose parts are the line's own bytes, re-joinable into the line.
+//     a sentence_view whose parts are the line's own bytes, re-joinable into the line (from its
+//     start, '$' or '!'). A '!' sentence is never a message: it decodes to unknown_sentence.
 //  2. A failed decode reports a column inside the line, and a field number exactly when the
 //     error is about a field (then a field the message has, or one past it for too_many_fields).
 //  3. Every policy accepts a subset of what the most liberal policy accepts, and decodes it to
@@ -116,14 +117,15 @@ class chunk_sizes {
 };
 
 /// The line with a checksum that matches, so a fuzzed sentence gets past the XOR check: the
-/// two characters after the first '*' become the XOR of the bytes between '$' and '*' (in
-/// lower case when the input used a lower-case letter there, to keep that path in play), or
-/// "*HH" is appended before the line ending when there is no '*'. A line that does not start
-/// with '$', or whose '*' is followed by other than two characters, is returned unchanged:
+/// two characters after the first '*' become the XOR of the bytes between the start ('$' or '!')
+/// and '*' (in lower case when the input used a lower-case letter there, to keep that path in
+/// play), or "*HH" is appended before the line ending when there is no '*'. A line that does not
+/// start with '$' or '!', or whose '*' is followed by other than two characters, is returned
+/// unchanged:
 /// those are the framing errors the raw input is there to test.
 inline std::string with_good_checksum(std::string_view line) {
   std::string out(line);
-  if (out.empty() || out[0] != '$') return out;
+  if (out.empty() || (out[0] != '$' && out[0] != '!')) return out;
   std::size_t n = out.size();
   if (n >= 2 && out[n - 2] == '\r' && out[n - 1] == '\n') {
     n -= 2;
@@ -442,10 +444,11 @@ void check_decoded(const M& m, const nmea::parse_policy& policy, std::string_vie
 
 /// Property 1: the parts of a parsed sentence are the line's bytes.
 inline void check_parsed(const nmea::sentence_view& s, std::string_view line) {
-  SEAWIRE_FUZZ_CHECK(!s.line.empty() && s.line[0] == '$' && line.substr(0, s.line.size()) == s.line,
+  SEAWIRE_FUZZ_CHECK(!s.line.empty() && (s.start == '$' || s.start == '!') &&
+                         s.line[0] == s.start && line.substr(0, s.line.size()) == s.line,
                      line);
   SEAWIRE_FUZZ_CHECK(s.line.substr(1, s.address.size()) == s.address, line);
-  std::string rebuilt = "$";
+  std::string rebuilt(1, s.start);
   rebuilt += s.address;
   if (s.field_count > 0 || !s.body.empty()) {
     rebuilt += ',';
@@ -531,8 +534,10 @@ void check_line(std::string_view line, std::initializer_list<nmea::parse_policy>
         [&](const auto& m) {
           using M = std::remove_cvref_t<decltype(m)>;
           if constexpr (std::is_same_v<M, nmea::unknown_sentence>) {
-            SEAWIRE_FUZZ_CHECK(!Set::knows(m.sentence.address), line);
+            // Unknown: an address no message has, or a '!' sentence (messages are '$' ones).
+            SEAWIRE_FUZZ_CHECK(m.sentence.start == '!' || !Set::knows(m.sentence.address), line);
           } else {
+            SEAWIRE_FUZZ_CHECK(line[0] == '$', "a '!' sentence decoded as a message", line);
             check_decoded<Set>(m, policy, line);
           }
         },

@@ -31,6 +31,7 @@ using namespace std::string_view_literals;
 
 constexpr std::string_view vbw_line = "$VMVBW,0.0,0.0,A,0.0,0.0,A*58"sv;
 constexpr std::string_view gpsctrl_line = "$PAPGPSCTRL,1*11"sv;
+constexpr std::string_view ais_line = "!AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0*10"sv;
 
 // Spec 002 section 2.2.1; also tests/data/anello_seed_frame.hex.
 constexpr std::string_view seed_hex =
@@ -227,7 +228,7 @@ std::size_t pick_max_chunk(prng& r) {
 
 // Bytes that matter to the reader come often, so random data exercises every rule.
 char interesting_byte(prng& r) {
-  static constexpr char specials[] = {'$', '\r', '\n', '\xAB', '\x00', '\x30', '*', ','};
+  static constexpr char specials[] = {'$', '!', '\r', '\n', '\xAB', '\x00', '\x30', '*', ','};
   if (r.chance(30)) return specials[r.below(sizeof specials)];
   return static_cast<char>(r.below(256));
 }
@@ -254,6 +255,10 @@ const std::string_view sample_lines[] = {
     "$IIRPM,S,1,1200.0,10.0,A*7B"sv,
     "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70"sv,
     "$"sv,
+    ais_line,
+    "!AIVDO,1*48"sv,
+    "!"sv,
+    "$BFMIS,1,Mission done!*2F"sv,
 };
 
 std::string_view pick_ending(prng& r) {
@@ -309,7 +314,7 @@ std::string random_stream(prng& r, std::size_t pieces) {
         break;
       }
       case 10: {  // an overlong line (for the small-capacity readers)
-        s += '$';
+        s += r.chance(30) ? '!' : '$';
         s.append(r.below(200), 'X');
         s += "\r\n";
         break;
@@ -366,7 +371,7 @@ outcome reference_read(std::string_view s, std::size_t capacity, bool drops = fa
         ++k.sentences;
         ++line;
         state = st::idle;
-      } else if (c == '$' || u == 0xAB) {
+      } else if (c == '$' || u == 0xAB) {  // not '!': that is text here
         ++k.interrupted;
         k.dropped_bytes += cur.size();
         report(drop_reason::interrupted, cur_offset, cur.size(), shown(cur_offset, cur.size()));
@@ -389,7 +394,7 @@ outcome reference_read(std::string_view s, std::size_t capacity, bool drops = fa
       }
       continue;
     }
-    if (state == st::discard) {
+    if (state == st::discard) {  // a '!' is dropped here: it starts nothing
       if (c == '$' || u == 0xAB || c == '\r' || c == '\n') {
         close();
         state = st::idle;
@@ -400,12 +405,12 @@ outcome reference_read(std::string_view s, std::size_t capacity, bool drops = fa
       }
       continue;
     }
-    // Between items: '$' and line breaks end a noise run; an AB ends it only as AB 00.
-    if (c == '$' || c == '\r' || c == '\n') close();
+    // Between items: '$', '!' and line breaks end a noise run; an AB ends it only as AB 00.
+    if (c == '$' || c == '!' || c == '\r' || c == '\n') close();
     if (u == 0xAB && i + 1 < s.size() && byte(i + 1) == 0x00) close();
-    if (c == '$') {
+    if (c == '$' || c == '!') {
       state = st::in;
-      cur = "$";
+      cur = std::string(1, c);
       cur_offset = i;
       prev_cr = false;
       ++i;
@@ -750,7 +755,10 @@ TEST_CASE("every single-bit flip of a frame drops it and the items after it come
     const std::size_t byte = bit / 8;
     CHECK(o.stats.bad_length_frames == (byte == 2 || byte == 3 ? 1U : 0U));
     CHECK(o.stats.bad_crc_frames == (byte >= 4 ? 1U : 0U));  // CRC-32 sees every single-bit error
-    CHECK(o.stats.dropped_bytes == (byte >= 2 ? 1U : 0U));
+    // A flip that makes a payload byte a '!' (0x01 -> 0x21) starts a sentence where the bytes
+    // after the dropped AB are read again; the binary bytes after it drop that line too.
+    if (bad[byte] != '!') CHECK(o.stats.dropped_bytes == (byte >= 2 ? 1U : 0U));
+    CHECK(o == reference_read(stream, 1024));
     check_accounting(stream, o);
     prng r{bit};
     CHECK(read(chop(stream, r, 1 + r.below(64))) == o);
@@ -910,6 +918,83 @@ TEST_CASE("0xAB inside a sentence ends it as interrupted", "[anello][stream]") {
   }
 }
 
+TEST_CASE("'!' starts a sentence between items, and is text inside one", "[anello][stream]") {
+  SECTION("alone") {
+    const std::string stream = std::string(ais_line) + "\r\n";
+    const outcome o = read(stream, true);
+    CHECK(o.items == std::vector<rec>{sentence(ais_line, 0, line_ending::crlf, 1)});
+    CHECK(o.stats == stream_stats{1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2});
+  }
+  SECTION("mixed with '$' sentences and frames") {
+    const std::string stream = std::string(vbw_line) + "\r\n" + std::string(ais_line) + "\r\n" +
+                               str(seed) + "!AIVDO,1*48\n" + std::string(gpsctrl_line) + "\r\n";
+    const std::uint64_t at_ais = vbw_line.size() + 2;
+    const std::uint64_t at_frame = at_ais + ais_line.size() + 2;
+    const std::uint64_t at_vdo = at_frame + frame_size;
+    const outcome o = read(stream, true);
+    CHECK(o.items == std::vector<rec>{sentence(vbw_line, 0, line_ending::crlf, 1),
+                                      sentence(ais_line, at_ais, line_ending::crlf, 2),
+                                      frame(seed, at_frame),
+                                      sentence("!AIVDO,1*48", at_vdo, line_ending::lf, 3),
+                                      sentence(gpsctrl_line, at_vdo + 12, line_ending::crlf, 4)});
+    CHECK(o.stats.noise_bytes + o.stats.dropped_bytes == 0);
+    check_accounting(stream, o);
+    CHECK(o == reference_read(stream, 1024, true));
+    CHECK(read_bytewise(stream, true) == o);
+  }
+  SECTION("in a '$' sentence's text: no interruption") {
+    const std::string_view mis = "$BFMIS,1,Mission done!*2F"sv;
+    const outcome o = read(std::string(mis) + "\r\n", true);
+    CHECK(o.items == std::vector<rec>{sentence(mis, 0, line_ending::crlf, 1)});
+    CHECK(o.stats.interrupted == 0);
+  }
+  SECTION("after noise: it ends the noise run") {
+    const outcome o = read("junk!AIVDM,1\r\n"sv, true);
+    CHECK(o.items == std::vector<rec>{drop(drop_reason::noise, 0, 4, "junk", 1),
+                                      sentence("!AIVDM,1", 4, line_ending::crlf, 1)});
+  }
+  SECTION("in the rest of a dropped line: dropped with it") {
+    const std::string_view stream = "$A\x01x!B\n!C\n"sv;
+    const outcome o = read(stream, true);
+    CHECK(o.items == std::vector<rec>{drop(drop_reason::invalid_byte, 0, 6, "$A\x01x!B", 1),
+                                      sentence("!C", 7, line_ending::lf, 2)});
+    CHECK(o.stats == stream_stats{1, 0, 0, 0, 0, 0, 0, 0, 1, 6, 2});
+    CHECK(o == reference_read(stream, 1024, true));
+    CHECK(read_bytewise(stream, true) == o);
+  }
+  SECTION("a '$' or an AB interrupts a '!' sentence") {
+    const std::string stream = "!AIVDM,1$A\n!B"s + str(seed);
+    const outcome o = read(stream, true);
+    CHECK(o.items == std::vector<rec>{drop(drop_reason::interrupted, 0, 8, "!AIVDM,1", 1),
+                                      sentence("$A", 8, line_ending::lf, 1),
+                                      drop(drop_reason::interrupted, 11, 2, "!B", 2),
+                                      frame(seed, 13)});
+    CHECK(o.stats.interrupted == 2);
+    check_accounting(stream, o);
+    CHECK(read_bytewise(stream, true) == o);
+  }
+  SECTION("split across chunks") {
+    const outcome o = read(
+        {"ju"sv, "nk!"sv, "AIV"sv, "DM\r"sv, "\n"sv, "$BF,hi"sv, "!"sv, " there\n"sv, "!"sv}, true);
+    CHECK(o.items == std::vector<rec>{drop(drop_reason::noise, 0, 4, "junk", 1),
+                                      sentence("!AIVDM", 4, line_ending::crlf, 1),
+                                      sentence("$BF,hi! there", 12, line_ending::lf, 2),
+                                      sentence("!", 26, line_ending::none, 3)});
+    CHECK(o == reference_read("junk!AIVDM\r\n$BF,hi! there\n!"sv, 1024, true));
+  }
+  SECTION("bytes of a rejected frame candidate, read again") {
+    // AB 00 00 30, then a '!' sentence inside the 56 bytes: it comes out once the CRC fails.
+    const std::string stream =
+        "\xAB\x00\x00\x30"s + std::string(ais_line) + "\r\n" + std::string(frame_size, 'z') + "\n";
+    const outcome o = read(stream);
+    REQUIRE(o.items.size() == 1);
+    CHECK(o.items[0] == sentence(ais_line, 4, line_ending::crlf, 1));
+    CHECK(o.stats.bad_crc_frames == 1);
+    CHECK(o == reference_read(stream, 1024));
+    CHECK(read_bytewise(stream) == o);
+  }
+}
+
 TEST_CASE("line numbers, offsets and endings across frames", "[anello][stream]") {
   // The CR LF inside the frame is payload; the CR before it and the LF after it are two breaks.
   sensor_frame_raw raw;
@@ -1028,6 +1113,9 @@ TEST_CASE("what was sent comes out in order whatever garbage is between", "[anel
     for (int piece = 0; piece < 40; ++piece) {
       if (r.chance(50)) {
         const std::string_view l = sample_lines[r.below(std::size(sample_lines))];
+        // A '!' starts a sentence only between items: a line break first ends whatever the
+        // garbage before left open (a '$' would interrupt it).
+        if (l[0] == '!') stream += '\n';
         sent.push_back(sentence(l, stream.size(), line_ending::crlf, 0));
         stream += l;
         stream += r.chance(50) ? "\r\n" : "\n";

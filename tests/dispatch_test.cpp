@@ -49,3 +49,31 @@ TEST_CASE("a merged set with shared messages decodes into its variant") {
   REQUIRE(std::holds_alternative<ping>(p.value));
   CHECK(std::get<ping>(p.value).n == 7);
 }
+
+TEST_CASE("a '!' sentence is no message, whatever its address: it stays unknown") {
+  using all = message_set<rmc, ping>;
+  const std::string_view bang_ping = "!XXPNG,7";
+  const auto r = all::decode(bang_ping);
+  REQUIRE(r);
+  REQUIRE(std::holds_alternative<unknown_sentence>(r.value));
+  CHECK(std::get<unknown_sentence>(r.value).sentence.start == '!');
+  CHECK(std::get<unknown_sentence>(r.value).sentence.address == "XXPNG");
+  // Long enough for the 8-byte address key too.
+  const std::string_view bang_rmc =
+      "!GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70";
+  const auto m = all::decode(bang_rmc);
+  REQUIRE(m);
+  CHECK(std::holds_alternative<unknown_sentence>(m.value));
+  bool unknown = false;
+  const auto s = parse(bang_rmc);
+  REQUIRE(s);
+  const auto v = all::visit(s.value, {}, [&](const auto& msg) {
+    unknown = std::is_same_v<std::remove_cvref_t<decltype(msg)>, unknown_sentence>;
+  });
+  CHECK(v);
+  CHECK(unknown);
+  // Asked for by type: not that message.
+  CHECK(decode<ping>(bang_ping).ec == errc::wrong_address);
+  CHECK(decode<rmc>(s.value).ec == errc::wrong_address);
+  CHECK(decode<ping>(std::string_view("$XXPNG,7")).value.n == 7);
+}

@@ -167,13 +167,15 @@ reference_result reference_frame(std::string_view s, std::size_t capacity) {
       prev_cr = c == '\r';
       continue;
     }
-    if (c == '$') {
+    // '$' starts a sentence anywhere (interrupting one); '!' only between sentences: inside
+    // one it is text, and in a discarded rest it is discarded.
+    if (c == '$' || (c == '!' && state == st::idle)) {
       if (state == st::in) {
         ++r.stats.interrupted;
         r.stats.dropped_bytes += cur.size();
       }
       state = st::in;
-      cur = "$";
+      cur = std::string(1, c);
       continue;
     }
     switch (state) {
@@ -390,6 +392,108 @@ TEST_CASE("'$' in the middle restarts the sentence", "[framer]") {
   }
 }
 
+TEST_CASE("'!' starts a sentence where '$' would: between sentences and in noise", "[framer]") {
+  constexpr std::string_view ais = "!AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0*10"sv;
+  SECTION("alone") {
+    framer<> f;
+    const std::string stream = std::string(ais) + "\r\n";
+    const auto out = frame(f, {stream});
+    CHECK(out == std::vector<rec>{{std::string(ais), line_ending::crlf, 1}});
+    CHECK(f.stats() == framer_stats{1, 0, 0, 0, 0, 0});
+  }
+  SECTION("mixed with '$' sentences, in a log") {
+    framer<> f;
+    const std::string stream = "$GPRMC,1*00\r\n" + std::string(ais) + "\r\n!AIVDO,1\n$GPGGA,2\r";
+    const auto out = frame(f, {stream});
+    CHECK(out == std::vector<rec>{{"$GPRMC,1*00", line_ending::crlf, 1},
+                                  {std::string(ais), line_ending::crlf, 2},
+                                  {"!AIVDO,1", line_ending::lf, 3},
+                                  {"$GPGGA,2", line_ending::cr, 4}});
+    CHECK(f.stats() == framer_stats{4, 0, 0, 0, 0, 0});
+    framer<> g;
+    CHECK(frame_bytewise(g, stream) == out);
+    CHECK(g.stats() == f.stats());
+  }
+  SECTION("after noise, which it ends") {
+    framer<> f;
+    CHECK(frame(f, {"junk!AIVDM,1\r\n\x01!!B\n"sv}) ==
+          std::vector<rec>{{"!AIVDM,1", line_ending::crlf, 1}, {"!!B", line_ending::lf, 2}});
+    CHECK(f.stats() == framer_stats{2, 5, 0, 0, 0, 0});
+  }
+  SECTION("a lone '!' is a candidate, as a lone '$' is") {
+    framer<1> f;
+    CHECK(frame(f, {"!\n!A\n!"sv}) ==
+          std::vector<rec>{{"!", line_ending::lf, 1}, {"!", line_ending::none, 3}});
+    CHECK(f.stats() == framer_stats{2, 0, 0, 1, 0, 2});
+  }
+}
+
+TEST_CASE("'!' inside a sentence is text: it neither interrupts nor starts one", "[framer]") {
+  SECTION("in a '$' sentence's text field") {
+    framer<> f;
+    const std::string_view stream = "$BFMIS,Mission done!,ok!\r\n$A!\n"sv;
+    CHECK(frame(f, {stream}) == std::vector<rec>{{"$BFMIS,Mission done!,ok!", line_ending::crlf, 1},
+                                                 {"$A!", line_ending::lf, 2}});
+    CHECK(f.stats() == framer_stats{2, 0, 0, 0, 0, 0});
+  }
+  SECTION("in a '!' sentence") {
+    framer<> f;
+    CHECK(frame(f, {"!AB!CD!\n"sv}) == std::vector<rec>{{"!AB!CD!", line_ending::lf, 1}});
+    CHECK(f.stats().interrupted == 0);
+  }
+  SECTION("'$' still interrupts a '!' sentence") {
+    framer<> f;
+    CHECK(frame(f, {"!AIVDM,1$GPGGA\n"sv}) == std::vector<rec>{{"$GPGGA", line_ending::lf, 1}});
+    CHECK(f.stats() == framer_stats{1, 0, 1, 0, 0, 8});
+  }
+  SECTION("in a discarded rest: dropped with it, no new sentence") {
+    framer<> f;
+    CHECK(frame(f, {"$A\x01x!AIVDM\n!B\n"sv}) == std::vector<rec>{{"!B", line_ending::lf, 2}});
+    CHECK(f.stats() == framer_stats{1, 0, 0, 0, 1, 3 + 7});
+    framer<4> g;
+    CHECK(frame(g, {"!ABCD!EF\n!B\n"sv}) == std::vector<rec>{{"!B", line_ending::lf, 2}});
+    CHECK(g.stats() == framer_stats{1, 0, 0, 1, 0, 8});
+  }
+  SECTION("past the capacity, it is the byte that makes the line overlong") {
+    framer<4> f;
+    CHECK(frame(f, {"$ABC!\n"sv}).empty());
+    CHECK(f.stats() == framer_stats{0, 0, 0, 1, 0, 5});
+  }
+}
+
+TEST_CASE("'!' split across chunks", "[framer]") {
+  SECTION("a '!' sentence cut after its '!', after noise") {
+    framer<> f;
+    CHECK(frame(f, {"junk"sv, "!"sv, "AIV"sv, "DM\r"sv, "\n"sv}) ==
+          std::vector<rec>{{"!AIVDM", line_ending::crlf, 1}});
+    CHECK(f.stats() == framer_stats{1, 4, 0, 0, 0, 0});
+  }
+  SECTION("a '!' that begins a chunk inside a '$' sentence is text") {
+    framer<> f;
+    CHECK(frame(f, {"$BF,hi"sv, "!"sv, " there\n"sv}) ==
+          std::vector<rec>{{"$BF,hi! there", line_ending::lf, 1}});
+  }
+  SECTION("after a CR held at a chunk's end: the next sentence") {
+    framer<> f;
+    CHECK(frame(f, {"$A\r"sv, "!B\n"sv}) ==
+          std::vector<rec>{{"$A", line_ending::cr, 1}, {"!B", line_ending::lf, 2}});
+  }
+  SECTION("in a discarded rest that a chunk boundary cuts") {
+    framer<> f;
+    CHECK(frame(f, {"$A\x01"sv, "!"sv, "B\n!C\n"sv}) ==
+          std::vector<rec>{{"!C", line_ending::lf, 2}});
+    CHECK(f.stats() == framer_stats{1, 0, 0, 0, 1, 5});
+  }
+  SECTION("a chunk of noise, then a '!' 20 bytes in (the 16-byte scan)") {
+    framer<> f;
+    const std::string noise(20, '#');
+    const std::string stream = noise + "!A\n" + std::string(40, '%') + "!B";
+    CHECK(frame(f, {stream}) ==
+          std::vector<rec>{{"!A", line_ending::lf, 1}, {"!B", line_ending::none, 2}});
+    CHECK(f.stats().noise_bytes == 60);
+  }
+}
+
 TEST_CASE("NUL, control and 8-bit bytes drop the sentence", "[framer]") {
   const auto bad =
       GENERATE("\x00"sv, "\x01"sv, "\t"sv, "\x1b"sv, "\x7f"sv, "\x80"sv, "\xc3"sv, "\xff"sv);
@@ -597,9 +701,22 @@ constexpr bool constexpr_framing() {
   return f.stats() == framer_stats{3, 2, 0, 1, 0, 24};
 }
 
+constexpr bool constexpr_bang_framing() {
+  framer<16> f;
+  f.feed("noise, long enough for the word scan!AIVDM,A!B\r\n$C\n");
+  const auto a = f.next();
+  if (!a || a->text != "!AIVDM,A!B" || a->ending != line_ending::crlf) return false;
+  const auto c = f.next();
+  if (!c || c->text != "$C" || c->line != 2) return false;
+  return !f.next() && f.stats().noise_bytes == 36;
+}
+
 }  // namespace
 
-TEST_CASE("usable in constant expressions", "[framer]") { STATIC_REQUIRE(constexpr_framing()); }
+TEST_CASE("usable in constant expressions", "[framer]") {
+  STATIC_REQUIRE(constexpr_framing());
+  STATIC_REQUIRE(constexpr_bang_framing());
+}
 
 namespace {
 
@@ -608,21 +725,27 @@ namespace {
 // Constant evaluation tries three start offsets per position (Clang's step limit); run time, all.
 constexpr bool scans_find_every_special(bool every_start) {
   using scan = seawire::nmea::detail::framer_scan;
-  constexpr unsigned char specials[] = {0x00, 0x09, 0x0A, 0x0D, 0x1F, 0x24, 0x7F, 0x80, 0xC3, 0xFF};
+  constexpr unsigned char specials[] = {0x00, 0x09, 0x0A, 0x0D, 0x1F, 0x21,
+                                        0x24, 0x7F, 0x80, 0xC3, 0xFF};
   constexpr std::size_t n = 40;
   for (std::size_t at = 0; at < n; ++at) {
     for (const unsigned char sp : specials) {
       char s[n] = {};
       for (std::size_t i = 0; i < n; ++i) s[i] = static_cast<char>(0x20 + (i * 7) % 0x5F);
       for (std::size_t i = 0; i < n; ++i) {
-        if (s[i] == '$') s[i] = '~';
+        if (s[i] == '$' || s[i] == '!') s[i] = '~';
       }
       s[at] = static_cast<char>(sp);
       for (std::size_t from = 0;;) {
-        if (scan::find_special(s, from, n) != at) return false;
+        // '!' is text inside a sentence: only find_start stops at it.
+        const bool special = sp != '!';
+        if (scan::find_special(s, from, n) != (special ? at : n)) return false;
         if (scan::find_special(s, from, at) != at) return false;
         const bool brk = sp == '$' || sp == '\r' || sp == '\n';
         if (scan::find_break(s, from, n) != (brk ? at : n)) return false;
+        const bool start = sp == '$' || sp == '!';
+        if (scan::find_start(s, from, n) != (start ? at : n)) return false;
+        if (scan::find_start(s, from, at) != at) return false;
         if (from == at) break;
         from = every_start ? from + 1 : from < at / 2 ? at / 2 : at;
       }
@@ -677,8 +800,10 @@ built_stream build_stream(std::uint64_t seed) {
       default: return "\r";
     }
   };
-  const auto add_valid = [&](bool terminated) {
-    pending p{b.bytes.size(), std::string::npos, "$" + body(r.below(120))};
+  // '!' starts a sentence only between sentences; after one cut short, a '$' must do it.
+  const auto add_valid = [&](bool terminated, bool bang_ok = true) {
+    const char start = bang_ok && r.chance(30) ? '!' : '$';
+    pending p{b.bytes.size(), std::string::npos, start + body(r.below(120))};
     b.bytes += p.text;
     if (terminated) {
       p.ending = b.bytes.size();
@@ -704,40 +829,41 @@ built_stream build_stream(std::uint64_t seed) {
         b.bytes[start + 4096 + r.below(std::size_t{1} << 19)] = bad_byte();
       ++b.stats.overlong;
       b.stats.dropped_bytes += b.bytes.size() - start;
-      add_valid(true);  // the '$' that ends it
+      add_valid(true, false);  // the '$' that ends it
       continue;
     }
     const std::size_t kind = r.below(100);
     if (kind < 50) {
       add_valid(true);
-    } else if (kind < 70) {  // garbage: anything but '$', CR and LF included
+    } else if (kind < 70) {  // garbage: anything but '$' and '!', CR and LF included
       const std::size_t n = r.below(200);
       for (std::size_t i = 0; i < n; ++i) {
         char c = static_cast<char>(r.below(256));
-        if (c == '$') c = '\0';
+        if (c == '$' || c == '!') c = '\0';
         b.bytes += c;
         if (c != '\r' && c != '\n') ++b.stats.noise_bytes;
       }
     } else if (kind < 82) {  // invalid byte inside an otherwise short sentence
-      std::string s = "$" + body(r.below(50));
+      std::string s = (r.chance(30) ? "!" : "$") + body(r.below(50));
       s += bad_byte();
       for (std::size_t i = 0, n = r.below(50); i < n; ++i) {
         char c = static_cast<char>(r.below(256));
         if (c == '$' || c == '\r' || c == '\n') c = 'x';
+        if (r.chance(5)) c = '!';  // discarded with the rest: no start there
         s += c;
       }
       b.bytes += s;
       b.bytes += ending();
       ++b.stats.invalid_bytes;
       b.stats.dropped_bytes += s.size();
-    } else if (kind < 94) {  // cut short by the next '$'
-      const std::string s = "$" + body(r.below(property_capacity));
+    } else if (kind < 94) {  // cut short by the next '$' (a '!' would be text)
+      const std::string s = (r.chance(30) ? "!" : "$") + body(r.below(property_capacity));
       b.bytes += s;
       ++b.stats.interrupted;
       b.stats.dropped_bytes += s.size();
-      add_valid(true);
+      add_valid(true, false);
     } else {  // overlong but properly terminated
-      const std::string s = "$" + body(property_capacity + r.below(3000));
+      const std::string s = (r.chance(30) ? "!" : "$") + body(property_capacity + r.below(3000));
       b.bytes += s;
       b.bytes += ending();
       ++b.stats.overlong;
@@ -806,8 +932,8 @@ TEST_CASE("property: any chunking of a hostile stream yields exactly its valid s
 
 namespace {
 
-// Random soup dense in '$', CR, LF and bad bytes, so every state meets every byte class at every
-// chunk boundary.
+// Random soup dense in '$', '!', CR, LF and bad bytes, so every state meets every byte class at
+// every chunk boundary.
 std::string soup(prng& r, std::size_t n) {
   std::string s;
   for (std::size_t i = 0; i < n; ++i) {
@@ -815,12 +941,14 @@ std::string soup(prng& r, std::size_t n) {
     if (k < 6) {
       s += '$';
     } else if (k < 11) {
+      s += '!';
+    } else if (k < 15) {
       s += '\r';
-    } else if (k < 16) {
-      s += '\n';
     } else if (k < 19) {
+      s += '\n';
+    } else if (k < 21) {
       s += static_cast<char>(r.below(0x20));
-    } else if (k < 22) {
+    } else if (k < 23) {
       s += static_cast<char>(0x7F + r.below(0x81));
     } else {
       s += static_cast<char>(0x20 + r.below(0x5F));

@@ -278,6 +278,15 @@ TEST_CASE("unknown sentences and errors") {
   k.s.clear();
   write_json(k, unknown_sentence{bare.value});
   CHECK(k.s == R"({"type":"XXBAR","fields":[]})");
+  // A '!' sentence says so; a '$' one has no "start".
+  const auto ais = parse("!AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0*10");
+  REQUIRE(ais);
+  k.s.clear();
+  write_json(k, unknown_sentence{ais.value});
+  CHECK(
+      k.s ==
+      R"({"type":"AIVDM","start":"!","fields":["1","1","","B","15M67FC000G?ufbE`vJ8?wv4R0<4","0"]})");
+  CHECK(valid_json(k.s));
 
   k.s.clear();
   write_json_error(k, 12, errc::minute_out_of_range, 2, "CPNVG field 2 (latitude): \"61\"",

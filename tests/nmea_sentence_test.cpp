@@ -155,7 +155,10 @@ TEST_CASE("malformed sentences: each failure class gives its errc and column") {
       {"", errc::empty_input, 0},
       {"\r\n", errc::empty_input, 0},
       {"GPGGA,1*00", errc::missing_start, 0},
-      {"!AIVDM,1*00", errc::missing_start, 0},
+      {"#AIVDM,1*00", errc::missing_start, 0},
+      {" !AIVDM,1*00", errc::missing_start, 0},
+      {"!", errc::bad_address, 1},
+      {"!AIVDM,1$,0", errc::bad_character, 8},
       {"$", errc::bad_address, 1},
       {"$*00", errc::bad_address, 1},
       {"$,1,2*00", errc::bad_address, 1},
@@ -180,6 +183,32 @@ TEST_CASE("malformed sentences: each failure class gives its errc and column") {
     CHECK(p.column == r.column);
     CHECK_FALSE(p);
   }
+}
+
+TEST_CASE("'!' starts a sentence too: encapsulation sentences such as !AIVDM") {
+  constexpr std::string_view ais = "!AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0*10\r\n";
+  const auto r = parse(ais, with_checksum(checksum_policy::required));
+  REQUIRE(r);
+  CHECK(r.value.start == '!');
+  CHECK(r.value.address == "AIVDM");
+  CHECK(r.value.field_count == 6);
+  CHECK(field(r.value, 5).text == "15M67FC000G?ufbE`vJ8?wv4R0<4");
+  // The checksum is the XOR of the bytes between the '!' and the '*', as for '$'.
+  CHECK(r.value.computed_checksum == checksum("AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0"));
+  CHECK(r.value.checksum == checksum_state::valid);
+  CHECK(parse("!AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0*11").ec == errc::checksum_mismatch);
+  // Long enough for the 16-byte scan, and short enough for the byte loop.
+  CHECK(parse("!AIVDO,1*48").value.start == '!');
+  CHECK(parse("!AIVDO,1*48").value.computed_checksum == checksum("AIVDO,1"));
+  CHECK(parse("$GPGGA,1").value.start == '$');
+  // A '!' inside a sentence is text, whichever the start.
+  const auto inner = parse("$BPLOG,hello!,ON");
+  REQUIRE(inner);
+  CHECK(inner.value.start == '$');
+  CHECK(field(inner.value, 1).text == "hello!");
+  CHECK(parse("!!AB").ec == errc::bad_address);
+  // A failed parse holds the default start.
+  CHECK(parse("!AIVDM,1*00").value.start == '$');
 }
 
 TEST_CASE("maximum length is enforced") {
@@ -347,6 +376,15 @@ TEST_CASE("writer seals with upper-case checksum and CR LF, and reports overflow
   s.next_field();
   s.put_uint(45);
   CHECK(s.seal().ec == errc::buffer_too_small);
+
+  char bang[32];
+  writer e(bang);
+  e.begin("AIVDO", '!');
+  e.next_field();
+  e.put_uint(1);
+  const auto sealed = e.seal();
+  REQUIRE(sealed);
+  CHECK(std::string_view(bang, sealed.value) == "!AIVDO,1*48\r\n");
 
   char pad[16];
   writer z(pad);

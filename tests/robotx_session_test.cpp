@@ -486,6 +486,10 @@ TEST_CASE("validator: framing, unknown addresses, field counts") {
   const auto no_dollar = v.check("RXCOD,101218,161229,AUVSI,RGB*49\r\n", seed_utc);
   CHECK_FALSE(no_dollar.accepted);
   CHECK(rules_of(no_dollar.findings) == std::vector<std::string>{"framing  0 missing_start"});
+  // '!' starts encapsulation sentences (!AIVDM), not RobotX reports.
+  const auto bang = v.check("!RXCOD,101218,161229,AUVSI,RGB*49\r\n", seed_utc);
+  CHECK_FALSE(bang.accepted);
+  CHECK(rules_of(bang.findings) == std::vector<std::string>{"framing  0 missing_start"});
 
   const auto other = v.check("$GPRMC,,V,,,,,,,,,,N*53\r\n", seed_utc);
   CHECK_FALSE(other.accepted);

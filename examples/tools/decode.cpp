@@ -223,9 +223,10 @@ class decoder {
     std::array<char, 1100> buf;
     result<std::size_t> r;
     if constexpr (std::is_same_v<M, nmea::unknown_sentence>) {
-      // Not ours to interpret: the same fields, sealed the way seawire seals.
+      // Not ours to interpret: the same start ('$' or '!') and fields, sealed the way seawire
+      // seals.
       nmea::writer w(std::span<char>(buf.data(), buf.size()));
-      w.begin(s.address);
+      w.begin(s.address, s.start);
       if (s.field_count > 0) {
         w.next_field();
         w.put(s.body);
@@ -318,7 +319,7 @@ class decoder {
     std::string detail;
     switch (d.reason) {
       case anello::drop_reason::noise:
-        detail = n + " outside any sentence or frame (no '$' before them); dropped";
+        detail = n + " outside any sentence or frame (no '$' or '!' before them); dropped";
         break;
       case anello::drop_reason::invalid_byte:
         e = errc::bad_character;

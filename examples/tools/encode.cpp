@@ -326,8 +326,11 @@ class encoder {
       reject("no \"type\" string");
       return;
     }
+    const json_value start = obj_({}, "start");
     if (type.text == anello::frame_json_type) {
       frame();
+    } else if (start.kind == json_kind::string && start.text == "!") {
+      unknown(type.text);  // a '!' sentence is no message, whatever its type: sent as given
     } else if (!with_type(type.text, static_cast<all_messages*>(nullptr),
                           [&](auto tag) { send<typename decltype(tag)::type>(type.text); })) {
       unknown(type.text);
@@ -386,7 +389,8 @@ class encoder {
     out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   }
 
-  // {"type":"XXABC","fields":["1","2"]}: a sentence no message describes, sent as given.
+  // {"type":"XXABC","fields":["1","2"]}: a sentence no message describes, sent as given;
+  // {"type":"AIVDM","start":"!","fields":[...]} starts it with '!' (an encapsulation sentence).
   void unknown(std::string_view type) {
     if (!obj_.has_fields()) {
       reject(std::string(name(errc::unknown_address)) + ": no known message is \"" +
@@ -394,10 +398,19 @@ class encoder {
       return;
     }
     for (const auto& [key, value] : obj_.members()) {
-      if (key == "type" || key == "fields") continue;
+      if (key == "type" || key == "fields" || key == "start") continue;
       reject(std::string(type) + ": unknown key \"" + std::string(key) +
-             "\" (a sentence no message describes takes only \"type\" and \"fields\")");
+             "\" (a sentence no message describes takes only \"type\", \"fields\" and "
+             "\"start\")");
       return;
+    }
+    char start = '$';
+    if (const json_value s = obj_({}, "start"); s.kind != json_kind::absent) {
+      if (s.kind != json_kind::string || (s.text != "$" && s.text != "!")) {
+        reject(std::string(type) + ": \"start\" must be \"$\" or \"!\"");
+        return;
+      }
+      start = s.text[0];
     }
     bool address_ok = !type.empty() && type.size() <= 15 && seawire::detail::is_upper(type[0]);
     for (const char c : type)
@@ -409,7 +422,7 @@ class encoder {
     }
     std::array<char, 1100> buf;
     nmea::writer w(std::span<char>(buf.data(), buf.size()));
-    w.begin(type);
+    w.begin(type, start);
     std::uint16_t n = 0;
     for (const std::string_view f : obj_.fields()) {
       ++n;

@@ -13,7 +13,7 @@ enum class errc : std::uint8_t {
   ok = 0,  ///< no error
   // -- sentence framing --
   empty_input,          ///< nothing to decode
-  missing_start,        ///< the line does not begin with '$'
+  missing_start,        ///< the line does not begin with '$' (or '!')
   bad_address,          ///< the address is empty, too long, or not upper-case letters/digits
   bad_character,        ///< a byte outside printable ASCII 0x20..0x7E, or a reserved '$' inside
   missing_checksum,     ///< the policy requires a checksum and none was sent
@@ -117,7 +117,7 @@ enum class errc : std::uint8_t {
   switch (e) {
     case errc::ok: return "no error";
     case errc::empty_input: return "empty input";
-    case errc::missing_start: return "sentence does not start with '$'";
+    case errc::missing_start: return "sentence does not start with '$' or '!'";
     case errc::bad_address: return "address is not 1-15 upper-case letters or digits";
     case errc::bad_character: return "byte outside printable ASCII, or '$' inside a sentence";
     case errc::missing_checksum: return "checksum required but missing";

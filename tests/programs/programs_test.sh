@@ -165,7 +165,7 @@ case_bad() {
     '{"line":5,"error":"minute_out_of_range","field":2,"detail":"CPNVG field 2 (latitude) \"4261.81092\": minutes out of range (00-59)","input":"$CPNVG,081025.987,4261.81092,N,07106.84603,W,1,0,0,203.1,-3.4,4.5,081025.980*5C"}' \
     "$(line 5 "$o")"
   expect_eq "garbage line" \
-    '{"line":7,"error":"missing_start","field":0,"detail":"24 bytes outside any sentence or frame (no '"'"'$'"'"' before them); dropped","input":"### vehicle rebooted ###"}' \
+    '{"line":7,"error":"missing_start","field":0,"detail":"24 bytes outside any sentence or frame (no '"'"'$'"'"' or '"'"'!'"'"' before them); dropped","input":"### vehicle rebooted ###"}' \
     "$(line 7 "$o")"
   expect_eq "a control byte, escaped in the report" \
     '"input":"$CPNVR,164959.063,0.029\u000141,-0.068552,0,0.060938,0,-0.061132*59"}' \
@@ -628,7 +628,7 @@ case_precision() {
     'seawire-encode: line 7: CPNVG: "precision" of "latitude" is -1: must be a whole number from 1 to 12 (minute places of a DDMM.mmm position)' \
     'seawire-encode: line 8: PYDIR: unknown key "foo" in "precision" (PYDIR has no position fields)' \
     'seawire-encode: line 9: RXHRB: "precision" of "latitude" is 19: must be a whole number from 0 to 18 (degree places of a decimal-degree position)' \
-    'seawire-encode: line 13: XXABC: unknown key "foo" (a sentence no message describes takes only "type" and "fields")')" \
+    'seawire-encode: line 13: XXABC: unknown key "foo" (a sentence no message describes takes only "type", "fields" and "start")')" \
     "$(cat "$work/err")"
 }
 
@@ -694,6 +694,47 @@ EOF
   expect_eq "control bytes escaped in the reason" \
     'seawire-encode: line 1: BPSTS field 3 (message) "a\x00b\x01": bad_text: text contains a character the field may not carry' \
     "$(cat "$work/err")"
+}
+
+# An AIS receiver's lines mixed into a log: each '!' sentence (NMEA 0183 encapsulation) is a
+# well-formed unknown sentence with "start":"!", --format nmea writes it back as it came, and
+# seawire-encode sends its JSON as the same line. A '!' inside a '$' sentence's text is text.
+case_ais() {
+  local vdm='!AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0*10'
+  local vdo='!AIVDO,1,1,,,B5NJ;PP005l4ot5Isbl03wsUkP06,0*35'
+  crlf "$(seal PAPGPSCTRL,1)" "$vdm" "$(seal VMVBW,0.0,0.0,A,0.0,0.0,A)" "$vdo" >"$work/log"
+  expect_rc "decode a log with AIS lines" 0 "$decode" <"$work/log"
+  expect_eq "no error" "" "$(cat "$work/err")"
+  expect_eq "one JSON object per line" 4 "$(wc -l <"$work/out")"
+  expect_eq "!AIVDM: an unknown sentence, its start said" \
+    '{"type":"AIVDM","start":"!","fields":["1","1","","B","15M67FC000G?ufbE`vJ8?wv4R0<4","0"]}' \
+    "$(line 2 "$work/out")"
+  expect_eq "!AIVDO too" \
+    '{"type":"AIVDO","start":"!","fields":["1","1","","","B5NJ;PP005l4ot5Isbl03wsUkP06","0"]}' \
+    "$(line 4 "$work/out")"
+  expect_eq "the '$' sentences around them" '{"type":"PAPGPSCTRL","control":"1"}' \
+    "$(line 1 "$work/out")"
+  cp "$work/out" "$work/log.json"
+  expect_rc "decode --format nmea" 0 "$decode" --format nmea <"$work/log"
+  if ! cmp -s "$work/out" "$work/log"; then fail "the log with AIS lines not written back as it came"; fi
+  expect_rc "encode the JSON" 0 "$encode" <"$work/log.json"
+  if ! cmp -s "$work/out" "$work/log"; then fail "seawire-encode did not send the AIS lines back"; fi
+  # "start" is "$" or "!"; with "!" a known address is still no message.
+  printf '%s\n' '{"type":"XXABC","start":"$","fields":["1"]}' \
+    '{"type":"GPRMC","start":"!","fields":["x"]}' '{"type":"XXABC","start":"?","fields":[]}' \
+    '{"type":"XXABC","start":"!"}' >"$work/in"
+  expect_rc "encode with start keys" 1 "$encode" <"$work/in"
+  expect_eq "start keys sent" "$(crlf "$(seal XXABC,1)" '!GPRMC,x*1F')" "$(cat "$work/out")"
+  expect_eq "bad start keys refused" "$(printf '%s\n' \
+    'seawire-encode: line 3: XXABC: "start" must be "$" or "!"' \
+    'seawire-encode: line 4: unknown_address: no known message is "XXABC" (and there is no "fields" array to send it as is)')" \
+    "$(cat "$work/err")"
+  # A status text that ends with '!' is not cut: the sentence is whole.
+  crlf "$(seal 'BPSTS,231133.12,1,Mission done!')" >"$work/in"
+  expect_rc "decode a '!' in text" 0 "$decode" <"$work/in"
+  expect_eq "the text keeps its '!'" \
+    '{"type":"BPSTS","timestamp":"23:11:33.12","all_ok":true,"message":"Mission done!"}' \
+    "$(cat "$work/out")"
 }
 
 # A live link whose sender ends lines with CR alone: under --line-buffered each sentence comes

@@ -15,8 +15,9 @@
 //
 // The binary protocol has no byte stuffing, so which bytes are a frame is decided by the bytes
 // alone. The rules, in the order a byte meets them:
-// - Between items, '$' starts a sentence and 0xAB starts a frame candidate; CR and LF are line
-//   breaks; every other byte is noise.
+// - Between items, '$' starts a sentence and 0xAB starts a frame candidate; so does '!' a
+//   sentence (NMEA 0183 encapsulation: !AIVDM, !AIVDO), there only; CR and LF are line breaks;
+//   every other byte is noise.
 // - A candidate must go on 00 (the frame id AB 00), then 00 30 (the length: 48 is the only
 //   length the frame has). 0xAB followed by anything but 00 is one noise byte. AB 00 followed by
 //   any other length is a bad_length_frames: the length is never believed, so a lying 0xFFFF
@@ -31,9 +32,11 @@
 //   again at most 14 times (candidates start 4 bytes apart at the closest: AB 00 00 30 AB ...).
 // - A sentence ends at LF, CR or CR LF. A 0xAB inside a sentence ends it as `interrupted`, like
 //   a '$' does (sentences are printable ASCII, so the AB belongs to what comes next), and the AB
-//   starts a candidate. Any other byte outside 0x20..0x7E drops the sentence (invalid_bytes) and
+//   starts a candidate. A '!' inside a sentence is text (a status message may say "done!"); it
+//   interrupts nothing. Any other byte outside 0x20..0x7E drops the sentence (invalid_bytes) and
 //   the rest of its line; so does a sentence longer than Capacity (overlong). A '$' or 0xAB in
-//   the dropped rest starts a new item: a frame can follow garbage without a line break.
+//   the dropped rest starts a new item: a frame can follow garbage without a line break. A '!'
+//   there is dropped with the rest.
 // - Nothing else is checked: checksums and fields are decode_input()'s business.
 //
 // What a false sync costs: the items inside its 56 bytes come out once the 56th byte has arrived
@@ -86,8 +89,8 @@ enum class stream_item_kind : std::uint8_t {
 
 /// Why a stream_reader dropped bytes (the counters of stream_stats, one report per event).
 enum class drop_reason : std::uint8_t {
-  noise,            ///< bytes between items that start none (no '$' before them; an 0xAB not
-                    ///< followed by 00 is one of them)
+  noise,            ///< bytes between items that start none (no '$' or '!' before them; an
+                    ///< 0xAB not followed by 00 is one of them)
   invalid_byte,     ///< a sentence holding a byte outside 0x20..0x7E: it and the rest of its line
   overlong,         ///< a sentence longer than the reader's capacity: it and the rest of its line
   interrupted,      ///< a sentence cut short by a '$' or a 0xAB before its line ended
@@ -141,12 +144,12 @@ struct stream_drop {
 /// One item of a mixed NMEA + binary stream.
 struct stream_item {
   stream_item_kind kind = stream_item_kind::sentence;
-  /// Of the item's first byte ('$' or 0xAB), counted from 0 at construction or reset().
+  /// Of the item's first byte ('$', '!' or 0xAB), counted from 0 at construction or reset().
   std::uint64_t offset = 0;
   /// Line number of the item's first byte: line breaks before it, plus one (CR LF is one break;
   /// CR and LF inside frames are none). For a sentence, the same as sentence.line.
   std::uint64_t line = 1;
-  /// kind == sentence: the line from its '$' up to its line ending, the ending, and the line
+  /// kind == sentence: the line from its '$' or '!' up to its line ending, the ending, and the line
   /// number (line breaks before it, plus one; CR and LF inside frames are not line breaks). The
   /// text is valid until the next call of next(), feed() or finish(). Empty for a frame.
   nmea::framed_line sentence{};
@@ -191,7 +194,7 @@ struct stream_stats {
 /// noexcept throughout (the callback overloads are as noexcept as their callback).
 template <std::size_t Capacity = 1024>
 class stream_reader {
-  static_assert(Capacity > 0, "a reader must hold at least the '$'");
+  static_assert(Capacity > 0, "a reader must hold at least the '$' or '!'");
   static_assert(Capacity < (std::size_t{1} << 48), "capacity + 1 must not overflow");
 
  public:
@@ -355,7 +358,7 @@ class stream_reader {
       case state::idle: return idle(s, i, end);
       case state::sentence: return scan_sentence(s, i, end, llen_);
       case state::discard:
-        // Cold (only after an error), so byte by byte.
+        // Cold (only after an error), so byte by byte. A '!' here is dropped: it starts nothing.
         for (; i < end; ++i) {
           const char c = s[i];
           if (c == '$' || c == sync || c == '\r' || c == '\n') {
@@ -376,8 +379,8 @@ class stream_reader {
                                             std::size_t end) noexcept {
     for (; i < end; ++i) {
       const char c = s[i];
-      if (c == '$') {
-        if (drop_open_) return close_drop();  // the noise before it; the '$' is read again
+      if (c == '$' || c == '!') {
+        if (drop_open_) return close_drop();  // the noise before it; the start is read again
         prev_cr_ = false;
         return scan_sentence(s, i, end, 0);
       }
@@ -406,7 +409,7 @@ class stream_reader {
   }
 
   // The sentence going on at i; `have` of its bytes are already in lbuf_ (0: it starts with the
-  // '$' at i). Yields the line if it ends in this source, else stashes or drops it.
+  // '$' or '!' at i). Yields the line if it ends in this source, else stashes or drops it.
   constexpr std::optional<stream_item> scan_sentence(const char* s, std::size_t& i, std::size_t end,
                                                      std::size_t have) noexcept {
     using scan = nmea::detail::framer_scan;
@@ -456,7 +459,7 @@ class stream_reader {
       i = q + 1;
       return yield_sentence(text(s, start, q, have), line_ending::lf);
     }
-    if (c == '$' || c == sync) {  // a new item starts at q
+    if (c == '$' || c == sync) {  // a new item starts at q (a '!' is text: find_special passed it)
       ++stats_.interrupted;
       stats_.dropped_bytes += n;
       i = q;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The NMEA 0183 checksum: XOR of every byte between '$' and '*', written as two hex digits.
+// The NMEA 0183 checksum: XOR of every byte between the start character ('$' or '!') and '*',
+// written as two hex digits.
 
 #include <cstddef>
 #include <cstdint>
@@ -41,7 +42,7 @@ inline std::uint8_t xor_bytes_sse2(const char* p, std::size_t n) noexcept {
 
 }  // namespace detail
 
-/// XOR of all bytes of `between` (pass the text between '$' and '*', both excluded).
+/// XOR of all bytes of `between` (pass the text between '$' or '!' and '*', both excluded).
 [[nodiscard]] constexpr std::uint8_t checksum(std::string_view between) noexcept {
 #if defined(__SSE2__)
   if (!std::is_constant_evaluated()) return detail::xor_bytes_sse2(between.data(), between.size());

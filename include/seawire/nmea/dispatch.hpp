@@ -37,8 +37,11 @@ struct address_key {
   return k;
 }
 
-/// key_of(s.address), with one 8-byte load where the line is long enough to hold it.
+/// key_of(s.address), with one 8-byte load where the line is long enough to hold it. A '!'
+/// sentence gets the key of no message (size 0: every address has a character), so that it is
+/// never taken for a '$' message of the same address.
 [[nodiscard]] constexpr address_key key_of(const sentence_view& s) noexcept {
+  if (s.start != '$') return {};
   if (s.line.size() < 9 || s.address.data() != s.line.data() + 1) return key_of(s.address);
   std::uint64_t head = seawire::detail::load_le64(s.address.data());  // line[1, 9)
   const std::size_t n = s.address.size();
@@ -68,8 +71,9 @@ template <class M>
 
 }  // namespace detail
 
-/// A well-formed sentence that no message of the set describes. Views into the input: it is
-/// valid as long as the line it came from.
+/// A well-formed sentence that no message of the set describes: an address the set does not
+/// know, or any '!' sentence (!AIVDM: messages are '$' sentences; sentence.start says which
+/// start it had). Views into the input: it is valid as long as the line it came from.
 struct unknown_sentence {
   sentence_view sentence;
 };
@@ -97,8 +101,9 @@ struct message_set {
     return name;
   }
 
-  /// Decode into whichever message the address names; an address the set does not know gives
-  /// unknown_sentence (not an error: receivers are told to ignore such messages).
+  /// Decode into whichever message the address names; an address the set does not know, or a
+  /// '!' sentence, gives unknown_sentence (not an error: receivers are told to ignore such
+  /// messages).
   [[nodiscard]] static constexpr result<variant> decode(const sentence_view& s,
                                                         const parse_policy& p = {}) noexcept {
     // Built holding unknown_sentence, not value-initialized: that would first zero the storage

@@ -3,11 +3,16 @@
 // nmea::framer: cuts a byte stream (TCP, serial, a log file) into complete candidate sentences.
 //
 // Contract, in the order a byte meets it:
-// - A sentence starts at '$'. Bytes outside a sentence are noise; CR and LF are line breaks, not
-//   noise. A line ends at LF, CR, or CR LF (one ending, one line).
+// - A sentence starts at '$', or at '!' (NMEA 0183 encapsulation sentences: !AIVDM, !AIVDO).
+//   Bytes outside a sentence are noise; CR and LF are line breaks, not noise. A line ends at LF,
+//   CR, or CR LF (one ending, one line).
 // - A '$' inside a sentence abandons the partial one (interrupted) and starts anew at that '$'.
+//   A '!' inside a sentence is text: it starts a sentence only where a '$' would start one
+//   without interrupting anything (between sentences, in noise), so a text field holding '!'
+//   ("Mission done!") is never cut.
 // - A sentence is dropped, and everything up to its line ending or the next '$' discarded, on the
 //   first of: a byte outside 0x20..0x7E (invalid_bytes), or a byte past `Capacity` (overlong).
+//   A '!' in the discarded rest is discarded with it: it does not end the discard.
 // - Nothing else is checked: checksum and fields are sentence_view's business.
 // - A line lying wholly inside the chunk being read is yielded as a view into that chunk. Only a
 //   line cut by a chunk boundary -- or one whose CR is the chunk's last byte, since the next chunk
@@ -40,7 +45,7 @@ enum class line_ending : std::uint8_t {
   crlf,  ///< "\r\n"
 };
 
-/// One candidate sentence, from its '$' up to (not including) its line ending.
+/// One candidate sentence, from its '$' or '!' up to (not including) its line ending.
 struct framed_line {
   /// Valid until the next call of next(), feed() or finish() on the framer that made it.
   std::string_view text;
@@ -56,7 +61,7 @@ struct framed_line {
 struct framer_stats {
   std::uint64_t sentences = 0;      ///< lines yielded
   std::uint64_t noise_bytes = 0;    ///< bytes outside any sentence (not counting CR, LF)
-  std::uint64_t interrupted = 0;    ///< partial sentences abandoned for a new '$'
+  std::uint64_t interrupted = 0;    ///< partial sentences abandoned for a new '$' (not '!')
   std::uint64_t overlong = 0;       ///< lines dropped for exceeding the capacity
   std::uint64_t invalid_bytes = 0;  ///< lines dropped for a byte outside 0x20..0x7E
   std::uint64_t dropped_bytes = 0;  ///< bytes of all dropped lines, without their line endings
@@ -69,6 +74,7 @@ namespace detail {
 // The scans behind the hot path. A sentence byte needs one decision (plain text or not), so it is
 // made for 16 bytes at once with SSE2 where x86 guarantees it, else 8 at once in a 64-bit word
 // (also the constexpr path). Both only narrow the search; a byte loop names the exact byte.
+// Inside a sentence only '$' is special ('!' is text); between sentences both start one.
 struct framer_scan {
   static constexpr std::uint64_t ones = 0x0101010101010101U;
   static constexpr std::uint64_t highs = 0x8080808080808080U;
@@ -92,6 +98,8 @@ struct framer_scan {
   [[nodiscard]] static constexpr bool is_break(char c) noexcept {
     return c == '$' || c == '\r' || c == '\n';
   }
+
+  [[nodiscard]] static constexpr bool is_start(char c) noexcept { return c == '$' || c == '!'; }
 
 #if defined(__SSE2__)
   // Signed compare: "below 0x20" also catches 0x80..0xFF, which are negative.
@@ -120,6 +128,19 @@ struct framer_scan {
       const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
       const __m128i hit = _mm_or_si128(_mm_cmpeq_epi8(v, dollar),
                                        _mm_or_si128(_mm_cmpeq_epi8(v, cr), _mm_cmpeq_epi8(v, lf)));
+      const auto mask = static_cast<unsigned>(_mm_movemask_epi8(hit));
+      if (mask != 0) return i + static_cast<std::size_t>(std::countr_zero(mask));
+    }
+    return i;
+  }
+
+  [[nodiscard]] static std::size_t find_start_sse2(const char* s, std::size_t i,
+                                                   std::size_t to) noexcept {
+    const __m128i dollar = _mm_set1_epi8('$');
+    const __m128i bang = _mm_set1_epi8('!');
+    for (; to - i >= 16; i += 16) {
+      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
+      const __m128i hit = _mm_or_si128(_mm_cmpeq_epi8(v, dollar), _mm_cmpeq_epi8(v, bang));
       const auto mask = static_cast<unsigned>(_mm_movemask_epi8(hit));
       if (mask != 0) return i + static_cast<std::size_t>(std::countr_zero(mask));
     }
@@ -156,6 +177,21 @@ struct framer_scan {
     while (i < to && !is_break(s[i])) ++i;
     return i;
   }
+
+  /// First index in [from, to) holding '$' or '!' (a sentence's start); `to` if none.
+  [[nodiscard]] static constexpr std::size_t find_start(const char* s, std::size_t from,
+                                                        std::size_t to) noexcept {
+    std::size_t i = from;
+#if defined(__SSE2__)
+    if (!std::is_constant_evaluated()) i = find_start_sse2(s, i, to);
+#endif
+    for (; to - i >= 8; i += 8) {
+      const std::uint64_t v = seawire::detail::load_le64(s + i);
+      if ((any_equal(v, '$') | any_equal(v, '!')) != 0) break;
+    }
+    while (i < to && !is_start(s[i])) ++i;
+    return i;
+  }
 };
 
 }  // namespace detail
@@ -165,7 +201,7 @@ struct framer_scan {
 /// callback feed() is as noexcept as its callback).
 template <std::size_t Capacity = 1024>
 class framer {
-  static_assert(Capacity > 0, "a framer must hold at least the '$'");
+  static_assert(Capacity > 0, "a framer must hold at least the '$' or '!'");
   static_assert(Capacity < (std::size_t{1} << 48), "capacity + 1 must not overflow");
 
  public:
@@ -212,9 +248,10 @@ class framer {
               continue;
             }
           }
-          // Back-to-back sentences are the common case: skip the search when '$' is right here.
-          const std::size_t dollar = s[pos_] == '$' ? pos_ : chunk_.find('$', pos_);
-          const std::size_t stop = dollar == std::string_view::npos ? end : dollar;
+          // Back-to-back sentences are the common case: skip the search when the start ('$' or
+          // '!') is right here.
+          const std::size_t stop =
+              scan::is_start(s[pos_]) ? pos_ : scan::find_start(s, pos_ + 1, end);
           if (stop != pos_) count_noise(s, stop, end);
           if (stop == end) return std::nullopt;
           if (auto l = scan_sentence(s, end, 0)) return l;
@@ -282,7 +319,7 @@ class framer {
 
  private:
   enum class state : std::uint8_t {
-    idle,      // between sentences: bytes are noise until a '$'
+    idle,      // between sentences: bytes are noise until a '$' or '!'
     sentence,  // buf_[0, len_) is the start of a sentence cut by the chunk boundary
     discard,   // dropping the rest of an overlong or invalid line
     held,      // buf_[0, len_) is a complete line whose CR ended the previous chunk
@@ -327,7 +364,8 @@ class framer {
   }
 
   // Scans the sentence going on at pos_; `have` of its bytes are already in buf_ (0: it starts
-  // with the '$' at pos_). Yields the line if it ends in this chunk, else stashes or drops it.
+  // with the '$' or '!' at pos_). Yields the line if it ends in this chunk, else stashes or drops
+  // it.
   constexpr std::optional<framed_line> scan_sentence(const char* s, std::size_t end,
                                                      std::size_t have) noexcept {
     using scan = detail::framer_scan;
@@ -369,7 +407,7 @@ class framer {
         state_ = state::idle;
         pos_ = q + 1;
         return yield(text(s, start, q, have), line_ending::lf);
-      case '$':
+      case '$':  // not '!': that is text here (find_special passes it)
         ++stats_.interrupted;
         stats_.dropped_bytes += n;
         pos_ = q;

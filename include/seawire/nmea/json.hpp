@@ -476,11 +476,14 @@ constexpr void write_json(Sink& s, const T& msg) noexcept {
   s.put('}');
 }
 
-/// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}.
+/// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}. A '!'
+/// sentence (!AIVDM) says so with "start": {"type":"AIVDM","start":"!","fields":[...]}; a '$'
+/// one has no "start" key.
 template <json_sink Sink>
 constexpr void write_json(Sink& s, const unknown_sentence& u) noexcept {
   s.put("{\"type\":\"");
   detail::json_escape(s, u.sentence.address);
+  if (u.sentence.start == '!') s.put("\",\"start\":\"!");
   s.put("\",\"fields\":[");
   const parse_policy policy;
   field_reader r(u.sentence, policy);

@@ -530,7 +530,8 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
   status.ec = errc::ok;
   status.field = 0;
   status.column = 0;
-  if (!T::nmea.matches(s.address)) {
+  // Messages are '$' sentences: a '!' one (!AIVDM) is not the message, whatever its address.
+  if (s.start != '$' || !T::nmea.matches(s.address)) {
     status.ec = errc::wrong_address;
     return;
   }
@@ -566,7 +567,8 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
 
 }  // namespace detail
 
-/// Decode a message from a sentence already split by parse().
+/// Decode a message from a sentence already split by parse(). A '!' sentence is never T
+/// (wrong_address): messages are '$' sentences.
 template <message_like T>
 [[nodiscard]] constexpr result<T> decode(const sentence_view& s,
                                          const parse_policy& policy = {}) noexcept {

@@ -5,6 +5,11 @@
 //
 //   $GPRMC,164959.00,A,4221.71114,N,...,A*70\r\n
 //    ^^^^^ address  ^^^^^^^^^^^^^^^^^^^^^^^^ body (fields)   ^^ checksum
+//
+// A sentence starts with '$' (parametric sentences: every message seawire decodes) or '!'
+// (NMEA 0183 encapsulation sentences: !AIVDM, !AIVDO, ...). Both are read the same way, the
+// checksum included (XOR of the bytes between the start character and '*'); sentence_view::start
+// says which it was. A '$' inside a sentence is refused either way; a '!' inside is text.
 
 #include <bit>
 #include <cstddef>
@@ -36,7 +41,7 @@ struct parse_policy {
   bool extra_fields = true;       ///< ignore fields past the last one a message defines (SPI 4.2)
   bool require_crlf = false;      ///< otherwise CR LF, LF, CR or no ending at all are accepted
   bool strict_values = false;     ///< send-side value rules: no '+' signs, no reserved text
-  std::size_t max_length = 1024;  ///< bytes from '$' to the end of the checksum (65535 at most)
+  std::size_t max_length = 1024;  ///< bytes from '$' or '!' to the checksum's end (65535 at most)
   /// Spaces before and after a number (" -5.0"): SPI 4.2 says the minus sign is "the first
   /// non-whitespace character" of a number, so the Sandshark roles take them. Off by default:
   /// NMEA 0183 has none. strict_values refuses them whatever this says.
@@ -76,6 +81,10 @@ struct sentence_view {
   checksum_state checksum = checksum_state::absent;
   std::uint8_t received_checksum = 0;  ///< meaningful unless checksum == absent
   std::uint8_t computed_checksum = 0;
+  /// The start character: '$', or '!' for an encapsulation sentence (!AIVDM). Writing the
+  /// sentence back starts it with this. Messages seawire decodes are '$' sentences only: a '!'
+  /// sentence matches none of them, whatever its address, and decodes as an unknown_sentence.
+  char start = '$';
 
   /// Column of the first byte of `body` within `line`.
   [[nodiscard]] constexpr std::size_t body_column() const noexcept {
@@ -85,12 +94,12 @@ struct sentence_view {
 
 namespace detail {
 
-/// What the one pass over a sentence finds between its '$' and its '*' (or its end).
+/// What the one pass over a sentence finds between its start character and its '*' (or its end).
 struct body_scan {
   std::size_t star = 0;    ///< index of the first '*'; 0 if there is none
   std::size_t bad = 0;     ///< index of the first byte that may not stand there; 0 if none
   std::size_t commas = 0;  ///< ',' before the '*'
-  std::uint8_t x = 0;      ///< XOR of every byte before the '*' (the '$' excluded)
+  std::uint8_t x = 0;      ///< XOR of every byte before the '*' (the start character excluded)
 };
 
 /// The byte loop: the reference, and what constant evaluation, short lines and lines with
@@ -197,7 +206,7 @@ inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
   return 1 + static_cast<std::size_t>(std::countr_zero(other)) / 8;
 }
 
-/// One pass over `line` (no line ending; line[0] is the '$').
+/// One pass over `line` (no line ending; line[0] is the start character, '$' or '!').
 [[nodiscard]] constexpr body_scan scan_body(std::string_view line) noexcept {
   body_scan b;
 #if defined(__SSE2__)
@@ -254,7 +263,7 @@ namespace detail {
 
   if (n == 0) [[unlikely]]
     return fail(errc::empty_input, 0);
-  if (line[0] != '$') [[unlikely]]
+  if (line[0] != '$' && line[0] != '!') [[unlikely]]
     return fail(errc::missing_start, 0);
   // Columns and field counts are 16-bit, so no policy makes a longer line readable: past 65535
   // bytes the count of fields could wrap (65536 commas would read as no fields at all).
@@ -263,6 +272,7 @@ namespace detail {
     return fail(errc::too_long, longest);
 
   s.line = line;
+  s.start = line[0];
 
   // One pass: XOR, printable check, comma count, checksum delimiter.
   const detail::body_scan scan = detail::scan_body(line);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Fixed-capacity sentence output. Writes '$', the address and fields, then seals the sentence
-// with '*', two upper-case hex digits and CR LF. Never allocates; running out of room is an
-// error the caller sees, never a truncated sentence.
+// Fixed-capacity sentence output. Writes '$' (or '!'), the address and fields, then seals the
+// sentence with '*', two upper-case hex digits and CR LF. Never allocates; running out of room is
+// an error the caller sees, never a truncated sentence.
 
 #include <cstddef>
 #include <cstdint>
@@ -19,11 +19,12 @@ class writer {
  public:
   constexpr explicit writer(std::span<char> out) noexcept : out_(out) {}
 
-  /// Start a sentence: '$' and the address.
-  constexpr void begin(std::string_view address) noexcept {
+  /// Start a sentence: the start character and the address. `start` is '$' but to write an
+  /// encapsulation sentence back ('!', sentence_view::start).
+  constexpr void begin(std::string_view address, char start = '$') noexcept {
     size_ = 0;
     failed_ = false;
-    put('$');
+    put(start);
     put(address);
   }
   /// Start the next field (writes the separating comma).

@@ -451,9 +451,10 @@ class validator {
       digits = line.substr(star + 1);
       s = parse(line.substr(0, star), inspect);
     }
-    if (!s) {
+    // RobotX reports are '$' sentences: a '!' one (an encapsulation sentence) has the wrong start.
+    if (!s || s.value.start != '$') {
       if (bad_ending) add(rule::line_ending, 0, errc::bad_line_ending);
-      add(rule::framing, 0, s.ec);
+      add(rule::framing, 0, s ? errc::missing_start : s.ec);
       return;
     }
     const sentence_view& sv = s.value;
