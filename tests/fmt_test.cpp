@@ -42,7 +42,7 @@ constexpr std::string_view kNvg =
 TEST_CASE("messages: plain and JSON") {
   const auto nvg = must_decode<kingfisher::cpnvg>(kNvg);
   CHECK(fmt::format("{}", nvg) ==
-        "CPNVG{timestamp=16:49:59.034, latitude=42.36185237, longitude=-71.0908130, "
+        "CPNVG{timestamp=16:49:59.034, latitude=42.36185236666667, longitude=-71.0908130, "
         "position_quality=true, altitude_m=0, depth_m=0, heading_deg=234.32964, "
         "roll_deg=-6.796959, pitch_deg=-1.706798, nav_timestamp=16:49:59.006}");
   // {:j} is write_json, byte for byte.
@@ -66,7 +66,7 @@ TEST_CASE("messages: plain and JSON") {
 
 TEST_CASE("value types on their own") {
   const auto nvg = must_decode<kingfisher::cpnvg>(kNvg);
-  CHECK(fmt::format("{}", nvg.lat) == "42.36185237");
+  CHECK(fmt::format("{}", nvg.lat) == "42.36185236666667");
   CHECK(fmt::format("{}", nvg.lon) == "-71.0908130");
   CHECK(fmt::format("{}", nvg.timestamp) == "16:49:59.034");
   CHECK(fmt::format("{:j}", nvg.timestamp) == R"("16:49:59.034")");

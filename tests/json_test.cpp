@@ -3,7 +3,9 @@
 // sentences and errors, the exact position conversions, and reading messages back. Where
 // nlohmann-json is installed, every document written here must also parse as JSON.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -180,16 +182,16 @@ TEST_CASE("integers, flags, optionals") {
   CHECK(value_json(std::optional<decimal>{decimal::scaled(15, 1)}) == "1.5");
 }
 
-TEST_CASE("NMEA positions: signed decimal degrees with minute places + 2") {
+TEST_CASE("NMEA positions: signed decimal degrees, exact or within 5e-10 of the wire") {
   const auto rmc = must_decode<standard::rmc>(
       "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
       "311214,,,A*70");
-  CHECK(value_json(*rmc.lat) == "42.3618523");
-  CHECK(value_json(*rmc.lon) == "-71.0908130");
+  CHECK(value_json(*rmc.lat) == "42.3618523333333");  // 21.71114 / 60 repeats: 13 digits
+  CHECK(value_json(*rmc.lon) == "-71.0908130");       // 5.44878 / 60 ends: exact
   const auto nvg = must_decode<kingfisher::cpnvg>(
       "$CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
       "164959.006*78");
-  CHECK(value_json(nvg.lat) == "42.36185237");
+  CHECK(value_json(nvg.lat) == "42.36185236666667");
   CHECK(value_json(nvg.lon) == "-71.0908130");  // unpadded degrees: same value
   // At exactly zero the sign still comes from the hemisphere letter.
   const auto zero =
@@ -197,14 +199,21 @@ TEST_CASE("NMEA positions: signed decimal degrees with minute places + 2") {
   CHECK(value_json(zero.lat) == "0.0000");
   CHECK(value_json(zero.lon) == "-0.0000");
   CHECK(valid_json(value_json(zero.lon)));
-  // No minute fraction: two places.
+  // No minute fraction: written as one fraction digit ("59.0").
   latitude l;
   l.whole_degrees = 89;
   l.minutes = decimal(59);
   l.hemi = hemisphere::south;
-  CHECK(value_json(l) == "-89.98");
+  CHECK(value_json(l) == "-89.983333333");
   l.minutes = decimal::scaled(599, 1);
-  CHECK(value_json(l) == "-89.998");  // 59.9/60 = 0.998333
+  CHECK(value_json(l) == "-89.998333333");  // 59.9/60 = 0.99833...
+  l.minutes = decimal::scaled(5991, 2);
+  CHECK(value_json(l) == "-89.9985");  // 59.91/60 = 0.9985 exactly
+  // A receiver writing two minute digits: 0.76' / 60 = 0.012666...'s degrees to 1e-10.
+  const auto two =
+      must_decode<standard::gga>("$GPGGA,105027.80,5612.99,N,01200.76,E,1,03,2.5,160.0,M,,M,,*7A");
+  CHECK(value_json(*two.lon) == "12.0126666667");
+  CHECK(value_json(*two.lat) == "56.2165");
 }
 
 TEST_CASE("decimal-degree positions keep their digits") {
@@ -241,14 +250,14 @@ TEST_CASE("whole messages: type first, then fields in wire order") {
   CHECK(message_json(must_decode<kingfisher::cpnvg>(
             "$CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
             "164959.006*78")) ==
-        R"({"type":"CPNVG","timestamp":"16:49:59.034","latitude":42.36185237,)"
+        R"({"type":"CPNVG","timestamp":"16:49:59.034","latitude":42.36185236666667,)"
         R"("longitude":-71.0908130,"position_quality":true,"altitude_m":0,"depth_m":0,)"
         R"("heading_deg":234.32964,"roll_deg":-6.796959,"pitch_deg":-1.706798,)"
         R"("nav_timestamp":"16:49:59.006"})");
   // Talker-agnostic messages: "type" is the address as it came.
   CHECK(message_json(must_decode<standard::gga>(
             "$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C")) ==
-        R"({"type":"GPGGA","time":"16:49:59.00","latitude":42.3618523,)"
+        R"({"type":"GPGGA","time":"16:49:59.00","latitude":42.3618523333333,)"
         R"("longitude":-71.0908130,"quality":"1","satellites":6,"hdop":2.80,"altitude_m":46.6,)"
         R"("geoid_separation_m":-33.2,"dgps_age_s":null,"dgps_station":null})");
   standard::rmc rmc = must_decode<standard::rmc>(
@@ -317,13 +326,46 @@ TEST_CASE("from_decimal_degrees inverts to_decimal_degrees exactly") {
       l.minutes.mantissa = rng() % (60 * seawire::detail::pow10_table[p]);
       l.hemi = rng() % 2 ? hemisphere::north : hemisphere::south;
       const decimal deg = to_decimal_degrees(l);
-      CHECK(deg.places == p + 2);
+      const bool ends = l.minutes.mantissa % 3 == 0;  // minutes / 60 terminates
+      CHECK(deg.places == (ends ? p + 2 : std::min(p + 8, 17u)));
+      // Within 5e-10 degrees of the wire's value (long double has 64 mantissa bits).
+      const long double exact =
+          static_cast<long double>(l.whole_degrees) +
+          static_cast<long double>(l.minutes.mantissa) /
+              (60.0L * static_cast<long double>(seawire::detail::pow10_table[p]));
+      const long double got = static_cast<long double>(deg.mantissa) /
+                              static_cast<long double>(seawire::detail::pow10_table[deg.places]);
+      CHECK(std::fabs(static_cast<double>(got - exact)) <= (ends ? 1e-15 : 5.000001e-10));
       const auto back = from_decimal_degrees<latitude>(deg, static_cast<int>(p));
       REQUIRE(back);
       CHECK(back.value == l);
+      INFO("minute places " << p << ", minutes " << l.minutes.mantissa);
       const auto by_default = from_decimal_degrees<latitude>(deg);  // the same minutes
       REQUIRE(by_default);
-      CHECK(by_default.value == l);
+      if (p <= 9) {
+        CHECK(by_default.value == l);
+      } else {
+        // Past 9 digits the counts are shared: a trailing zero of the minutes may go, but the
+        // degrees written from what comes back are the same.
+        CHECK(to_decimal_degrees(by_default.value) == deg);
+      }
+    }
+  }
+}
+
+TEST_CASE("from_decimal_degrees finds a longitude's minute digits, trailing zeros too") {
+  std::mt19937_64 rng(11);
+  for (unsigned p = 1; p <= 8; ++p) {
+    for (int i = 0; i < 500; ++i) {
+      longitude l;
+      l.whole_degrees = static_cast<std::uint16_t>(rng() % 180);
+      l.minutes.places = static_cast<std::uint8_t>(p);
+      l.minutes.mantissa = rng() % (60 * seawire::detail::pow10_table[p]);
+      if (i % 4 == 0) l.minutes.mantissa -= l.minutes.mantissa % 10;  // a trailing zero
+      l.hemi = rng() % 2 ? hemisphere::east : hemisphere::west;
+      const auto back = from_decimal_degrees<longitude>(to_decimal_degrees(l));
+      REQUIRE(back);
+      CHECK(back.value == l);
     }
   }
 }

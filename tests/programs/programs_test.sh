@@ -76,13 +76,13 @@ case_json() {
     '{"type":"CPIMU","timestamp":"16:49:58.858","rate_x_dps":-0.061035,"rate_y_dps":-0.000097,"rate_z_dps":-0.061035,"accel_x_mps2":-0.026916,"accel_y_mps2":0.104533,"accel_z_mps2":-0.932172,"nav_timestamp":null}' \
     "$(line 1 "$k")"
   expect_eq "GPRMC relayed by the vehicle" \
-    '{"type":"GPRMC","time":"16:49:59.00","status":"A","latitude":42.3618523,"longitude":-71.0908130,"speed_knots":0.145,"course_true":156.78,"date":"2014-12-31","magnetic_variation":null,"mode":"A","navigational_status":null}' \
+    '{"type":"GPRMC","time":"16:49:59.00","status":"A","latitude":42.3618523333333,"longitude":-71.0908130,"speed_knots":0.145,"course_true":156.78,"date":"2014-12-31","magnetic_variation":null,"mode":"A","navigational_status":null}' \
     "$(line 2 "$k")"
   expect_eq "GPGGA relayed by the vehicle" \
-    '{"type":"GPGGA","time":"16:49:59.00","latitude":42.3618523,"longitude":-71.0908130,"quality":"1","satellites":6,"hdop":2.80,"altitude_m":46.6,"geoid_separation_m":-33.2,"dgps_age_s":null,"dgps_station":null}' \
+    '{"type":"GPGGA","time":"16:49:59.00","latitude":42.3618523333333,"longitude":-71.0908130,"quality":"1","satellites":6,"hdop":2.80,"altitude_m":46.6,"geoid_separation_m":-33.2,"dgps_age_s":null,"dgps_station":null}' \
     "$(line 3 "$k")"
   expect_eq "CPNVG with unpadded longitude" \
-    '{"type":"CPNVG","timestamp":"16:49:59.034","latitude":42.36185237,"longitude":-71.0908130,"position_quality":true,"altitude_m":0,"depth_m":0,"heading_deg":234.32964,"roll_deg":-6.796959,"pitch_deg":-1.706798,"nav_timestamp":"16:49:59.006"}' \
+    '{"type":"CPNVG","timestamp":"16:49:59.034","latitude":42.36185236666667,"longitude":-71.0908130,"position_quality":true,"altitude_m":0,"depth_m":0,"heading_deg":234.32964,"roll_deg":-6.796959,"pitch_deg":-1.706798,"nav_timestamp":"16:49:59.006"}' \
     "$(line 4 "$k")"
   expect_eq "PYDIR" '{"type":"PYDIR","thrust_left":45,"thrust_right":55}' "$(line 7 "$k")"
   expect_eq "CPALT" '{"type":"CPALT","timestamp":"16:49:59.100","lights_on":true}' "$(line 8 "$k")"
@@ -735,6 +735,47 @@ case_ais() {
   expect_eq "the text keeps its '!'" \
     '{"type":"BPSTS","timestamp":"23:11:33.12","all_ok":true,"message":"Mission done!"}' \
     "$(cat "$work/out")"
+}
+
+# What receivers in the field send: a blank GGA fix quality, an RMC variation no variation can
+# have, a '*' with no digits, a line cut off without a checksum; positions printed within 5e-10
+# degrees and read back to the same minutes.
+case_receivers() {
+  local gga rmc999 rmcletter cut star
+  gga=$(seal 'GPGGA,105027.80,5612.9956,N,00306.6983,W,,03,2.506,160.002,M,,M,,')
+  rmc999=$(seal 'GPRMC,001053.00,A,4404.14083,N,12118.85886,W,0.011,,220218,999.9,E,A')
+  rmcletter=$(seal 'GPRMC,001053.00,A,4404.14083,N,12118.85886,W,0.011,,220218,,E,A')
+  cut='$GNRMC,001053.00,A,4404.14083,N,12118.85886,W,0.'
+  star='$GPGGA,105027.80,5612.9956,N,00306.6983,W,1,03,2.506,160.002,M,,M,,*'
+  crlf "$gga" "$rmc999" "$rmcletter" "$star" "$cut" >"$work/log"
+  expect_rc "decode what receivers send" 1 "$decode" <"$work/log"
+  expect_eq "three fixes kept, two corrupt lines refused" 5 "$(wc -l <"$work/out")"
+  expect_eq "blank fix quality: null, the fix kept" \
+    '{"type":"GPGGA","time":"10:50:27.80","latitude":56.216593333333,"longitude":-3.111638333333,"quality":null,"satellites":3,"hdop":2.506,"altitude_m":160.002,"geoid_separation_m":null,"dgps_age_s":null,"dgps_station":null}' \
+    "$(line 1 "$work/out")"
+  expect_eq "999.9,E: no variation, the fix kept" \
+    '{"type":"GPRMC","time":"00:10:53.00","status":"A","latitude":44.0690138333333,"longitude":-121.3143143333333,"speed_knots":0.011,"course_true":null,"date":"2018-02-22","magnetic_variation":null,"mode":"A","navigational_status":null}' \
+    "$(line 2 "$work/out")"
+  expect_eq "'*' then the line end: a checksum cut off" \
+    '"error":"bad_checksum_format"' "$(line 4 "$work/out" | grep -o '"error":"[a-z_]*"')"
+  expect_eq "cut off without a checksum: too_few_fields at course_true" \
+    '"error":"too_few_fields","field":8' "$(line 5 "$work/out" | grep -o '"error":"[a-z_]*","field":[0-9]*')"
+  # Written back: the variation's letter stays; the impossible value goes.
+  expect_rc "--format nmea" 1 "$decode" --format nmea <"$work/log"
+  expect_eq "written back" "$(crlf "$gga" "$rmcletter" "$rmcletter")" "$(cat "$work/out")"
+  # JSON | encode gives the same minutes back, digit for digit, trailing zeros too.
+  crlf "$(seal 'GPGGA,105027.80,5612.99,N,01200.76,E,1,03,2.5,160.0,M,,M,,')" \
+    "$(seal 'GPGGA,105027.80,5612.9900,N,01200.7600,E,1,03,2.5,160.0,M,,M,,')" \
+    "$(seal 'GPGGA,105027.80,5612.990000,N,01200.760000,E,1,03,2.5,160.0,M,,M,,')" >"$work/pos"
+  expect_rc "decode positions" 0 "$decode" <"$work/pos"
+  expect_eq "0.76' / 60 printed to 1e-10 degrees" '"longitude":12.0126666667' \
+    "$(line 1 "$work/out" | grep -o '"longitude":[0-9.]*')"
+  cp "$work/out" "$work/pos.json"
+  expect_rc "encode positions" 0 "$encode" <"$work/pos.json"
+  if ! cmp -s "$work/out" "$work/pos"; then
+    fail "positions not written back digit for digit"
+    diff "$work/pos" "$work/out" >&2 || true
+  fi
 }
 
 # A live link whose sender ends lines with CR alone: under --line-buffered each sentence comes

@@ -129,20 +129,48 @@ struct coordinate_traits<decimal_coordinate<A>> {
 
 }  // namespace detail
 
-/// Signed decimal degrees of an NMEA position, exactly: two more fraction digits than the
-/// minutes have (at most 17), so the minutes can be recovered from them digit for digit.
-/// "4221.71114,N" -> 42.3618523; "0000.00,W" -> -0.0000 (sign from the hemisphere letter).
+/// The fraction digits a position may be written with (a "precision"): minutes of a DDMM.mmm
+/// field (at least one digit after the point, as every spec writes it; gpsd and others drop a
+/// fix written "4221,N"), degrees of a decimal-degree field.
+inline constexpr unsigned min_minute_places = 1;
+inline constexpr unsigned max_minute_places = 12;
+inline constexpr unsigned max_degree_places = 18;
+
+namespace detail {
+/// Fraction digits to_decimal_degrees writes for minutes of `p` digits whose mantissa is
+/// `mantissa`. minutes / 60 ends after p + 2 digits when the mantissa is a multiple of 3 (60 =
+/// 2^2 * 3 * 5): then exactly those. Otherwise it repeats for ever: p + 8 digits, rounded, so
+/// within 5e-10 degrees of the wire (at most 19 digits in all: 17 fraction digits for
+/// latitudes, 16 for longitudes). Each count belongs to one p of each kind, and a rounded
+/// quotient never equals an exact one at the same count, so the minutes' digits can be told
+/// back from the degrees.
+template <class Axis>
+[[nodiscard]] constexpr unsigned degree_places_for(unsigned p, std::uint64_t mantissa) noexcept {
+  if (mantissa % 3 == 0) return p + 2;
+  constexpr unsigned cap = Axis::max_degrees >= 100 ? 16 : 17;
+  return p + 8 < cap ? p + 8 : cap;
+}
+}  // namespace detail
+
+/// Signed decimal degrees of an NMEA position, exact where the decimal expansion terminates
+/// and within 5e-10 degrees of the wire's value where it does not (see degree_places_for):
+/// "4221.71114,N" -> 42.3618523333333, "07105.44878,W" -> -71.0908130 (exact),
+/// "01200.76,E" -> 12.0126666667, "0000.00,W" -> -0.0000 (the sign comes from the hemisphere
+/// letter). from_decimal_degrees() gives the same minutes back, digit for digit.
 template <class Axis>
 [[nodiscard]] constexpr decimal to_decimal_degrees(const nmea_coordinate<Axis>& c) noexcept {
-  // minutes / 60 at p + 2 places is minutes_mantissa * 100 / 60 = mantissa * 5 / 3, rounded;
-  // mantissa % 3 is never a half, so there are no ties.
-  decimal m = detail::round_places(c.minutes, 15);  // 180 * 10^17 must fit 64 bits
-  const std::uint64_t q = m.mantissa / 3;
-  const std::uint64_t r = m.mantissa % 3;
-  const std::uint64_t frac = 5 * q + (r == 0 ? 0 : (r == 1 ? 2 : 3));
+  decimal m = c.written_minutes();
+  if (m.places > max_minute_places) m = detail::round_places(m, max_minute_places);
+  const unsigned p = m.places;
+  const unsigned k = detail::degree_places_for<Axis>(p, m.mantissa);
+  // minutes / 60 at k places: mantissa * 10^(k - p) / 60, rounded. k >= p + 2, where a
+  // terminating quotient ends, so there is never a tie; the product stays below
+  // 60 * 10^k <= 6e18.
+  const std::uint64_t scaled = m.mantissa * seawire::detail::pow10_table[k - p];
+  const std::uint64_t frac = scaled / 60 + (scaled % 60 >= 30 ? 1 : 0);
   decimal d;
-  d.places = static_cast<std::uint8_t>(m.places + 2);
-  d.mantissa = c.whole_degrees * seawire::detail::pow10_table[d.places] + frac;
+  d.places = static_cast<std::uint8_t>(k);
+  d.mantissa = c.whole_degrees * seawire::detail::pow10_table[k] + frac;
   d.negative = static_cast<char>(c.hemi) == Axis::negative;
   return d;
 }
@@ -157,28 +185,47 @@ template <class Axis>
   return d;
 }
 
-/// The fraction digits a position may be written with (a "precision"): minutes of a DDMM.mmm
-/// field (at least one digit after the point, as every spec writes it; gpsd and others drop a
-/// fix written "4221,N"), degrees of a decimal-degree field.
-inline constexpr unsigned min_minute_places = 1;
-inline constexpr unsigned max_minute_places = 12;
-inline constexpr unsigned max_degree_places = 18;
+template <class Coordinate>
+[[nodiscard]] constexpr result<Coordinate> from_decimal_degrees(decimal deg,
+                                                                int minute_places = -1) noexcept;
+
+namespace detail {
+/// The fewest minute digits whose minutes, written by to_decimal_degrees, give exactly `deg`
+/// (its digits and their count); 0 when none does (degrees that seawire did not write).
+template <class Coordinate>
+[[nodiscard]] constexpr unsigned reproducing_minute_places(const decimal& deg) noexcept {
+  for (unsigned p = min_minute_places; p <= max_minute_places; ++p) {
+    const result<Coordinate> c = from_decimal_degrees<Coordinate>(deg, static_cast<int>(p));
+    if (!c) return 0;
+    const decimal back = to_decimal_degrees(c.value);
+    if (back.mantissa == deg.mantissa && back.places == deg.places) return p;
+  }
+  return 0;
+}
+}  // namespace detail
 
 /// The NMEA position of signed decimal degrees given as written, exactly (no double):
 /// minutes rounded to `minute_places` digits (halves up), hemisphere from the sign (so -0.0 is
-/// S or W). minute_places < 0 picks the default: the number's fraction digits - 2, which gives
-/// back exactly the minutes to_decimal_degrees() started from, or 4 (0.0001' = 0.19 m) when the
-/// number has fewer than 3 fraction digits. out_of_range for minute places outside 1..12 (gpsd
-/// and others drop a fix written "4221,N"); bad_latitude/bad_longitude beyond 90/180 degrees.
+/// S or W). minute_places < 0 picks the default: the fewest minute digits from which
+/// to_decimal_degrees() writes exactly these degrees, so degrees that seawire wrote give back
+/// the wire's minutes digit for digit (up to 8 minute digits for longitudes, 9 for latitudes;
+/// past that the trailing zeros of the minutes may be lost). Degrees written otherwise get the
+/// number's fraction digits - 2, or 4 (0.0001' = 0.19 m) when it has fewer than 3 fraction
+/// digits. out_of_range for minute places outside 1..12 (gpsd and others drop a fix written
+/// "4221,N"); bad_latitude/bad_longitude beyond 90/180 degrees.
 template <class Coordinate>
 [[nodiscard]] constexpr result<Coordinate> from_decimal_degrees(decimal deg,
-                                                                int minute_places = -1) noexcept {
+                                                                int minute_places) noexcept {
   result<Coordinate> r;
   using Axis = typename detail::coordinate_traits<Coordinate>::axis;
   if constexpr (detail::coordinate_traits<Coordinate>::nmea_form) {
-    const unsigned p = minute_places >= 0 ? static_cast<unsigned>(minute_places)
-                       : deg.places >= 3  ? deg.places - 2u
-                                          : 4u;
+    unsigned p = 0;
+    if (minute_places >= 0) {
+      p = static_cast<unsigned>(minute_places);
+    } else {
+      p = detail::reproducing_minute_places<Coordinate>(deg);
+      if (p == 0) p = deg.places >= 3 ? deg.places - 2u : 4u;
+    }
     if (p < min_minute_places || p > max_minute_places) {
       r.ec = errc::out_of_range;
       return r;
