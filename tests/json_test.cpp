@@ -874,3 +874,20 @@ TEST_CASE("ANELLO frame JSON: validate() and read_frame_json agree on every fiel
   CHECK(accepted > 19 * 300);
   CHECK(refused > 0);
 }
+
+TEST_CASE("magnetic variation: signed degrees east positive, null without a value") {
+  nmea::magnetic_variation v{decimal::scaled(153, 1), hemisphere::west};
+  CHECK(value_json(v) == "-15.3");
+  v.direction = hemisphere::east;
+  CHECK(value_json(v) == "15.3");
+  v.value.reset();  // a letter that came without a usable value
+  CHECK(value_json(v) == "null");
+
+  nmea::magnetic_variation back;
+  REQUIRE(read_json_value(json_value{json_kind::number, "-15.30"}, back) == errc::ok);
+  CHECK(back.value == decimal::scaled(1530, 2));
+  CHECK(back.direction == hemisphere::west);
+  REQUIRE(read_json_value(json_value{json_kind::number, "-0.0"}, back) == errc::ok);
+  CHECK(back.direction == hemisphere::west);  // the sign of -0.0 is the letter W
+  CHECK(read_json_value(json_value{json_kind::string, "east"}, back) == errc::bad_variation);
+}
