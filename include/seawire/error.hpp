@@ -59,7 +59,7 @@ enum class errc : std::uint8_t {
   // -- added later (values are stable, so new ones go last) --
   bad_variation,            ///< magnetic variation not an unsigned number of degrees
   bad_variation_direction,  ///< magnetic variation letter other than E or W
-  variation_out_of_range,  ///< magnetic variation to send beyond 0..180 degrees
+  variation_out_of_range,   ///< magnetic variation to send beyond 0..180 degrees
 };
 
 /// The identifier of an errc as text ("checksum_mismatch"), for logs and JSON.

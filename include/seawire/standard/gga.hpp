@@ -33,16 +33,16 @@ constexpr std::string_view enum_chars(gps_quality) noexcept { return "012345678"
 
 struct gga {
   talker_id talker = "GP";
-  std::optional<time_of_day> time;             // 1  UTC time of the fix
-  std::optional<latitude> lat;                 // 2,3
-  std::optional<longitude> lon;                // 4,5
-  std::optional<gps_quality> quality;          // 6  blank: not available (the fix is kept)
-  std::optional<std::uint8_t> satellites;      // 7  in use, written with two digits
-  std::optional<decimal> hdop;                 // 8  horizontal dilution of precision
-  std::optional<decimal> altitude_m;           // 9,10  antenna altitude above MSL, metres
-  std::optional<decimal> geoid_separation_m;   // 11,12 geoid above the WGS84 ellipsoid, metres
-  std::optional<decimal> dgps_age_s;           // 13 seconds since the last DGPS update
-  std::optional<std::uint16_t> dgps_station;   // 14 station id 0000-1023
+  std::optional<time_of_day> time;            // 1  UTC time of the fix
+  std::optional<latitude> lat;                // 2,3
+  std::optional<longitude> lon;               // 4,5
+  std::optional<gps_quality> quality;         // 6  blank: not available (the fix is kept)
+  std::optional<std::uint8_t> satellites;     // 7  in use, written with two digits
+  std::optional<decimal> hdop;                // 8  horizontal dilution of precision
+  std::optional<decimal> altitude_m;          // 9,10  antenna altitude above MSL, metres
+  std::optional<decimal> geoid_separation_m;  // 11,12 geoid above the WGS84 ellipsoid, metres
+  std::optional<decimal> dgps_age_s;          // 13 seconds since the last DGPS update
+  std::optional<std::uint16_t> dgps_station;  // 14 station id 0000-1023
 
   friend constexpr bool operator==(const gga&, const gga&) noexcept = default;
 

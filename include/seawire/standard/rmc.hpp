@@ -48,16 +48,16 @@ constexpr std::string_view enum_chars(nav_status) noexcept { return "SCUV"; }
 
 struct rmc {
   talker_id talker = "GP";
-  std::optional<time_of_day> time;                          // 1  UTC time of the fix
-  rmc_status status = rmc_status::active;                   // 2  A active, V receiver warning
-  std::optional<latitude> lat;                              // 3,4  DDMM.m, N/S
-  std::optional<longitude> lon;                             // 5,6  DDDMM.m, E/W
-  std::optional<decimal> speed_knots;                       // 7  speed over ground, knots
-  std::optional<decimal> course_true;                       // 8  track made good, degrees true
-  std::optional<nmea::date> date;                           // 9  ddmmyy
+  std::optional<time_of_day> time;                             // 1  UTC time of the fix
+  rmc_status status = rmc_status::active;                      // 2  A active, V receiver warning
+  std::optional<latitude> lat;                                 // 3,4  DDMM.m, N/S
+  std::optional<longitude> lon;                                // 5,6  DDDMM.m, E/W
+  std::optional<decimal> speed_knots;                          // 7  speed over ground, knots
+  std::optional<decimal> course_true;                          // 8  track made good, degrees true
+  std::optional<nmea::date> date;                              // 9  ddmmyy
   std::optional<nmea::magnetic_variation> magnetic_variation;  // 10,11 degrees, E/W
-  std::optional<mode_indicator> mode;                       // 12 NMEA 2.3+
-  std::optional<standard::nav_status> navigational_status;  // 13 NMEA 4.1+
+  std::optional<mode_indicator> mode;                          // 12 NMEA 2.3+
+  std::optional<standard::nav_status> navigational_status;     // 13 NMEA 4.1+
   std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 12-13 came
                                  //   blank, to write back as it came (nmea::keeps_wire_fields)
 
