@@ -576,3 +576,30 @@ TEST_CASE("for_each_field gives declared names in wire order") {
   });
   CHECK(names == "speed heading id level tail ");
 }
+
+TEST_CASE("time_of_day and date from system_clock time points and back") {
+  using namespace std::chrono;
+  // 2014-12-31 16:49:59.980123456 UTC
+  const sys_time<nanoseconds> t =
+      sys_days{2014y / December / 31} + 16h + 49min + 59s + 980ms + 123us + 456ns;
+  const auto tod = time_of_day::from(t);
+  REQUIRE(tod);
+  CHECK(tod.value == time_of_day{16, 49, 59, 980, 3});  // truncated to 3 places
+  CHECK(time_of_day::from(t, 9).value == time_of_day{16, 49, 59, 980123456, 9});
+  CHECK(time_of_day::from(t, 0).value == time_of_day{16, 49, 59});
+  CHECK(time_of_day::from(t, 10).ec == errc::out_of_range);
+  CHECK(date::from(t) == date{2014, 12, 31});
+  CHECK(to_sys_time(date::from(t), time_of_day::from(t, 9).value) == t);
+  CHECK(to_sys_time(date{2014, 12, 31}, time_of_day{16, 49, 59, 980, 3}) ==
+        time_point_cast<nanoseconds>(t - 123us - 456ns));
+  // Before 1970, and the clock's own now() at its coarser resolution.
+  const auto old = sys_days{1969y / July / 20} + 20h + 17min + 40s;
+  CHECK(time_of_day::from(old).value == time_of_day{20, 17, 40, 0, 3});
+  CHECK(date::from(old) == date{1969, 7, 20});
+  const auto now = system_clock::now();
+  const auto back = to_sys_time(date::from(now), time_of_day::from(now, 9).value);
+  CHECK(back == time_point_cast<nanoseconds>(now));
+  // A leap second has no system_clock time of its own: it is the next day's first second.
+  CHECK(to_sys_time(date{2016, 12, 31}, time_of_day{23, 59, 60}) == sys_days{2017y / January / 1});
+  CHECK(date{2014, 12, 31}.sys_days() == sys_days{2014y / December / 31});
+}

@@ -574,6 +574,16 @@ struct time_of_day {
     r.value.places = static_cast<std::uint8_t>(places);
     return r;
   }
+  /// The UTC time of day of a system_clock time point (system_clock counts UTC without leap
+  /// seconds), truncated to `places` fraction digits (0 to 9; out_of_range beyond). Any
+  /// time point, before 1970 too.
+  template <class Duration>
+  [[nodiscard]] static constexpr result<time_of_day> from(std::chrono::sys_time<Duration> t,
+                                                          unsigned places = 3) noexcept {
+    using namespace std::chrono;
+    const auto ns = time_point_cast<nanoseconds>(t);
+    return from_since_midnight(ns - floor<days>(ns), places);
+  }
   friend constexpr bool operator==(const time_of_day&, const time_of_day&) noexcept = default;
 };
 
@@ -595,6 +605,16 @@ struct date {
     return std::chrono::year_month_day{std::chrono::year{year}, std::chrono::month{month},
                                        std::chrono::day{day}};
   }
+  /// The day as a system_clock time point (its midnight, UTC).
+  [[nodiscard]] constexpr std::chrono::sys_days sys_days() const noexcept {
+    return std::chrono::sys_days{ymd()};
+  }
+  /// The UTC date of a system_clock time point. A ddmmyy field holds 1980..2079: a date
+  /// outside is refused when written (out_of_range).
+  template <class Duration>
+  [[nodiscard]] static constexpr date from(std::chrono::sys_time<Duration> t) noexcept {
+    return from(std::chrono::year_month_day{std::chrono::floor<std::chrono::days>(t)});
+  }
   [[nodiscard]] static constexpr date from(std::chrono::year_month_day d) noexcept {
     return {static_cast<std::uint16_t>(static_cast<int>(d.year())),
             static_cast<std::uint8_t>(static_cast<unsigned>(d.month())),
@@ -610,6 +630,14 @@ namespace detail {
   return month == 2 && leap ? 29 : days[month - 1];
 }
 }  // namespace detail
+
+/// The system_clock time point of a UTC date and time of day (RMC's fields 9 and 1, RobotX's
+/// date and time), to the nanosecond. system_clock has no leap seconds: 23:59:60 is the next
+/// day's 00:00:00.
+[[nodiscard]] constexpr std::chrono::sys_time<std::chrono::nanoseconds> to_sys_time(
+    const date& d, const time_of_day& t) noexcept {
+  return d.sys_days() + t.since_midnight();
+}
 
 // ---------------------------------------------------------------------------------------------
 // text
