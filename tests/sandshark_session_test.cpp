@@ -115,11 +115,34 @@ TEST_CASE("payload startup: BPVER, then BPLOG,ACK,ON before any other subscripti
   REQUIRE(ev.size() == 1);
   CHECK(ev[0].kind == payload_event_kind::ack_ok);
   CHECK(ev[0].command == "BPLOG");
+  // BPLOG has no timestamp: the event says which subscription was acknowledged.
+  REQUIRE(ev[0].subscription);
+  CHECK(ev[0].subscription->code == "ACK");
+  CHECK(ev[0].subscription->state == log_state::on);
   lines = sent(p);
   REQUIRE(lines.size() == 1);
   CHECK(lines[0] == sealed("BPLOG,NVG,ON"));
   CHECK(p.subscriptions().includes("NVG"));
   CHECK_FALSE(p.subscriptions().includes("NVR"));
+
+  (void)p.receive(ack_of(lines[0], '2'), at(200ms));
+  const auto nvg = events(p);
+  REQUIRE(nvg.size() == 1);
+  CHECK(nvg[0].kind == payload_event_kind::ack_ok);
+  REQUIRE(nvg[0].subscription);
+  CHECK(nvg[0].subscription->code == "NVG");
+  CHECK(nvg[0].subscription->state == log_state::on);
+
+  // Events about other commands carry none.
+  REQUIRE(p.subscribe("NVG", at(300ms), log_state::off).ok());
+  const auto off = sent(p);
+  REQUIRE(off.size() == 1);
+  CHECK(off[0] == sealed("BPLOG,NVG,OFF"));
+  (void)p.receive(ack_of(off[0], '2'), at(400ms));
+  const auto off_ev = events(p);
+  REQUIRE(off_ev.size() == 1);
+  REQUIRE(off_ev[0].subscription);
+  CHECK(off_ev[0].subscription->state == log_state::off);
 }
 
 TEST_CASE("payload startup without acks: nothing waits") {
@@ -1076,4 +1099,60 @@ TEST_CASE("a payload session driving a vehicle session for a minute") {
   CHECK(rmb_seen == 1 + (45000 - 6000) / 4000);
   CHECK(lost_requests == 0);
   CHECK(vev.back().kind == vehicle_event_kind::request_cancelled);
+}
+
+TEST_CASE("vehicle: publish() stamps a timestamp left unset; BPABT moves the mission to Aborting") {
+  vehicle_session<> v;
+  v.set_utc(at(0ms), time_of_day{8, 10, 25, 0, 3});
+  const client_id c = connected_with_acks(v, at(0ms));
+  REQUIRE(v.receive(c, "$BPLOG,ALL,ON*16", at(0ms)).ok());
+  (void)sent(v);
+
+  bfnvg nav;  // timestamp left at its default
+  nav.lat = latitude::from_degrees(42.5).value;
+  nav.lon = longitude::from_degrees(-71.25).value;
+  REQUIRE(v.publish(nav, at(1500ms)).ok());
+  auto lines = sent(v);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].starts_with("$BFNVG,081026.500,"));
+  nav.timestamp = time_of_day{1, 2, 3, 400, 3};  // one given is kept
+  REQUIRE(v.publish(nav, at(1600ms)).ok());
+  lines = sent(v);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].starts_with("$BFNVG,010203.400,"));
+
+  CHECK_FALSE(v.mission().has_value());
+  bfmis running;
+  (void)running.dive_file.assign("dive1.xml");
+  (void)running.status.assign("Running /var/log/mission_12");
+  REQUIRE(v.publish(running, at(2000ms)).ok());
+  (void)sent(v);
+  REQUIRE(v.mission().has_value());
+  CHECK(v.mission()->state() == mission_state::running);
+  CHECK(v.mission()->timestamp == time_of_day{8, 10, 27, 0, 3});
+
+  REQUIRE(v.receive(c, sealed("BPABT,081027.500,leak detected"), at(2500ms)).ok());
+  lines = sent(v);
+  REQUIRE(lines.size() == 2);
+  const bfack ack = decoded_ack(lines[0]);
+  CHECK(ack.command == "ABT");
+  CHECK(ack.status == ack_status::ok);
+  const auto mis = decode<bfmis>(lines[1], from_vehicle_policy);
+  REQUIRE(mis.ok());
+  CHECK(mis.value.state() == mission_state::aborting);
+  CHECK(mis.value.dive_file == "dive1.xml");
+  CHECK(mis.value.timestamp == time_of_day{8, 10, 27, 500, 3});
+  REQUIRE(v.mission().has_value());
+  CHECK(v.mission()->state() == mission_state::aborting);
+
+  // A second abort changes nothing more; nor does one when no mission is under way.
+  REQUIRE(v.receive(c, sealed("BPABT,081028.000,again"), at(3000ms)).ok());
+  CHECK(sent(v).size() == 1);  // the ack only
+  bfmis done = running;
+  (void)done.status.assign("Completed");
+  REQUIRE(v.publish(done, at(4000ms)).ok());
+  (void)sent(v);
+  REQUIRE(v.receive(c, sealed("BPABT,081029.000,late"), at(4500ms)).ok());
+  CHECK(sent(v).size() == 1);
+  CHECK(v.mission()->state() == mission_state::completed);
 }

@@ -125,6 +125,9 @@ struct payload_event {
   std::optional<time_of_day> command_timestamp;  ///< as sent (unmatched_ack: as echoed)
   std::uint32_t count = 0;                       ///< sends so far, or events lost
   text<256> detail;                              ///< the ack's description, or why control ended
+  /// For a BPLOG command (BPLOG has no timestamp to tell two apart): which subscription, its
+  /// code ("NVG", "ALL") and state (ON/OFF).
+  std::optional<bplog> subscription;
 };
 
 /// The address of a payload message ("BPRMB").
@@ -590,6 +593,7 @@ class payload_session {
     e.kind = kind;
     (void)e.command.assign(address_of(m));
     e.command_timestamp = timestamp_of(m);
+    if (const bplog* log = std::get_if<bplog>(&m)) e.subscription = *log;
     return e;
   }
   [[nodiscard]] static constexpr payload_event about(payload_event_kind kind,
@@ -601,6 +605,7 @@ class payload_session {
     (void)e.command.assign(f.address());
     e.command_timestamp = f.timestamp();
     e.count = f.sends;
+    if (const bplog* log = std::get_if<bplog>(&f.message)) e.subscription = *log;
     return e;
   }
   constexpr void event(payload_event_kind kind, std::string_view detail = {}) noexcept {

@@ -28,6 +28,9 @@
 //   5 seconds" (SPI 7.3), so a BPRMB 5.000 s after the previous one keeps the request; 5 s and
 //   one tick of time_point later the request has expired (request_expired) and the vehicle has
 //   control back.
+// - The mission status: the last BFMIS published. A BPABT while a mission waits, is ready, runs
+//   or wraps up moves it to "Aborting" and publishes that BFMIS (after the BPABT's ack); the
+//   caller publishes "Aborted" when the vehicle has stopped.
 
 #include <array>
 #include <cstddef>
@@ -200,10 +203,23 @@ class vehicle_session {
   }
 
   /// Send a status message (BFNVG, BFMIS ...) to every client that asked for it. Returns how
-  /// many clients it was queued for, or the encoder's error.
+  /// many clients it was queued for, or the encoder's error. A timestamp left unset (a default
+  /// time_of_day, 00:00:00, or an empty optional) is stamped with the vehicle's UTC clock at
+  /// `now`, as connect() and set_control() stamp theirs. A BFMIS becomes the mission status the
+  /// session knows (mission()).
   template <message_like M>
-  [[nodiscard]] constexpr result<std::size_t> publish(const M& m, time_point now) noexcept {
+  [[nodiscard]] constexpr result<std::size_t> publish(const M& given, time_point now) noexcept {
     advance(now);
+    M m = given;
+    if constexpr (requires { m.timestamp; }) {
+      using stamp_type = std::remove_cvref_t<decltype(m.timestamp)>;
+      if constexpr (std::is_same_v<stamp_type, time_of_day>) {
+        if (m.timestamp == time_of_day{}) m.timestamp = utc_.at(now);
+      } else if constexpr (std::is_same_v<stamp_type, std::optional<time_of_day>>) {
+        if (!m.timestamp) m.timestamp = utc_.at(now);
+      }
+    }
+    if constexpr (std::is_same_v<M, bfmis>) mission_ = m;
     result<std::size_t> r;
     vehicle_line line;
     const result<std::size_t> e = encode_to(m, std::span<char>(line.sentence.data));
@@ -296,6 +312,9 @@ class vehicle_session {
   [[nodiscard]] constexpr std::string_view payload_version(client_id c) const noexcept {
     return client(c).version.view();
   }
+  /// The mission status last published (BFMIS), or moved to Aborting by a BPABT; empty until a
+  /// BFMIS was published.
+  [[nodiscard]] constexpr const std::optional<bfmis>& mission() const noexcept { return mission_; }
   /// The vehicle's UTC clock, for the timestamps of what the caller publishes.
   [[nodiscard]] constexpr const utc_clock& utc() const noexcept { return utc_; }
   constexpr void set_utc(time_point now, const time_of_day& t) noexcept {
@@ -507,6 +526,19 @@ class vehicle_session {
     e.command_timestamp = m.timestamp;
     events_.push(e);
     acknowledge(c, bpabt::nmea.address, m.timestamp, ack_status::ok, "", ticket, now);
+    // A mission under way starts aborting, and its subscribers hear it (SPI: BFMIS is sent
+    // when the status changes). The caller publishes "Aborted" once the vehicle has stopped.
+    if (mission_ && abortable(mission_->state())) {
+      bfmis aborting = *mission_;
+      aborting.timestamp = utc_.at(now);
+      (void)aborting.status.assign("Aborting");
+      (void)aborting.details.assign("abort requested by the payload");
+      (void)publish(aborting, now);
+    }
+  }
+  [[nodiscard]] static constexpr bool abortable(mission_state s) noexcept {
+    return s == mission_state::waiting || s == mission_state::ready ||
+           s == mission_state::running || s == mission_state::wrapping_up;
   }
   constexpr void on_message(client_id c, const bpver& m, std::uint32_t ticket,
                             time_point now) noexcept {
@@ -536,6 +568,7 @@ class vehicle_session {
   std::array<client_state, MaxClients> clients_{};
   std::array<pending_ack, max_pending> pending_{};
   std::optional<bprmb> request_;
+  std::optional<bfmis> mission_;
   client_id request_client_ = 0;
   time_point last_request_{};
   detail::ring<vehicle_line, OutboxCapacity> outbox_;
