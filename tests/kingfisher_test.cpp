@@ -840,9 +840,10 @@ TEST_CASE("command helpers") {
     CHECK(nmea::encode(z.value).view() == sealed("PYDIR,0.0,0.0"));
   }
   SECTION("pydev::from_heading wraps the heading into [0, 360)") {
+    // Each field at its declared precision: one place for the heading, two for the speed.
     const auto a = kf::pydev::from_heading(90, 1.5);
     REQUIRE(a);
-    CHECK(nmea::encode(a.value).view() == sealed("PYDEV,90.0,1.5"));
+    CHECK(nmea::encode(a.value).view() == sealed("PYDEV,90.0,1.50"));
     const auto w = kf::pydev::from_heading(-90, 1);
     REQUIRE(w);
     CHECK(w.value.heading_deg == decimal::scaled(2700, 1));

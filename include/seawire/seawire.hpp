@@ -37,6 +37,7 @@
 #include "seawire/version.hpp"
 
 // nmea wire layer
+#include "seawire/nmea/build.hpp"
 #include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"

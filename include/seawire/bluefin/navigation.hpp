@@ -42,12 +42,14 @@ struct nav_update {
   friend constexpr bool operator==(const nav_update&, const nav_update&) noexcept = default;
 
   static constexpr auto nmea = sentence<Address>(
-      field<&nav_update::timestamp>("timestamp"), field<&nav_update::lat>("latitude"),
-      field<&nav_update::lon>("longitude"), field<&nav_update::gps>("position_quality"),
-      field<&nav_update::altitude_m>("altitude_m"), field<&nav_update::depth_m>("depth_m"),
-      field<&nav_update::heading_deg>("heading_deg", in_range(0, 360)),
-      field<&nav_update::roll_deg>("roll_deg", in_range(-180, 180)),
-      field<&nav_update::pitch_deg>("pitch_deg", in_range(-90, 90)),
+      field<&nav_update::timestamp>("timestamp"), field<&nav_update::lat>("latitude", precision(5)),
+      field<&nav_update::lon>("longitude", precision(5)),
+      field<&nav_update::gps>("position_quality"),
+      field<&nav_update::altitude_m>("altitude_m", precision(1)),
+      field<&nav_update::depth_m>("depth_m", precision(1)),
+      field<&nav_update::heading_deg>("heading_deg", precision(2), in_range(0, 360)),
+      field<&nav_update::roll_deg>("roll_deg", precision(2), in_range(-180, 180)),
+      field<&nav_update::pitch_deg>("pitch_deg", precision(2), in_range(-90, 90)),
       field<&nav_update::nav_timestamp>("nav_timestamp"));
 };
 
@@ -70,12 +72,12 @@ struct velocity_update {
 
   static constexpr auto nmea =
       sentence<Address>(field<&velocity_update::timestamp>("timestamp"),
-                        field<&velocity_update::vel_east_mps>("vel_east_mps"),
-                        field<&velocity_update::vel_north_mps>("vel_north_mps"),
-                        field<&velocity_update::vel_down_mps>("vel_down_mps"),
-                        field<&velocity_update::pitch_rate_dps>("pitch_rate_dps"),
-                        field<&velocity_update::roll_rate_dps>("roll_rate_dps"),
-                        field<&velocity_update::yaw_rate_dps>("yaw_rate_dps"));
+                        field<&velocity_update::vel_east_mps>("vel_east_mps", precision(3)),
+                        field<&velocity_update::vel_north_mps>("vel_north_mps", precision(3)),
+                        field<&velocity_update::vel_down_mps>("vel_down_mps", precision(3)),
+                        field<&velocity_update::pitch_rate_dps>("pitch_rate_dps", precision(3)),
+                        field<&velocity_update::roll_rate_dps>("roll_rate_dps", precision(3)),
+                        field<&velocity_update::yaw_rate_dps>("yaw_rate_dps", precision(3)));
 };
 
 }  // namespace seawire::bluefin

@@ -87,9 +87,9 @@ struct cprcm {
 
   static constexpr auto nmea = sentence<"CPRCM">(
       field<&cprcm::timestamp>("timestamp"), field<&cprcm::compass_id>("compass_id"),
-      field<&cprcm::heading_deg>("heading_deg", in_range(0, 360)),
-      field<&cprcm::pitch_deg>("pitch_deg", in_range(-90, 90)),
-      field<&cprcm::roll_deg>("roll_deg", in_range(-180, 180)),
+      field<&cprcm::heading_deg>("heading_deg", precision(2), in_range(0, 360)),
+      field<&cprcm::pitch_deg>("pitch_deg", precision(2), in_range(-90, 90)),
+      field<&cprcm::roll_deg>("roll_deg", precision(2), in_range(-180, 180)),
       field<&cprcm::nav_timestamp>("nav_timestamp"));
 };
 
@@ -120,10 +120,10 @@ struct cprbs {
   static constexpr auto nmea =
       sentence<"CPRBS">(field<&cprbs::timestamp>("timestamp"),
                         field<&cprbs::battery_id>("battery_id", only_with_field_count(6)),
-                        field<&cprbs::stack_voltage_v>("stack_voltage_v"),
-                        field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v"),
-                        field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v"),
-                        field<&cprbs::temperature_c>("temperature_c"));
+                        field<&cprbs::stack_voltage_v>("stack_voltage_v", precision(2)),
+                        field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v", precision(2)),
+                        field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v", precision(2)),
+                        field<&cprbs::temperature_c>("temperature_c", precision(1)));
 };
 
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
@@ -155,10 +155,12 @@ struct cpimu {
   friend constexpr bool operator==(const cpimu&, const cpimu&) noexcept = default;
 
   static constexpr auto nmea = sentence<"CPIMU">(
-      field<&cpimu::timestamp>("timestamp"), field<&cpimu::rate_x_dps>("rate_x_dps"),
-      field<&cpimu::rate_y_dps>("rate_y_dps"), field<&cpimu::rate_z_dps>("rate_z_dps"),
-      field<&cpimu::accel_x_mps2>("accel_x_mps2"), field<&cpimu::accel_y_mps2>("accel_y_mps2"),
-      field<&cpimu::accel_z_mps2>("accel_z_mps2"),
+      field<&cpimu::timestamp>("timestamp"), field<&cpimu::rate_x_dps>("rate_x_dps", precision(3)),
+      field<&cpimu::rate_y_dps>("rate_y_dps", precision(3)),
+      field<&cpimu::rate_z_dps>("rate_z_dps", precision(3)),
+      field<&cpimu::accel_x_mps2>("accel_x_mps2", precision(3)),
+      field<&cpimu::accel_y_mps2>("accel_y_mps2", precision(3)),
+      field<&cpimu::accel_z_mps2>("accel_z_mps2", precision(3)),
       field<&cpimu::nav_timestamp>("nav_timestamp", may_be_absent));
 };
 
@@ -187,8 +189,9 @@ struct cpalt {
 namespace detail {
 template <class T>
 [[nodiscard]] constexpr bool convert(result<T>& out, decimal T::*member, std::uint16_t field,
-                                     double v, unsigned places) noexcept {
-  const result<decimal> d = decimal::from_double(v, places);
+                                     double v, int places, int declared) noexcept {
+  const result<decimal> d =
+      decimal::from_double(v, static_cast<unsigned>(places >= 0 ? places : declared));
   if (!d) {
     out.ec = d.ec;
     out.field = field;
@@ -208,19 +211,23 @@ struct pydep {
                      //   the Clearpath vehicle reads deg/s, positive clockwise. Sent as given.
   decimal thrust;    // 2 [DesThrustPct] percent of thrust, -100..100; 0 stopped, > 0 forward
 
-  /// Both numbers rounded to `places` fraction digits.
+  /// Both numbers rounded to `places` fraction digits, or (places < 0) to each field's
+  /// declared precision: 2 for the yaw rate, 1 for the thrust.
   [[nodiscard]] static constexpr result<pydep> from_rate(double yaw_rate, double thrust_pct,
-                                                         unsigned places = 2) noexcept {
+                                                         int places = -1) noexcept {
     result<pydep> r;
-    (void)(detail::convert(r, &pydep::yaw_rate, 1, yaw_rate, places) &&
-           detail::convert(r, &pydep::thrust, 2, thrust_pct, places));
+    (void)(detail::convert(r, &pydep::yaw_rate, 1, yaw_rate, places,
+                           nmea::precision_of<&pydep::yaw_rate>()) &&
+           detail::convert(r, &pydep::thrust, 2, thrust_pct, places,
+                           nmea::precision_of<&pydep::thrust>()));
     return r;
   }
 
   friend constexpr bool operator==(const pydep&, const pydep&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"PYDEP">(
-      field<&pydep::yaw_rate>("yaw_rate"), field<&pydep::thrust>("thrust", in_range(-100, 100)));
+  static constexpr auto nmea =
+      sentence<"PYDEP">(field<&pydep::yaw_rate>("yaw_rate", precision(2)),
+                        field<&pydep::thrust>("thrust", precision(1), in_range(-100, 100)));
 };
 
 /// Desired heading and speed; the vehicle's own controllers hold them.
@@ -233,20 +240,23 @@ struct pydev {
   decimal speed_mps;    // 2 [DesSpeed] m/s over ground, >= 0 (the vehicle caps it at its max)
 
   /// Heading wrapped into [0, 360) after rounding (so -90 is 270 and 359.97 at one place is
-  /// 0.0); speed rounded as given. At most 15 places.
+  /// 0.0). Both rounded to `places` fraction digits (at most 15), or (places < 0) to each
+  /// field's declared precision: 1 for the heading, 2 for the speed.
   [[nodiscard]] static constexpr result<pydev> from_heading(double heading_deg, double speed_mps,
-                                                            unsigned places = 1) noexcept {
+                                                            int places = -1) noexcept {
     result<pydev> r;
     if (places > 15) {  // 360 * 10^places must fit the mantissa
       r.ec = errc::value_too_large;
       r.field = 1;
       return r;
     }
-    if (!detail::convert(r, &pydev::heading_deg, 1, heading_deg, places) ||
-        !detail::convert(r, &pydev::speed_mps, 2, speed_mps, places))
+    if (!detail::convert(r, &pydev::heading_deg, 1, heading_deg, places,
+                         nmea::precision_of<&pydev::heading_deg>()) ||
+        !detail::convert(r, &pydev::speed_mps, 2, speed_mps, places,
+                         nmea::precision_of<&pydev::speed_mps>()))
       return r;
     decimal& h = r.value.heading_deg;
-    const std::uint64_t turn = 360 * seawire::detail::pow10_table[places];
+    const std::uint64_t turn = 360 * seawire::detail::pow10_table[h.places];
     h.mantissa %= turn;
     if (h.negative && h.mantissa != 0) h.mantissa = turn - h.mantissa;
     h.negative = false;
@@ -255,9 +265,9 @@ struct pydev {
 
   friend constexpr bool operator==(const pydev&, const pydev&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"PYDEV">(field<&pydev::heading_deg>("heading_deg", in_range_below(0, 360)),
-                        field<&pydev::speed_mps>("speed_mps", at_least(0)));
+  static constexpr auto nmea = sentence<"PYDEV">(
+      field<&pydev::heading_deg>("heading_deg", precision(1), in_range_below(0, 360)),
+      field<&pydev::speed_mps>("speed_mps", precision(2), at_least(0)));
 };
 
 /// Thrust for each motor of the differential drive.
@@ -268,20 +278,23 @@ struct pydir {
   decimal thrust_left;   // 1 [DesThrustPct_L] percent of thrust, -100..100, port motor
   decimal thrust_right;  // 2 [DesThrustPct_R] percent of thrust, -100..100, starboard motor
 
-  /// Both percentages rounded to `places` fraction digits.
+  /// Both percentages rounded to `places` fraction digits, or (places < 0) to the declared
+  /// precision: 1.
   [[nodiscard]] static constexpr result<pydir> from_percent(double left, double right,
-                                                            unsigned places = 1) noexcept {
+                                                            int places = -1) noexcept {
     result<pydir> r;
-    (void)(detail::convert(r, &pydir::thrust_left, 1, left, places) &&
-           detail::convert(r, &pydir::thrust_right, 2, right, places));
+    (void)(detail::convert(r, &pydir::thrust_left, 1, left, places,
+                           nmea::precision_of<&pydir::thrust_left>()) &&
+           detail::convert(r, &pydir::thrust_right, 2, right, places,
+                           nmea::precision_of<&pydir::thrust_right>()));
     return r;
   }
 
   friend constexpr bool operator==(const pydir&, const pydir&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"PYDIR">(field<&pydir::thrust_left>("thrust_left", in_range(-100, 100)),
-                        field<&pydir::thrust_right>("thrust_right", in_range(-100, 100)));
+  static constexpr auto nmea = sentence<"PYDIR">(
+      field<&pydir::thrust_left>("thrust_left", precision(1), in_range(-100, 100)),
+      field<&pydir::thrust_right>("thrust_right", precision(1), in_range(-100, 100)));
 };
 
 /// Lights control. Not in the seed; real vehicles accept it and report the state in CPALT.

@@ -55,6 +55,9 @@ struct field_options {
   std::uint16_t max_length = 0xFFFF;  ///< text: most characters
   std::uint8_t zero_pad = 0;          ///< integers: write at least this many digits ("06")
   bool code_chars = false;            ///< text: upper-case letters and digits only ("NVG")
+  /// Fraction digits a double given to nmea::builder is rounded to (minute digits for DDMM.m
+  /// positions); -1 = not declared.
+  std::int8_t precision = -1;
 };
 
 namespace option {
@@ -91,6 +94,10 @@ struct pad {
 struct code {
   constexpr void apply(field_options& o) const noexcept { o.code_chars = true; }
 };
+struct precision {
+  std::int8_t n;
+  constexpr void apply(field_options& o) const noexcept { o.precision = n; }
+};
 struct length {
   std::uint16_t lo, hi;
   constexpr void apply(field_options& o) const noexcept {
@@ -111,6 +118,12 @@ struct length {
 /// lo <= value.
 [[nodiscard]] constexpr option::range at_least(decimal lo) noexcept {
   return {lo, {}, true, false, false};
+}
+/// A double given to nmea::builder for this field is rounded to n fraction digits (minute
+/// digits for a DDMM.m position): what the spec or real senders write. A call may ask for
+/// others. Every number and position field of a message declares one.
+[[nodiscard]] constexpr option::precision precision(int n) noexcept {
+  return {static_cast<std::int8_t>(n)};
 }
 /// At most n fraction digits (0: whole numbers or whole seconds only).
 [[nodiscard]] constexpr option::places max_places(int n) noexcept {
@@ -257,6 +270,40 @@ concept message_like = requires {
   T::nmea.fields;
   T::nmea.address;
 };
+
+namespace detail {
+template <auto A, auto B>
+[[nodiscard]] consteval bool same_member() noexcept {
+  if constexpr (std::is_same_v<decltype(A), decltype(B)>) {
+    return A == B;
+  } else {
+    return false;
+  }
+}
+/// The descriptor index of member M in T's description (fields.size when it is not a field).
+template <message_like T, auto M>
+[[nodiscard]] consteval std::size_t field_index_of() noexcept {
+  std::size_t index = 0;
+  std::size_t found = T::nmea.fields.size;
+  T::nmea.fields.apply([&](const auto&... d) {
+    (((same_member<std::remove_cvref_t<decltype(d)>::member, M>() ? (found = index) : 0), ++index),
+     ...);
+  });
+  return found;
+}
+}  // namespace detail
+
+/// The fraction digits (minute digits for a DDMM.m position) a double given for member M is
+/// rounded to by default: the precision its field declares. `precision_of<&pydev::speed_mps>()`.
+template <auto M>
+[[nodiscard]] consteval int precision_of() noexcept {
+  using T = typename detail::member_pointer_traits<decltype(M)>::class_type;
+  constexpr std::size_t i = detail::field_index_of<T, M>();
+  static_assert(i < T::nmea.fields.size, "precision_of: the member is not a field");
+  constexpr int p = field_at<i>(T::nmea.fields).opts.precision;
+  static_assert(p >= 0, "precision_of: the field declares no precision");
+  return p;
+}
 
 /// A message with fields that senders may leave out (may_be_absent at the end, or a field of
 /// only the longer form) that remembers, in a member `std::uint8_t wire_fields`, the field count

@@ -161,7 +161,7 @@ struct rxhrb {
 
   static constexpr auto nmea = sentence<"RXHRB">(
       field<&rxhrb::date>("date"), field<&rxhrb::time>("time", max_places(0)),
-      field<&rxhrb::lat>("latitude"), field<&rxhrb::lon>("longitude"),
+      field<&rxhrb::lat>("latitude", precision(5)), field<&rxhrb::lon>("longitude", precision(5)),
       field<&rxhrb::team_id>("team_id", exact_length(5)), field<&rxhrb::system_mode>("system_mode"),
       field<&rxhrb::auv_status>("auv_status"));
 

@@ -263,13 +263,53 @@ struct bprmb {
   std::optional<sandshark::speed_mode> speed_mode;            // 6 [vm] 0 RPM, 1 m/s
   std::optional<sandshark::horizontal_mode> horizontal_mode;  // 7 [hm] 0 heading, 1 rudder
 
+  /// The usual request: a heading (degrees true, [0, 360)), a depth below the surface (metres,
+  /// >= 0) and a speed (m/s, >= 0), each rounded to its field's precision (one place) and each
+  /// left blank when not given (the mission keeps that aspect); the mode fields say heading,
+  /// depth and m/s for the values given. NaN, infinities and values outside those ranges are
+  /// refused naming the field (not_finite, out_of_range).
+  [[nodiscard]] static constexpr result<bprmb> request(time_of_day stamp,
+                                                       std::optional<double> heading_deg,
+                                                       std::optional<double> depth_m,
+                                                       std::optional<double> speed_mps) noexcept {
+    result<bprmb> r;
+    r.value.timestamp = stamp;
+    const auto put = [&r](std::optional<decimal> bprmb::*member, std::uint16_t field,
+                          std::optional<double> v, int places, decimal below) {
+      if (!v || r.ec != errc::ok) return;
+      const result<decimal> d = decimal::from_double(*v, static_cast<unsigned>(places));
+      if (d && (d.value.compare(decimal{0}) < 0 || (d.value.negative && !d.value.is_zero()) ||
+                (!below.is_zero() && d.value.compare(below) >= 0))) {
+        r.ec = errc::out_of_range;
+      } else {
+        r.ec = d.ec;
+      }
+      if (r.ec != errc::ok) {
+        r.field = field;
+        return;
+      }
+      r.value.*member = d.value;
+    };
+    put(&bprmb::heading, 2, heading_deg, nmea::precision_of<&bprmb::heading>(), decimal{360});
+    put(&bprmb::depth, 3, depth_m, nmea::precision_of<&bprmb::depth>(), decimal{});
+    put(&bprmb::speed, 5, speed_mps, nmea::precision_of<&bprmb::speed>(), decimal{});
+    if (r.ec != errc::ok) {
+      r.value = bprmb{};
+      return r;
+    }
+    if (heading_deg) r.value.horizontal_mode = sandshark::horizontal_mode::heading;
+    if (depth_m) r.value.depth_mode = sandshark::depth_mode::depth;
+    if (speed_mps) r.value.speed_mode = sandshark::speed_mode::meters_per_second;
+    return r;
+  }
+
   friend constexpr bool operator==(const bprmb&, const bprmb&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"BPRMB">(field<&bprmb::timestamp>("timestamp"), field<&bprmb::heading>("heading"),
-                        field<&bprmb::depth>("depth"), field<&bprmb::depth_mode>("depth_mode"),
-                        field<&bprmb::speed>("speed"), field<&bprmb::speed_mode>("speed_mode"),
-                        field<&bprmb::horizontal_mode>("horizontal_mode"));
+  static constexpr auto nmea = sentence<"BPRMB">(
+      field<&bprmb::timestamp>("timestamp"), field<&bprmb::heading>("heading", precision(1)),
+      field<&bprmb::depth>("depth", precision(1)), field<&bprmb::depth_mode>("depth_mode"),
+      field<&bprmb::speed>("speed", precision(1)), field<&bprmb::speed_mode>("speed_mode"),
+      field<&bprmb::horizontal_mode>("horizontal_mode"));
 };
 
 /// BPABT field 3.

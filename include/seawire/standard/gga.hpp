@@ -47,11 +47,13 @@ struct gga {
   friend constexpr bool operator==(const gga&, const gga&) noexcept = default;
 
   static constexpr auto nmea = sentence<"--GGA">(
-      field<&gga::time>("time"), field<&gga::lat>("latitude"), field<&gga::lon>("longitude"),
-      field<&gga::quality>("quality"), field<&gga::satellites>("satellites", zero_pad(2)),
-      field<&gga::hdop>("hdop", at_least(0)), field<&gga::altitude_m>("altitude_m", unit('M')),
-      field<&gga::geoid_separation_m>("geoid_separation_m", unit('M')),
-      field<&gga::dgps_age_s>("dgps_age_s", at_least(0)),
+      field<&gga::time>("time"), field<&gga::lat>("latitude", precision(5)),
+      field<&gga::lon>("longitude", precision(5)), field<&gga::quality>("quality"),
+      field<&gga::satellites>("satellites", zero_pad(2)),
+      field<&gga::hdop>("hdop", precision(2), at_least(0)),
+      field<&gga::altitude_m>("altitude_m", precision(1), unit('M')),
+      field<&gga::geoid_separation_m>("geoid_separation_m", precision(1), unit('M')),
+      field<&gga::dgps_age_s>("dgps_age_s", precision(1), at_least(0)),
       field<&gga::dgps_station>("dgps_station", in_range(0, 1023), zero_pad(4)));
 };
 

@@ -64,10 +64,12 @@ struct rmc {
   friend constexpr bool operator==(const rmc&, const rmc&) noexcept = default;
 
   static constexpr auto nmea = sentence<"--RMC">(
-      field<&rmc::time>("time"), field<&rmc::status>("status"), field<&rmc::lat>("latitude"),
-      field<&rmc::lon>("longitude"), field<&rmc::speed_knots>("speed_knots", at_least(0)),
-      field<&rmc::course_true>("course_true", in_range(0, 360)), field<&rmc::date>("date"),
-      field<&rmc::magnetic_variation>("magnetic_variation"),
+      field<&rmc::time>("time"), field<&rmc::status>("status"),
+      field<&rmc::lat>("latitude", precision(5)), field<&rmc::lon>("longitude", precision(5)),
+      field<&rmc::speed_knots>("speed_knots", precision(3), at_least(0)),
+      field<&rmc::course_true>("course_true", precision(2), in_range(0, 360)),
+      field<&rmc::date>("date"),
+      field<&rmc::magnetic_variation>("magnetic_variation", precision(1)),
       field<&rmc::mode>("mode", may_be_absent),
       field<&rmc::navigational_status>("navigational_status", may_be_absent));
 };

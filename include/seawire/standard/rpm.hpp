@@ -41,11 +41,11 @@ struct rpm {
 
   friend constexpr bool operator==(const rpm&, const rpm&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"--RPM">(field<&rpm::source>("source"), field<&rpm::number>("number"),
-                        field<&rpm::speed_rpm>("speed_rpm"),
-                        field<&rpm::pitch_percent>("pitch_percent", in_range(-100, 100)),
-                        field<&rpm::status>("status"));
+  static constexpr auto nmea = sentence<"--RPM">(
+      field<&rpm::source>("source"), field<&rpm::number>("number"),
+      field<&rpm::speed_rpm>("speed_rpm", precision(1)),
+      field<&rpm::pitch_percent>("pitch_percent", precision(1), in_range(-100, 100)),
+      field<&rpm::status>("status"));
 };
 
 }  // namespace seawire::standard

@@ -34,11 +34,11 @@ struct rsa {
 
   friend constexpr bool operator==(const rsa&, const rsa&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"--RSA">(field<&rsa::starboard_angle>("starboard_angle", in_range(-180, 180)),
-                        field<&rsa::starboard_status>("starboard_status"),
-                        field<&rsa::port_angle>("port_angle", in_range(-180, 180)),
-                        field<&rsa::port_status>("port_status"));
+  static constexpr auto nmea = sentence<"--RSA">(
+      field<&rsa::starboard_angle>("starboard_angle", precision(1), in_range(-180, 180)),
+      field<&rsa::starboard_status>("starboard_status"),
+      field<&rsa::port_angle>("port_angle", precision(1), in_range(-180, 180)),
+      field<&rsa::port_status>("port_status"));
 };
 
 }  // namespace seawire::standard

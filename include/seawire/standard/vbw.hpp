@@ -56,15 +56,17 @@ struct vbw {
   friend constexpr bool operator==(const vbw&, const vbw&) noexcept = default;
 
   static constexpr auto nmea = sentence<"--VBW">(
-      field<&vbw::longitudinal_water_knots>("longitudinal_water_knots"),
-      field<&vbw::transverse_water_knots>("transverse_water_knots"),
+      field<&vbw::longitudinal_water_knots>("longitudinal_water_knots", precision(2)),
+      field<&vbw::transverse_water_knots>("transverse_water_knots", precision(2)),
       field<&vbw::water_status>("water_status"),
-      field<&vbw::longitudinal_ground_knots>("longitudinal_ground_knots"),
-      field<&vbw::transverse_ground_knots>("transverse_ground_knots"),
+      field<&vbw::longitudinal_ground_knots>("longitudinal_ground_knots", precision(2)),
+      field<&vbw::transverse_ground_knots>("transverse_ground_knots", precision(2)),
       field<&vbw::ground_status>("ground_status"),
-      field<&vbw::stern_transverse_water_knots>("stern_transverse_water_knots", may_be_absent),
+      field<&vbw::stern_transverse_water_knots>("stern_transverse_water_knots", precision(2),
+                                                may_be_absent),
       field<&vbw::stern_water_status>("stern_water_status", may_be_absent),
-      field<&vbw::stern_transverse_ground_knots>("stern_transverse_ground_knots", may_be_absent),
+      field<&vbw::stern_transverse_ground_knots>("stern_transverse_ground_knots", precision(2),
+                                                 may_be_absent),
       field<&vbw::stern_ground_status>("stern_ground_status", may_be_absent));
 };
 

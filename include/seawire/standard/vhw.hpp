@@ -29,10 +29,11 @@ struct vhw {
   friend constexpr bool operator==(const vhw&, const vhw&) noexcept = default;
 
   static constexpr auto nmea = sentence<"--VHW">(
-      field<&vhw::heading_true_deg>("heading_true_deg", in_range(0, 360), unit('T')),
-      field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", in_range(0, 360), unit('M')),
-      field<&vhw::speed_knots>("speed_knots", at_least(0), unit('N')),
-      field<&vhw::speed_kmh>("speed_kmh", at_least(0), unit('K')));
+      field<&vhw::heading_true_deg>("heading_true_deg", precision(1), in_range(0, 360), unit('T')),
+      field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", precision(1), in_range(0, 360),
+                                        unit('M')),
+      field<&vhw::speed_knots>("speed_knots", precision(2), at_least(0), unit('N')),
+      field<&vhw::speed_kmh>("speed_kmh", precision(2), at_least(0), unit('K')));
 };
 
 }  // namespace seawire::standard

@@ -43,10 +43,11 @@ struct vwr {
   friend constexpr bool operator==(const vwr&, const vwr&) noexcept = default;
 
   static constexpr auto nmea = sentence<"--VWR">(
-      field<&vwr::angle_deg>("angle_deg", in_range(0, 180)), field<&vwr::side>("side"),
-      field<&vwr::speed_knots>("speed_knots", at_least(0), unit('N')),
-      field<&vwr::speed_mps>("speed_mps", at_least(0), unit('M')),
-      field<&vwr::speed_kmh>("speed_kmh", at_least(0), unit('K')));
+      field<&vwr::angle_deg>("angle_deg", precision(1), in_range(0, 180)),
+      field<&vwr::side>("side"),
+      field<&vwr::speed_knots>("speed_knots", precision(1), at_least(0), unit('N')),
+      field<&vwr::speed_mps>("speed_mps", precision(1), at_least(0), unit('M')),
+      field<&vwr::speed_kmh>("speed_kmh", precision(1), at_least(0), unit('K')));
 };
 
 }  // namespace seawire::standard
