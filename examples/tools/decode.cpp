@@ -25,6 +25,7 @@
 #include "seawire/anello/stream.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
@@ -198,7 +199,7 @@ class decoder {
     }
     const result<bool> r =
         all_messages::visit(s.value, policy_, [&](const auto& msg) { emit(l, s.value, msg); });
-    if (!r) decode_error(l, s.value, r);
+    if (!r) decode_error(l, r);
   }
 
   template <class M>
@@ -253,36 +254,13 @@ class decoder {
   // ---- errors ----
 
   void parse_error(const nmea::framed_line& l, const result<nmea::sentence_view>& s) {
-    std::string detail(message(s.ec));
-    if (s.ec == errc::checksum_mismatch) {
-      // Parse again without the check, to say what the checksum should have been.
-      nmea::parse_policy lax = policy_;
-      lax.checksum = nmea::checksum_policy::ignore;
-      if (const auto again = nmea::parse(l.text, lax)) {
-        char hex[64];
-        const std::string_view sent = l.text.substr(s.column, 2);
-        std::snprintf(hex, sizeof hex, " (sent %.*s, computed %02X)", static_cast<int>(sent.size()),
-                      sent.data(), again.value.computed_checksum);
-        detail += hex;
-      }
-    }
-    detail += " at column " + std::to_string(s.column);
-    reject(l.line, s.ec, 0, detail, l.text);
+    char why[512];
+    reject(l.line, s.ec, 0, nmea::describe<all_messages>(why, s, l.text, policy_), l.text);
   }
 
-  void decode_error(const nmea::framed_line& l, const nmea::sentence_view& s,
-                    const result<bool>& r) {
-    std::string detail(s.address);
-    if (r.field != 0) {
-      detail += " field " + std::to_string(r.field);
-      const std::string_view field_name =
-          all_messages::field_name(s.address, r.field, s.field_count);
-      if (!field_name.empty()) detail += " (" + std::string(field_name) + ")";
-      const nmea::field_token t = nmea::field(s, r.field);
-      if (t.present) detail += " \"" + std::string(t.text) + "\"";
-    }
-    detail += ": " + std::string(message(r.ec));
-    reject(l.line, r.ec, r.field, detail, l.text);
+  void decode_error(const nmea::framed_line& l, const result<bool>& r) {
+    char why[512];
+    reject(l.line, r.ec, r.field, nmea::describe<all_messages>(why, r, l.text, policy_), l.text);
   }
 
   void reject(std::uint64_t line, errc e, std::uint16_t field, std::string_view detail,

@@ -39,6 +39,7 @@
 // nmea wire layer
 #include "seawire/nmea/build.hpp"
 #include "seawire/nmea/checksum.hpp"
+#include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/framer.hpp"

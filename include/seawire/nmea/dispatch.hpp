@@ -101,6 +101,17 @@ struct message_set {
     return name;
   }
 
+  /// What the description of the message with this address says of its wire field `n`.
+  [[nodiscard]] static constexpr field_about about_field(
+      std::string_view address, std::size_t n,
+      std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
+    field_about a;
+    (void)((Ms::nmea.matches(address) ? (a = nmea::about_field<Ms>(n, field_count), true)
+                                      : false) ||
+           ...);
+    return a;
+  }
+
   /// Decode into whichever message the address names; an address the set does not know, or a
   /// '!' sentence, gives unknown_sentence (not an error: receivers are told to ignore such
   /// messages).

@@ -854,4 +854,28 @@ template <message_like T>
   return name;
 }
 
+/// What a message's description says of wire field `n`: its declared name and options (found
+/// false when the message has no such field).
+struct field_about {
+  std::string_view name;
+  field_options opts{};
+  bool found = false;
+};
+
+/// Wire field `n` of T (field_count as field_name's).
+template <message_like T>
+[[nodiscard]] constexpr field_about about_field(
+    std::size_t n, std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
+  field_about a;
+  std::size_t first = 1;
+  T::nmea.fields.apply([&](const auto&... d) {
+    (void)(((d.opts.when_count != 0 && field_count < d.opts.when_count)
+                ? false
+                : (n >= first && n < first + d.width() ? (a = {d.name, d.opts, true}, true)
+                                                       : (first += d.width(), false))) ||
+           ...);
+  });
+  return a;
+}
+
 }  // namespace seawire::nmea

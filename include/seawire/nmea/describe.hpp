@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// describe(): an error told for people, in the caller's buffer, the same everywhere.
+//
+//   char why[256];
+//   auto r = kingfisher::decode_to_vehicle(line);
+//   if (!r) std::puts(nmea::describe<kingfisher::to_vehicle>(why, r, line).data());
+//     // PYDIR field 1 (thrust_left) "150": value outside the range the spec allows: -100..100
+//     // checksum does not match the sentence (sent 11, computed 17) at column 14
+//
+// Which sentence, which field by number and declared name, the text it held, why, and the
+// range or form the field allows where it has one. No allocation: the text is cut to the
+// buffer (and always terminated, so .data() is a C string).
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "seawire/detail/ascii.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/message.hpp"
+#include "seawire/nmea/sentence.hpp"
+
+namespace seawire::nmea {
+
+namespace detail {
+
+/// Appends to a fixed buffer, keeping one byte for the terminating NUL; cuts what does not fit.
+class text_out {
+ public:
+  constexpr explicit text_out(std::span<char> out) noexcept : out_(out) {
+    if (!out_.empty()) out_[0] = '\0';
+  }
+  constexpr text_out& put(std::string_view s) noexcept {
+    for (const char c : s) {
+      if (size_ + 1 >= out_.size()) break;
+      out_[size_++] = c;
+    }
+    if (!out_.empty()) out_[size_] = '\0';
+    return *this;
+  }
+  constexpr text_out& put(std::uint64_t v) noexcept {
+    char digits[20];
+    std::size_t n = 0;
+    do {
+      digits[n++] = static_cast<char>('0' + v % 10);
+      v /= 10;
+    } while (v != 0);
+    while (n > 0) put(std::string_view(&digits[--n], 1));
+    return *this;
+  }
+  constexpr text_out& put(const decimal& d) noexcept {
+    char buf[48];
+    writer w(std::span<char>(buf, sizeof buf));
+    write_decimal(w, d);
+    return put(w.view());
+  }
+  constexpr text_out& hex(std::uint8_t b) noexcept {
+    const char h[2] = {seawire::detail::hex_digit_upper(b >> 4U),
+                       seawire::detail::hex_digit_upper(b & 0x0FU)};
+    return put(std::string_view(h, 2));
+  }
+  [[nodiscard]] constexpr std::string_view view() const noexcept { return {out_.data(), size_}; }
+
+ private:
+  std::span<char> out_;
+  std::size_t size_ = 0;
+};
+
+/// The range or form a field allows, after an error about its value.
+constexpr void describe_allowed(text_out& t, errc e, const field_options& o) noexcept {
+  if (e == errc::out_of_range) {
+    if (o.has_min && o.has_max) {
+      t.put(": ").put(o.min).put("..").put(o.max);
+      if (o.max_exclusive) t.put(" (").put(o.max).put(" excluded)");
+    } else if (o.has_min) {
+      t.put(": at least ").put(o.min);
+    } else if (o.has_max) {
+      t.put(o.max_exclusive ? ": below " : ": at most ").put(o.max);
+    }
+    if (o.max_places >= 0)
+      t.put(", at most ").put(static_cast<std::uint64_t>(o.max_places)).put(" fraction digits");
+  } else if (e == errc::bad_length) {
+    if (o.min_length == o.max_length) {
+      t.put(": exactly ").put(std::uint64_t{o.min_length}).put(" characters");
+    } else if (o.max_length != 0xFFFF) {
+      t.put(": ").put(std::uint64_t{o.min_length}).put(" to ");
+      t.put(std::uint64_t{o.max_length}).put(" characters");
+    }
+  } else if (e == errc::bad_unit && o.unit != 0) {
+    t.put(": the unit is ").put(std::string_view(&o.unit, 1));
+  }
+}
+
+template <class About>
+constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint16_t field,
+                                         std::uint16_t column, std::string_view line,
+                                         const parse_policy& policy, About&& about) noexcept {
+  text_out t(out);
+  if (e == errc::ok) return t.put("ok").view();
+  // The sentence as far as it splits, to name it and quote its field.
+  parse_policy lax = policy;
+  lax.checksum = checksum_policy::ignore;
+  lax.max_length = 0xFFFF;
+  const result<sentence_view> s = parse(line, lax);
+  const bool framing = e >= errc::empty_input && e <= errc::too_long;
+  if (!framing && s && field == 0) return t.put(s.value.address).put(": ").put(message(e)).view();
+  if (field == 0 || !s) {
+    t.put(message(e));
+    if (e == errc::checksum_mismatch && s) {
+      t.put(" (sent ").hex(s.value.received_checksum).put(", computed ");
+      t.hex(s.value.computed_checksum).put(")");
+    }
+    return t.put(" at column ").put(std::uint64_t{column}).view();
+  }
+  const field_about a = about(s.value.address, field, s.value.field_count);
+  t.put(s.value.address).put(" field ").put(std::uint64_t{field});
+  if (a.found) t.put(" (").put(a.name).put(")");
+  const field_token tok = nmea::field(s.value, field);
+  if (tok.present) t.put(" \"").put(tok.text).put("\"");
+  t.put(": ").put(message(e));
+  if (a.found) describe_allowed(t, e, a.opts);
+  return t.view();
+}
+
+}  // namespace detail
+
+/// An error from decoding `line` as T, for people: "PYDIR field 1 (thrust_left) "150": value
+/// outside the range the spec allows: -100..100". Written into `out` (cut to fit, always
+/// NUL-terminated); the returned view is into `out`. `policy` is the one the line was decoded
+/// with (it decides how the line splits).
+template <message_like T, class R>
+constexpr std::string_view describe(std::span<char> out, const result<R>& r, std::string_view line,
+                                    const parse_policy& policy = {}) noexcept {
+  return detail::describe_with(
+      out, r.ec, r.field, r.column, line, policy,
+      [](std::string_view, std::size_t n, std::size_t count) { return about_field<T>(n, count); });
+}
+
+/// The same for a message set's decode: the field is named by the message the address selects.
+template <class Set, class R>
+requires requires { Set::size; }
+constexpr std::string_view describe(std::span<char> out, const result<R>& r, std::string_view line,
+                                    const parse_policy& policy = {}) noexcept {
+  return detail::describe_with(out, r.ec, r.field, r.column, line, policy,
+                               [](std::string_view address, std::size_t n, std::size_t count) {
+                                 return Set::about_field(address, n, count);
+                               });
+}
+
+}  // namespace seawire::nmea
