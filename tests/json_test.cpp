@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -890,4 +891,30 @@ TEST_CASE("magnetic variation: signed degrees east positive, null without a valu
   REQUIRE(read_json_value(json_value{json_kind::number, "-0.0"}, back) == errc::ok);
   CHECK(back.direction == hemisphere::west);  // the sign of -0.0 is the letter W
   CHECK(read_json_value(json_value{json_kind::string, "east"}, back) == errc::bad_variation);
+}
+
+TEST_CASE("to_chars: every value type as people read it, as std::to_chars does") {
+  const auto text = [](const auto& v) {
+    char buf[64];
+    const std::to_chars_result r = nmea::to_chars(buf, buf + sizeof buf, v);
+    REQUIRE(r.ec == std::errc{});
+    return std::string(buf, r.ptr);
+  };
+  CHECK(text(decimal::scaled(450, 2)) == "4.50");
+  CHECK(text(-decimal::scaled(0, 1)) == "-0.0");
+  const auto rmc = must_decode<standard::rmc>(
+      "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,15.3,W,A*3E");
+  CHECK(text(*rmc.lat) == "42.3618523333333");
+  CHECK(text(*rmc.lon) == "-71.0908130");
+  CHECK(text(*rmc.time) == "16:49:59.00");
+  CHECK(text(*rmc.date) == "2014-12-31");
+  CHECK(text(rmc.status) == "A");
+  CHECK(text(*rmc.magnetic_variation) == "-15.3");
+  CHECK(text(nmea::text<8>("survey")) == "survey");
+  CHECK(text(robotx::system_mode::autonomous) == "2");
+  // Too small: value_too_large, as std::to_chars says it.
+  char small[4];
+  const auto r = nmea::to_chars(small, small + sizeof small, *rmc.lat);
+  CHECK(r.ec == std::errc::value_too_large);
+  CHECK(r.ptr == small + sizeof small);
 }

@@ -36,11 +36,13 @@
 // from_decimal_degrees) unless the object has "precision": {"<field>": n}.
 
 #include <array>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
+#include <system_error>
 #include <type_traits>
 #include <utility>
 
@@ -494,6 +496,50 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
   } else {
     static_assert(has_codec<T>, "write_json_value: no JSON form for this type");
   }
+}
+
+namespace detail {
+/// A sink over [first, last): what does not fit is remembered, not written.
+class range_sink {
+ public:
+  constexpr range_sink(char* first, char* last) noexcept : at_(first), last_(last) {}
+  constexpr void put(char c) noexcept {
+    if (at_ != last_) {
+      *at_++ = c;
+    } else {
+      full_ = true;
+    }
+  }
+  constexpr void put(std::string_view v) noexcept {
+    for (const char c : v) put(c);
+  }
+  [[nodiscard]] constexpr char* end() const noexcept { return at_; }
+  [[nodiscard]] constexpr bool full() const noexcept { return full_; }
+
+ private:
+  char* at_;
+  char* last_;
+  bool full_ = false;
+};
+}  // namespace detail
+
+/// A value as people read it, as std::to_chars writes numbers: into [first, last), no NUL,
+/// ptr past the last character written; std::errc::value_too_large (and ptr == last) when it
+/// does not fit. The text is fmt's "{}" of the value: a decimal's digits as written ("4.50",
+/// "-0.0"), a position in signed decimal degrees, a magnetic variation in signed degrees (east
+/// positive; "null" when it has no value), a time "16:49:59.980", a date "2014-12-31", an enum
+/// its wire letter or word, text as written. Integers and bool: std::to_chars.
+template <class T>
+requires(has_codec<T> && !std::is_arithmetic_v<T>) [[nodiscard]] constexpr std::to_chars_result
+    to_chars(char* first, char* last, const T& value) noexcept {
+  detail::range_sink s(first, last);
+  if constexpr (detail::is_text<T>::value) {
+    s.put(value.view());  // text needs no quotes outside JSON
+  } else {
+    write_json_value<json_style::plain>(s, value);
+  }
+  if (s.full()) return {last, std::errc::value_too_large};
+  return {s.end(), std::errc{}};
 }
 
 /// The "type" value of a message: its address, or talker + type for talker-agnostic ones.
