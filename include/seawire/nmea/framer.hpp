@@ -101,96 +101,83 @@ struct framer_scan {
 
   [[nodiscard]] static constexpr bool is_start(char c) noexcept { return c == '$' || c == '!'; }
 
+  // The three searches below: for each, which bytes it stops at, told for one byte, for eight
+  // in a word (nonzero when one of them is such a byte; borrows may flag bytes above the
+  // first hit, never below), and for sixteen SSE2 lanes.
+  struct special_bytes {  // not printable ASCII, or '$'
+    [[nodiscard]] static constexpr bool byte(char c) noexcept { return !is_plain(c); }
+    [[nodiscard]] static constexpr std::uint64_t word(std::uint64_t v) noexcept {
+      return any_below(v, 0x20) | (v & highs) | any_equal(v, 0x7F) | any_equal(v, '$');
+    }
 #if defined(__SSE2__)
-  // Signed compare: "below 0x20" also catches 0x80..0xFF, which are negative.
-  [[nodiscard]] static std::size_t find_special_sse2(const char* s, std::size_t i,
-                                                     std::size_t to) noexcept {
-    const __m128i space = _mm_set1_epi8(0x20);
-    const __m128i del = _mm_set1_epi8(0x7F);
-    const __m128i dollar = _mm_set1_epi8('$');
-    for (; to - i >= 16; i += 16) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
-      const __m128i hit =
-          _mm_or_si128(_mm_cmplt_epi8(v, space),
-                       _mm_or_si128(_mm_cmpeq_epi8(v, del), _mm_cmpeq_epi8(v, dollar)));
-      const auto mask = static_cast<unsigned>(_mm_movemask_epi8(hit));
-      if (mask != 0) return i + static_cast<std::size_t>(std::countr_zero(mask));
+    // Signed compare: "below 0x20" also catches 0x80..0xFF, which are negative.
+    [[nodiscard]] static __m128i lanes(__m128i v) noexcept {
+      return _mm_or_si128(_mm_cmplt_epi8(v, _mm_set1_epi8(0x20)),
+                          _mm_or_si128(_mm_cmpeq_epi8(v, _mm_set1_epi8(0x7F)),
+                                       _mm_cmpeq_epi8(v, _mm_set1_epi8('$'))));
     }
-    return i;
-  }
-
-  [[nodiscard]] static std::size_t find_break_sse2(const char* s, std::size_t i,
-                                                   std::size_t to) noexcept {
-    const __m128i cr = _mm_set1_epi8('\r');
-    const __m128i lf = _mm_set1_epi8('\n');
-    const __m128i dollar = _mm_set1_epi8('$');
-    for (; to - i >= 16; i += 16) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
-      const __m128i hit = _mm_or_si128(_mm_cmpeq_epi8(v, dollar),
-                                       _mm_or_si128(_mm_cmpeq_epi8(v, cr), _mm_cmpeq_epi8(v, lf)));
-      const auto mask = static_cast<unsigned>(_mm_movemask_epi8(hit));
-      if (mask != 0) return i + static_cast<std::size_t>(std::countr_zero(mask));
-    }
-    return i;
-  }
-
-  [[nodiscard]] static std::size_t find_start_sse2(const char* s, std::size_t i,
-                                                   std::size_t to) noexcept {
-    const __m128i dollar = _mm_set1_epi8('$');
-    const __m128i bang = _mm_set1_epi8('!');
-    for (; to - i >= 16; i += 16) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
-      const __m128i hit = _mm_or_si128(_mm_cmpeq_epi8(v, dollar), _mm_cmpeq_epi8(v, bang));
-      const auto mask = static_cast<unsigned>(_mm_movemask_epi8(hit));
-      if (mask != 0) return i + static_cast<std::size_t>(std::countr_zero(mask));
-    }
-    return i;
-  }
 #endif
+  };
+  struct break_bytes {  // '$', CR, LF
+    [[nodiscard]] static constexpr bool byte(char c) noexcept { return is_break(c); }
+    [[nodiscard]] static constexpr std::uint64_t word(std::uint64_t v) noexcept {
+      return any_equal(v, '$') | any_equal(v, '\r') | any_equal(v, '\n');
+    }
+#if defined(__SSE2__)
+    [[nodiscard]] static __m128i lanes(__m128i v) noexcept {
+      return _mm_or_si128(_mm_cmpeq_epi8(v, _mm_set1_epi8('$')),
+                          _mm_or_si128(_mm_cmpeq_epi8(v, _mm_set1_epi8('\r')),
+                                       _mm_cmpeq_epi8(v, _mm_set1_epi8('\n'))));
+    }
+#endif
+  };
+  struct start_bytes {  // '$', '!'
+    [[nodiscard]] static constexpr bool byte(char c) noexcept { return is_start(c); }
+    [[nodiscard]] static constexpr std::uint64_t word(std::uint64_t v) noexcept {
+      return any_equal(v, '$') | any_equal(v, '!');
+    }
+#if defined(__SSE2__)
+    [[nodiscard]] static __m128i lanes(__m128i v) noexcept {
+      return _mm_or_si128(_mm_cmpeq_epi8(v, _mm_set1_epi8('$')),
+                          _mm_cmpeq_epi8(v, _mm_set1_epi8('!')));
+    }
+#endif
+  };
+
+  /// First index in [from, to) whose byte Bytes stops at; `to` if none.
+  template <class Bytes>
+  [[nodiscard]] static constexpr std::size_t find_first(const char* s, std::size_t from,
+                                                        std::size_t to) noexcept {
+    std::size_t i = from;
+#if defined(__SSE2__)
+    if (!std::is_constant_evaluated()) {
+      for (; to - i >= 16; i += 16) {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
+        const auto mask = static_cast<unsigned>(_mm_movemask_epi8(Bytes::lanes(v)));
+        if (mask != 0) return i + static_cast<std::size_t>(std::countr_zero(mask));
+      }
+    }
+#endif
+    for (; to - i >= 8; i += 8)
+      if (Bytes::word(seawire::detail::load_le64(s + i)) != 0) break;
+    while (i < to && !Bytes::byte(s[i])) ++i;
+    return i;
+  }
 
   /// First index in [from, to) whose byte is not printable ASCII or is '$'; `to` if none.
   [[nodiscard]] static constexpr std::size_t find_special(const char* s, std::size_t from,
                                                           std::size_t to) noexcept {
-    std::size_t i = from;
-#if defined(__SSE2__)
-    if (!std::is_constant_evaluated()) i = find_special_sse2(s, i, to);
-#endif
-    for (; to - i >= 8; i += 8) {
-      const std::uint64_t v = seawire::detail::load_le64(s + i);
-      if ((any_below(v, 0x20) | (v & highs) | any_equal(v, 0x7F) | any_equal(v, '$')) != 0) break;
-    }
-    while (i < to && is_plain(s[i])) ++i;
-    return i;
+    return find_first<special_bytes>(s, from, to);
   }
-
   /// First index in [from, to) holding '$', CR or LF; `to` if none.
   [[nodiscard]] static constexpr std::size_t find_break(const char* s, std::size_t from,
                                                         std::size_t to) noexcept {
-    std::size_t i = from;
-#if defined(__SSE2__)
-    if (!std::is_constant_evaluated()) i = find_break_sse2(s, i, to);
-#endif
-    for (; to - i >= 8; i += 8) {
-      const std::uint64_t v = seawire::detail::load_le64(s + i);
-      if ((any_equal(v, '$') | any_equal(v, '\r') | any_equal(v, '\n')) != 0) break;
-    }
-    while (i < to && !is_break(s[i])) ++i;
-    return i;
+    return find_first<break_bytes>(s, from, to);
   }
-
   /// First index in [from, to) holding '$' or '!' (a sentence's start); `to` if none.
   [[nodiscard]] static constexpr std::size_t find_start(const char* s, std::size_t from,
                                                         std::size_t to) noexcept {
-    std::size_t i = from;
-#if defined(__SSE2__)
-    if (!std::is_constant_evaluated()) i = find_start_sse2(s, i, to);
-#endif
-    for (; to - i >= 8; i += 8) {
-      const std::uint64_t v = seawire::detail::load_le64(s + i);
-      if ((any_equal(v, '$') | any_equal(v, '!')) != 0) break;
-    }
-    while (i < to && !is_start(s[i])) ++i;
-    return i;
+    return find_first<start_bytes>(s, from, to);
   }
 };
 
