@@ -15,6 +15,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/nmea/message.hpp"
+#include "seawire/nmea/variation.hpp"
 
 namespace seawire::bench {
 
@@ -96,6 +97,8 @@ inline void read_value(sink& s, const V& v) noexcept {
     }
   } else if constexpr (std::is_same_v<V, nmea::decimal>) {
     s.sum += v.to_double();
+  } else if constexpr (std::is_same_v<V, nmea::magnetic_variation>) {
+    s.sum += v.degrees().value_or(0.0);
   } else if constexpr (requires { v.degrees(); }) {
     s.sum += v.degrees();
   } else if constexpr (requires { v.since_midnight(); }) {
