@@ -14,7 +14,9 @@
 //   nmea wire layer     seawire/nmea/              seawire::nmea -- what every NMEA-style
 //                                                  protocol shares: checksum, sentence_view and
 //                                                  parse_policy, framer, writer, field codecs,
-//                                                  message descriptions, dispatch by address
+//                                                  message descriptions, dispatch by address,
+//                                                  builder (messages from doubles), describe
+//                                                  (errors for people), to_chars (json.hpp)
 //   standard sentences  seawire/standard/          seawire::standard -- NMEA 0183 RMC, GGA,
 //                                                  RPM, RSA, VHW, VBW, VWR, any talker
 //   kingfisher          seawire/kingfisher/        seawire::kingfisher -- Clearpath CP* / PY*
