@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
+# How long does seawire take to compile? Times each translation unit of bench/compile/ (-O2,
+# C++20, the compiler given), best of N runs, and prints each against baseline.cpp (the standard
+# headers any such file includes anyway), in one run on one machine:
+#   bench/compile_time.sh [compiler] [runs]      e.g. bench/compile_time.sh clang++ 5
+set -euo pipefail
+root=$(cd -- "$(dirname -- "${BASH_SOURCE[0]}")/.." && pwd)
+cxx=${1:-g++}
+runs=${2:-3}
+out=$(mktemp -d)
+trap 'rm -rf -- "$out"' EXIT
+
+# best_of <file>: the shortest wall time of `runs` compiles, in seconds.
+best_of() {
+  local best="" t i
+  for ((i = 0; i < runs; i++)); do
+    local start end
+    start=$(date +%s.%N)
+    "$cxx" -std=c++20 -O2 -I"$root/include" -c "$1" -o "$out/o.o"
+    end=$(date +%s.%N)
+    t=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }')
+    if [[ -z $best ]] || awk -v t="$t" -v b="$best" 'BEGIN { exit !(t < b) }'; then best=$t; fi
+  done
+  echo "$best"
+}
+
+echo "$("$cxx" --version | head -n 1); best of $runs"
+base=$(best_of "$root/bench/compile/baseline.cpp")
+printf '%-18s %6.2f s  %5s\n' baseline "$base" "1.0x"
+for tu in include_all decode_one encode_one role_decoder every_family; do
+  t=$(best_of "$root/bench/compile/$tu.cpp")
+  printf '%-18s %6.2f s  %4.1fx\n' "$tu" "$t" "$(awk -v t="$t" -v b="$base" 'BEGIN { print t / b }')"
+done
