@@ -104,6 +104,34 @@ TEST_CASE("RMC magnetic variation: its own type, and an impossible one costs no 
       CHECK(round_trip<standard::rmc>(seal(base + v + ",A")) == seal(base + ",,A"));
     }
   }
+  SECTION("the letter left out and the mode in its place (11 fields, SiRF and Saab receivers)") {
+    const std::string sirf =
+        "$GPRMC,212614.879,A,4839.9488,N,00214.8863,E,0.56,344.41,181207,0,A*77\r\n";
+    const auto r = nmea::decode<standard::rmc>(sirf);
+    REQUIRE(r);
+    CHECK_FALSE(r.value.magnetic_variation);
+    CHECK(r.value.mode == standard::mode_indicator::autonomous);
+    REQUIRE(r.value.course_true);
+    CHECK(*r.value.course_true == decimal::parse("344.41").value);
+    CHECK(round_trip<standard::rmc>(sirf) ==
+          "$GPRMC,212614.879,A,4839.9488,N,00214.8863,E,0.56,344.41,181207,,,A*6B\r\n");
+    const auto saab = nmea::decode<standard::rmc>(
+        "$GPRMC,130711.00,A,5012.790800,N,00806.879600,W,0.5,3.0,010611,,A*6A\r\n");
+    REQUIRE(saab);
+    CHECK_FALSE(saab.value.magnetic_variation);
+    CHECK(saab.value.mode == standard::mode_indicator::autonomous);
+    const auto no_fix = nmea::decode<standard::rmc>(seal(base + "0,N"));
+    REQUIRE(no_fix);
+    CHECK(no_fix.value.mode == standard::mode_indicator::not_valid);
+    // Only as the last field: with 12 fields the 11th is the letter, and 'A' is no letter.
+    CHECK(nmea::decode<standard::rmc>(seal(base + "0,A,A")).ec == errc::bad_variation_direction);
+    // 'E' is a direction before it is a mode ("estimated"): the standard form wins.
+    const auto e = nmea::decode<standard::rmc>(seal(base + ",E"));
+    REQUIRE(e);
+    REQUIRE(e.value.magnetic_variation);
+    CHECK(e.value.magnetic_variation->direction == nmea::hemisphere::east);
+    CHECK_FALSE(e.value.mode);
+  }
   SECTION("corrupt: a malformed number or a letter other than E/W") {
     struct row {
       std::string v;

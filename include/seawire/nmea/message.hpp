@@ -443,7 +443,11 @@ template <class F, class T>
           msg.wire_fields =
               static_cast<std::uint8_t>(r.field_count() < 255 ? r.field_count() : 255);
       }
-      for (unsigned k = 0; k < codec<V>::width; ++k) (void)r.take();
+      unsigned span = codec<V>::width;
+      if constexpr (requires(const field_reader& probe) { codec<V>::nothing_width(probe); }) {
+        if (t.present) span = codec<V>::nothing_width(r);
+      }
+      for (unsigned k = 0; k < span; ++k) (void)r.take();
       clear_optional(m);
       return read_unit(r, o, false);
     }

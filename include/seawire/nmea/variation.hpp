@@ -6,6 +6,8 @@
 //   ...,311214,,E,A*hh         a letter without a value: kept, and written back as it came
 //   ...,311214,999.9,E,A*hh    no variation is 999.9 degrees: some receivers send it for
 //                              "unknown"; read as a letter without a value, so the fix stays
+//   ...,181207,0,A*hh          11 fields, the letter left out and the mode in its place (SiRF,
+//                              Saab): no variation, mode A; written back ...,181207,,,A
 //
 // Easterly variation is positive (true bearing = magnetic bearing + variation). A value beyond
 // 180 degrees, or one without its letter, costs nothing on receive: it reads as not available.
@@ -14,6 +16,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string_view>
 
 #include "seawire/error.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -90,11 +93,27 @@ struct codec<magnetic_variation> {
   [[nodiscard]] static constexpr bool is_nothing(field_reader r) noexcept {
     const field_token number = r.take();
     const field_token letter = r.take();
-    if (!letter.blank()) return false;
+    if (!letter.blank() && !mode_in_letter(r, letter.text)) return false;
     if (number.blank()) return true;
     decimal d;
     return number.text[0] != '-' && number.text[0] != '+' &&
            detail::parse_decimal(number.text, r.policy(), d) == errc::ok;
+  }
+  /// The wire fields a variation that reads as nothing spans: one when a receiver left its
+  /// letter out and the next field (RMC's mode) took that place, else both.
+  [[nodiscard]] static constexpr unsigned nothing_width(field_reader r) noexcept {
+    (void)r.take();
+    const field_token letter = r.take();
+    return !letter.blank() && mode_in_letter(r, letter.text) ? 1 : 2;
+  }
+
+  /// Some receivers (SiRF, Saab) leave the variation's letter out of an RMC that has a mode:
+  /// "...,181207,0,A" in 11 fields, the mode where the letter would be. A mode letter that is
+  /// no direction (not E), as the sentence's last field, is read that way. `after` is past it.
+  [[nodiscard]] static constexpr bool mode_in_letter(const field_reader& after,
+                                                     std::string_view letter) noexcept {
+    return after.index() == after.field_count() && letter.size() == 1 &&
+           std::string_view("ADFMNPRS").find(letter[0]) != std::string_view::npos;
   }
 
   static constexpr errc check(const magnetic_variation& v) noexcept {
