@@ -94,11 +94,7 @@ struct message_set {
   [[nodiscard]] static constexpr std::string_view field_name(
       std::string_view address, std::size_t n,
       std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
-    std::string_view name;
-    (void)((Ms::nmea.matches(address) ? (name = nmea::field_name<Ms>(n, field_count), true)
-                                      : false) ||
-           ...);
-    return name;
+    return about_field(address, n, field_count).name;
   }
 
   /// What the description of the message with this address says of its wire field `n`.

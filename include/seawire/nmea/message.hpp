@@ -431,11 +431,13 @@ template <class F, class T>
     }
     // Blank means "no value", except for text, where blank is the empty string and only a
     // field that is not there at all is nullopt.
-    bool nothing = !t.present || (t.blank() && !codec<V>::allows_blank);
-    if constexpr (requires(const field_reader& probe) { codec<V>::is_nothing(probe); }) {
-      nothing = nothing || codec<V>::is_nothing(r);  // a codec that reads blanks says when not
+    // The wire fields to pass over when they hold nothing; 0 when they hold a value. A codec
+    // that reads blanks (to keep what came with them) says itself when they hold nothing.
+    unsigned nothing = !t.present || (t.blank() && !codec<V>::allows_blank) ? codec<V>::width : 0;
+    if constexpr (requires(const field_reader& probe) { codec<V>::nothing_span(probe); }) {
+      if (t.present) nothing = codec<V>::nothing_span(r);
     }
-    if (nothing) {
+    if (nothing != 0) {
       // Blank where it could have been left out: the form to write back is the sentence's
       // (unless a trailing value further on needs it anyway, which resets it below).
       if constexpr (keeps_wire_fields<T>) {
@@ -443,11 +445,7 @@ template <class F, class T>
           msg.wire_fields =
               static_cast<std::uint8_t>(r.field_count() < 255 ? r.field_count() : 255);
       }
-      unsigned span = codec<V>::width;
-      if constexpr (requires(const field_reader& probe) { codec<V>::nothing_width(probe); }) {
-        if (t.present) span = codec<V>::nothing_width(r);
-      }
-      for (unsigned k = 0; k < span; ++k) (void)r.take();
+      for (unsigned k = 0; k < nothing; ++k) (void)r.take();
       clear_optional(m);
       return read_unit(r, o, false);
     }
@@ -589,10 +587,7 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
   if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
     (void)msg.talker.assign(s.address.substr(0, 2));
   }
-  // Absent fields read as blank only where a checksum vouches for where the sentence ends.
-  parse_policy p = policy;
-  p.absent_as_blank = policy.absent_as_blank && s.checksum == checksum_state::valid;
-  field_reader r(s, p);
+  field_reader r(s, policy);
   errc e = read_fields(
       r, msg, std::make_index_sequence<std::remove_cvref_t<decltype(T::nmea.fields)>::size>{});
   if (e == errc::ok && !r.at_end() && !policy.extra_fields) {
@@ -681,7 +676,7 @@ template <class F, class T>
     if (e == errc::ok) e = check_options(*v, o);
     if (e != errc::ok) return e;
   } else if (codec<V>::allows_blank &&
-             !requires(const field_reader& probe) { codec<V>::is_nothing(probe); }) {
+             !requires(const field_reader& probe) { codec<V>::nothing_span(probe); }) {
     // A blank field reads back as nullopt, except text: there blank is the empty string, and
     // only a field left out is nullopt. One that a later field keeps from being left out cannot
     // be written as nullopt at all.
@@ -839,25 +834,6 @@ template <message_like T>
   return n;
 }
 
-/// The declared name of the field that holds wire field `n` (1-based), or "" if none.
-/// Numbered as in the longest form of the sentence; give the sentence's field count (e.g.
-/// sentence_view::field_count) to number a shorter form as it came: a five-field CPRBS has no
-/// battery id, so its field 2 is the stack voltage.
-template <message_like T>
-[[nodiscard]] constexpr std::string_view field_name(
-    std::size_t n, std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
-  std::string_view name;
-  std::size_t first = 1;
-  T::nmea.fields.apply([&](const auto&... d) {
-    (void)(((d.opts.when_count != 0 && field_count < d.opts.when_count)
-                ? false  // the shorter form has no such field
-                : (n >= first && n < first + d.width() ? (name = d.name, true)
-                                                       : (first += d.width(), false))) ||
-           ...);
-  });
-  return name;
-}
-
 /// What a message's description says of wire field `n`: its declared name and options (found
 /// false when the message has no such field).
 struct field_about {
@@ -880,6 +856,16 @@ template <message_like T>
            ...);
   });
   return a;
+}
+
+/// The declared name of the field that holds wire field `n` (1-based), or "" if none.
+/// Numbered as in the longest form of the sentence; give the sentence's field count (e.g.
+/// sentence_view::field_count) to number a shorter form as it came: a five-field CPRBS has no
+/// battery id, so its field 2 is the stack voltage.
+template <message_like T>
+[[nodiscard]] constexpr std::string_view field_name(
+    std::size_t n, std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
+  return about_field<T>(n, field_count).name;
 }
 
 }  // namespace seawire::nmea

@@ -420,6 +420,8 @@ class field_reader {
             static_cast<std::uint16_t>(s.field_count > 0 ? s.body_column() : s.line.size())),
         total_(s.field_count),
         policy_(p) {
+    // Absent fields read as blank only where a checksum vouches for where the sentence ends.
+    policy_.absent_as_blank = p.absent_as_blank && s.checksum == checksum_state::valid;
     if (s.field_count > 0) {
       mask_ = ends_in(body_, 0);
       if (mask_ == 0) next_window();

@@ -73,47 +73,41 @@ struct codec<magnetic_variation> {
     const std::string_view number = r.take().text;
     v.value.reset();
     if (!number.empty()) {
-      // Unsigned on the wire: a sign would contradict (or duplicate) the letter.
       decimal d;
-      if (number[0] == '-' || number[0] == '+' ||
-          detail::parse_decimal(number, r.policy(), d) != errc::ok) [[unlikely]]
+      if (!read_number(number, r.policy(), d)) [[unlikely]]
         return errc::bad_variation;
       if (d.compare(decimal{180}) <= 0) v.value = d;  // beyond: no variation; not available
     }
     const field_token letter = r.take();
-    if (letter.text.size() != 1 || (letter.text[0] != 'E' && letter.text[0] != 'W'))
-      return errc::bad_variation_direction;
+    if (!is_direction(letter.text)) return errc::bad_variation_direction;
     v.direction = static_cast<hemisphere>(letter.text[0]);
     return errc::ok;
   }
 
-  /// Whether the two fields at the reader hold no variation at all: both blank, or a number
-  /// without its letter (a direction cannot be guessed). The message layer then leaves the
-  /// optional empty, and it is written back as two blank fields.
-  [[nodiscard]] static constexpr bool is_nothing(field_reader r) noexcept {
+  /// How many wire fields at the reader hold no variation at all, for the message layer to
+  /// pass over (the optional stays empty; it is written back as two blank fields): 0 when they
+  /// hold one, or something read() refuses. 2 for both blank, or a number without its letter (a
+  /// direction cannot be guessed). 1 when the letter's field is the sentence's last and holds no
+  /// direction: some receivers (SiRF, Saab) leave the letter out of an RMC that has a mode,
+  /// "...,181207,0,A" in 11 fields, and that field is the next one's.
+  [[nodiscard]] static constexpr unsigned nothing_span(field_reader r) noexcept {
     const field_token number = r.take();
     const field_token letter = r.take();
-    if (!letter.blank() && !mode_in_letter(r, letter.text)) return false;
-    if (number.blank()) return true;
+    const bool left_out =
+        !letter.blank() && r.index() == r.field_count() && !is_direction(letter.text);
+    if (!letter.blank() && !left_out) return 0;
     decimal d;
-    return number.text[0] != '-' && number.text[0] != '+' &&
-           detail::parse_decimal(number.text, r.policy(), d) == errc::ok;
-  }
-  /// The wire fields a variation that reads as nothing spans: one when a receiver left its
-  /// letter out and the next field (RMC's mode) took that place, else both.
-  [[nodiscard]] static constexpr unsigned nothing_width(field_reader r) noexcept {
-    (void)r.take();
-    const field_token letter = r.take();
-    return !letter.blank() && mode_in_letter(r, letter.text) ? 1 : 2;
+    if (!number.blank() && !read_number(number.text, r.policy(), d)) return 0;
+    return left_out ? 1 : 2;
   }
 
-  /// Some receivers (SiRF, Saab) leave the variation's letter out of an RMC that has a mode:
-  /// "...,181207,0,A" in 11 fields, the mode where the letter would be. A mode letter that is
-  /// no direction (not E), as the sentence's last field, is read that way. `after` is past it.
-  [[nodiscard]] static constexpr bool mode_in_letter(const field_reader& after,
-                                                     std::string_view letter) noexcept {
-    return after.index() == after.field_count() && letter.size() == 1 &&
-           std::string_view("ADFMNPRS").find(letter[0]) != std::string_view::npos;
+  /// Unsigned on the wire: a sign would contradict (or duplicate) the letter.
+  [[nodiscard]] static constexpr bool read_number(std::string_view s, const parse_policy& p,
+                                                  decimal& d) noexcept {
+    return s[0] != '-' && s[0] != '+' && detail::parse_decimal(s, p, d) == errc::ok;
+  }
+  [[nodiscard]] static constexpr bool is_direction(std::string_view letter) noexcept {
+    return letter == "E" || letter == "W";
   }
 
   static constexpr errc check(const magnetic_variation& v) noexcept {
