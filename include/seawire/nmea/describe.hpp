@@ -21,6 +21,7 @@
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
 
@@ -28,46 +29,39 @@ namespace seawire::nmea {
 
 namespace detail {
 
-/// Appends to a fixed buffer, keeping one byte for the terminating NUL; cuts what does not fit.
+/// Appends to a caller's buffer, keeping one byte for the terminating NUL; cuts what does not
+/// fit. Numbers are written by the JSON writer's routines (json.hpp), into its range sink.
 class text_out {
  public:
-  constexpr explicit text_out(std::span<char> out) noexcept : out_(out) {
-    if (!out_.empty()) out_[0] = '\0';
-  }
+  constexpr explicit text_out(std::span<char> out) noexcept
+      : out_(out), sink_(out.data(), out.empty() ? out.data() : out.data() + out.size() - 1) {}
   constexpr text_out& put(std::string_view s) noexcept {
-    for (const char c : s) {
-      if (size_ + 1 >= out_.size()) break;
-      out_[size_++] = c;
-    }
-    if (!out_.empty()) out_[size_] = '\0';
+    sink_.put(s);
     return *this;
   }
   constexpr text_out& put(std::uint64_t v) noexcept {
-    char digits[20];
-    std::size_t n = 0;
-    do {
-      digits[n++] = static_cast<char>('0' + v % 10);
-      v /= 10;
-    } while (v != 0);
-    while (n > 0) put(std::string_view(&digits[--n], 1));
+    json_uint(sink_, v);
     return *this;
   }
   constexpr text_out& put(const decimal& d) noexcept {
-    char buf[48];
-    writer w(std::span<char>(buf, sizeof buf));
-    write_decimal(w, d);
-    return put(w.view());
+    json_decimal(sink_, d);
+    return *this;
   }
   constexpr text_out& hex(std::uint8_t b) noexcept {
-    const char h[2] = {seawire::detail::hex_digit_upper(b >> 4U),
-                       seawire::detail::hex_digit_upper(b & 0x0FU)};
-    return put(std::string_view(h, 2));
+    sink_.put(seawire::detail::hex_digit_upper(b >> 4U));
+    sink_.put(seawire::detail::hex_digit_upper(b & 0x0FU));
+    return *this;
   }
-  [[nodiscard]] constexpr std::string_view view() const noexcept { return {out_.data(), size_}; }
+  /// The text, NUL-terminated in the buffer.
+  [[nodiscard]] constexpr std::string_view view() noexcept {
+    if (out_.empty()) return {};
+    *sink_.end() = '\0';
+    return {out_.data(), static_cast<std::size_t>(sink_.end() - out_.data())};
+  }
 
  private:
   std::span<char> out_;
-  std::size_t size_ = 0;
+  range_sink sink_;
 };
 
 /// The range or form a field allows, after an error about its value.
