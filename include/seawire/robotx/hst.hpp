@@ -63,20 +63,16 @@ template <class Duration>
 template <class Duration>
 [[nodiscard]] constexpr result<hst_stamp> to_hst(std::chrono::sys_time<Duration> utc) noexcept {
   using namespace std::chrono;
-  const local_seconds local = to_hst_local(utc);
-  const local_days day = floor<days>(local);
-  const year_month_day ymd{day};
-  const hh_mm_ss<seconds> hms{local - day};
+  // The Hawaii wall clock, counted as system_clock counts UTC.
+  const sys_seconds hst = floor<seconds>(utc) + hst_offset;
   result<hst_stamp> r;
-  const int y = static_cast<int>(ymd.year());
-  if (y < 1980 || y > 2079) {
+  const nmea::date day = nmea::date::from(hst);
+  if (day.year < 1980 || day.year > 2079) {
     r.ec = errc::out_of_range;
     return r;
   }
-  r.value.date = nmea::date::from(ymd);
-  r.value.time.hour = static_cast<std::uint8_t>(hms.hours().count());
-  r.value.time.minute = static_cast<std::uint8_t>(hms.minutes().count());
-  r.value.time.second = static_cast<std::uint8_t>(hms.seconds().count());
+  r.value.date = day;
+  r.value.time = nmea::time_of_day::from(hst, 0).value;  // whole seconds: never fails
   return r;
 }
 
@@ -89,8 +85,7 @@ template <class Duration>
   r.ec = nmea::codec<nmea::date>::check(d);
   if (r.ec == errc::ok) r.ec = nmea::codec<nmea::time_of_day>::check(t);
   if (r.ec != errc::ok) return r;
-  const local_days day{d.ymd()};
-  r.value = instant{(day + t.since_midnight()).time_since_epoch()} - hst_offset;
+  r.value = nmea::to_sys_time(d, t) - hst_offset;  // the wall clock's reading, less the offset
   return r;
 }
 [[nodiscard]] constexpr result<instant> from_hst(const hst_stamp& s) noexcept {

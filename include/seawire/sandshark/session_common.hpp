@@ -68,9 +68,8 @@ class utc_clock {
     return to_time_of_day(ms_at(now));
   }
   [[nodiscard]] static constexpr time_of_day to_time_of_day(std::int64_t ms) noexcept {
-    const std::int64_t m = floor_mod(ms, day_ms);
-    return {static_cast<std::uint8_t>(m / 3'600'000), static_cast<std::uint8_t>(m / 60'000 % 60),
-            static_cast<std::uint8_t>(m / 1000 % 60), static_cast<std::uint32_t>(m % 1000), 3};
+    // Within [0, 24 h), and 3 places: from_since_midnight cannot fail.
+    return time_of_day::from_since_midnight(milliseconds(floor_mod(ms, day_ms)), 3).value;
   }
   [[nodiscard]] static constexpr std::int64_t ms_of(const time_of_day& t) noexcept {
     return std::chrono::floor<milliseconds>(t.since_midnight()).count();
