@@ -64,14 +64,9 @@ static_assert(!std::is_constructible_v<decimal, int, int>);     // no positional
 static_assert(!std::is_constructible_v<decimal, double, int>);  // decimal(1.5, 1) was "0.1"
 
 // Members of messages, plain and optional, on both sides of each link.
-template <class>
-struct member_of;
-template <class C, class T>
-struct member_of<T C::*> {
-  using type = T;
-};
 template <auto Member, class V>
-concept member_takes = assignable_from<typename member_of<decltype(Member)>::type, V>;
+concept member_takes =
+    assignable_from<typename nmea::detail::member_pointer_traits<decltype(Member)>::member_type, V>;
 template <auto Member>
 constexpr bool member_refuses_floating() {
   return !member_takes<Member, double> && !member_takes<Member, float> && member_takes<Member, int>;

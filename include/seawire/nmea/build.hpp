@@ -78,14 +78,10 @@ inline constexpr bool fills_from_double =
 template <class V>
 [[nodiscard]] constexpr result<V> from_double(double v, int p) noexcept {
   if constexpr (std::is_same_v<V, decimal>) {
-    if (p < 0) {
-      if (std::is_constant_evaluated()) return result<V>{{}, errc::out_of_range};
-      return shortest_decimal(v);
-    }
+    if (p < 0) return shortest_decimal(v);  // only from set(v, shortest), not constexpr
     return decimal::from_double(v, static_cast<unsigned>(p));
   } else {
-    if (p < 0) {
-      if (std::is_constant_evaluated()) return result<V>{{}, errc::out_of_range};
+    if (p < 0) {  // only from set(v, shortest), not constexpr
       if constexpr (std::is_same_v<V, latitude> || std::is_same_v<V, longitude>) {
         // The fewest minute digits whose position reads back as the same double.
         for (unsigned m = 1; m < 12; ++m) {

@@ -274,16 +274,14 @@ struct bprmb {
                                                        std::optional<double> speed_mps) noexcept {
     result<bprmb> r;
     r.value.timestamp = stamp;
+    // Each value rounded to its field's precision, then 0 <= value (< below, when given).
     const auto put = [&r](std::optional<decimal> bprmb::*member, std::uint16_t field,
-                          std::optional<double> v, int places, decimal below) {
+                          std::optional<double> v, int places, std::optional<decimal> below) {
       if (!v || r.ec != errc::ok) return;
       const result<decimal> d = decimal::from_double(*v, static_cast<unsigned>(places));
-      if (d && (d.value.compare(decimal{0}) < 0 || (d.value.negative && !d.value.is_zero()) ||
-                (!below.is_zero() && d.value.compare(below) >= 0))) {
+      r.ec = d.ec;
+      if (d && (d.value.compare(decimal{0}) < 0 || (below && d.value.compare(*below) >= 0)))
         r.ec = errc::out_of_range;
-      } else {
-        r.ec = d.ec;
-      }
       if (r.ec != errc::ok) {
         r.field = field;
         return;
@@ -291,8 +289,8 @@ struct bprmb {
       r.value.*member = d.value;
     };
     put(&bprmb::heading, 2, heading_deg, nmea::precision_of<&bprmb::heading>(), decimal{360});
-    put(&bprmb::depth, 3, depth_m, nmea::precision_of<&bprmb::depth>(), decimal{});
-    put(&bprmb::speed, 5, speed_mps, nmea::precision_of<&bprmb::speed>(), decimal{});
+    put(&bprmb::depth, 3, depth_m, nmea::precision_of<&bprmb::depth>(), std::nullopt);
+    put(&bprmb::speed, 5, speed_mps, nmea::precision_of<&bprmb::speed>(), std::nullopt);
     if (r.ec != errc::ok) {
       r.value = bprmb{};
       return r;
