@@ -11,6 +11,37 @@
 
 #include "seawire/seawire.hpp"
 
+// ---------------------------------------------------------------------------------------------
+// The family namespaces hold their own names only: `using namespace seawire::kingfisher` does not
+// also bring in seawire::nmea (a header's using-directive would reach every file that includes
+// it). Each probe namespace below sees a user's own `decimal`, `field`, `sentence`, `latitude`
+// and `parse` beside one family's names; were the family to pull seawire::nmea in, each use
+// would be ambiguous and this file would not compile.
+namespace user_names {
+struct decimal {};
+struct field {};
+struct sentence {};
+struct latitude {};
+struct parse {};
+}  // namespace user_names
+#define SEAWIRE_PROBE_FAMILY(family)                                            \
+  namespace probe_##family {                                                    \
+    using namespace user_names;      /* NOLINT(google-build-using-namespace) */ \
+    using namespace seawire::family; /* NOLINT(google-build-using-namespace) */ \
+    static_assert(std::is_same_v<decimal, user_names::decimal> &&               \
+                  std::is_same_v<field, user_names::field> &&                   \
+                  std::is_same_v<sentence, user_names::sentence> &&             \
+                  std::is_same_v<latitude, user_names::latitude> &&             \
+                  std::is_same_v<parse, user_names::parse>);                    \
+  }
+SEAWIRE_PROBE_FAMILY(standard)
+SEAWIRE_PROBE_FAMILY(bluefin)
+SEAWIRE_PROBE_FAMILY(kingfisher)
+SEAWIRE_PROBE_FAMILY(sandshark)
+SEAWIRE_PROBE_FAMILY(robotx)
+SEAWIRE_PROBE_FAMILY(anello)
+#undef SEAWIRE_PROBE_FAMILY
+
 namespace {
 
 using namespace seawire;

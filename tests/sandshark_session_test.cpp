@@ -16,6 +16,7 @@
 
 using namespace seawire;
 using namespace seawire::sandshark;
+using namespace seawire::nmea;
 using namespace std::chrono_literals;
 
 namespace {

@@ -14,6 +14,7 @@
 
 using namespace seawire;
 using namespace seawire::sandshark;
+using namespace seawire::nmea;
 
 namespace {
 

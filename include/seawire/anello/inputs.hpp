@@ -56,21 +56,21 @@ inline constexpr nmea::parse_policy input_policy{
 /// feeds the vehicle's own navigation).
 inline constexpr nmea::parse_policy output_policy = input_policy;
 
-// The role decoders below are function templates of nothing (`template <int = 0>`): a file
-// that includes this header then compiles a role's decoders only if it calls them, which
-// keeps including seawire/seawire.hpp cheap. Call them as plain functions.
+// The role decoders below are function templates of nothing (see nmea::lazy): a file that
+// includes this header compiles a role's decoder only if it calls it, which keeps including
+// seawire/seawire.hpp cheap. Call them as plain functions.
 /// Decode one line as the INS would. Sentences it does not take come back as unknown_sentence,
 /// not as an error.
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<nmea_inputs::variant> decode_input(
     std::string_view line, const nmea::parse_policy& policy = input_policy) noexcept {
-  return nmea_inputs::decode(line, policy);
+  return nmea::lazy<nmea_inputs, N>::decode(line, policy);
 }
 /// Decode one line of the INS's output.
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<nmea_outputs::variant> decode_output(
     std::string_view line, const nmea::parse_policy& policy = output_policy) noexcept {
-  return nmea_outputs::decode(line, policy);
+  return nmea::lazy<nmea_outputs, N>::decode(line, policy);
 }
 
 // ---------------------------------------------------------------------------------------------

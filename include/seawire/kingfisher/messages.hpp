@@ -42,8 +42,6 @@
 
 namespace seawire::kingfisher {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 // ---------------------------------------------------------------------------------------------
 // from the vehicle
 
@@ -69,28 +67,29 @@ using cpnvr = bluefin::velocity_update<"CPNVR">;
 ///   $CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,164959.060*62
 ///          1          2 3          4         5         6
 struct cprcm {
-  time_of_day timestamp;                        // 1 [Timestamp] when the sentence was made
+  nmea::time_of_day timestamp;                  // 1 [Timestamp] when the sentence was made
   std::optional<std::uint16_t> compass_id = 0;  // 2 [ID_Compass] which compass
-  std::optional<decimal> heading_deg;  // 3 [Heading] degrees clockwise from true north, 0..360
-  std::optional<decimal> pitch_deg;    // 4 [Pitch] degrees, -90..90, positive bow up
-  std::optional<decimal> roll_deg;     // 5 [Roll] degrees, -180..180; the spec's 2.8 says
-                                       //   positive port side up, its Appendix B starboard
-  std::optional<time_of_day> nav_timestamp;  // 6 [NavTimestamp] when the compass measured;
-                                             //   blank means "the same as field 1"
+  // 3 [Heading] degrees clockwise from true north, 0..360
+  std::optional<nmea::decimal> heading_deg;
+  std::optional<nmea::decimal> pitch_deg;  // 4 [Pitch] degrees, -90..90, positive bow up
+  std::optional<nmea::decimal> roll_deg;   // 5 [Roll] degrees, -180..180; the spec's 2.8 says
+                                           //   positive port side up, its Appendix B starboard
+  std::optional<nmea::time_of_day> nav_timestamp;  // 6 [NavTimestamp] when the compass measured;
+                                                   //   blank means "the same as field 1"
 
   /// Field 6, or field 1 when field 6 is blank, as the spec says to read it.
-  [[nodiscard]] constexpr time_of_day effective_nav_timestamp() const noexcept {
+  [[nodiscard]] constexpr nmea::time_of_day effective_nav_timestamp() const noexcept {
     return nav_timestamp ? *nav_timestamp : timestamp;
   }
 
   friend constexpr bool operator==(const cprcm&, const cprcm&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"CPRCM">(
-      field<&cprcm::timestamp>("timestamp"), field<&cprcm::compass_id>("compass_id"),
-      field<&cprcm::heading_deg>("heading_deg", precision(2), in_range(0, 360)),
-      field<&cprcm::pitch_deg>("pitch_deg", precision(2), in_range(-90, 90)),
-      field<&cprcm::roll_deg>("roll_deg", precision(2), in_range(-180, 180)),
-      field<&cprcm::nav_timestamp>("nav_timestamp"));
+  static constexpr auto nmea = nmea::sentence<"CPRCM">(
+      nmea::field<&cprcm::timestamp>("timestamp"), nmea::field<&cprcm::compass_id>("compass_id"),
+      nmea::field<&cprcm::heading_deg>("heading_deg", nmea::precision(2), nmea::in_range(0, 360)),
+      nmea::field<&cprcm::pitch_deg>("pitch_deg", nmea::precision(2), nmea::in_range(-90, 90)),
+      nmea::field<&cprcm::roll_deg>("roll_deg", nmea::precision(2), nmea::in_range(-180, 180)),
+      nmea::field<&cprcm::nav_timestamp>("nav_timestamp"));
 };
 
 /// Battery bank voltages, one sentence per bank. The spec has the battery id as field 2 (six
@@ -104,26 +103,27 @@ struct cprcm {
 ///   $CPRBS,172909.322,15.121597,15.121597,15.121597,0*76   real vehicle, 5 fields (no id)
 ///          1          2         3         4         5
 struct cprbs {
-  time_of_day timestamp;                      // 1 [Timestamp] when the sentence was made
-  std::optional<std::uint16_t> battery_id;    // 2 [ID_Battery] banks numbered from 1; only in the
-                                              //   six-field form, nullopt writes the five-field
-                                              //   one unless wire_fields says six
-  std::optional<decimal> stack_voltage_v;     // 3 [V_Batt_Stack] volts, the whole bank
-  std::optional<decimal> min_cell_voltage_v;  // 4 [V_Batt_Min] volts, lowest cell of the bank
-  std::optional<decimal> max_cell_voltage_v;  // 5 [V_Batt_Max] volts, highest cell of the bank
-  std::optional<decimal> temperature_c;       // 6 [TemperatureC] degrees Celsius (real: 0)
+  nmea::time_of_day timestamp;              // 1 [Timestamp] when the sentence was made
+  std::optional<std::uint16_t> battery_id;  // 2 [ID_Battery] banks numbered from 1; only in the
+                                            //   six-field form, nullopt writes the five-field
+                                            //   one unless wire_fields says six
+  std::optional<nmea::decimal> stack_voltage_v;     // 3 [V_Batt_Stack] volts, the whole bank
+  std::optional<nmea::decimal> min_cell_voltage_v;  // 4 [V_Batt_Min] volts, lowest cell of the bank
+  // 5 [V_Batt_Max] volts, highest cell of the bank
+  std::optional<nmea::decimal> max_cell_voltage_v;
+  std::optional<nmea::decimal> temperature_c;  // 6 [TemperatureC] degrees Celsius (real: 0)
   std::uint8_t wire_fields = 0;  // 6 when a six-field sentence's battery id came blank: written
                                  //   back in that form (0: nullopt writes the five-field one)
 
   friend constexpr bool operator==(const cprbs&, const cprbs&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"CPRBS">(field<&cprbs::timestamp>("timestamp"),
-                        field<&cprbs::battery_id>("battery_id", only_with_field_count(6)),
-                        field<&cprbs::stack_voltage_v>("stack_voltage_v", precision(2)),
-                        field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v", precision(2)),
-                        field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v", precision(2)),
-                        field<&cprbs::temperature_c>("temperature_c", precision(1)));
+  static constexpr auto nmea = nmea::sentence<"CPRBS">(
+      nmea::field<&cprbs::timestamp>("timestamp"),
+      nmea::field<&cprbs::battery_id>("battery_id", nmea::only_with_field_count(6)),
+      nmea::field<&cprbs::stack_voltage_v>("stack_voltage_v", nmea::precision(2)),
+      nmea::field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v", nmea::precision(2)),
+      nmea::field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v", nmea::precision(2)),
+      nmea::field<&cprbs::temperature_c>("temperature_c", nmea::precision(1)));
 };
 
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
@@ -135,33 +135,35 @@ struct cprbs {
 ///   $CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57
 ///          1          2         3         4         5         6        7         [8]
 struct cpimu {
-  time_of_day timestamp;                     // 1 [Timestamp] when the sentence was made
-  std::optional<decimal> rate_x_dps;         // 2 [AngularRate_X] deg/s about x (roll)
-  std::optional<decimal> rate_y_dps;         // 3 [AngularRate_Y] deg/s about y (pitch)
-  std::optional<decimal> rate_z_dps;         // 4 [AngularRate_Z] deg/s about z (yaw)
-  std::optional<decimal> accel_x_mps2;       // 5 [Accel_X] m/s^2, positive forward
-  std::optional<decimal> accel_y_mps2;       // 6 [Accel_Y] m/s^2, positive to starboard
-  std::optional<decimal> accel_z_mps2;       // 7 [Accel_Z] m/s^2, positive down
-  std::optional<time_of_day> nav_timestamp;  // 8 [NavTimestamp] when the IMU measured; blank or
-                                             //   absent means "the same as field 1"
+  nmea::time_of_day timestamp;                // 1 [Timestamp] when the sentence was made
+  std::optional<nmea::decimal> rate_x_dps;    // 2 [AngularRate_X] deg/s about x (roll)
+  std::optional<nmea::decimal> rate_y_dps;    // 3 [AngularRate_Y] deg/s about y (pitch)
+  std::optional<nmea::decimal> rate_z_dps;    // 4 [AngularRate_Z] deg/s about z (yaw)
+  std::optional<nmea::decimal> accel_x_mps2;  // 5 [Accel_X] m/s^2, positive forward
+  std::optional<nmea::decimal> accel_y_mps2;  // 6 [Accel_Y] m/s^2, positive to starboard
+  std::optional<nmea::decimal> accel_z_mps2;  // 7 [Accel_Z] m/s^2, positive down
+  // 8 [NavTimestamp] when the IMU measured; blank or
+  // absent means "the same as field 1"
+  std::optional<nmea::time_of_day> nav_timestamp;
   std::uint8_t wire_fields = 0;  // 8 when field 8 came blank: written back blank (the seed's
                                  //   form); 0: left out when nav_timestamp has no value
 
   /// Field 8, or field 1 when field 8 is blank or absent.
-  [[nodiscard]] constexpr time_of_day effective_nav_timestamp() const noexcept {
+  [[nodiscard]] constexpr nmea::time_of_day effective_nav_timestamp() const noexcept {
     return nav_timestamp ? *nav_timestamp : timestamp;
   }
 
   friend constexpr bool operator==(const cpimu&, const cpimu&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"CPIMU">(
-      field<&cpimu::timestamp>("timestamp"), field<&cpimu::rate_x_dps>("rate_x_dps", precision(3)),
-      field<&cpimu::rate_y_dps>("rate_y_dps", precision(3)),
-      field<&cpimu::rate_z_dps>("rate_z_dps", precision(3)),
-      field<&cpimu::accel_x_mps2>("accel_x_mps2", precision(3)),
-      field<&cpimu::accel_y_mps2>("accel_y_mps2", precision(3)),
-      field<&cpimu::accel_z_mps2>("accel_z_mps2", precision(3)),
-      field<&cpimu::nav_timestamp>("nav_timestamp", may_be_absent));
+  static constexpr auto nmea = nmea::sentence<"CPIMU">(
+      nmea::field<&cpimu::timestamp>("timestamp"),
+      nmea::field<&cpimu::rate_x_dps>("rate_x_dps", nmea::precision(3)),
+      nmea::field<&cpimu::rate_y_dps>("rate_y_dps", nmea::precision(3)),
+      nmea::field<&cpimu::rate_z_dps>("rate_z_dps", nmea::precision(3)),
+      nmea::field<&cpimu::accel_x_mps2>("accel_x_mps2", nmea::precision(3)),
+      nmea::field<&cpimu::accel_y_mps2>("accel_y_mps2", nmea::precision(3)),
+      nmea::field<&cpimu::accel_z_mps2>("accel_z_mps2", nmea::precision(3)),
+      nmea::field<&cpimu::nav_timestamp>("nav_timestamp", nmea::may_be_absent));
 };
 
 /// Lights state. Not in the seed; real vehicles send it (PYCLT switches the lights).
@@ -169,13 +171,13 @@ struct cpimu {
 ///   $CPALT,164959.100,1*62
 ///          1          2
 struct cpalt {
-  time_of_day timestamp;   // 1 when the sentence was made
-  bool lights_on = false;  // 2 1 = lights on, 0 = off
+  nmea::time_of_day timestamp;  // 1 when the sentence was made
+  bool lights_on = false;       // 2 1 = lights on, 0 = off
 
   friend constexpr bool operator==(const cpalt&, const cpalt&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"CPALT">(field<&cpalt::timestamp>("timestamp"),
-                                                 field<&cpalt::lights_on>("lights_on"));
+  static constexpr auto nmea = nmea::sentence<"CPALT">(nmea::field<&cpalt::timestamp>("timestamp"),
+                                                       nmea::field<&cpalt::lights_on>("lights_on"));
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -188,10 +190,10 @@ struct cpalt {
 
 namespace detail {
 template <class T>
-[[nodiscard]] constexpr bool convert(result<T>& out, decimal T::*member, std::uint16_t field,
+[[nodiscard]] constexpr bool convert(result<T>& out, nmea::decimal T::*member, std::uint16_t field,
                                      double v, int places, int declared) noexcept {
-  const result<decimal> d =
-      decimal::from_double(v, static_cast<unsigned>(places >= 0 ? places : declared));
+  const result<nmea::decimal> d =
+      nmea::decimal::from_double(v, static_cast<unsigned>(places >= 0 ? places : declared));
   if (!d) {
     out.ec = d.ec;
     out.field = field;
@@ -207,9 +209,10 @@ template <class T>
 ///   $PYDEP,-10,50*71
 ///          1   2
 struct pydep {
-  decimal yaw_rate;  // 1 [DesYawRate] desired rate of yaw. UNIT CONFLICT: the spec says rad/s;
-                     //   the Clearpath vehicle reads deg/s, positive clockwise. Sent as given.
-  decimal thrust;    // 2 [DesThrustPct] percent of thrust, -100..100; 0 stopped, > 0 forward
+  nmea::decimal
+      yaw_rate;          // 1 [DesYawRate] desired rate of yaw. UNIT CONFLICT: the spec says rad/s;
+                         //   the Clearpath vehicle reads deg/s, positive clockwise. Sent as given.
+  nmea::decimal thrust;  // 2 [DesThrustPct] percent of thrust, -100..100; 0 stopped, > 0 forward
 
   /// Both numbers rounded to `places` fraction digits, or (places < 0) to each field's
   /// declared precision: 2 for the yaw rate, 1 for the thrust.
@@ -225,9 +228,9 @@ struct pydep {
 
   friend constexpr bool operator==(const pydep&, const pydep&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"PYDEP">(field<&pydep::yaw_rate>("yaw_rate", precision(2)),
-                        field<&pydep::thrust>("thrust", precision(1), in_range(-100, 100)));
+  static constexpr auto nmea = nmea::sentence<"PYDEP">(
+      nmea::field<&pydep::yaw_rate>("yaw_rate", nmea::precision(2)),
+      nmea::field<&pydep::thrust>("thrust", nmea::precision(1), nmea::in_range(-100, 100)));
 };
 
 /// Desired heading and speed; the vehicle's own controllers hold them.
@@ -235,9 +238,10 @@ struct pydep {
 ///   $PYDEV,90,1.5*7D
 ///          1  2
 struct pydev {
-  decimal heading_deg;  // 1 [DesHeading] degrees clockwise from true north, [0, 360). The spec
-                        //   says whole degrees 0..359; real senders send decimals: both accepted
-  decimal speed_mps;    // 2 [DesSpeed] m/s over ground, >= 0 (the vehicle caps it at its max)
+  nmea::decimal
+      heading_deg;  // 1 [DesHeading] degrees clockwise from true north, [0, 360). The spec
+                    //   says whole degrees 0..359; real senders send decimals: both accepted
+  nmea::decimal speed_mps;  // 2 [DesSpeed] m/s over ground, >= 0 (the vehicle caps it at its max)
 
   /// Heading wrapped into [0, 360) after rounding (so -90 is 270 and 359.97 at one place is
   /// 0.0). Both rounded to `places` fraction digits (at most 15), or (places < 0) to each
@@ -255,7 +259,7 @@ struct pydev {
         !detail::convert(r, &pydev::speed_mps, 2, speed_mps, places,
                          nmea::precision_of<&pydev::speed_mps>()))
       return r;
-    decimal& h = r.value.heading_deg;
+    nmea::decimal& h = r.value.heading_deg;
     const std::uint64_t turn = 360 * seawire::detail::pow10_table[h.places];
     h.mantissa %= turn;
     if (h.negative && h.mantissa != 0) h.mantissa = turn - h.mantissa;
@@ -265,9 +269,10 @@ struct pydev {
 
   friend constexpr bool operator==(const pydev&, const pydev&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"PYDEV">(
-      field<&pydev::heading_deg>("heading_deg", precision(1), in_range_below(0, 360)),
-      field<&pydev::speed_mps>("speed_mps", precision(2), at_least(0)));
+  static constexpr auto nmea = nmea::sentence<"PYDEV">(
+      nmea::field<&pydev::heading_deg>("heading_deg", nmea::precision(1),
+                                       nmea::in_range_below(0, 360)),
+      nmea::field<&pydev::speed_mps>("speed_mps", nmea::precision(2), nmea::at_least(0)));
 };
 
 /// Thrust for each motor of the differential drive.
@@ -275,8 +280,8 @@ struct pydev {
 ///   $PYDIR,45,55*57
 ///          1  2
 struct pydir {
-  decimal thrust_left;   // 1 [DesThrustPct_L] percent of thrust, -100..100, port motor
-  decimal thrust_right;  // 2 [DesThrustPct_R] percent of thrust, -100..100, starboard motor
+  nmea::decimal thrust_left;   // 1 [DesThrustPct_L] percent of thrust, -100..100, port motor
+  nmea::decimal thrust_right;  // 2 [DesThrustPct_R] percent of thrust, -100..100, starboard motor
 
   /// Both percentages rounded to `places` fraction digits, or (places < 0) to the declared
   /// precision: 1.
@@ -292,9 +297,11 @@ struct pydir {
 
   friend constexpr bool operator==(const pydir&, const pydir&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"PYDIR">(
-      field<&pydir::thrust_left>("thrust_left", precision(1), in_range(-100, 100)),
-      field<&pydir::thrust_right>("thrust_right", precision(1), in_range(-100, 100)));
+  static constexpr auto nmea =
+      nmea::sentence<"PYDIR">(nmea::field<&pydir::thrust_left>("thrust_left", nmea::precision(1),
+                                                               nmea::in_range(-100, 100)),
+                              nmea::field<&pydir::thrust_right>("thrust_right", nmea::precision(1),
+                                                                nmea::in_range(-100, 100)));
 };
 
 /// Lights control. Not in the seed; real vehicles accept it and report the state in CPALT.
@@ -306,7 +313,7 @@ struct pyclt {
 
   friend constexpr bool operator==(const pyclt&, const pyclt&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"PYCLT">(field<&pyclt::lights_on>("lights_on"));
+  static constexpr auto nmea = nmea::sentence<"PYCLT">(nmea::field<&pyclt::lights_on>("lights_on"));
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -196,6 +196,18 @@ struct append_unique<message_set<A...>, M, Rest...> {
 };
 }  // namespace detail
 
+/// `lazy<Set, N>` is `Set`, named so that the name depends on `N`. A role decoder is a function
+/// template of nothing (`template <int N = 0>`) whose body calls `lazy<Set, N>::decode`: the
+/// set's decoder is then compiled only where the role decoder is called. (A call that does not
+/// depend on the template parameter would be compiled where the header is read: constexpr
+/// functions a template definition names are instantiated at once.)
+template <class Set, int>
+struct lazy_set {
+  using type = Set;
+};
+template <class Set, int N>
+using lazy = typename lazy_set<Set, N>::type;
+
 /// The union of several sets (a decoder for every family at once). A message in more than one
 /// set (standard::rmc is in kingfisher::from_vehicle and anello::nmea_outputs) appears once, at
 /// its first place, so the union can still decode into a variant.

@@ -30,13 +30,11 @@
 
 namespace seawire::robotx {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 /// What the judges' server accepts. A checksum is required (the spec asks for one and the TD
 /// verifies it). Lower-case hex and extra trailing fields are accepted: team code sends them,
 /// and validator.hpp reports both as findings instead of losing the report.
-inline constexpr parse_policy judge_policy{
-    checksum_policy::required, true, true, false, false, 1024};
+inline constexpr nmea::parse_policy judge_policy{
+    nmea::checksum_policy::required, true, true, false, false, 1024};
 
 // ---------------------------------------------------------------------------------------------
 // field values
@@ -125,17 +123,17 @@ struct seawire::nmea::codec<seawire::robotx::light_pattern> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 3;
   static constexpr bool allows_blank = false;
-  static constexpr errc read(field_reader& r, value_type& v) noexcept {
+  static constexpr errc read(nmea::field_reader& r, value_type& v) noexcept {
     const result<value_type> p = value_type::from(r.take().text);
     if (p) v = p.value;
     return p.ec;
   }
   static constexpr errc check(const value_type& v) noexcept {
     for (const auto c : v.colors)
-      if (to_string(c).empty()) return errc::bad_enum;
+      if (nmea::to_string(c).empty()) return errc::bad_enum;
     return errc::ok;
   }
-  static constexpr void write(writer& w, const value_type& v) noexcept {
+  static constexpr void write(nmea::writer& w, const value_type& v) noexcept {
     for (const auto c : v.colors) w.put(static_cast<char>(c));
   }
 };
@@ -150,20 +148,22 @@ namespace seawire::robotx {
 ///   $RXHRB,101218,161229,21.31198,N,157.88972,W,AUVSI,2,1*06
 ///          1      2      3        4 5         6 7     8 9
 struct rxhrb {
-  nmea::date date;                       // 1   [HST Date] ddmmyy
-  time_of_day time;                      // 2   [HST Time] hhmmss, 24 h
-  std::optional<decimal_latitude> lat;   // 3,4 [Latitude] [N/S indicator] unsigned
-                                         //     decimal degrees; sign from the letter
-  std::optional<decimal_longitude> lon;  // 5,6 [Longitude] [E/W indicator] likewise
-  text<5> team_id;                       // 7   [Team ID] 5 characters assigned by TD
+  nmea::date date;                             // 1   [HST Date] ddmmyy
+  nmea::time_of_day time;                      // 2   [HST Time] hhmmss, 24 h
+  std::optional<nmea::decimal_latitude> lat;   // 3,4 [Latitude] [N/S indicator] unsigned
+                                               //     decimal degrees; sign from the letter
+  std::optional<nmea::decimal_longitude> lon;  // 5,6 [Longitude] [E/W indicator] likewise
+  nmea::text<5> team_id;                       // 7   [Team ID] 5 characters assigned by TD
   robotx::system_mode system_mode = robotx::system_mode::autonomous;  // 8 [System Mode]
   std::optional<robotx::auv_status> auv_status;                       // 9   [AUV Status]
 
-  static constexpr auto nmea = sentence<"RXHRB">(
-      field<&rxhrb::date>("date"), field<&rxhrb::time>("time", max_places(0)),
-      field<&rxhrb::lat>("latitude", precision(5)), field<&rxhrb::lon>("longitude", precision(5)),
-      field<&rxhrb::team_id>("team_id", exact_length(5)), field<&rxhrb::system_mode>("system_mode"),
-      field<&rxhrb::auv_status>("auv_status"));
+  static constexpr auto nmea = nmea::sentence<"RXHRB">(
+      nmea::field<&rxhrb::date>("date"), nmea::field<&rxhrb::time>("time", nmea::max_places(0)),
+      nmea::field<&rxhrb::lat>("latitude", nmea::precision(5)),
+      nmea::field<&rxhrb::lon>("longitude", nmea::precision(5)),
+      nmea::field<&rxhrb::team_id>("team_id", nmea::exact_length(5)),
+      nmea::field<&rxhrb::system_mode>("system_mode"),
+      nmea::field<&rxhrb::auv_status>("auv_status"));
 
   friend constexpr bool operator==(const rxhrb&, const rxhrb&) noexcept = default;
 };
@@ -174,19 +174,20 @@ struct rxhrb {
 ///          1      2      3     4 5 6 7
 struct rxgat {
   nmea::date date;                                     // 1 [HST date] ddmmyy
-  time_of_day time;                                    // 2 [HST time] hhmmss
-  text<5> team_id;                                     // 3 [Team ID]
+  nmea::time_of_day time;                              // 2 [HST time] hhmmss
+  nmea::text<5> team_id;                               // 3 [Team ID]
   std::optional<gate> entrance_gate;                   // 4 [Active Entrance Gate] 1..3
   std::optional<gate> exit_gate;                       // 5 [Active Exit Gate] 1..3
   std::optional<light_buoy> light_buoy_active;         // 6 [Light Buoy Active] Y/N
   std::optional<robotx::light_pattern> light_pattern;  // 7 [Light Pattern] R/B/G x 3
 
-  static constexpr auto nmea = sentence<"RXGAT">(
-      field<&rxgat::date>("date"), field<&rxgat::time>("time", max_places(0)),
-      field<&rxgat::team_id>("team_id", exact_length(5)),
-      field<&rxgat::entrance_gate>("entrance_gate"), field<&rxgat::exit_gate>("exit_gate"),
-      field<&rxgat::light_buoy_active>("light_buoy_active"),
-      field<&rxgat::light_pattern>("light_pattern"));
+  static constexpr auto nmea = nmea::sentence<"RXGAT">(
+      nmea::field<&rxgat::date>("date"), nmea::field<&rxgat::time>("time", nmea::max_places(0)),
+      nmea::field<&rxgat::team_id>("team_id", nmea::exact_length(5)),
+      nmea::field<&rxgat::entrance_gate>("entrance_gate"),
+      nmea::field<&rxgat::exit_gate>("exit_gate"),
+      nmea::field<&rxgat::light_buoy_active>("light_buoy_active"),
+      nmea::field<&rxgat::light_pattern>("light_pattern"));
 
   friend constexpr bool operator==(const rxgat&, const rxgat&) noexcept = default;
 };
@@ -197,14 +198,14 @@ struct rxgat {
 ///          1      2      3     4
 struct rxcod {
   nmea::date date;                                     // 1 [HST date] ddmmyy
-  time_of_day time;                                    // 2 [HST time] hhmmss
-  text<5> team_id;                                     // 3 [Team ID]
+  nmea::time_of_day time;                              // 2 [HST time] hhmmss
+  nmea::text<5> team_id;                               // 3 [Team ID]
   std::optional<robotx::light_pattern> light_pattern;  // 4 [Light Pattern] R/B/G x 3
 
-  static constexpr auto nmea =
-      sentence<"RXCOD">(field<&rxcod::date>("date"), field<&rxcod::time>("time", max_places(0)),
-                        field<&rxcod::team_id>("team_id", exact_length(5)),
-                        field<&rxcod::light_pattern>("light_pattern"));
+  static constexpr auto nmea = nmea::sentence<"RXCOD">(
+      nmea::field<&rxcod::date>("date"), nmea::field<&rxcod::time>("time", nmea::max_places(0)),
+      nmea::field<&rxcod::team_id>("team_id", nmea::exact_length(5)),
+      nmea::field<&rxcod::light_pattern>("light_pattern"));
 
   friend constexpr bool operator==(const rxcod&, const rxcod&) noexcept = default;
 };
@@ -215,15 +216,15 @@ struct rxcod {
 ///          1      2      3     4 5
 struct rxdok {
   nmea::date date;                   // 1 [HST date] ddmmyy
-  time_of_day time;                  // 2 [HST time] hhmmss
-  text<5> team_id;                   // 3 [Team ID]
+  nmea::time_of_day time;            // 2 [HST time] hhmmss
+  nmea::text<5> team_id;             // 3 [Team ID]
   std::optional<color> shape_color;  // 4 [Shape Color] R/B/G
   std::optional<dock_shape> shape;   // 5 [Shape] CRUC/TRIAN/CIRCL (CRUCI accepted)
 
-  static constexpr auto nmea =
-      sentence<"RXDOK">(field<&rxdok::date>("date"), field<&rxdok::time>("time", max_places(0)),
-                        field<&rxdok::team_id>("team_id", exact_length(5)),
-                        field<&rxdok::shape_color>("shape_color"), field<&rxdok::shape>("shape"));
+  static constexpr auto nmea = nmea::sentence<"RXDOK">(
+      nmea::field<&rxdok::date>("date"), nmea::field<&rxdok::time>("time", nmea::max_places(0)),
+      nmea::field<&rxdok::team_id>("team_id", nmea::exact_length(5)),
+      nmea::field<&rxdok::shape_color>("shape_color"), nmea::field<&rxdok::shape>("shape"));
 
   friend constexpr bool operator==(const rxdok&, const rxdok&) noexcept = default;
 };
@@ -234,15 +235,15 @@ struct rxdok {
 ///          1      2      3     4 5
 struct rxdel {
   nmea::date date;                     // 1 [HST date] ddmmyy
-  time_of_day time;                    // 2 [HST time] hhmmss
-  text<5> team_id;                     // 3 [Team ID]
+  nmea::time_of_day time;              // 2 [HST time] hhmmss
+  nmea::text<5> team_id;               // 3 [Team ID]
   std::optional<color> shape_color;    // 4 [Shape Color] R/B/G
   std::optional<deliver_shape> shape;  // 5 [Shape] CRUCI/TRIAN/CIRCL (CRUC accepted)
 
-  static constexpr auto nmea =
-      sentence<"RXDEL">(field<&rxdel::date>("date"), field<&rxdel::time>("time", max_places(0)),
-                        field<&rxdel::team_id>("team_id", exact_length(5)),
-                        field<&rxdel::shape_color>("shape_color"), field<&rxdel::shape>("shape"));
+  static constexpr auto nmea = nmea::sentence<"RXDEL">(
+      nmea::field<&rxdel::date>("date"), nmea::field<&rxdel::time>("time", nmea::max_places(0)),
+      nmea::field<&rxdel::team_id>("team_id", nmea::exact_length(5)),
+      nmea::field<&rxdel::shape_color>("shape_color"), nmea::field<&rxdel::shape>("shape"));
 
   friend constexpr bool operator==(const rxdel&, const rxdel&) noexcept = default;
 };
@@ -251,7 +252,7 @@ struct rxdel {
 // the set
 
 /// Every report, for decoding whatever arrives on the judges' socket.
-using reports = message_set<rxhrb, rxgat, rxcod, rxdok, rxdel>;
+using reports = nmea::message_set<rxhrb, rxgat, rxcod, rxdok, rxdel>;
 
 /// The five reports by kind; the per-type rate limit and the scheduler count by this.
 enum class report_type : std::uint8_t { heartbeat, gates, scan_code, dock, deliver };
@@ -306,7 +307,7 @@ inline constexpr report_type report_type_of = report_traits<M>::type;
 /// well-formed sentence with another address gives unknown_sentence (not an error).
 template <int = 0>
 [[nodiscard]] constexpr result<reports::variant> decode_report(
-    std::string_view line, const parse_policy& policy = judge_policy) noexcept {
+    std::string_view line, const nmea::parse_policy& policy = judge_policy) noexcept {
   return reports::decode(line, policy);
 }
 
@@ -314,8 +315,8 @@ template <int = 0>
 /// Returns the error, without calling the visitor, when the line does not decode.
 template <class F>
 constexpr result<bool> visit_report(std::string_view line, F&& on_report,
-                                    const parse_policy& policy = judge_policy) {
-  const result<sentence_view> s = parse(line, policy);
+                                    const nmea::parse_policy& policy = judge_policy) {
+  const result<nmea::sentence_view> s = nmea::parse(line, policy);
   if (!s) {
     result<bool> out;
     out.ec = s.ec;

@@ -176,7 +176,7 @@ class finding_list {
 
 struct validator_config {
   /// The judges' decoder: what `accepted` means.
-  parse_policy policy = judge_policy;
+  nmea::parse_policy policy = judge_policy;
   /// Least time between two sentences with the same address.
   std::chrono::nanoseconds min_interval = std::chrono::seconds(1);
   /// Longest silence between heartbeats before it is a gap. 1.5 s: one lost heartbeat (a 2 s
@@ -297,14 +297,14 @@ class validator {
   [[nodiscard]] constexpr const validator_config& config() const noexcept { return config_; }
 
  private:
-  static constexpr parse_policy inspect_policy(const parse_policy& p) noexcept {
-    return {checksum_policy::ignore, true, true, false, false, p.max_length};
+  static constexpr nmea::parse_policy inspect_policy(const nmea::parse_policy& p) noexcept {
+    return {nmea::checksum_policy::ignore, true, true, false, false, p.max_length};
   }
 
   /// Each declared field of M read on its own: a reader is walked to the field's first wire
   /// field and the declaration's own read (codec + options) runs there.
   template <class M>
-  constexpr void fields(const sentence_view& sv, const finding& base, verdict& v) noexcept {
+  constexpr void fields(const nmea::sentence_view& sv, const finding& base, verdict& v) noexcept {
     M msg{};
     std::uint16_t first = 1;
     bool ended = false;
@@ -338,13 +338,13 @@ class validator {
   }
 
   template <class D, class M>
-  constexpr void one_field(const sentence_view& sv, const D& d, M& msg, std::uint16_t& first,
+  constexpr void one_field(const nmea::sentence_view& sv, const D& d, M& msg, std::uint16_t& first,
                            bool& ended, bool& date_ok, bool& time_ok, const finding& base,
                            verdict& v) noexcept {
     const std::uint16_t number = first;
     first = static_cast<std::uint16_t>(first + d.width());
     if (ended) return;
-    field_reader r(sv, config_.policy);
+    nmea::field_reader r(sv, config_.policy);
     for (std::uint16_t k = 1; k < number; ++k) (void)r.take();
     const std::string_view raw = r.peek().text;
     const errc e = nmea::detail::read_field(d, r, msg);
@@ -443,13 +443,13 @@ class validator {
     }
 
     // Read the sentence with nothing checked but its framing, so every field can be judged.
-    const parse_policy inspect = inspect_policy(config_.policy);
-    result<sentence_view> s = parse(line, inspect);
+    const nmea::parse_policy inspect = inspect_policy(config_.policy);
+    result<nmea::sentence_view> s = nmea::parse(line, inspect);
     std::string_view digits;  // checksum text when it could not be read as two hex digits
     if (s.ec == errc::bad_checksum_format) {
       const std::size_t star = detail::star_of(line);
       digits = line.substr(star + 1);
-      s = parse(line.substr(0, star), inspect);
+      s = nmea::parse(line.substr(0, star), inspect);
     }
     // RobotX reports are '$' sentences: a '!' one (an encapsulation sentence) has the wrong start.
     if (!s || s.value.start != '$') {
@@ -457,7 +457,7 @@ class validator {
       add(rule::framing, 0, s ? errc::missing_start : s.ec);
       return;
     }
-    const sentence_view& sv = s.value;
+    const nmea::sentence_view& sv = s.value;
     (void)base.address.assign(sv.address);
     if (bad_ending) add(rule::line_ending, 0, errc::bad_line_ending);
     const auto type = report_type_for(sv.address);
@@ -467,12 +467,12 @@ class validator {
     if (!digits.empty()) {
       add(decimal_checksum(digits, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
           0, errc::bad_checksum_format);
-    } else if (sv.checksum == checksum_state::absent) {
-      if (config_.policy.checksum == checksum_policy::required)
+    } else if (sv.checksum == nmea::checksum_state::absent) {
+      if (config_.policy.checksum == nmea::checksum_policy::required)
         add(rule::checksum, 0, errc::missing_checksum);
     } else {
       const std::string_view hex = line.substr(detail::star_of(line) + 1);
-      if (sv.checksum == checksum_state::mismatch)
+      if (sv.checksum == nmea::checksum_state::mismatch)
         add(decimal_checksum(hex, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
             0, errc::checksum_mismatch);
       if (config_.flag_lowercase_checksum && has_lowercase(hex))

@@ -26,8 +26,6 @@
 
 namespace seawire::sandshark {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 // ---------------------------------------------------------------------------------------------
 // from the vehicle: commands (SPI 5), always sent
 
@@ -36,11 +34,11 @@ using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message
 ///   $BFSHT,081025.987*hh
 ///          1
 struct bfsht {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
 
   friend constexpr bool operator==(const bfsht&, const bfsht&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"BFSHT">(field<&bfsht::timestamp>("timestamp"));
+  static constexpr auto nmea = nmea::sentence<"BFSHT">(nmea::field<&bfsht::timestamp>("timestamp"));
 };
 
 /// BFVER: the SPI version the vehicle speaks; sent at the start of communications.
@@ -48,14 +46,14 @@ struct bfsht {
 ///   $BFVER,081025.987,1.0*hh
 ///          1          2
 struct bfver {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  text<32> version;       // 2 [v-v] Version number
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  nmea::text<32> version;       // 2 [v-v] Version number
 
   friend constexpr bool operator==(const bfver&, const bfver&) noexcept = default;
 
   static constexpr auto nmea =
-      sentence<"BFVER">(field<&bfver::timestamp>("timestamp"),
-                        field<&bfver::version>("version", length_between(1, 32)));
+      nmea::sentence<"BFVER">(nmea::field<&bfver::timestamp>("timestamp"),
+                              nmea::field<&bfver::version>("version", nmea::length_between(1, 32)));
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -89,11 +87,12 @@ enum class mission_state : std::uint8_t {
 ///   $BFMIS,081025.987,dive1.xml,Running /var/log/mission_12,*hh
 ///          1          2         3                           4
 struct bfmis {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   // Variable-length text (SPI table 1): room for what real vehicles send, log paths included.
-  text<256> dive_file;  // 2 [d--d] current dive file; blank when no mission plan asked for one
-  text<256> status;     // 3 [t--t] Offline, Waiting, Ready, Running [log dir], Aborted ...
-  text<512> details;    // 4 [a--a] human-readable details (abort reasons); not for parsing
+  nmea::text<256>
+      dive_file;            // 2 [d--d] current dive file; blank when no mission plan asked for one
+  nmea::text<256> status;   // 3 [t--t] Offline, Waiting, Ready, Running [log dir], Aborted ...
+  nmea::text<512> details;  // 4 [a--a] human-readable details (abort reasons); not for parsing
 
   /// The status text starts with "Running" (it may carry the log directory after it).
   [[nodiscard]] constexpr bool running() const noexcept {
@@ -128,9 +127,9 @@ struct bfmis {
 
   friend constexpr bool operator==(const bfmis&, const bfmis&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"BFMIS">(
-      field<&bfmis::timestamp>("timestamp"), field<&bfmis::dive_file>("dive_file"),
-      field<&bfmis::status>("status"), field<&bfmis::details>("details"));
+  static constexpr auto nmea = nmea::sentence<"BFMIS">(
+      nmea::field<&bfmis::timestamp>("timestamp"), nmea::field<&bfmis::dive_file>("dive_file"),
+      nmea::field<&bfmis::status>("status"), nmea::field<&bfmis::details>("details"));
 };
 
 /// BFACK field 5: what became of the acknowledged command.
@@ -152,16 +151,18 @@ constexpr std::string_view enum_chars(ack_status) noexcept { return "0123"; }
 /// Fields 7 and 8 may each be absent. Text keeps blank (empty text) apart from absent
 /// (nullopt), so each form is written back as it came; a new bfack has the spec's form.
 struct bfack {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  text<16> command;       // 2 [c-c] command acknowledged, by 3-letter id ("RMB") or address
-  std::optional<time_of_day> command_timestamp;  // 3 [hhmmss.ss] the command's own field 1;
-                                                 //   blank for commands without one (BPLOG)
-  std::optional<std::int32_t> behavior_id;       // 4 [iiii] payload-assigned id of a new behaviour
-  ack_status status = ack_status::ok;            // 5 [s] Acknowledgement Status Code
-  std::optional<std::int32_t> future_use = 0;    // 6 [c] always 0 in this revision
-  std::optional<text<256>> description = text<256>{};  // 7 [m-m] details, for people only
-  std::optional<text<128>> trailing = text<128>{};     // 8 the spec's final field: empty in
-                                                       //   this revision, kept if not
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  nmea::text<16> command;       // 2 [c-c] command acknowledged, by 3-letter id ("RMB") or address
+  std::optional<nmea::time_of_day> command_timestamp;  // 3 [hhmmss.ss] the command's own field 1;
+                                                       //   blank for commands without one (BPLOG)
+  std::optional<std::int32_t> behavior_id;     // 4 [iiii] payload-assigned id of a new behaviour
+  ack_status status = ack_status::ok;          // 5 [s] Acknowledgement Status Code
+  std::optional<std::int32_t> future_use = 0;  // 6 [c] always 0 in this revision
+  std::optional<nmea::text<256>> description =
+      nmea::text<256>{};  // 7 [m-m] details, for people only
+  std::optional<nmea::text<128>> trailing =
+      nmea::text<128>{};  // 8 the spec's final field: empty in
+                          //   this revision, kept if not
 
   /// Whether this acknowledges `address` ("BPRMB"): the vehicle names commands by their
   /// 3-letter id ("RMB"); the full address is accepted too.
@@ -172,14 +173,14 @@ struct bfack {
 
   friend constexpr bool operator==(const bfack&, const bfack&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"BFACK">(field<&bfack::timestamp>("timestamp"),
-                        field<&bfack::command>("command", length_between(1, 16)),
-                        field<&bfack::command_timestamp>("command_timestamp"),
-                        field<&bfack::behavior_id>("behavior_id"), field<&bfack::status>("status"),
-                        field<&bfack::future_use>("future_use"),
-                        field<&bfack::description>("description", may_be_absent),
-                        field<&bfack::trailing>("trailing", may_be_absent));
+  static constexpr auto nmea = nmea::sentence<"BFACK">(
+      nmea::field<&bfack::timestamp>("timestamp"),
+      nmea::field<&bfack::command>("command", nmea::length_between(1, 16)),
+      nmea::field<&bfack::command_timestamp>("command_timestamp"),
+      nmea::field<&bfack::behavior_id>("behavior_id"), nmea::field<&bfack::status>("status"),
+      nmea::field<&bfack::future_use>("future_use"),
+      nmea::field<&bfack::description>("description", nmea::may_be_absent),
+      nmea::field<&bfack::trailing>("trailing", nmea::may_be_absent));
 };
 
 /// BFCTL: backseat control handed over (1) or taken back (0). The seed prints its format line
@@ -188,13 +189,13 @@ struct bfack {
 ///   $BFCTL,081025.987,1*78
 ///          1          2
 struct bfctl {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  bool control = false;   // 2 [c] 1 = the payload (backseat) has control, 0 = it has not
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  bool control = false;         // 2 [c] 1 = the payload (backseat) has control, 0 = it has not
 
   friend constexpr bool operator==(const bfctl&, const bfctl&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"BFCTL">(field<&bfctl::timestamp>("timestamp"), field<&bfctl::control>("control"));
+  static constexpr auto nmea = nmea::sentence<"BFCTL">(nmea::field<&bfctl::timestamp>("timestamp"),
+                                                       nmea::field<&bfctl::control>("control"));
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -210,15 +211,16 @@ constexpr std::array<std::string_view, 2> enum_words(log_state) noexcept { retur
 ///   $BPLOG,ACK,ON*1E
 ///          1   2
 struct bplog {
-  text<3> code;                     // 1 [rrr] 3-letter message id (NVG, NVR, MIS, CTL, ACK) or ALL
+  nmea::text<3> code;               // 1 [rrr] 3-letter message id (NVG, NVR, MIS, CTL, ACK) or ALL
   log_state state = log_state::on;  // 2 [a-a] ON or OFF
 
   [[nodiscard]] constexpr bool is_all() const noexcept { return code == "ALL"; }
 
   friend constexpr bool operator==(const bplog&, const bplog&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"BPLOG">(
-      field<&bplog::code>("code", exact_length(3), code_chars), field<&bplog::state>("state"));
+  static constexpr auto nmea = nmea::sentence<"BPLOG">(
+      nmea::field<&bplog::code>("code", nmea::exact_length(3), nmea::code_chars),
+      nmea::field<&bplog::state>("state"));
 };
 
 /// BPSTS: payload status (the payload's heartbeat).
@@ -226,15 +228,15 @@ struct bplog {
 ///   $BPSTS,231133.12,1,BWSI Autonomy OK*46
 ///          1         2 3
 struct bpsts {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  bool all_ok = true;     // 2 [f] Status flag: 1 = all OK, 0 = failed
-  text<128> message;      // 3 [m--m] status text; spaces allowed ("Variable Text")
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  bool all_ok = true;           // 2 [f] Status flag: 1 = all OK, 0 = failed
+  nmea::text<128> message;      // 3 [m--m] status text; spaces allowed ("Variable Text")
 
   friend constexpr bool operator==(const bpsts&, const bpsts&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"BPSTS">(field<&bpsts::timestamp>("timestamp"), field<&bpsts::all_ok>("all_ok"),
-                        field<&bpsts::message>("message"));
+  static constexpr auto nmea = nmea::sentence<"BPSTS">(nmea::field<&bpsts::timestamp>("timestamp"),
+                                                       nmea::field<&bpsts::all_ok>("all_ok"),
+                                                       nmea::field<&bpsts::message>("message"));
 };
 
 /// BPRMB field 4: what field 3 holds.
@@ -254,13 +256,13 @@ constexpr std::string_view enum_chars(horizontal_mode) noexcept { return "01"; }
 ///   $BPRMB,231204.72,-15,,,750,0,1*54
 ///          1         2   3 4 5   6 7
 struct bprmb {
-  time_of_day timestamp;           // 1 [hhmmss.ss] Timestamp
-  std::optional<decimal> heading;  // 2 [h.h] heading deg true, or rudder deg (field 7)
-  std::optional<decimal> depth;    // 3 [d.d] depth/altitude m, pitch deg or elevator deg
-  std::optional<sandshark::depth_mode>
-      depth_mode;                // 4 [dm] 0 depth, 1 altitude, 2 pitch, 3 elevator
-  std::optional<decimal> speed;  // 5 [v.v] thruster RPM or m/s (field 6)
-  std::optional<sandshark::speed_mode> speed_mode;            // 6 [vm] 0 RPM, 1 m/s
+  nmea::time_of_day timestamp;           // 1 [hhmmss.ss] Timestamp
+  std::optional<nmea::decimal> heading;  // 2 [h.h] heading deg true, or rudder deg (field 7)
+  std::optional<nmea::decimal> depth;    // 3 [d.d] depth/altitude m, pitch deg or elevator deg
+  // 4 [dm] 0 depth, 1 altitude, 2 pitch, 3 elevator
+  std::optional<sandshark::depth_mode> depth_mode;
+  std::optional<nmea::decimal> speed;               // 5 [v.v] thruster RPM or m/s (field 6)
+  std::optional<sandshark::speed_mode> speed_mode;  // 6 [vm] 0 RPM, 1 m/s
   std::optional<sandshark::horizontal_mode> horizontal_mode;  // 7 [hm] 0 heading, 1 rudder
 
   /// The usual request: a heading (degrees true, [0, 360)), a depth below the surface (metres,
@@ -268,19 +270,19 @@ struct bprmb {
   /// left blank when not given (the mission keeps that aspect); the mode fields say heading,
   /// depth and m/s for the values given. NaN, infinities and values outside those ranges are
   /// refused naming the field (not_finite, out_of_range).
-  [[nodiscard]] static constexpr result<bprmb> request(time_of_day stamp,
+  [[nodiscard]] static constexpr result<bprmb> request(nmea::time_of_day stamp,
                                                        std::optional<double> heading_deg,
                                                        std::optional<double> depth_m,
                                                        std::optional<double> speed_mps) noexcept {
     result<bprmb> r;
     r.value.timestamp = stamp;
     // Each value rounded to its field's precision, then 0 <= value (< below, when given).
-    const auto put = [&r](std::optional<decimal> bprmb::*member, std::uint16_t field,
-                          std::optional<double> v, int places, std::optional<decimal> below) {
+    const auto put = [&r](std::optional<nmea::decimal> bprmb::*member, std::uint16_t field,
+                          std::optional<double> v, int places, std::optional<nmea::decimal> below) {
       if (!v || r.ec != errc::ok) return;
-      const result<decimal> d = decimal::from_double(*v, static_cast<unsigned>(places));
+      const result<nmea::decimal> d = nmea::decimal::from_double(*v, static_cast<unsigned>(places));
       r.ec = d.ec;
-      if (d && (d.value.compare(decimal{0}) < 0 || (below && d.value.compare(*below) >= 0)))
+      if (d && (d.value.compare(nmea::decimal{0}) < 0 || (below && d.value.compare(*below) >= 0)))
         r.ec = errc::out_of_range;
       if (r.ec != errc::ok) {
         r.field = field;
@@ -288,7 +290,7 @@ struct bprmb {
       }
       r.value.*member = d.value;
     };
-    put(&bprmb::heading, 2, heading_deg, nmea::precision_of<&bprmb::heading>(), decimal{360});
+    put(&bprmb::heading, 2, heading_deg, nmea::precision_of<&bprmb::heading>(), nmea::decimal{360});
     put(&bprmb::depth, 3, depth_m, nmea::precision_of<&bprmb::depth>(), std::nullopt);
     put(&bprmb::speed, 5, speed_mps, nmea::precision_of<&bprmb::speed>(), std::nullopt);
     if (r.ec != errc::ok) {
@@ -303,11 +305,14 @@ struct bprmb {
 
   friend constexpr bool operator==(const bprmb&, const bprmb&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"BPRMB">(
-      field<&bprmb::timestamp>("timestamp"), field<&bprmb::heading>("heading", precision(1)),
-      field<&bprmb::depth>("depth", precision(1)), field<&bprmb::depth_mode>("depth_mode"),
-      field<&bprmb::speed>("speed", precision(1)), field<&bprmb::speed_mode>("speed_mode"),
-      field<&bprmb::horizontal_mode>("horizontal_mode"));
+  static constexpr auto nmea =
+      nmea::sentence<"BPRMB">(nmea::field<&bprmb::timestamp>("timestamp"),
+                              nmea::field<&bprmb::heading>("heading", nmea::precision(1)),
+                              nmea::field<&bprmb::depth>("depth", nmea::precision(1)),
+                              nmea::field<&bprmb::depth_mode>("depth_mode"),
+                              nmea::field<&bprmb::speed>("speed", nmea::precision(1)),
+                              nmea::field<&bprmb::speed_mode>("speed_mode"),
+                              nmea::field<&bprmb::horizontal_mode>("horizontal_mode"));
 };
 
 /// BPABT field 3.
@@ -319,8 +324,8 @@ constexpr std::string_view enum_chars(abort_reason) noexcept { return "01"; }
 ///   $BPABT,081025.987,leak detected,1*hh
 ///          1          2             3
 struct bpabt {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp (when sent)
-  text<128> message;      // 2 [c--c] shown to the operator to explain the abort
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp (when sent)
+  nmea::text<128> message;      // 2 [c--c] shown to the operator to explain the abort
   std::optional<abort_reason> reason = abort_reason::with_errors;  // 3 [a] blank = with errors
 
   /// Field 3 as the vehicle reads it: blank means "with errors", the spec's default.
@@ -330,9 +335,9 @@ struct bpabt {
 
   friend constexpr bool operator==(const bpabt&, const bpabt&) noexcept = default;
 
-  static constexpr auto nmea =
-      sentence<"BPABT">(field<&bpabt::timestamp>("timestamp"), field<&bpabt::message>("message"),
-                        field<&bpabt::reason>("reason"));
+  static constexpr auto nmea = nmea::sentence<"BPABT">(nmea::field<&bpabt::timestamp>("timestamp"),
+                                                       nmea::field<&bpabt::message>("message"),
+                                                       nmea::field<&bpabt::reason>("reason"));
 };
 
 /// BPVER: the SPI version the payload speaks; the payload must send it first.
@@ -340,32 +345,32 @@ struct bpabt {
 ///   $BPVER,081025.987,1.0*hh
 ///          1          2
 struct bpver {
-  time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  text<32> version;       // 2 [v-v] Version number
+  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
+  nmea::text<32> version;       // 2 [v-v] Version number
 
   friend constexpr bool operator==(const bpver&, const bpver&) noexcept = default;
 
   static constexpr auto nmea =
-      sentence<"BPVER">(field<&bpver::timestamp>("timestamp"),
-                        field<&bpver::version>("version", length_between(1, 32)));
+      nmea::sentence<"BPVER">(nmea::field<&bpver::timestamp>("timestamp"),
+                              nmea::field<&bpver::version>("version", nmea::length_between(1, 32)));
 };
 
 // ---------------------------------------------------------------------------------------------
 // roles
 
 /// Everything the vehicle sends. Decode with from_vehicle_policy.
-using from_vehicle = message_set<bfsht, bfver, bfnvg, bfnvr, bfmis, bfack, bfctl>;
+using from_vehicle = nmea::message_set<bfsht, bfver, bfnvg, bfnvr, bfmis, bfack, bfctl>;
 /// Everything the payload sends. Decode with to_vehicle_policy.
-using to_vehicle = message_set<bplog, bpsts, bprmb, bpabt, bpver>;
+using to_vehicle = nmea::message_set<bplog, bpsts, bprmb, bpabt, bpver>;
 
 /// A payload receiving BF*: the vehicle always sends a checksum (SPI 4.2), so one is required.
 /// Numbers may have spaces before the minus sign (SPI Table 1: "the first non-whitespace
 /// character"), in both roles.
-inline constexpr parse_policy from_vehicle_policy{.checksum = checksum_policy::required,
-                                                  .spaced_numbers = true};
+inline constexpr nmea::parse_policy from_vehicle_policy{.checksum = nmea::checksum_policy::required,
+                                                        .spaced_numbers = true};
 /// A vehicle receiving BP*: the payload may leave the checksum out; a wrong one never passes.
-inline constexpr parse_policy to_vehicle_policy{.checksum = checksum_policy::verify_if_present,
-                                                .spaced_numbers = true};
+inline constexpr nmea::parse_policy to_vehicle_policy{
+    .checksum = nmea::checksum_policy::verify_if_present, .spaced_numbers = true};
 
 // The role decoders below are function templates of nothing (`template <int = 0>`): a file
 // that includes this header then compiles a role's decoders only if it calls them, which
@@ -378,7 +383,7 @@ template <int = 0>
 }
 template <int = 0>
 [[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
-    const sentence_view& s) noexcept {
+    const nmea::sentence_view& s) noexcept {
   return from_vehicle::decode(s, from_vehicle_policy);
 }
 /// Decode a line the payload sent.
@@ -389,7 +394,7 @@ template <int = 0>
 }
 template <int = 0>
 [[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
-    const sentence_view& s) noexcept {
+    const nmea::sentence_view& s) noexcept {
   return to_vehicle::decode(s, to_vehicle_policy);
 }
 

@@ -58,11 +58,11 @@ namespace seawire::sandshark {
 /// Any message a payload sends.
 using payload_message = std::variant<bplog, bpsts, bprmb, bpabt, bpver>;
 /// One sentence to write to the vehicle (CR LF included). Every BP* sentence fits.
-using payload_line = sentence_buffer<256>;
+using payload_line = nmea::sentence_buffer<256>;
 
 struct payload_config {
-  text<32> version = "1.0";  ///< BPVER field 2
-  bool want_acks = true;     ///< start() sends BPLOG,ACK,ON
+  nmea::text<32> version = "1.0";  ///< BPVER field 2
+  bool want_acks = true;           ///< start() sends BPLOG,ACK,ON
   milliseconds resend_after = timing::resend_after;
   std::uint8_t max_resends = 3;  ///< resends after the first send
   milliseconds pending_timeout = timing::pending_timeout;
@@ -121,10 +121,10 @@ struct payload_event {
   payload_event_kind kind{};
   message_origin origin = message_origin::command;
   std::uint32_t ticket = 0;  ///< what send() returned for the command; 0 for the others
-  text<16> command;          ///< "BPRMB"; for unmatched_ack the ack's own name for it ("RMB")
-  std::optional<time_of_day> command_timestamp;  ///< as sent (unmatched_ack: as echoed)
-  std::uint32_t count = 0;                       ///< sends so far, or events lost
-  text<256> detail;                              ///< the ack's description, or why control ended
+  nmea::text<16> command;    ///< "BPRMB"; for unmatched_ack the ack's own name for it ("RMB")
+  std::optional<nmea::time_of_day> command_timestamp;  ///< as sent (unmatched_ack: as echoed)
+  std::uint32_t count = 0;                             ///< sends so far, or events lost
+  nmea::text<256> detail;  ///< the ack's description, or why control ended
   /// For a BPLOG command (BPLOG has no timestamp to tell two apart): which subscription, its
   /// code ("NVG", "ALL") and state (ON/OFF).
   std::optional<bplog> subscription;
@@ -135,9 +135,10 @@ struct payload_event {
   return std::visit([](const auto& x) { return decltype(x.nmea)::address; }, m);
 }
 /// Field 1 of a payload message; BPLOG has none.
-[[nodiscard]] constexpr std::optional<time_of_day> timestamp_of(const payload_message& m) noexcept {
+[[nodiscard]] constexpr std::optional<nmea::time_of_day> timestamp_of(
+    const payload_message& m) noexcept {
   return std::visit(
-      [](const auto& x) -> std::optional<time_of_day> {
+      [](const auto& x) -> std::optional<nmea::time_of_day> {
         if constexpr (requires { x.timestamp; }) {
           return x.timestamp;
         } else {
@@ -160,7 +161,7 @@ struct payload_in_flight {
   bool active = false;
 
   [[nodiscard]] constexpr std::string_view address() const noexcept { return address_of(message); }
-  [[nodiscard]] constexpr std::optional<time_of_day> timestamp() const noexcept {
+  [[nodiscard]] constexpr std::optional<nmea::time_of_day> timestamp() const noexcept {
     return timestamp_of(message);
   }
 };
@@ -289,15 +290,15 @@ class payload_session {
 
   /// What the heartbeat says from now on. False (unchanged) if the text cannot be sent.
   [[nodiscard]] constexpr bool set_status(bool all_ok, std::string_view message) noexcept {
-    text<128> t;
-    if (!t.assign(message) || codec<text<128>>::check(t) != errc::ok) return false;
+    nmea::text<128> t;
+    if (!t.assign(message) || nmea::codec<nmea::text<128>>::check(t) != errc::ok) return false;
     status_.all_ok = all_ok;
     status_.message = t;
     return true;
   }
 
   /// The UTC time of day at `now`, for the timestamps the session writes.
-  constexpr void set_utc(time_point now, const time_of_day& utc) noexcept {
+  constexpr void set_utc(time_point now, const nmea::time_of_day& utc) noexcept {
     advance(now);
     utc_.set(now, utc);
   }
@@ -447,7 +448,7 @@ class payload_session {
       M stamped = m;
       if constexpr (requires { stamped.timestamp; }) stamped.timestamp = utc_.at(now);
       payload_line line;
-      const result<std::size_t> e = encode_to(stamped, std::span<char>(line.data));
+      const result<std::size_t> e = nmea::encode_to(stamped, std::span<char>(line.data));
       r.ec = e.ec;
       r.field = e.field;
       return r;
@@ -520,7 +521,7 @@ class payload_session {
   }
 
   /// A UTC timestamp later than every one sent before, so (name, timestamp) names one message.
-  [[nodiscard]] constexpr time_of_day stamp(time_point now) noexcept {
+  [[nodiscard]] constexpr nmea::time_of_day stamp(time_point now) noexcept {
     std::int64_t ms = utc_.ms_at(now);
     if (stamped_ && ms <= last_stamp_) ms = last_stamp_ + 1;
     stamped_ = true;
@@ -551,7 +552,7 @@ class payload_session {
   [[nodiscard]] constexpr bool put(const M& m, std::uint32_t ticket,
                                    message_origin origin) noexcept {
     payload_line line;
-    const result<std::size_t> r = encode_to(m, std::span<char>(line.data));
+    const result<std::size_t> r = nmea::encode_to(m, std::span<char>(line.data));
     line.ec = r.ec;
     line.field = r.field;
     line.size = r ? r.value : 0;
@@ -619,7 +620,7 @@ class payload_session {
     payload_in_flight* match = nullptr;
     for (payload_in_flight& f : flights_) {
       if (!f.active || !ack.names(f.address())) continue;
-      const std::optional<time_of_day> sent = f.timestamp();
+      const std::optional<nmea::time_of_day> sent = f.timestamp();
       if (sent && !(ack.command_timestamp && same_command_time(*sent, *ack.command_timestamp)))
         continue;
       if (match == nullptr || f.first_sent < match->first_sent) match = &f;
@@ -739,7 +740,7 @@ class payload_session {
   std::optional<bprmb> request_;
   bool request_due_ = false;
   time_point last_request_{};
-  text<32> vehicle_version_;
+  nmea::text<32> vehicle_version_;
 };
 
 }  // namespace seawire::sandshark

@@ -50,7 +50,7 @@ class utc_clock {
 
   /// At `now` the UTC time of day is `t`. Re-anchoring picks the day nearest the running
   /// estimate, so a re-anchor just after midnight does not send the clock back a day.
-  constexpr void set(time_point now, const time_of_day& t) noexcept {
+  constexpr void set(time_point now, const nmea::time_of_day& t) noexcept {
     const std::int64_t tod = ms_of(t);
     const std::int64_t estimate = ms_at(now);
     std::int64_t candidate = estimate - floor_mod(estimate, day_ms) + tod;
@@ -64,14 +64,14 @@ class utc_clock {
     return anchor_ms_ + std::chrono::floor<milliseconds>(now - anchor_).count();
   }
   /// The time of day at `now`, with 3 fraction digits (the SPI asks for milliseconds).
-  [[nodiscard]] constexpr time_of_day at(time_point now) const noexcept {
+  [[nodiscard]] constexpr nmea::time_of_day at(time_point now) const noexcept {
     return to_time_of_day(ms_at(now));
   }
-  [[nodiscard]] static constexpr time_of_day to_time_of_day(std::int64_t ms) noexcept {
+  [[nodiscard]] static constexpr nmea::time_of_day to_time_of_day(std::int64_t ms) noexcept {
     // Within [0, 24 h), and 3 places: from_since_midnight cannot fail.
-    return time_of_day::from_since_midnight(milliseconds(floor_mod(ms, day_ms)), 3).value;
+    return nmea::time_of_day::from_since_midnight(milliseconds(floor_mod(ms, day_ms)), 3).value;
   }
-  [[nodiscard]] static constexpr std::int64_t ms_of(const time_of_day& t) noexcept {
+  [[nodiscard]] static constexpr std::int64_t ms_of(const nmea::time_of_day& t) noexcept {
     return std::chrono::floor<milliseconds>(t.since_midnight()).count();
   }
 
@@ -87,8 +87,8 @@ class utc_clock {
 /// Whether an acknowledgement's echo of a command timestamp names the command sent at `sent`.
 /// The echo may carry fewer fraction digits than were sent ("081025.95" for "081025.950"),
 /// so the two match when they differ by less than one unit of the echo's last digit.
-[[nodiscard]] constexpr bool same_command_time(const time_of_day& sent,
-                                               const time_of_day& echo) noexcept {
+[[nodiscard]] constexpr bool same_command_time(const nmea::time_of_day& sent,
+                                               const nmea::time_of_day& echo) noexcept {
   const std::int64_t a = sent.since_midnight().count();
   const std::int64_t b = echo.since_midnight().count();
   const auto unit = static_cast<std::int64_t>(seawire::detail::pow10_table[9 - echo.places]);
@@ -162,7 +162,7 @@ class subscription_set {
   }
 
  private:
-  std::array<text<3>, N> codes_{};
+  std::array<nmea::text<3>, N> codes_{};
   std::array<bool, N> on_{};
   std::size_t size_ = 0;
   bool all_ = false;

@@ -66,7 +66,7 @@ struct pending_commands {
 };
 
 struct vehicle_config {
-  text<32> version = "1.0";  ///< BFVER field 2, sent to each client on connect
+  nmea::text<32> version = "1.0";  ///< BFVER field 2, sent to each client on connect
   milliseconds request_timeout = timing::request_timeout;
   bool control_allowed = false;  ///< "allowDynamicRequests" at start (set_control() changes it)
   pending_commands pending{};
@@ -79,7 +79,7 @@ using client_id = std::uint8_t;
 /// One sentence for one client (CR LF included).
 struct vehicle_line {
   client_id client = 0;
-  sentence_buffer<512> sentence;
+  nmea::sentence_buffer<512> sentence;
   [[nodiscard]] constexpr std::string_view view() const noexcept { return sentence.view(); }
 };
 
@@ -113,8 +113,8 @@ struct vehicle_event {
   vehicle_event_kind kind{};
   client_id client = 0;
   std::uint32_t ticket = 0;  ///< numbers every line received, for complete()
-  text<16> command;          ///< the address the line carried ("BPRMB")
-  std::optional<time_of_day> command_timestamp;
+  nmea::text<16> command;    ///< the address the line carried ("BPRMB")
+  std::optional<nmea::time_of_day> command_timestamp;
   errc error = errc::ok;  ///< invalid_command: why
   std::uint16_t field = 0;
   std::uint32_t count = 0;  ///< events_lost: how many
@@ -207,22 +207,22 @@ class vehicle_session {
   /// time_of_day, 00:00:00, or an empty optional) is stamped with the vehicle's UTC clock at
   /// `now`, as connect() and set_control() stamp theirs. A BFMIS becomes the mission status the
   /// session knows (mission()).
-  template <message_like M>
+  template <nmea::message_like M>
   [[nodiscard]] constexpr result<std::size_t> publish(const M& given, time_point now) noexcept {
     advance(now);
     M m = given;
     if constexpr (requires { m.timestamp; }) {
       using stamp_type = std::remove_cvref_t<decltype(m.timestamp)>;
-      if constexpr (std::is_same_v<stamp_type, time_of_day>) {
-        if (m.timestamp == time_of_day{}) m.timestamp = utc_.at(now);
-      } else if constexpr (std::is_same_v<stamp_type, std::optional<time_of_day>>) {
+      if constexpr (std::is_same_v<stamp_type, nmea::time_of_day>) {
+        if (m.timestamp == nmea::time_of_day{}) m.timestamp = utc_.at(now);
+      } else if constexpr (std::is_same_v<stamp_type, std::optional<nmea::time_of_day>>) {
         if (!m.timestamp) m.timestamp = utc_.at(now);
       }
     }
     if constexpr (std::is_same_v<M, bfmis>) mission_ = m;
     result<std::size_t> r;
     vehicle_line line;
-    const result<std::size_t> e = encode_to(m, std::span<char>(line.sentence.data));
+    const result<std::size_t> e = nmea::encode_to(m, std::span<char>(line.sentence.data));
     if (!e) {
       r.ec = e.ec;
       r.field = e.field;
@@ -317,7 +317,7 @@ class vehicle_session {
   [[nodiscard]] constexpr const std::optional<bfmis>& mission() const noexcept { return mission_; }
   /// The vehicle's UTC clock, for the timestamps of what the caller publishes.
   [[nodiscard]] constexpr const utc_clock& utc() const noexcept { return utc_; }
-  constexpr void set_utc(time_point now, const time_of_day& t) noexcept {
+  constexpr void set_utc(time_point now, const nmea::time_of_day& t) noexcept {
     advance(now);
     utc_.set(now, t);
   }
@@ -328,7 +328,7 @@ class vehicle_session {
   struct client_state {
     bool connected = false;
     subscription_set<> subscriptions;
-    text<32> version;
+    nmea::text<32> version;
     std::optional<bpsts> status;
   };
   static constexpr client_state no_client{};
@@ -336,8 +336,8 @@ class vehicle_session {
     bool active = false;
     client_id client = 0;
     std::uint32_t ticket = 0;
-    text<16> address;
-    std::optional<time_of_day> timestamp;
+    nmea::text<16> address;
+    std::optional<nmea::time_of_day> timestamp;
     ack_status final_status = ack_status::ok;
     time_point since{};
   };
@@ -362,7 +362,7 @@ class vehicle_session {
   constexpr void put(client_id c, const M& m) noexcept {
     vehicle_line line;
     line.client = c;
-    const result<std::size_t> e = encode_to(m, std::span<char>(line.sentence.data));
+    const result<std::size_t> e = nmea::encode_to(m, std::span<char>(line.sentence.data));
     if (!e) return;  // the session only writes messages it built within their fields' domains
     line.sentence.size = e.value;
     (void)push(line);
@@ -375,15 +375,16 @@ class vehicle_session {
     events_.push(e);
   }
 
-  constexpr void ack(client_id c, std::string_view address, std::optional<time_of_day> timestamp,
-                     ack_status status, std::string_view description, time_point now) noexcept {
+  constexpr void ack(client_id c, std::string_view address,
+                     std::optional<nmea::time_of_day> timestamp, ack_status status,
+                     std::string_view description, time_point now) noexcept {
     if (!connected(c) || !clients_[c].subscriptions.acks()) return;
     bfack a;
     a.timestamp = utc_.at(now);
     (void)a.command.assign(message_code(address));
     a.command_timestamp = timestamp;
     a.status = status;
-    text<256> d;
+    nmea::text<256> d;
     // Keep only what a text field may carry; the description is for people.
     std::size_t n = 0;
     char buf[256]{};
@@ -398,7 +399,7 @@ class vehicle_session {
 
   /// Acknowledge `address` now, or as pending when the configuration says so.
   constexpr void acknowledge(client_id c, std::string_view address,
-                             std::optional<time_of_day> timestamp, ack_status status,
+                             std::optional<nmea::time_of_day> timestamp, ack_status status,
                              std::string_view description, std::uint32_t ticket,
                              time_point now) noexcept {
     if (status == ack_status::invalid || !config_.pending.includes(address) ||
@@ -426,8 +427,8 @@ class vehicle_session {
   }
 
   /// "bad_enum in field 4 (depth_mode)": the description of an invalid ack.
-  [[nodiscard]] static constexpr text<96> explain(errc error, std::uint16_t field,
-                                                  std::string_view field_name) noexcept {
+  [[nodiscard]] static constexpr nmea::text<96> explain(errc error, std::uint16_t field,
+                                                        std::string_view field_name) noexcept {
     char buf[96]{};
     std::size_t n = 0;
     const auto add = [&](std::string_view part) {
@@ -445,7 +446,7 @@ class vehicle_session {
         add(")");
       }
     }
-    text<96> t;
+    nmea::text<96> t;
     (void)t.assign(std::string_view(buf, n));
     return t;
   }
@@ -459,23 +460,25 @@ class vehicle_session {
     e.ticket = ticket;
     e.error = error;
     e.field = field;
-    parse_policy lenient = to_vehicle_policy;
-    lenient.checksum = checksum_policy::ignore;
-    const result<sentence_view> s = parse(line, lenient);
+    nmea::parse_policy lenient = to_vehicle_policy;
+    lenient.checksum = nmea::checksum_policy::ignore;
+    const result<nmea::sentence_view> s = nmea::parse(line, lenient);
     if (s) {
       (void)e.command.assign(s.value.address);
       // Echo field 1 when it is a time, so the payload can match the ack to its command.
-      field_reader r(s.value, lenient);
-      time_of_day t;
-      if (r.peek().present && !r.peek().blank() && codec<time_of_day>::read(r, t) == errc::ok)
+      nmea::field_reader r(s.value, lenient);
+      nmea::time_of_day t;
+      if (r.peek().present && !r.peek().blank() &&
+          nmea::codec<nmea::time_of_day>::read(r, t) == errc::ok)
         e.command_timestamp = t;
-      const text<96> why = explain(error, field, to_vehicle::field_name(s.value.address, field));
+      const nmea::text<96> why =
+          explain(error, field, to_vehicle::field_name(s.value.address, field));
       ack(c, s.value.address, e.command_timestamp, ack_status::invalid, why.view(), now);
     }
     events_.push(e);
   }
 
-  constexpr void on_message(client_id c, const unknown_sentence& u, std::uint32_t ticket,
+  constexpr void on_message(client_id c, const nmea::unknown_sentence& u, std::uint32_t ticket,
                             time_point now) noexcept {
     vehicle_event e;
     e.kind = vehicle_event_kind::invalid_command;
@@ -483,9 +486,10 @@ class vehicle_session {
     e.ticket = ticket;
     e.error = errc::unknown_address;
     (void)e.command.assign(u.sentence.address);
-    field_reader r(u.sentence, to_vehicle_policy);
-    time_of_day t;
-    if (r.peek().present && !r.peek().blank() && codec<time_of_day>::read(r, t) == errc::ok)
+    nmea::field_reader r(u.sentence, to_vehicle_policy);
+    nmea::time_of_day t;
+    if (r.peek().present && !r.peek().blank() &&
+        nmea::codec<nmea::time_of_day>::read(r, t) == errc::ok)
       e.command_timestamp = t;
     events_.push(e);
     ack(c, u.sentence.address, e.command_timestamp, ack_status::invalid, "unknown message", now);

@@ -15,8 +15,6 @@
 
 namespace seawire::standard {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 /// GGA field 6.
 enum class gps_quality : char {
   invalid = '0',
@@ -32,29 +30,31 @@ enum class gps_quality : char {
 constexpr std::string_view enum_chars(gps_quality) noexcept { return "012345678"; }
 
 struct gga {
-  talker_id talker = "GP";
-  std::optional<time_of_day> time;            // 1  UTC time of the fix
-  std::optional<latitude> lat;                // 2,3
-  std::optional<longitude> lon;               // 4,5
-  std::optional<gps_quality> quality;         // 6  blank: not available (the fix is kept)
-  std::optional<std::uint8_t> satellites;     // 7  in use, written with two digits
-  std::optional<decimal> hdop;                // 8  horizontal dilution of precision
-  std::optional<decimal> altitude_m;          // 9,10  antenna altitude above MSL, metres
-  std::optional<decimal> geoid_separation_m;  // 11,12 geoid above the WGS84 ellipsoid, metres
-  std::optional<decimal> dgps_age_s;          // 13 seconds since the last DGPS update
-  std::optional<std::uint16_t> dgps_station;  // 14 station id 0000-1023
+  nmea::talker_id talker = "GP";
+  std::optional<nmea::time_of_day> time;            // 1  UTC time of the fix
+  std::optional<nmea::latitude> lat;                // 2,3
+  std::optional<nmea::longitude> lon;               // 4,5
+  std::optional<gps_quality> quality;               // 6  blank: not available (the fix is kept)
+  std::optional<std::uint8_t> satellites;           // 7  in use, written with two digits
+  std::optional<nmea::decimal> hdop;                // 8  horizontal dilution of precision
+  std::optional<nmea::decimal> altitude_m;          // 9,10  antenna altitude above MSL, metres
+  std::optional<nmea::decimal> geoid_separation_m;  // 11,12 geoid above the WGS84 ellipsoid, metres
+  std::optional<nmea::decimal> dgps_age_s;          // 13 seconds since the last DGPS update
+  std::optional<std::uint16_t> dgps_station;        // 14 station id 0000-1023
 
   friend constexpr bool operator==(const gga&, const gga&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"--GGA">(
-      field<&gga::time>("time"), field<&gga::lat>("latitude", precision(5)),
-      field<&gga::lon>("longitude", precision(5)), field<&gga::quality>("quality"),
-      field<&gga::satellites>("satellites", zero_pad(2)),
-      field<&gga::hdop>("hdop", precision(2), at_least(0)),
-      field<&gga::altitude_m>("altitude_m", precision(1), unit('M')),
-      field<&gga::geoid_separation_m>("geoid_separation_m", precision(1), unit('M')),
-      field<&gga::dgps_age_s>("dgps_age_s", precision(1), at_least(0)),
-      field<&gga::dgps_station>("dgps_station", in_range(0, 1023), zero_pad(4)));
+  static constexpr auto nmea = nmea::sentence<"--GGA">(
+      nmea::field<&gga::time>("time"), nmea::field<&gga::lat>("latitude", nmea::precision(5)),
+      nmea::field<&gga::lon>("longitude", nmea::precision(5)),
+      nmea::field<&gga::quality>("quality"),
+      nmea::field<&gga::satellites>("satellites", nmea::zero_pad(2)),
+      nmea::field<&gga::hdop>("hdop", nmea::precision(2), nmea::at_least(0)),
+      nmea::field<&gga::altitude_m>("altitude_m", nmea::precision(1), nmea::unit('M')),
+      nmea::field<&gga::geoid_separation_m>("geoid_separation_m", nmea::precision(1),
+                                            nmea::unit('M')),
+      nmea::field<&gga::dgps_age_s>("dgps_age_s", nmea::precision(1), nmea::at_least(0)),
+      nmea::field<&gga::dgps_station>("dgps_station", nmea::in_range(0, 1023), nmea::zero_pad(4)));
 };
 
 }  // namespace seawire::standard

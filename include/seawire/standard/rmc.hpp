@@ -22,8 +22,6 @@
 
 namespace seawire::standard {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 /// RMC field 2.
 enum class rmc_status : char { active = 'A', warning = 'V' };
 constexpr std::string_view enum_chars(rmc_status) noexcept { return "AV"; }
@@ -47,13 +45,13 @@ enum class nav_status : char { safe = 'S', caution = 'C', unsafe = 'U', not_vali
 constexpr std::string_view enum_chars(nav_status) noexcept { return "SCUV"; }
 
 struct rmc {
-  talker_id talker = "GP";
-  std::optional<time_of_day> time;                             // 1  UTC time of the fix
+  nmea::talker_id talker = "GP";
+  std::optional<nmea::time_of_day> time;                       // 1  UTC time of the fix
   rmc_status status = rmc_status::active;                      // 2  A active, V receiver warning
-  std::optional<latitude> lat;                                 // 3,4  DDMM.m, N/S
-  std::optional<longitude> lon;                                // 5,6  DDDMM.m, E/W
-  std::optional<decimal> speed_knots;                          // 7  speed over ground, knots
-  std::optional<decimal> course_true;                          // 8  track made good, degrees true
+  std::optional<nmea::latitude> lat;                           // 3,4  DDMM.m, N/S
+  std::optional<nmea::longitude> lon;                          // 5,6  DDDMM.m, E/W
+  std::optional<nmea::decimal> speed_knots;                    // 7  speed over ground, knots
+  std::optional<nmea::decimal> course_true;                    // 8  track made good, degrees true
   std::optional<nmea::date> date;                              // 9  ddmmyy
   std::optional<nmea::magnetic_variation> magnetic_variation;  // 10,11 degrees, E/W
   std::optional<mode_indicator> mode;                          // 12 NMEA 2.3+
@@ -63,15 +61,16 @@ struct rmc {
 
   friend constexpr bool operator==(const rmc&, const rmc&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"--RMC">(
-      field<&rmc::time>("time"), field<&rmc::status>("status"),
-      field<&rmc::lat>("latitude", precision(5)), field<&rmc::lon>("longitude", precision(5)),
-      field<&rmc::speed_knots>("speed_knots", precision(3), at_least(0)),
-      field<&rmc::course_true>("course_true", precision(2), in_range(0, 360)),
-      field<&rmc::date>("date"),
-      field<&rmc::magnetic_variation>("magnetic_variation", precision(1)),
-      field<&rmc::mode>("mode", may_be_absent),
-      field<&rmc::navigational_status>("navigational_status", may_be_absent));
+  static constexpr auto nmea = nmea::sentence<"--RMC">(
+      nmea::field<&rmc::time>("time"), nmea::field<&rmc::status>("status"),
+      nmea::field<&rmc::lat>("latitude", nmea::precision(5)),
+      nmea::field<&rmc::lon>("longitude", nmea::precision(5)),
+      nmea::field<&rmc::speed_knots>("speed_knots", nmea::precision(3), nmea::at_least(0)),
+      nmea::field<&rmc::course_true>("course_true", nmea::precision(2), nmea::in_range(0, 360)),
+      nmea::field<&rmc::date>("date"),
+      nmea::field<&rmc::magnetic_variation>("magnetic_variation", nmea::precision(1)),
+      nmea::field<&rmc::mode>("mode", nmea::may_be_absent),
+      nmea::field<&rmc::navigational_status>("navigational_status", nmea::may_be_absent));
 };
 
 }  // namespace seawire::standard

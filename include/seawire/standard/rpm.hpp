@@ -20,8 +20,6 @@
 
 namespace seawire::standard {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 /// RPM field 1.
 enum class rpm_source : char { shaft = 'S', engine = 'E' };
 constexpr std::string_view enum_chars(rpm_source) noexcept { return "SE"; }
@@ -31,21 +29,23 @@ enum class rpm_status : char { valid = 'A', invalid = 'V' };
 constexpr std::string_view enum_chars(rpm_status) noexcept { return "AV"; }
 
 struct rpm {
-  talker_id talker = "II";
-  rpm_source source = rpm_source::shaft;  // 1 [Source] S shaft, E engine
-  std::uint8_t number = 0;                // 2 [Engine or shaft number] 0 single or on the
-                                          //   centreline, odd starboard, even port
-  std::optional<decimal> speed_rpm;       // 3 [Speed] rev/min; negative = counter-clockwise
-  std::optional<decimal> pitch_percent;   // 4 [Propeller pitch] % of maximum, negative = astern
-  std::optional<rpm_status> status;       // 5 [Status] A data valid, V invalid
+  nmea::talker_id talker = "II";
+  rpm_source source = rpm_source::shaft;   // 1 [Source] S shaft, E engine
+  std::uint8_t number = 0;                 // 2 [Engine or shaft number] 0 single or on the
+                                           //   centreline, odd starboard, even port
+  std::optional<nmea::decimal> speed_rpm;  // 3 [Speed] rev/min; negative = counter-clockwise
+  // 4 [Propeller pitch] % of maximum, negative = astern
+  std::optional<nmea::decimal> pitch_percent;
+  std::optional<rpm_status> status;  // 5 [Status] A data valid, V invalid
 
   friend constexpr bool operator==(const rpm&, const rpm&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"--RPM">(
-      field<&rpm::source>("source"), field<&rpm::number>("number"),
-      field<&rpm::speed_rpm>("speed_rpm", precision(1)),
-      field<&rpm::pitch_percent>("pitch_percent", precision(1), in_range(-100, 100)),
-      field<&rpm::status>("status"));
+  static constexpr auto nmea = nmea::sentence<"--RPM">(
+      nmea::field<&rpm::source>("source"), nmea::field<&rpm::number>("number"),
+      nmea::field<&rpm::speed_rpm>("speed_rpm", nmea::precision(1)),
+      nmea::field<&rpm::pitch_percent>("pitch_percent", nmea::precision(1),
+                                       nmea::in_range(-100, 100)),
+      nmea::field<&rpm::status>("status"));
 };
 
 }  // namespace seawire::standard

@@ -18,27 +18,26 @@
 
 namespace seawire::standard {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 /// RSA fields 2 and 4.
 enum class rsa_status : char { valid = 'A', invalid = 'V' };
 constexpr std::string_view enum_chars(rsa_status) noexcept { return "AV"; }
 
 struct rsa {
-  talker_id talker = "II";
-  std::optional<decimal> starboard_angle;      // 1 [Starboard (or single) rudder sensor]
-                                               //   degrees, negative = turn to port
-  std::optional<rsa_status> starboard_status;  // 2 [Status] A data valid, V invalid
-  std::optional<decimal> port_angle;           // 3 [Port rudder sensor] degrees, as field 1
-  std::optional<rsa_status> port_status;       // 4 [Status] A data valid, V invalid
+  nmea::talker_id talker = "II";
+  std::optional<nmea::decimal> starboard_angle;  // 1 [Starboard (or single) rudder sensor]
+                                                 //   degrees, negative = turn to port
+  std::optional<rsa_status> starboard_status;    // 2 [Status] A data valid, V invalid
+  std::optional<nmea::decimal> port_angle;       // 3 [Port rudder sensor] degrees, as field 1
+  std::optional<rsa_status> port_status;         // 4 [Status] A data valid, V invalid
 
   friend constexpr bool operator==(const rsa&, const rsa&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"--RSA">(
-      field<&rsa::starboard_angle>("starboard_angle", precision(1), in_range(-180, 180)),
-      field<&rsa::starboard_status>("starboard_status"),
-      field<&rsa::port_angle>("port_angle", precision(1), in_range(-180, 180)),
-      field<&rsa::port_status>("port_status"));
+  static constexpr auto nmea = nmea::sentence<"--RSA">(
+      nmea::field<&rsa::starboard_angle>("starboard_angle", nmea::precision(1),
+                                         nmea::in_range(-180, 180)),
+      nmea::field<&rsa::starboard_status>("starboard_status"),
+      nmea::field<&rsa::port_angle>("port_angle", nmea::precision(1), nmea::in_range(-180, 180)),
+      nmea::field<&rsa::port_status>("port_status"));
 };
 
 }  // namespace seawire::standard

@@ -25,28 +25,27 @@
 
 namespace seawire::standard {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 /// VBW fields 3, 6, 8 and 10.
 enum class vbw_status : char { valid = 'A', invalid = 'V' };
 constexpr std::string_view enum_chars(vbw_status) noexcept { return "AV"; }
 
 struct vbw {
-  talker_id talker = "VW";
-  std::optional<decimal> longitudinal_water_knots;       // 1 [Longitudinal water speed] knots,
-                                                         //   negative = astern
-  std::optional<decimal> transverse_water_knots;         // 2 [Transverse water speed] knots,
-                                                         //   negative = port
-  std::optional<vbw_status> water_status;                // 3 [Status] A data valid, V invalid
-  std::optional<decimal> longitudinal_ground_knots;      // 4 [Longitudinal ground speed] knots,
-                                                         //   negative = astern
-  std::optional<decimal> transverse_ground_knots;        // 5 [Transverse ground speed] knots,
-                                                         //   negative = port
-  std::optional<vbw_status> ground_status;               // 6 [Status] A data valid, V invalid
-  std::optional<decimal> stern_transverse_water_knots;   // 7 NMEA 3.0+, knots, negative = port
-  std::optional<vbw_status> stern_water_status;          // 8 NMEA 3.0+
-  std::optional<decimal> stern_transverse_ground_knots;  // 9 NMEA 3.0+, knots, negative = port
-  std::optional<vbw_status> stern_ground_status;         // 10 NMEA 3.0+
+  nmea::talker_id talker = "VW";
+  std::optional<nmea::decimal> longitudinal_water_knots;   // 1 [Longitudinal water speed] knots,
+                                                           //   negative = astern
+  std::optional<nmea::decimal> transverse_water_knots;     // 2 [Transverse water speed] knots,
+                                                           //   negative = port
+  std::optional<vbw_status> water_status;                  // 3 [Status] A data valid, V invalid
+  std::optional<nmea::decimal> longitudinal_ground_knots;  // 4 [Longitudinal ground speed] knots,
+                                                           //   negative = astern
+  std::optional<nmea::decimal> transverse_ground_knots;    // 5 [Transverse ground speed] knots,
+                                                           //   negative = port
+  std::optional<vbw_status> ground_status;                 // 6 [Status] A data valid, V invalid
+  std::optional<nmea::decimal> stern_transverse_water_knots;  // 7 NMEA 3.0+, knots, negative = port
+  std::optional<vbw_status> stern_water_status;               // 8 NMEA 3.0+
+  // 9 NMEA 3.0+, knots, negative = port
+  std::optional<nmea::decimal> stern_transverse_ground_knots;
+  std::optional<vbw_status> stern_ground_status;  // 10 NMEA 3.0+
   std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 7-10 came
                                  //   blank, to write back as it came (nmea::keeps_wire_fields)
 
@@ -55,19 +54,19 @@ struct vbw {
 
   friend constexpr bool operator==(const vbw&, const vbw&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"--VBW">(
-      field<&vbw::longitudinal_water_knots>("longitudinal_water_knots", precision(2)),
-      field<&vbw::transverse_water_knots>("transverse_water_knots", precision(2)),
-      field<&vbw::water_status>("water_status"),
-      field<&vbw::longitudinal_ground_knots>("longitudinal_ground_knots", precision(2)),
-      field<&vbw::transverse_ground_knots>("transverse_ground_knots", precision(2)),
-      field<&vbw::ground_status>("ground_status"),
-      field<&vbw::stern_transverse_water_knots>("stern_transverse_water_knots", precision(2),
-                                                may_be_absent),
-      field<&vbw::stern_water_status>("stern_water_status", may_be_absent),
-      field<&vbw::stern_transverse_ground_knots>("stern_transverse_ground_knots", precision(2),
-                                                 may_be_absent),
-      field<&vbw::stern_ground_status>("stern_ground_status", may_be_absent));
+  static constexpr auto nmea = nmea::sentence<"--VBW">(
+      nmea::field<&vbw::longitudinal_water_knots>("longitudinal_water_knots", nmea::precision(2)),
+      nmea::field<&vbw::transverse_water_knots>("transverse_water_knots", nmea::precision(2)),
+      nmea::field<&vbw::water_status>("water_status"),
+      nmea::field<&vbw::longitudinal_ground_knots>("longitudinal_ground_knots", nmea::precision(2)),
+      nmea::field<&vbw::transverse_ground_knots>("transverse_ground_knots", nmea::precision(2)),
+      nmea::field<&vbw::ground_status>("ground_status"),
+      nmea::field<&vbw::stern_transverse_water_knots>("stern_transverse_water_knots",
+                                                      nmea::precision(2), nmea::may_be_absent),
+      nmea::field<&vbw::stern_water_status>("stern_water_status", nmea::may_be_absent),
+      nmea::field<&vbw::stern_transverse_ground_knots>("stern_transverse_ground_knots",
+                                                       nmea::precision(2), nmea::may_be_absent),
+      nmea::field<&vbw::stern_ground_status>("stern_ground_status", nmea::may_be_absent));
 };
 
 }  // namespace seawire::standard

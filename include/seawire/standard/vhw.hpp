@@ -17,23 +17,24 @@
 
 namespace seawire::standard {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 struct vhw {
-  talker_id talker = "VW";
-  std::optional<decimal> heading_true_deg;      // 1,2 [Degrees, T] heading, degrees true
-  std::optional<decimal> heading_magnetic_deg;  // 3,4 [Degrees Magnetic, M] heading, degrees
-  std::optional<decimal> speed_knots;           // 5,6 [Knots, N] speed through water, knots
-  std::optional<decimal> speed_kmh;             // 7,8 [Kilometers, K] speed through water, km/h
+  nmea::talker_id talker = "VW";
+  std::optional<nmea::decimal> heading_true_deg;      // 1,2 [Degrees, T] heading, degrees true
+  std::optional<nmea::decimal> heading_magnetic_deg;  // 3,4 [Degrees Magnetic, M] heading, degrees
+  std::optional<nmea::decimal> speed_knots;           // 5,6 [Knots, N] speed through water, knots
+  std::optional<nmea::decimal> speed_kmh;  // 7,8 [Kilometers, K] speed through water, km/h
 
   friend constexpr bool operator==(const vhw&, const vhw&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"--VHW">(
-      field<&vhw::heading_true_deg>("heading_true_deg", precision(1), in_range(0, 360), unit('T')),
-      field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", precision(1), in_range(0, 360),
-                                        unit('M')),
-      field<&vhw::speed_knots>("speed_knots", precision(2), at_least(0), unit('N')),
-      field<&vhw::speed_kmh>("speed_kmh", precision(2), at_least(0), unit('K')));
+  static constexpr auto nmea = nmea::sentence<"--VHW">(
+      nmea::field<&vhw::heading_true_deg>("heading_true_deg", nmea::precision(1),
+                                          nmea::in_range(0, 360), nmea::unit('T')),
+      nmea::field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", nmea::precision(1),
+                                              nmea::in_range(0, 360), nmea::unit('M')),
+      nmea::field<&vhw::speed_knots>("speed_knots", nmea::precision(2), nmea::at_least(0),
+                                     nmea::unit('N')),
+      nmea::field<&vhw::speed_kmh>("speed_kmh", nmea::precision(2), nmea::at_least(0),
+                                   nmea::unit('K')));
 };
 
 }  // namespace seawire::standard

@@ -18,19 +18,18 @@
 
 namespace seawire::standard {
 
-using namespace seawire::nmea;  // NOLINT(google-build-using-namespace): message vocabulary
-
 /// VWR field 2: which side of the bow the wind comes from.
 enum class bow_side : char { left = 'L', right = 'R' };
 constexpr std::string_view enum_chars(bow_side) noexcept { return "LR"; }
 
 struct vwr {
-  talker_id talker = "WI";
-  std::optional<decimal> angle_deg;    // 1 [Wind direction magnitude] degrees off the bow, 0-180
-  std::optional<bow_side> side;        // 2 [Left/Right of bow] L port, R starboard
-  std::optional<decimal> speed_knots;  // 3,4 [Speed, N] knots
-  std::optional<decimal> speed_mps;    // 5,6 [Speed, M] metres per second
-  std::optional<decimal> speed_kmh;    // 7,8 [Speed, K] kilometres per hour
+  nmea::talker_id talker = "WI";
+  // 1 [Wind direction magnitude] degrees off the bow, 0-180
+  std::optional<nmea::decimal> angle_deg;
+  std::optional<bow_side> side;              // 2 [Left/Right of bow] L port, R starboard
+  std::optional<nmea::decimal> speed_knots;  // 3,4 [Speed, N] knots
+  std::optional<nmea::decimal> speed_mps;    // 5,6 [Speed, M] metres per second
+  std::optional<nmea::decimal> speed_kmh;    // 7,8 [Speed, K] kilometres per hour
 
   /// The angle signed the usual way for relative bearings: negative to port (L). nullopt
   /// without an angle; an angle without a side is taken as given.
@@ -42,12 +41,15 @@ struct vwr {
 
   friend constexpr bool operator==(const vwr&, const vwr&) noexcept = default;
 
-  static constexpr auto nmea = sentence<"--VWR">(
-      field<&vwr::angle_deg>("angle_deg", precision(1), in_range(0, 180)),
-      field<&vwr::side>("side"),
-      field<&vwr::speed_knots>("speed_knots", precision(1), at_least(0), unit('N')),
-      field<&vwr::speed_mps>("speed_mps", precision(1), at_least(0), unit('M')),
-      field<&vwr::speed_kmh>("speed_kmh", precision(1), at_least(0), unit('K')));
+  static constexpr auto nmea = nmea::sentence<"--VWR">(
+      nmea::field<&vwr::angle_deg>("angle_deg", nmea::precision(1), nmea::in_range(0, 180)),
+      nmea::field<&vwr::side>("side"),
+      nmea::field<&vwr::speed_knots>("speed_knots", nmea::precision(1), nmea::at_least(0),
+                                     nmea::unit('N')),
+      nmea::field<&vwr::speed_mps>("speed_mps", nmea::precision(1), nmea::at_least(0),
+                                   nmea::unit('M')),
+      nmea::field<&vwr::speed_kmh>("speed_kmh", nmea::precision(1), nmea::at_least(0),
+                                   nmea::unit('K')));
 };
 
 }  // namespace seawire::standard
