@@ -675,8 +675,10 @@ TEST_CASE("reset() starts a new stream", "[framer]") {
 }
 
 TEST_CASE("memory is the buffer and a few counters", "[framer]") {
+  // The counters, the stream position, and the 256 bytes a drop report shows (the framer is a
+  // stream_reader, which can report its drops): fixed, whatever the capacity.
   constexpr std::size_t overhead = sizeof(framer<8>) - 8;
-  STATIC_REQUIRE(overhead <= 128);
+  STATIC_REQUIRE(overhead <= seawire::nmea::stream_drop::max_shown + 256);
   STATIC_REQUIRE(sizeof(framer<1024>) <= 1024 + overhead + 8);
   STATIC_REQUIRE(sizeof(framer<65536>) <= 65536 + overhead + 8);
   STATIC_REQUIRE(framer<82>::capacity == 82);
@@ -737,15 +739,10 @@ constexpr bool scans_find_every_special(bool every_start) {
       }
       s[at] = static_cast<char>(sp);
       for (std::size_t from = 0;;) {
-        // '!' is text inside a sentence: only find_start stops at it.
+        // '!' is text inside a sentence: the scan passes it.
         const bool special = sp != '!';
         if (scan::find_special(s, from, n) != (special ? at : n)) return false;
         if (scan::find_special(s, from, at) != at) return false;
-        const bool brk = sp == '$' || sp == '\r' || sp == '\n';
-        if (scan::find_break(s, from, n) != (brk ? at : n)) return false;
-        const bool start = sp == '$' || sp == '!';
-        if (scan::find_start(s, from, n) != (start ? at : n)) return false;
-        if (scan::find_start(s, from, at) != at) return false;
         if (from == at) break;
         from = every_start ? from + 1 : from < at / 2 ? at / 2 : at;
       }
@@ -986,4 +983,95 @@ TEST_CASE("property: random soup matches the byte-at-a-time reference", "[framer
     check_soup_against_reference<16>(seed);
     check_soup_against_reference<82>(seed);
   }
+}
+
+// nmea::stream_reader without frames, with drop reports on: the same lines as the reference in
+// the same order, and between them drop reports whose sizes add up to what the counters say
+// was dropped, each one where the stream has it (its offset and shown bytes are the stream's).
+namespace {
+
+template <std::size_t N>
+void check_soup_drop_reports(std::uint64_t seed) {
+  prng r{seed};
+  const std::string s = soup(r, 2000 + r.below(20000));
+  const reference_result ref = reference_frame(s, N);
+  INFO("capacity " << N << ", seed " << seed);
+  for (int run = 0; run < 4; ++run) {
+    const std::size_t max_chunk = run == 0 ? s.size() : run == 1 ? 1 : pick_max_chunk(r);
+    INFO("chunks of 1.." << max_chunk);
+    seawire::nmea::stream_reader<N> reader;
+    reader.report_drops(true);
+    std::vector<rec> lines;
+    std::uint64_t dropped = 0;
+    std::uint64_t last_offset = 0;
+    bool in_order = true;
+    bool shown_right = true;
+    const auto take = [&](const auto& item) {
+      in_order = in_order && item.offset >= last_offset;
+      last_offset = item.offset;
+      if (item.is_sentence()) {
+        lines.push_back(
+            {std::string(item.sentence.text), item.sentence.ending, item.sentence.line});
+        shown_right = shown_right &&
+                      s.compare(item.offset, item.sentence.text.size(), item.sentence.text) == 0;
+      } else {
+        REQUIRE(item.is_drop());
+        dropped += item.drop.size;
+        // A noise run shows its bytes, which need not be contiguous (line breaks inside it are
+        // not noise); a dropped line shows the stream's bytes from the report's offset.
+        if (item.drop.reason != seawire::nmea::drop_reason::noise)
+          shown_right =
+              shown_right && s.compare(item.offset, item.drop.bytes.size(), item.drop.bytes) == 0;
+      }
+    };
+    for (const std::string_view chunk : chop(s, r, max_chunk)) reader.feed(chunk, take);
+    reader.finish(take);
+    CHECK(in_order);
+    CHECK(shown_right);
+    REQUIRE(lines == ref.lines);
+    const auto& st = reader.stats();
+    CHECK(dropped == st.noise_bytes + st.dropped_bytes);
+    CHECK(st.noise_bytes == ref.stats.noise_bytes);
+    CHECK(st.dropped_bytes == ref.stats.dropped_bytes);
+    CHECK(st.interrupted == ref.stats.interrupted);
+    CHECK(st.overlong == ref.stats.overlong);
+    CHECK(st.invalid_bytes == ref.stats.invalid_bytes);
+    CHECK(st.frames == 0);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("stream_reader without frames: the framer's lines, with every drop reported in order",
+          "[framer][property]") {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    check_soup_drop_reports<7>(seed);
+    check_soup_drop_reports<82>(seed);
+  }
+}
+
+TEST_CASE("stream_reader without frames: each kind of drop, where it happened", "[framer]") {
+  using namespace seawire::nmea;
+  stream_reader<16> reader;
+  reader.report_drops(true);
+  std::vector<std::string> seen;
+  const auto take = [&](const auto& item) {
+    if (item.is_sentence()) {
+      seen.push_back("line " + std::to_string(item.line) + ": " + std::string(item.sentence.text));
+    } else {
+      seen.push_back("line " + std::to_string(item.line) + " @" + std::to_string(item.offset) +
+                     " " + std::string(name(item.drop.reason)) + " " +
+                     std::to_string(item.drop.size) + " \"" + std::string(item.drop.bytes) + "\"");
+    }
+  };
+  reader.feed("junk$A,1\n$B,2$C,3\r\n$D,\x01x\n$E,this is far too long\n", take);
+  reader.finish(take);
+  CHECK(seen == std::vector<std::string>{
+                    "line 1 @0 noise 4 \"junk\"",
+                    "line 1: $A,1",
+                    "line 2 @9 interrupted 4 \"$B,2\"",
+                    "line 2: $C,3",
+                    "line 3 @19 invalid_byte 5 \"$D,\x01x\"",
+                    "line 4 @25 overlong 23 \"$E,this is far too long\"",
+                });
 }

@@ -47,6 +47,7 @@
 #include "seawire/nmea/framer.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/stream.hpp"
 #include "seawire/nmea/variation.hpp"
 #include "seawire/nmea/writer.hpp"
 
