@@ -918,3 +918,43 @@ TEST_CASE("to_chars: every value type as people read it, as std::to_chars does")
   CHECK(r.ec == std::errc::value_too_large);
   CHECK(r.ptr == small + sizeof small);
 }
+
+TEST_CASE("ANELLO frame: fields named by number, and errors told for people") {
+  using namespace seawire::anello;
+  const sensor_field_about heading = about_sensor_field(1);
+  CHECK(heading.found);
+  CHECK(heading.name == "heading_deg");
+  CHECK(heading.json_key == "heading_deg");
+  CHECK_FALSE(heading.is_code);
+  const sensor_field_about lat = about_sensor_field(2);
+  CHECK(lat.name == "latitude_deg");
+  CHECK(lat.json_key == "latitude");
+  CHECK(about_sensor_field(10).name == "fix_quality");
+  CHECK(about_sensor_field(10).is_code);
+  CHECK(about_sensor_field(19).name == "pressure_hpa");
+  CHECK_FALSE(about_sensor_field(0).found);
+  CHECK_FALSE(about_sensor_field(20).found);
+  // Every field has a JSON key the frame's JSON reader knows.
+  for (std::uint16_t n = 1; n <= sensor_field_count; ++n) {
+    INFO("field " << n);
+    CHECK(has_json_field(about_sensor_field(n).json_key));
+  }
+
+  sensor_frame_raw f;
+  f.heading = 361;
+  f.lat = -90'000'001;
+  std::array<char, 160> buf;
+  const auto r = validate(f);
+  REQUIRE(r.field == 1);
+  CHECK(describe(buf, r, f) ==
+        "AB00 field 1 (heading_deg) 361: " + std::string(seawire::message(r.ec)));
+  f.heading = 359;
+  const auto r2 = validate(f);
+  REQUIRE(r2.field == 2);
+  CHECK(describe(buf, r2, f) ==
+        "AB00 field 2 (latitude) -90.000001: " + std::string(seawire::message(r2.ec)));
+  std::array<char, 12> small;
+  CHECK(describe(small, r2, f) == "AB00 field ");  // cut to fit, NUL kept
+  CHECK(small.back() == '\0');
+  CHECK(describe(buf, validate(sensor_frame_raw{}), sensor_frame_raw{}) == "ok");
+}

@@ -394,3 +394,26 @@ TEST_CASE("writer seals with upper-case checksum and CR LF, and reports overflow
   z.put_uint(0, 4);
   CHECK(z.view() == "$X,060000");
 }
+
+TEST_CASE("what a writer may be given: addresses and field text") {
+  using seawire::nmea::is_address;
+  using seawire::nmea::is_field_text;
+  CHECK(is_address("GPRMC"));
+  CHECK(is_address("P"));
+  CHECK(is_address("AIVDM"));
+  CHECK(is_address("ABCDEFGHIJ12345"));
+  CHECK_FALSE(is_address(""));
+  CHECK_FALSE(is_address("ABCDEFGHIJ123456"));  // 16 characters
+  CHECK_FALSE(is_address("1GPS"));              // a digit first
+  CHECK_FALSE(is_address("gprmc"));
+  CHECK_FALSE(is_address("GP-RMC"));
+  CHECK(is_field_text(""));
+  CHECK(is_field_text("Running [log dir] 12.5 m/s"));
+  for (const char c : std::string_view("$,*!\\^~")) {
+    INFO("reserved " << c);
+    CHECK_FALSE(is_field_text(std::string("a") + c));
+  }
+  CHECK_FALSE(is_field_text("tab\there"));
+  CHECK_FALSE(is_field_text("\x7F"));
+  CHECK_FALSE(is_field_text("\xC3\xA9"));
+}

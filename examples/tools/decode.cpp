@@ -23,7 +23,6 @@
 #include "seawire/anello/frame.hpp"
 #include "seawire/anello/frame_json.hpp"
 #include "seawire/anello/stream.hpp"
-#include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/dispatch.hpp"
@@ -154,22 +153,8 @@ class decoder {
   // write_json would write it.
   static std::string frame_error(const anello::sensor_frame_raw& frame,
                                  const result<anello::sensor_frame_raw>& v) {
-    std::string detail = "AB00 field " + std::to_string(v.field);
-    anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
-      if (number != v.field) return true;
-      using field_type = std::remove_cvref_t<decltype(field)>;
-      const nmea::decimal d = anello::detail::raw_decimal(field, frame.*field_type::raw_member);
-      std::string value;
-      struct sink {
-        std::string& s;
-        void put(char c) { s += c; }
-        void put(std::string_view t) { s += t; }
-      } k{value};
-      nmea::write_json_value(k, d);
-      detail += " (" + std::string(anello::detail::json_key(field.name)) + ") " + value;
-      return false;
-    });
-    return detail + ": " + std::string(message(v.ec));
+    std::array<char, 160> buf;
+    return std::string(anello::describe(buf, v, frame));
   }
 
   template <class Bytes>
@@ -177,8 +162,8 @@ class decoder {
     std::string h;
     for (const auto c : bytes) {
       const auto b = static_cast<std::uint8_t>(c);
-      h += seawire::detail::hex_digit_upper(b >> 4U);
-      h += seawire::detail::hex_digit_upper(b);
+      h += "0123456789ABCDEF"[b >> 4U];
+      h += "0123456789ABCDEF"[b & 0x0FU];
     }
     return h;
   }

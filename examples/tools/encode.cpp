@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -26,7 +27,6 @@
 #include "messages.hpp"
 #include "seawire/anello/frame.hpp"
 #include "seawire/anello/frame_json.hpp"
-#include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
@@ -273,10 +273,10 @@ std::optional<place_range> position_places(std::string_view key) {
         [&](const auto& desc) {
           using V = typename std::remove_cvref_t<decltype(desc)>::value_type;
           if (desc.name != key) return;
-          if constexpr (nmea::detail::is_nmea_coordinate<V>::value) {
+          if constexpr (nmea::is_ddmm_position<V>) {
             out = place_range{nmea::min_minute_places, nmea::max_minute_places,
                               "minute places of a DDMM.mmm position"};
-          } else if constexpr (nmea::detail::is_decimal_coordinate<V>::value) {
+          } else if constexpr (nmea::is_degrees_position<V>) {
             out = place_range{0, nmea::max_degree_places,
                               "degree places of a decimal-degree position"};
           }
@@ -371,18 +371,11 @@ class encoder {
     if (!known_keys(anello::frame_json_type, anello::has_json_field, false)) return;
     const result<anello::sensor_frame_raw> f = anello::read_frame_json(obj_);
     if (!f) {
-      std::string_view field_name;
-      bool code = false;  // a code or count (fix_quality): a whole number, never rounded
-      anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
-        using value_type = typename std::remove_cvref_t<decltype(field)>::value_type;
-        if (number == f.field) {
-          field_name = anello::detail::json_key(field.name);
-          code = std::is_integral_v<value_type>;
-        }
-        return number < f.field;
-      });
-      field_error(anello::frame_json_type, f.ec, f.field, field_name,
-                  code && f.ec == errc::bad_number ? " (a code: a whole number, not rounded)" : "");
+      const anello::sensor_field_about about = anello::about_sensor_field(f.field);
+      field_error(anello::frame_json_type, f.ec, f.field, about.json_key,
+                  about.is_code && f.ec == errc::bad_number
+                      ? " (a code: a whole number, not rounded)"
+                      : "");
       return;
     }
     const anello::frame_bytes bytes = anello::encode_frame(f.value);
@@ -412,10 +405,7 @@ class encoder {
       }
       start = s.text[0];
     }
-    bool address_ok = !type.empty() && type.size() <= 15 && seawire::detail::is_upper(type[0]);
-    for (const char c : type)
-      address_ok = address_ok && (seawire::detail::is_upper(c) || seawire::detail::is_digit(c));
-    if (!address_ok) {
+    if (!nmea::is_address(type)) {
       reject(std::string(name(errc::bad_address)) + ": \"" + std::string(type) +
              "\" is not 1-15 upper-case letters and digits");
       return;
@@ -426,11 +416,9 @@ class encoder {
     std::uint16_t n = 0;
     for (const std::string_view f : obj_.fields()) {
       ++n;
-      for (const char c : f) {
-        if (!seawire::detail::is_printable(c) || seawire::detail::is_reserved(c)) {
-          field_error(type, errc::bad_text, n, "fields");
-          return;
-        }
+      if (!nmea::is_field_text(f)) {
+        field_error(type, errc::bad_text, n, "fields");
+        return;
       }
       w.next_field();
       w.put(f);
@@ -481,12 +469,11 @@ class encoder {
       }
       if (value.blank()) continue;  // null: the default precision
       unsigned n = 0;
-      bool whole = (value.kind == json_kind::number || value.kind == json_kind::string) &&
-                   !value.text.empty() && value.text.size() <= 3;
-      for (const char c : value.text) {
-        whole = whole && seawire::detail::is_digit(c);
-        n = n * 10 + static_cast<unsigned>(c - '0');
-      }
+      const char* const end = value.text.data() + value.text.size();
+      const auto [stop, ec] = std::from_chars(value.text.data(), end, n);
+      const bool whole = (value.kind == json_kind::number || value.kind == json_kind::string) &&
+                         !value.text.empty() && value.text.size() <= 3 && ec == std::errc{} &&
+                         stop == end;
       if (!whole || n < range->lo || n > range->hi) {
         const std::string_view quote = value.kind == json_kind::string ? "\"" : "";
         std::string why = t;

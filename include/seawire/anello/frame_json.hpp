@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
@@ -31,6 +32,7 @@
 
 #include "seawire/anello/frame.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/json.hpp"
 
@@ -193,6 +195,44 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
     return !found;
   });
   return found;
+}
+
+/// What the frame's table says of field `number` (1..19, heading = 1, as errors number them).
+struct sensor_field_about {
+  std::string_view name;      ///< the table's name: "heading_deg", "latitude_deg"
+  std::string_view json_key;  ///< the JSON key: "heading_deg", "latitude"
+  bool is_code = false;       ///< a code or count (fix_quality): a whole number, never rounded
+  bool found = false;         ///< false for a number outside 1..19 (the rest is then empty)
+};
+
+[[nodiscard]] constexpr sensor_field_about about_sensor_field(std::uint16_t number) noexcept {
+  sensor_field_about a;
+  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
+    if (n != number) return true;
+    using value_type = typename std::remove_cvref_t<decltype(field)>::value_type;
+    a = {field.name, detail::json_key(field.name), std::is_integral_v<value_type>, true};
+    return false;
+  });
+  return a;
+}
+
+/// An error from validate() or build_frame() for people: "AB00 field 1 (heading_deg) 361: value
+/// outside the range the spec allows", the value as write_json writes it (from `frame`, the
+/// frame the result is about). Written into `out` (cut to fit, always NUL-terminated); the
+/// returned view is into `out`.
+constexpr std::string_view describe(std::span<char> out, const result<sensor_frame_raw>& r,
+                                    const sensor_frame_raw& frame) noexcept {
+  nmea::detail::text_out t(out);
+  if (r) return t.put("ok").view();
+  t.put(frame_json_type).put(" field ").put(std::uint64_t{r.field});
+  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
+    if (n != r.field) return true;
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    t.put(" (").put(detail::json_key(field.name)).put(") ");
+    t.put(detail::raw_decimal(field, frame.*field_type::raw_member));
+    return false;
+  });
+  return t.put(": ").put(message(r.ec)).view();
 }
 
 /// A frame as one JSON object (no newline): "type":"AB00", then the 19 fields in table order.

@@ -523,6 +523,18 @@ struct decimal_coordinate {
 using decimal_latitude = decimal_coordinate<detail::lat_axis>;
 using decimal_longitude = decimal_coordinate<detail::lon_axis>;
 
+/// Whether T is a DDMM.m position (latitude, longitude): its precision counts minute digits.
+template <class T>
+inline constexpr bool is_ddmm_position = false;
+template <class A>
+inline constexpr bool is_ddmm_position<nmea_coordinate<A>> = true;
+/// Whether T is a decimal-degree position (decimal_latitude, decimal_longitude): its precision
+/// counts degree digits.
+template <class T>
+inline constexpr bool is_degrees_position = false;
+template <class A>
+inline constexpr bool is_degrees_position<decimal_coordinate<A>> = true;
+
 // ---------------------------------------------------------------------------------------------
 // time and date
 

@@ -417,14 +417,6 @@ struct is_text : std::false_type {};
 template <std::size_t N>
 struct is_text<text<N>> : std::true_type {};
 
-template <class T>
-struct is_nmea_coordinate : std::false_type {};
-template <class A>
-struct is_nmea_coordinate<nmea_coordinate<A>> : std::true_type {};
-template <class T>
-struct is_decimal_coordinate : std::false_type {};
-template <class A>
-struct is_decimal_coordinate<decimal_coordinate<A>> : std::true_type {};
 
 }  // namespace detail
 
@@ -450,8 +442,8 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
       }
     }
     detail::json_uint(s, static_cast<std::uint64_t>(v));
-  } else if constexpr (detail::is_nmea_coordinate<T>::value ||
-                       detail::is_decimal_coordinate<T>::value) {
+  } else if constexpr (is_ddmm_position<T> ||
+                       is_degrees_position<T>) {
     detail::json_decimal(s, to_decimal_degrees(v));
   } else if constexpr (std::is_same_v<T, magnetic_variation>) {
     // Signed degrees with the wire's digits, west negative; null for a letter without a value.
@@ -689,8 +681,8 @@ template <class T>
     field_reader r(s, strict);
     if (v.text.empty()) return errc::bad_number;
     return codec<T>::read(r, out);
-  } else if constexpr (detail::is_nmea_coordinate<T>::value ||
-                       detail::is_decimal_coordinate<T>::value) {
+  } else if constexpr (is_ddmm_position<T> ||
+                       is_degrees_position<T>) {
     decimal d;
     const errc e = detail::json_number(v, d);
     if (e != errc::ok) return e == errc::bad_number ? detail::coordinate_traits<T>::axis::error : e;
@@ -763,7 +755,7 @@ template <message_like T, class Lookup>
     const json_value v = lookup(std::string_view{}, d.name);
     int precision = -1;
     errc e = errc::ok;
-    if constexpr (detail::is_nmea_coordinate<V>::value || detail::is_decimal_coordinate<V>::value) {
+    if constexpr (is_ddmm_position<V> || is_degrees_position<V>) {
       const json_value p = lookup(std::string_view("precision"), d.name);
       if (!p.blank()) {
         std::uint8_t n = 0;

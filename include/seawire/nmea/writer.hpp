@@ -15,6 +15,25 @@
 
 namespace seawire::nmea {
 
+/// Whether `a` can be written as a sentence's address: 1 to 15 upper-case letters and digits,
+/// the first a letter ("GPRMC", "PYDEV", "AIVDM").
+[[nodiscard]] constexpr bool is_address(std::string_view a) noexcept {
+  if (a.empty() || a.size() > 15 || !seawire::detail::is_upper(a[0])) return false;
+  for (const char c : a)
+    if (!seawire::detail::is_upper(c) && !seawire::detail::is_digit(c)) return false;
+  return true;
+}
+
+/// Whether `f` can be written as one field: printable ASCII without the characters NMEA 0183
+/// reserves for framing ($ , * ! \ ^ ~).
+[[nodiscard]] constexpr bool is_field_text(std::string_view f) noexcept {
+  for (const char c : f)
+    if (!seawire::detail::is_printable(c) || seawire::detail::is_reserved(c)) return false;
+  return true;
+}
+
+/// Writes one sentence into a caller's buffer: begin(), next_field() and put() per field,
+/// seal(). Checks nothing of what it is given (is_address, is_field_text say what is valid).
 class writer {
  public:
   constexpr explicit writer(std::span<char> out) noexcept : out_(out) {}
