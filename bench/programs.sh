@@ -5,7 +5,7 @@
 #   seawire-decode --format none   (frame, parse, decode every field of every message)
 # against
 #   seawire-xor-baseline           (split lines, check the XOR checksum, nothing else)
-# with hyperfine when it is installed (else bash's time). The issue's target: within 2x.
+# with hyperfine when it is installed (else bash's time). The target: within 2x.
 #   bench/programs.sh [lines]      SEAWIRE_JOBS=N for the build (default 1)
 set -euo pipefail
 root=$(cd -- "$(dirname -- "${BASH_SOURCE[0]}")/.." && pwd)

@@ -55,7 +55,7 @@ struct sent {
 };
 
 // A boat circling off San Diego: 2 m/s through the water, turning 3 degrees a second, motor
-// and rudder steady, a light westerly. GPS time starts at the seed example's.
+// and rudder steady, a light westerly. GPS time starts at the spec example's.
 anello::sensor_values simulate(double t, double& lat, double& lon) {
   const double heading = std::fmod(45.0 + 3.0 * t, 360.0);
   const double speed = 2.0 + 0.1 * std::sin(t / 3.0);

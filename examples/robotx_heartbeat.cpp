@@ -3,7 +3,7 @@
 // fixed UTC start, one Scan the Code report sent twice within a second (the second is held
 // until its second is up), and every sentence checked the way the judges would.
 //
-//   seawire_robotx_heartbeat          start at 2018-12-11 02:12:29 UTC (the seed's HST stamp)
+//   seawire_robotx_heartbeat          start at 2018-12-11 02:12:29 UTC (the spec's HST stamp)
 //   seawire_robotx_heartbeat --now    start at the system clock's now
 //
 // A real vehicle would call poll(system_clock::now()) from its event loop, sleep until

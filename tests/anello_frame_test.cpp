@@ -80,7 +80,7 @@ constexpr time_ms utc(int y, unsigned mo, unsigned d, int h, int mi, int s, int 
 
 }  // namespace
 
-// --- compile time: the seed frame decodes, reads right and re-encodes to the same bytes ------
+// --- compile time: the spec's example frame decodes, reads right and re-encodes to the same bytes ------
 static_assert(seawire::crc32("123456789") == 0xCBF43926U);
 static_assert(decode_frame(seed).ok());
 static_assert(encode_frame(seed_frame) == seed);
@@ -163,7 +163,7 @@ TEST_CASE("byte order helpers", "[anello][byte_order]") {
   check_all(std::int64_t{});
 }
 
-TEST_CASE("the seed frame decodes to the spec's values", "[anello][frame]") {
+TEST_CASE("the spec's example frame decodes to the spec's values", "[anello][frame]") {
   const auto r = decode_frame(seed);
   REQUIRE(r.ok());
   const sensor_frame_raw& f = r.value;
@@ -187,7 +187,7 @@ TEST_CASE("the seed frame decodes to the spec's values", "[anello][frame]") {
   CHECK_FALSE(f.air_temp_c().has_value());
   CHECK_FALSE(f.pressure_hpa().has_value());
 
-  // The integers as sent: nothing is lost, including the seed's 0xFFFF air temperature.
+  // The integers as sent: nothing is lost, including the spec's 0xFFFF air temperature.
   CHECK(f.heading == 89);
   CHECK(f.lat == 32828671);
   CHECK(f.lon == -117229926);
@@ -210,7 +210,7 @@ TEST_CASE("the seed frame decodes to the spec's values", "[anello][frame]") {
   for (std::size_t i = frame_size; i < big.size(); ++i) CHECK(big[i] == 0x5A);
 }
 
-TEST_CASE("tests/data holds the seed frame", "[anello][frame]") {
+TEST_CASE("tests/data holds the spec's example frame", "[anello][frame]") {
 #ifdef SEAWIRE_TEST_DATA_DIR
   const std::string path = std::string(SEAWIRE_TEST_DATA_DIR) + "/anello_seed_frame.hex";
 #else

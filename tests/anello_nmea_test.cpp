@@ -59,7 +59,7 @@ std::string reencode(const typename Set::variant& v) {
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The ANELLO vectors from PROTOCOLS.md, byte for byte, at compile time.
+// The verified ANELLO vectors, byte for byte, at compile time.
 static_assert(nmea::checksum("PAPGPSCTRL,1") == 0x11);
 static_assert(nmea::checksum("PAPGPSCTRL,0") == 0x10);
 static_assert(nmea::checksum("PAPGPSCTRL,2") == 0x12);

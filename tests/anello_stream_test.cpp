@@ -602,7 +602,7 @@ struct StringMaker<outcome> {
 };
 }  // namespace Catch
 
-TEST_CASE("the seed example frame", "[anello][stream]") {
+TEST_CASE("the spec's example frame", "[anello][stream]") {
   const std::string stream = str(seed);
   const outcome o = read(stream);
   REQUIRE(o.items.size() == 1);
@@ -623,7 +623,7 @@ TEST_CASE("the seed example frame", "[anello][stream]") {
   CHECK_FALSE(item->frame.air_temp_c().has_value());
 }
 
-TEST_CASE("the seed frame from tests/data, between two sentences", "[anello][stream]") {
+TEST_CASE("the spec's example frame from tests/data, between two sentences", "[anello][stream]") {
 #ifdef SEAWIRE_TEST_DATA_DIR
   const std::string path = std::string(SEAWIRE_TEST_DATA_DIR) + "/anello_seed_frame.hex";
 #else
@@ -1308,7 +1308,7 @@ TEST_CASE("bytes, callbacks, reset", "[anello][stream]") {
     REQUIRE(b.has_value());
     CHECK(own(*b) == sentence(gpsctrl_line, 56, line_ending::crlf, 1));
   }
-  SECTION("the hex of a frame item is the seed's") {
+  SECTION("the hex of a frame item is the spec's") {
     stream_reader<> r;
     r.feed(std::span<const std::uint8_t>(bytes));
     const auto a = r.next();

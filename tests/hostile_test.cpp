@@ -50,10 +50,11 @@ using robotx_set = robotx::reports;
 using anello_set = merge_sets<anello::nmea_inputs, anello::nmea_outputs>::type;
 
 // The policy each family's receivers start from, and the strict one.
-constexpr parse_policy liberal{checksum_policy::ignore, true, true, false, false, 1024};
+constexpr parse_policy liberal{.checksum = checksum_policy::ignore};
 constexpr parse_policy strict = parse_policy::strict();
 
-// A verified sentence of each family (PROTOCOLS.md), without its line ending.
+// A verified sentence of each family (verified against real receivers and the specs), without its
+// line ending.
 constexpr std::string_view standard_line =
     "$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C";
 constexpr std::string_view kingfisher_line =
@@ -91,7 +92,7 @@ result<typename Set::variant> decode_with(const Set&, std::string_view line, par
   return Set::decode(line, p);
 }
 
-// The seed's 0xAB00 example frame (valid CRC).
+// The spec's 0xAB00 example frame (valid CRC).
 constexpr anello::frame_bytes seed_frame = {
     0xAB, 0x00, 0x00, 0x30, 0x8E, 0xF7, 0xF1, 0x76, 0x00, 0x59, 0x01, 0xF4, 0xEC, 0xFF,
     0xF9, 0x03, 0x36, 0x9A, 0x00, 0x00, 0xFF, 0xFF, 0x00, 0x00, 0x01, 0x90, 0x79, 0x43,

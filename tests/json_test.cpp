@@ -656,7 +656,7 @@ anello::frame_bytes seed_frame() {
 }
 }  // namespace
 
-TEST_CASE("ANELLO frame JSON: the seed frame, exact digits, null for not available") {
+TEST_CASE("ANELLO frame JSON: the spec's example frame, exact digits, null for not available") {
   const auto f = anello::decode_frame(seed_frame());
   REQUIRE(f);
   string_sink k;
@@ -690,7 +690,7 @@ TEST_CASE("ANELLO frame JSON read back: exact, strict, errors by field number") 
   o.members["wind_dir_rel_deg"] = {json_kind::number, "90"};
   auto r = anello::read_frame_json(o);
   REQUIRE(r);
-  // The seed sends 0xFFFF for air temperature; "not available" is written as 0x7FFF.
+  // The spec's example sends 0xFFFF for air temperature; "not available" is written as 0x7FFF.
   auto expected = anello::decode_frame(seed_frame()).value;
   expected.air_temp = 0x7FFF;
   CHECK(r.value == expected);
@@ -854,7 +854,7 @@ TEST_CASE("ANELLO frame JSON: validate() and read_frame_json agree on every fiel
       if (anello::validate(f)) {
         ++accepted;
         REQUIRE(back.ok());
-        // "Not available" comes back as the type's maximum (the seed's 0xFFFF air temperature
+        // "Not available" comes back as the type's maximum (the spec's 0xFFFF air temperature
         // as 0x7FFF), every other value as it was.
         anello::sensor_frame_raw expected = f;
         anello::detail::visit_sensor_fields([&](std::uint16_t, const auto& g) {

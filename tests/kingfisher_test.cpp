@@ -69,7 +69,7 @@ constexpr time_of_day hms(int h, int m, int s, std::uint32_t fraction, int place
           fraction, static_cast<std::uint8_t>(places)};
 }
 
-// Canonical vectors (PROTOCOLS.md "Verified vectors", plus CPALT/PYCLT with recomputed sums).
+// Canonical vectors (verified vectors, plus CPALT/PYCLT with recomputed sums).
 constexpr std::string_view real_cpimu =
     "$CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57\r\n";
 constexpr std::string_view real_gprmc =
@@ -112,7 +112,7 @@ static_assert(to_vehicle_reencodes<kf::pydev>(pydev_90));
 static_assert(to_vehicle_reencodes<kf::pydep>(pydep_vec));
 static_assert(to_vehicle_reencodes<kf::pyclt>(pyclt_on));
 static_assert(to_vehicle_reencodes<kf::pyclt>(pyclt_off));
-// The seed's CPNVG example carries the checksum of its BFNVG original.
+// The spec's CPNVG example carries the checksum of its BFNVG original.
 static_assert(nmea::decode<kf::cpnvg>("$CPNVG,081025.987,4221.81092,N,07106.84603,W,1,,,203.1,"
                                       "-3.4,4.5,081025.980*5B\r\n",
                                       kf::payload_policy())
@@ -264,7 +264,7 @@ TEST_CASE("simulator and payload driver vectors") {
     CHECK(m.temperature_c == decimal(0));
     CHECK(nmea::encode(m).view() == sim_cprbs);
   }
-  SECTION("the seed's CPNVG example is rejected for its checksum; *58 is right") {
+  SECTION("the spec's CPNVG example is rejected for its checksum; *58 is right") {
     const std::string_view seed =
         "$CPNVG,081025.987,4221.81092,N,07106.84603,W,1,,,203.1,-3.4,4.5,081025.980*5B\r\n";
     const auto bad = kf::decode_from_vehicle(seed);
@@ -334,7 +334,7 @@ TEST_CASE("optional and variant forms") {
     CHECK_FALSE(m.nav_timestamp.has_value());
     CHECK(m.effective_nav_timestamp() == hms(16, 49, 58, 858, 3));
     CHECK(m.wire_fields == 8);
-    CHECK(nmea::encode(m).view() == line);  // the seed's eight-field form, as it came
+    CHECK(nmea::encode(m).view() == line);  // the spec's eight-field form, as it came
     // The same values without the remembered blank: the real vehicle's seven-field form.
     m.wire_fields = 0;
     CHECK(nmea::encode(m).view() == real_cpimu);
@@ -594,7 +594,7 @@ TEST_CASE("malformed CPNVR") {
       true);
 }
 
-TEST_CASE("blank fields from the vehicle are \"no data\" (seed 2.4), not errors") {
+TEST_CASE("blank fields from the vehicle are \"no data\" (spec 2.4), not errors") {
   // Each measurement blank in turn, in every sentence that carries measurements.
   const std::vector<std::string> lines = {
       "CPRCM,164959.065,,234.3,-1.6,-6.6,164959.060",

@@ -16,7 +16,7 @@ using namespace seawire::nmea;
 namespace {
 constexpr std::string_view kGga =
     "$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C\r\n";
-// The seed's two BFNVG examples carry wrong checksums (really *4E).
+// The spec's two BFNVG examples carry wrong checksums (really *4E).
 constexpr std::string_view kSeedBfnvgUpper =
     "$BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,-3.4,4.5,081025.980*5B";
 constexpr std::string_view kSeedBfnvgLower =
@@ -90,7 +90,7 @@ TEST_CASE("checksum policies") {
   const auto verify = with_checksum(checksum_policy::verify_if_present);
   const auto ignore = with_checksum(checksum_policy::ignore);
 
-  SECTION("the seed's BFNVG examples are checksum mismatches, accepted only under ignore") {
+  SECTION("the spec's BFNVG examples are checksum mismatches, accepted only under ignore") {
     for (auto line : {kSeedBfnvgUpper, kSeedBfnvgLower}) {
       CHECK(parse(line, required).ec == errc::checksum_mismatch);
       CHECK(parse(line, verify).ec == errc::checksum_mismatch);

@@ -32,7 +32,7 @@ constexpr rx::hst_stamp hst(std::uint16_t y, std::uint8_t mo, std::uint8_t d, st
   return {{y, mo, d}, {h, mi, s, 0, 0}};
 }
 
-// The seed's stamp, 10 Dec 2018 16:12:29 HST, is 11 Dec 2018 02:12:29 UTC.
+// The spec's stamp, 10 Dec 2018 16:12:29 HST, is 11 Dec 2018 02:12:29 UTC.
 constexpr rx::instant seed_utc = utc(2018y / 12 / 11, 2h + 12min + 29s);
 static_assert(rx::to_hst(seed_utc).value == hst(2018, 12, 10, 16, 12, 29));
 static_assert(rx::from_hst(hst(2018, 12, 10, 16, 12, 29)).value == seed_utc);
@@ -365,7 +365,7 @@ TEST_CASE("scheduler: held reports go in the order they became due") {
 // ---------------------------------------------------------------------------------------------
 // validator
 
-TEST_CASE("validator: the seed's reports, a second apart, are clean") {
+TEST_CASE("validator: the spec's reports, a second apart, are clean") {
   rx::validator v({.expected_team = rx::team("AUVSI"), .clock_tolerance = 5s});
   const std::string_view lines[] = {
       "$RXHRB,101218,161229,21.31198,N,157.88972,W,AUVSI,2,1*06\r\n",

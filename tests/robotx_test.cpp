@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// RobotX 2018 reports: the seed's five examples, PROTOCOLS.md's vectors, malformed input per
+// RobotX 2018 reports: the spec's five examples, verified vectors, malformed input per
 // message, and round trips over generated values.
 #include "seawire/robotx/messages.hpp"
 
@@ -21,14 +21,14 @@ namespace rx = seawire::robotx;
 using nmea::decimal;
 using seawire::errc;
 
-// The seed's examples, with the CR LF the spec ends every message with.
+// The spec's examples, with the CR LF the spec ends every message with.
 constexpr std::string_view seed_hrb =
     "$RXHRB,101218,161229,21.31198,N,157.88972,W,AUVSI,2,1*06\r\n";
 constexpr std::string_view seed_gat = "$RXGAT,101218,161229,AUVSI,1,2,Y,RGB*25\r\n";
 constexpr std::string_view seed_cod = "$RXCOD,101218,161229,AUVSI,RGB*49\r\n";
 constexpr std::string_view seed_dok = "$RXDOK,101218,161229,AUVSI,R,TRIAN*28\r\n";
 constexpr std::string_view seed_del = "$RXDEL,101218,161229,AUVSI,R,CIRCL*32\r\n";
-// PROTOCOLS.md: a 2022 heartbeat (same layout), and one that is wrong on purpose.
+// Verified too: a 2022 heartbeat (same layout), and one that is wrong on purpose.
 constexpr std::string_view hrb_2022 = "$RXHRB,111221,161229,21.31198,N,157.88972,W,ROBOT,2,1*11";
 constexpr std::string_view hrb_bad = "$RXHRB,29620,1384,0,N,0,E,USYD_ROWBOT,3,1*5e";
 
@@ -80,7 +80,7 @@ void check_rows(const std::vector<bad_row>& rows) {
 
 }  // namespace
 
-TEST_CASE("RXHRB: the seed's heartbeat decodes to the values in Table 1") {
+TEST_CASE("RXHRB: the spec's heartbeat decodes to the values in Table 1") {
   const auto r = nmea::decode<rx::rxhrb>(seed_hrb, rx::judge_policy);
   REQUIRE(r.ok());
   const rx::rxhrb& m = r.value;
@@ -100,7 +100,7 @@ TEST_CASE("RXHRB: the seed's heartbeat decodes to the values in Table 1") {
   CHECK(encoded(m) == seed_hrb);
 }
 
-TEST_CASE("RXGAT: the seed's gates report decodes to the values in Table 2") {
+TEST_CASE("RXGAT: the spec's gates report decodes to the values in Table 2") {
   const auto r = nmea::decode<rx::rxgat>(seed_gat, rx::judge_policy);
   REQUIRE(r.ok());
   CHECK(r.value.date == nmea::date{2018, 12, 10});
@@ -117,7 +117,7 @@ TEST_CASE("RXGAT: the seed's gates report decodes to the values in Table 2") {
   CHECK(encoded(r.value) == seed_gat);
 }
 
-TEST_CASE("RXCOD: the seed's light buoy report decodes to the values in Table 3") {
+TEST_CASE("RXCOD: the spec's light buoy report decodes to the values in Table 3") {
   const auto r = nmea::decode<rx::rxcod>(seed_cod, rx::judge_policy);
   REQUIRE(r.ok());
   CHECK(r.value.date == nmea::date{2018, 12, 10});
@@ -127,7 +127,7 @@ TEST_CASE("RXCOD: the seed's light buoy report decodes to the values in Table 3"
   CHECK(encoded(r.value) == seed_cod);
 }
 
-TEST_CASE("RXDOK: the seed's dock report decodes to the values in Table 4") {
+TEST_CASE("RXDOK: the spec's dock report decodes to the values in Table 4") {
   const auto r = nmea::decode<rx::rxdok>(seed_dok, rx::judge_policy);
   REQUIRE(r.ok());
   CHECK(r.value.date == nmea::date{2018, 12, 10});
@@ -138,7 +138,7 @@ TEST_CASE("RXDOK: the seed's dock report decodes to the values in Table 4") {
   CHECK(encoded(r.value) == seed_dok);
 }
 
-TEST_CASE("RXDEL: the seed's deliver report decodes to the values in Table 5") {
+TEST_CASE("RXDEL: the spec's deliver report decodes to the values in Table 5") {
   const auto r = nmea::decode<rx::rxdel>(seed_del, rx::judge_policy);
   REQUIRE(r.ok());
   CHECK(r.value.date == nmea::date{2018, 12, 10});

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// Sandshark SPI messages: the verified vectors, the seed's examples, the role policies,
+// Sandshark SPI messages: the verified vectors, the spec's examples, the role policies,
 // malformed input per message (errc + field), and round trips over generated values.
 
 #include <catch2/catch.hpp>
@@ -70,7 +70,7 @@ static_assert(round_trips<bfmis>("$BFMIS,081025.987,dive1.xml,Running /var/log/m
                                  from_vehicle_policy));
 static_assert(round_trips<bpabt>("$BPABT,081025.987,leak detected,1*6B\r\n", to_vehicle_policy));
 static_assert(round_trips<bpver>("$BPVER,081025.987,1.0*6A\r\n", to_vehicle_policy));
-// The seed's BFNVG example with its checksum corrected.
+// The spec's BFNVG example with its checksum corrected.
 static_assert(round_trips<bfnvg>(
     "$BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,-3.4,4.5,081025.980*4E\r\n",
     from_vehicle_policy));
@@ -132,7 +132,7 @@ TEST_CASE("BFNVG vector from the training vehicle") {
   CHECK(n->nav_timestamp == tod(23, 11, 31, 55, 2));
 }
 
-TEST_CASE("the seed's BFNVG examples carry wrong checksums and are rejected") {
+TEST_CASE("the spec's BFNVG examples carry wrong checksums and are rejected") {
   const std::string body =
       "BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,-3.4,4.5,081025.980";
   for (const char* cs : {"*5B", "*5b"}) {
@@ -142,7 +142,7 @@ TEST_CASE("the seed's BFNVG examples carry wrong checksums and are rejected") {
     CHECK(r.ec == errc::checksum_mismatch);
     CHECK(decode<bfnvg>(line, from_vehicle_policy).ec == errc::checksum_mismatch);
   }
-  // With the right checksum (*4E) the same line is the seed's example as meant.
+  // With the right checksum (*4E) the same line is the spec's example as meant.
   const auto ok = decode<bfnvg>("$" + body + "*4E", from_vehicle_policy);
   REQUIRE(ok.ok());
   CHECK(ok.value.lat.degrees() == Approx(42.0 + 21.81092 / 60));
@@ -267,7 +267,7 @@ TEST_CASE("BFACK with and without the trailing fields, each written back as it c
   }
 }
 
-TEST_CASE("the seed's other messages") {
+TEST_CASE("the spec's other messages") {
   const auto sht = decode_from_vehicle("$BFSHT,081025.987*71");
   REQUIRE(sht.ok());
   REQUIRE(std::holds_alternative<bfsht>(sht.value));

@@ -3,7 +3,7 @@
 """Writes the sample logs in examples/data/ (run from anywhere; deterministic).
 
 One realistic log per protocol family, CR LF, canonical (uppercase checksums), built around the
-verified vectors of PROTOCOLS.md with generated lines around them (plausible motion, correct
+verified vectors with generated lines around them (plausible motion, correct
 checksums), plus bad.nmea, a few lines that must be rejected, with good lines between them.
 The programs' tests (tests/programs/) know these files line by line: regenerate, then update
 the expectations there.
@@ -217,7 +217,7 @@ def sandshark():
 
 
 # ------------------------------------------------------------------------------------------------
-# RobotX 2018: the seed's five reports, then a team's heartbeat at 1 Hz while its vehicle crosses
+# RobotX 2018: the spec's five reports, then a team's heartbeat at 1 Hz while its vehicle crosses
 # the course (positions moving east), the task reports once each, and a 2022-style heartbeat.
 
 
@@ -292,7 +292,7 @@ def anello():
 
 # ------------------------------------------------------------------------------------------------
 # ANELLO, one RS-232 input carrying both: the NMEA speed aiding above and 0xAB00 binary sensor
-# frames at 4 Hz (the spec's seed frame first), back to back with no line breaks of their own.
+# frames at 4 Hz (the spec's example frame first), back to back with no line breaks of their own.
 # Some payloads hold 0x0A, 0x0D and '$' bytes, which are data inside a frame.
 
 SEED_FRAME = bytes.fromhex(

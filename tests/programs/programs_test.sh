@@ -109,7 +109,7 @@ case_json() {
   expect_eq "BFACK without a description (6 fields)" \
     '{"type":"BFACK","timestamp":"23:12:05.100","command":"RMB","command_timestamp":"23:12:04.72","behavior_id":null,"status":"2","future_use":0,"description":null,"trailing":null}' \
     "$(grep -m1 '"23:12:05.100"' "$s")"
-  # RobotX: the seed's five reports, decimal-degree positions signed.
+  # RobotX: the spec's five reports, decimal-degree positions signed.
   expect_eq "RXHRB" \
     '{"type":"RXHRB","date":"2018-12-10","time":"16:12:29","latitude":21.31198,"longitude":-157.88972,"team_id":"AUVSI","system_mode":"2","auv_status":"1"}' \
     "$(line 1 "$r")"
@@ -199,7 +199,7 @@ case_nmea() {
   expect_rc "decode --format nmea, liberal input" 0 "$decode" --format nmea <"$work/in"
   expect_eq "canonical output" "$(crlf '$BPLOG,ACK,ON*1E' '$PYDIR,45,55*57' '$PYDIR,45,55*57' \
     "$foo")" "$(cat "$work/out")"
-  # Fields that may be left out but came blank go back blank: the seed's eight-field CPIMU, RMC
+  # Fields that may be left out but came blank go back blank: the spec's eight-field CPIMU, RMC
   # 2.3/4.1 with a blank mode or status, VBW with blank NMEA 3.0 stern fields, the spec's
   # six-field CPRBS with a blank battery id.
   crlf "$(seal 'CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172,')" \
@@ -254,10 +254,10 @@ case_roundtrip() {
   expect_eq "kingfisher: padded longitude is the only change" \
     "$(sed 's/,\([0-9]\{4\}\.[0-9]*\),W,/,0\1,W,/' "$data/kingfisher.nmea" | tr -d '\r' | cut -d'*' -f1)" \
     "$(tr -d '\r' <"$work/kingfisher.again" | cut -d'*' -f1)"
-  # ANELLO: only the seed frame changes, whose air temperature 0xFFFF ("not available" in the
-  # seed's own example) is sent as the spec's 0x7FFF: the frame's byte 52 and its CRC (4-7),
+  # ANELLO: only the spec's example frame changes, whose air temperature 0xFFFF ("not available" in the
+  # spec's own example) is sent as the spec's 0x7FFF: the frame's byte 52 and its CRC (4-7),
   # counted from 1 in the file (the frame follows an 18-byte sentence).
-  expect_eq "anello_mixed: only the seed frame's air temperature and CRC differ" \
+  expect_eq "anello_mixed: only the spec's example frame's air temperature and CRC differ" \
     "23 24 25 26 71" \
     "$(cmp -l "$work/anello_mixed.again" "$data/anello_mixed.nmea" | awk '{printf "%s ", $1}' |
       sed 's/ $//')"
@@ -440,7 +440,7 @@ case_frames() {
   cp "$work/out" "$m"
   expect_eq "43 frames and 125 sentences" "43 125" \
     "$(grep -c '"type":"AB00"' "$m") $(grep -vc '"type":"AB00"' "$m")"
-  expect_eq "the seed frame, after the first sentence" \
+  expect_eq "the spec's example frame, after the first sentence" \
     '{"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,"sog_mps":0.0,"cog_deg":null,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,"geoid_sep_m":null,"hdop":null,"fix_quality":null,"motor_pct":0,"rudder_pct":0,"stw_mps":0.0,"wind_speed_abs_mps":0.2,"wind_dir_abs_deg":108,"wind_speed_rel_mps":0.3,"wind_dir_rel_deg":90,"air_temp_c":null,"pressure_hpa":null}' \
     "$(line 2 "$m")"
   expect_eq "a frame holding '$', CR and LF bytes" \
@@ -470,7 +470,7 @@ case_frames() {
   expect_rc "encode frames" 1 "$encode" <"$work/in"
   expect_eq "one frame of 56 bytes, AB 00 00 30 ..." "56 ab000030" \
     "$(wc -c <"$work/out") $(head -c 4 "$work/out" | od -An -tx1 | tr -d ' \n')"
-  expect_eq "the frame's payload is the seed's, but for the air temperature" \
+  expect_eq "the frame's payload is the spec's, but for the air temperature" \
     "${seed_frame:16:88}7FFFFFFF" "$(tail -c 48 "$work/out" | od -An -tx1 | tr -d ' \n' | tr a-f A-F)"
   expect_eq "frame errors name the field" "$(printf '%s\n' \
     'seawire-encode: line 2: AB00 field 1 (heading_deg) 361: out_of_range: value outside the range the spec allows' \
@@ -521,7 +521,7 @@ case_frame_ranges() {
   expect_eq "only the sentences are written" "$(crlf "$(seal PYDIR,1,2)" "$(seal PYDIR,3,4)")" \
     "$(cat "$work/out")"
   expect_eq "one reason per frame on stderr" 10 "$(wc -l <"$work/err")"
-  # The edges of every range, and "not available" (the seed's 0xFFFF air temperature too), decode
+  # The edges of every range, and "not available" (the spec's 0xFFFF air temperature too), decode
   # and come back from seawire-encode bit for bit (0xFFFF as the spec's 0x7FFF). Fields are
   # separated by '_' for reading.
   local na=FFFF_7FFFFFFF_7FFFFFFF_FFFF_FFFF

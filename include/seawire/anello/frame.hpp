@@ -55,7 +55,7 @@ inline constexpr std::size_t sensor_field_count = 19;
 
 using frame_bytes = std::array<std::uint8_t, frame_size>;
 
-/// GPS time as the frame carries it: milliseconds of Unix time (UTC, no leap seconds). The seed
+/// GPS time as the frame carries it: milliseconds of Unix time (UTC, no leap seconds). The spec's
 /// example 0x00000190794363D0 is 2024-07-03 15:42:58.000 UTC read this way, so it is not the GPS
 /// time scale (which would be 18 s ahead).
 using time_ms = std::chrono::sys_time<std::chrono::milliseconds>;

@@ -47,7 +47,7 @@ namespace seawire::kingfisher {
 
 /// Navigation update. Real vehicles write unpadded longitude degrees ("7105.44878") and 0, not
 /// blank, for altitude and depth; both are kept as sent. `effective_nav_timestamp()` applies
-/// the spec's "blank field 12 means field 1". (The seed's example is a BFNVG line; under CPNVG
+/// the spec's "blank field 12 means field 1". (The spec's example is a BFNVG line; under CPNVG
 /// its checksum would be *58, not *5B.)
 ///
 ///   $CPNVG,081025.987,4221.81092,N,7106.84603,W,1,0,0,203.1,-3.4,4.5,081025.980*68
@@ -61,7 +61,7 @@ using cpnvg = bluefin::nav_update<"CPNVG">;
 using cpnvr = bluefin::velocity_update<"CPNVR">;
 
 /// Raw compass reading, repackaged by the vehicle. The real vehicle reports compass id 0 (the
-/// spec numbers compasses from 1). Any field after the timestamp may be blank, "no data" (seed
+/// spec numbers compasses from 1). Any field after the timestamp may be blank, "no data" (spec
 /// 2.4), which reads as nullopt.
 ///
 ///   $CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,164959.060*62
@@ -96,7 +96,7 @@ struct cprcm {
 /// fields); the real vehicle leaves it out (five fields). The two forms are told apart by the
 /// field count. Member comments number the spec's six fields; errors report the position on
 /// the wire, so in the five-field form the stack voltage is field 2. A blank measurement is
-/// "no data" (seed 2.4) and reads as nullopt.
+/// "no data" (spec 2.4) and reads as nullopt.
 ///
 ///   $CPRBS,105707.24,1,15.2,15.1,15.3,0*67                  spec form, 6 fields
 ///          1         2 3    4    5    6
@@ -129,8 +129,8 @@ struct cprbs {
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
 /// y starboard, z down; rates by the right-hand rule). The real vehicle sends seven fields, no
 /// nav timestamp; nullopt writes that form, and an eighth field that came blank is written back
-/// blank (wire_fields). (The seed's sentence id is garbled; it is CPIMU.) A blank rate or
-/// acceleration is "no data" (seed 2.4) and reads as nullopt.
+/// blank (wire_fields). (The spec's sentence id is garbled; it is CPIMU.) A blank rate or
+/// acceleration is "no data" (spec 2.4) and reads as nullopt.
 ///
 ///   $CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57
 ///          1          2         3         4         5         6        7         [8]
@@ -145,7 +145,7 @@ struct cpimu {
   // 8 [NavTimestamp] when the IMU measured; blank or
   // absent means "the same as field 1"
   std::optional<nmea::time_of_day> nav_timestamp;
-  std::uint8_t wire_fields = 0;  // 8 when field 8 came blank: written back blank (the seed's
+  std::uint8_t wire_fields = 0;  // 8 when field 8 came blank: written back blank (the spec's
                                  //   form); 0: left out when nav_timestamp has no value
 
   /// Field 8, or field 1 when field 8 is blank or absent.
@@ -166,7 +166,7 @@ struct cpimu {
       nmea::field<&cpimu::nav_timestamp>("nav_timestamp", nmea::may_be_absent));
 };
 
-/// Lights state. Not in the seed; real vehicles send it (PYCLT switches the lights).
+/// Lights state. Not in the spec; real vehicles send it (PYCLT switches the lights).
 ///
 ///   $CPALT,164959.100,1*62
 ///          1          2
@@ -304,7 +304,7 @@ struct pydir {
                                                                 nmea::in_range(-100, 100)));
 };
 
-/// Lights control. Not in the seed; real vehicles accept it and report the state in CPALT.
+/// Lights control. Not in the spec; real vehicles accept it and report the state in CPALT.
 ///
 ///   $PYCLT,1*4F
 ///          1
@@ -327,7 +327,7 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
 
 /// How a payload reads the vehicle: "sentences sent FROM the vehicle will always include a
 /// checksum", so one is required; the vehicle writes every field (a blank one is "no data",
-/// seed 2.4), so a sentence that stops early is too_few_fields. Otherwise the common liberal
+/// spec 2.4), so a sentence that stops early is too_few_fields. Otherwise the common liberal
 /// defaults.
 [[nodiscard]] constexpr nmea::parse_policy payload_policy() noexcept {
   nmea::parse_policy p;

@@ -417,7 +417,6 @@ struct is_text : std::false_type {};
 template <std::size_t N>
 struct is_text<text<N>> : std::true_type {};
 
-
 }  // namespace detail
 
 /// One value, by the conventions at the top of this file.
@@ -442,8 +441,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
       }
     }
     detail::json_uint(s, static_cast<std::uint64_t>(v));
-  } else if constexpr (is_ddmm_position<T> ||
-                       is_degrees_position<T>) {
+  } else if constexpr (is_ddmm_position<T> || is_degrees_position<T>) {
     detail::json_decimal(s, to_decimal_degrees(v));
   } else if constexpr (std::is_same_v<T, magnetic_variation>) {
     // Signed degrees with the wire's digits, west negative; null for a letter without a value.
@@ -677,12 +675,11 @@ template <class T>
     sentence_view s;
     s.body = v.text;
     s.field_count = 1;
-    const parse_policy strict{checksum_policy::ignore, true, true, false, true, 1024};
+    const parse_policy strict{.checksum = checksum_policy::ignore, .strict_values = true};
     field_reader r(s, strict);
     if (v.text.empty()) return errc::bad_number;
     return codec<T>::read(r, out);
-  } else if constexpr (is_ddmm_position<T> ||
-                       is_degrees_position<T>) {
+  } else if constexpr (is_ddmm_position<T> || is_degrees_position<T>) {
     decimal d;
     const errc e = detail::json_number(v, d);
     if (e != errc::ok) return e == errc::bad_number ? detail::coordinate_traits<T>::axis::error : e;

@@ -63,7 +63,7 @@ struct field_options {
 namespace option {
 struct range {
   decimal lo, hi;
-  bool has_lo, has_hi, hi_open;
+  bool has_lo = false, has_hi = false, hi_open = false;
   constexpr void apply(field_options& o) const noexcept {
     o.min = lo;
     o.has_min = has_lo;
@@ -109,15 +109,15 @@ struct length {
 
 /// lo <= value <= hi.
 [[nodiscard]] constexpr option::range in_range(decimal lo, decimal hi) noexcept {
-  return {lo, hi, true, true, false};
+  return {.lo = lo, .hi = hi, .has_lo = true, .has_hi = true};
 }
 /// lo <= value < hi (headings: [0, 360)).
 [[nodiscard]] constexpr option::range in_range_below(decimal lo, decimal hi) noexcept {
-  return {lo, hi, true, true, true};
+  return {.lo = lo, .hi = hi, .has_lo = true, .has_hi = true, .hi_open = true};
 }
 /// lo <= value.
 [[nodiscard]] constexpr option::range at_least(decimal lo) noexcept {
-  return {lo, {}, true, false, false};
+  return {.lo = lo, .hi = {}, .has_lo = true};
 }
 /// A double given to nmea::builder for this field is rounded to n fraction digits (minute
 /// digits for a DDMM.m position): what the spec or real senders write. A call may ask for
@@ -308,8 +308,8 @@ template <auto M>
 /// A message with fields that senders may leave out (may_be_absent at the end, or a field of
 /// only the longer form) that remembers, in a member `std::uint8_t wire_fields`, the field count
 /// of the sentence it was decoded from when that is more than its values need: one of those
-/// fields came blank instead of left out. Encode then writes that many fields, so the seed's
-/// eight-field "$CPIMU,...,-0.932172,*hh" goes back out with its empty eighth field, and a
+/// fields came blank instead of left out. Encode then writes that many fields, so the Kingfisher
+/// spec's eight-field "$CPIMU,...,-0.932172,*hh" goes back out with its empty eighth field, and a
 /// six-field CPRBS with a blank battery id keeps its six. 0 (the default, and what decode
 /// leaves otherwise) writes the fields the values need.
 template <class T>

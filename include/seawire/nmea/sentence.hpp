@@ -61,7 +61,11 @@ struct parse_policy {
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.
   [[nodiscard]] static constexpr parse_policy strict() noexcept {
-    return {checksum_policy::required, false, false, true, true, 1024};
+    return {.checksum = checksum_policy::required,
+            .lowercase_hex = false,
+            .extra_fields = false,
+            .require_crlf = true,
+            .strict_values = true};
   }
 };
 
@@ -224,16 +228,6 @@ inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
   scan_body_bytes(line, b);
   return b;
 }
-
-[[nodiscard]] constexpr result<sentence_view> fail(errc e, std::size_t column) noexcept {
-  result<sentence_view> r;
-  r.ec = e;
-  r.column = static_cast<std::uint16_t>(column > 0xFFFF ? 0xFFFF : column);
-  return r;
-}
-}  // namespace detail
-
-namespace detail {
 
 /// parse() into `s`, which the caller owns: the error, and in `column` where it is. Everything
 /// is written in place, so parse() returns one object and the compiler copies nothing.

@@ -298,7 +298,7 @@ class validator {
 
  private:
   static constexpr nmea::parse_policy inspect_policy(const nmea::parse_policy& p) noexcept {
-    return {nmea::checksum_policy::ignore, true, true, false, false, p.max_length};
+    return {.checksum = nmea::checksum_policy::ignore, .max_length = p.max_length};
   }
 
   /// Each declared field of M read on its own: a reader is walked to the field's first wire

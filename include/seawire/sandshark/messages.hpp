@@ -59,7 +59,7 @@ struct bfver {
 // ---------------------------------------------------------------------------------------------
 // from the vehicle: status (SPI 6), sent only after BPLOG asks for them
 
-/// BFNVG: navigation update (the layout Kingfisher's CPNVG copies; the seed's format line is
+/// BFNVG: navigation update (the layout Kingfisher's CPNVG copies; the SPI's format line is
 /// garbled, the example line is right).
 using bfnvg = bluefin::nav_update<"BFNVG">;
 /// BFNVR: velocity and rate update.
@@ -183,7 +183,7 @@ struct bfack {
       nmea::field<&bfack::trailing>("trailing", nmea::may_be_absent));
 };
 
-/// BFCTL: backseat control handed over (1) or taken back (0). The seed prints its format line
+/// BFCTL: backseat control handed over (1) or taken back (0). The SPI prints its format line
 /// with the BFVER address by mistake.
 ///
 ///   $BFCTL,081025.987,1*78
