@@ -120,6 +120,8 @@ struct light_pattern {
 template <>
 struct seawire::nmea::codec<seawire::robotx::light_pattern> {
   using value_type = seawire::robotx::light_pattern;
+  /// What the wire field holds, for generated references.
+  static constexpr std::string_view form = "three colours `R` `G` `B`, first to last (`RGB`)";
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 3;
   static constexpr bool allows_blank = false;

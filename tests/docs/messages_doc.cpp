@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: BSL-1.0
+// Writes docs/messages.md, the reference of every message, from the messages' own descriptions:
+// nothing in it is typed by hand, so it cannot disagree with what the library decodes. The
+// test docs_messages_current fails when the committed copy differs from this program's output.
+//
+//   seawire_messages_doc > docs/messages.md
+
+#include <charconv>
+#include <cstdio>
+#include <set>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+
+#include "seawire/anello/frame_json.hpp"
+#include "seawire/seawire.hpp"
+
+namespace {
+
+using namespace seawire;
+
+std::string number(const nmea::decimal& d) {
+  char buf[48];
+  const auto r = nmea::to_chars(buf, buf + sizeof buf, d);
+  return std::string(buf, r.ptr);
+}
+
+std::string quoted(std::string_view s) { return "`" + std::string(s) + "`"; }
+
+// What the wire field holds, told from the member's type.
+template <class V>
+std::string form_of(const nmea::field_options& o) {
+  if constexpr (requires { nmea::codec<V>::form; }) {
+    return std::string(nmea::codec<V>::form);
+  } else if constexpr (std::is_same_v<V, nmea::decimal>) {
+    return "number";
+  } else if constexpr (std::is_same_v<V, bool>) {
+    return "flag, `0` or `1`";
+  } else if constexpr (std::is_integral_v<V>) {
+    std::string s = "whole number";
+    if (o.zero_pad > 1) s += ", at least " + std::to_string(o.zero_pad) + " digits";
+    return s;
+  } else if constexpr (std::is_same_v<V, nmea::latitude>) {
+    return "latitude `DDMM.m`, then `N`/`S`";
+  } else if constexpr (std::is_same_v<V, nmea::longitude>) {
+    return "longitude `DDDMM.m`, then `E`/`W`";
+  } else if constexpr (std::is_same_v<V, nmea::decimal_latitude>) {
+    return "latitude in decimal degrees, then `N`/`S`";
+  } else if constexpr (std::is_same_v<V, nmea::decimal_longitude>) {
+    return "longitude in decimal degrees, then `E`/`W`";
+  } else if constexpr (std::is_same_v<V, nmea::magnetic_variation>) {
+    return "degrees, then `E`/`W`";
+  } else if constexpr (std::is_same_v<V, nmea::time_of_day>) {
+    return "UTC time `hhmmss.s`";
+  } else if constexpr (std::is_same_v<V, nmea::date>) {
+    return "date `ddmmyy`";
+  } else if constexpr (requires { V::capacity; }) {
+    std::string s = o.code_chars ? "code (upper-case letters, digits)" : "text";
+    if (o.min_length == o.max_length)
+      s += ", " + std::to_string(o.min_length) + " characters";
+    else if (o.max_length != 0xFFFF)
+      s += ", " + std::to_string(o.min_length) + " to " + std::to_string(o.max_length) +
+           " characters";
+    else
+      s += ", up to " + std::to_string(V::capacity) + " characters";
+    return s;
+  } else if constexpr (nmea::char_enum_like<V>) {
+    std::string s = "one of ";
+    const std::string_view letters = enum_chars(V{});
+    for (std::size_t i = 0; i < letters.size(); ++i) {
+      if (i != 0) s += " ";
+      s += quoted(letters.substr(i, 1));
+    }
+    return s;
+  } else if constexpr (nmea::word_enum_like<V>) {
+    std::string s = "one of ";
+    bool first = true;
+    for (const std::string_view w : enum_words(V{})) {
+      if (!first) s += " ";
+      s += quoted(w);
+      first = false;
+    }
+    return s;
+  } else {
+    static_assert(!sizeof(V), "messages_doc: say what this type's wire field holds");
+  }
+}
+
+// The values the field allows beyond its form.
+std::string allowed(const nmea::field_options& o) {
+  std::string s;
+  const auto add = [&s](const std::string& part) { s += (s.empty() ? "" : "; ") + part; };
+  if (o.has_min && o.has_max)
+    add(number(o.min) + (o.max_exclusive ? " to below " : " to ") + number(o.max));
+  else if (o.has_min)
+    add("at least " + number(o.min));
+  else if (o.has_max)
+    add((o.max_exclusive ? "below " : "at most ") + number(o.max));
+  if (o.max_places >= 0) add("at most " + std::to_string(o.max_places) + " fraction digits");
+  if (o.unit != 0) add("unit field " + quoted(std::string_view(&o.unit, 1)));
+  return s;
+}
+
+template <class M>
+void message(std::string_view section) {
+  constexpr auto& d = M::nmea;
+  std::string wire = "$" + std::string(d.address);
+  std::string rows;
+  unsigned first = 1;
+  d.fields.apply([&](const auto&... f) {
+    (
+        [&](const auto& field) {
+          using F = std::remove_cvref_t<decltype(field)>;
+          using V = typename F::value_type;
+          const unsigned last = first + field.width() - 1;
+          const std::string numbers = first == last
+                                          ? std::to_string(first)
+                                          : std::to_string(first) + "-" + std::to_string(last);
+          wire += "," + std::string(field.name);
+          if constexpr (nmea::codec<V>::width == 2) {
+            wire += std::is_same_v<V, nmea::latitude> || std::is_same_v<V, nmea::decimal_latitude>
+                        ? ",N/S"
+                        : ",E/W";
+          }
+          if (field.opts.unit != 0) wire += "," + std::string(1, field.opts.unit);
+          std::string when;
+          if (field.opts.when_count != 0)
+            when = "only in the " + std::to_string(field.opts.when_count) + "-field form";
+          else if (field.opts.may_be_absent)
+            when = "may be left out";
+          std::string precision =
+              field.opts.precision >= 0 ? std::to_string(field.opts.precision) : "";
+          if (field.opts.precision >= 0 && nmea::is_ddmm_position<V>) precision += " (minutes)";
+          rows += "| " + numbers + " | " + quoted(field.name) + " | " + form_of<V>(field.opts) +
+                  " | " + allowed(field.opts) + " | " + (F::is_optional ? "yes" : "no") + " | " +
+                  when + " | " + precision + " |\n";
+          first = last + 1;
+        }(f),
+        ...);
+  });
+  std::printf("### %s\n\n", std::string(d.address).c_str());
+  std::printf("%s", std::string(section).c_str());
+  if (d.any_talker) std::printf(" Any talker: `--` stands for GP, GN, II, ...");
+  std::printf("\n\n```\n%s*hh\n```\n\n", wire.c_str());
+  std::printf("| Field | Name (JSON key) | Wire form | Allowed | Blank | Present | Precision |\n");
+  std::printf("|---|---|---|---|---|---|---|\n%s\n", rows.c_str());
+}
+
+std::set<std::string> written;
+
+template <class... Ms>
+void set(std::string_view title, std::string_view section, nmea::message_set<Ms...>*) {
+  std::printf("## %s\n\n", std::string(title).c_str());
+  (
+      [&] {
+        const std::string address(Ms::nmea.address);
+        if (written.insert(address).second) {
+          message<Ms>(section);
+        } else {
+          std::printf("### %s\n\n%s As described above.\n\n", address.c_str(),
+                      std::string(section).c_str());
+        }
+      }(),
+      ...);
+}
+
+template <class Set>
+Set* of() {
+  return nullptr;
+}
+
+template <class Raw>
+std::string wire_type() {
+  return std::string(std::is_signed_v<Raw> ? "int" : "uint") + std::to_string(8 * sizeof(Raw));
+}
+
+// The 0xAB00 frame, from anello::sensor_fields.
+void frame() {
+  std::printf(
+      "## ANELLO: the 0xAB00 binary sensor frame\n\n"
+      "56 bytes, big-endian: `AB 00` (frame id), `00 30` (payload length 48), the CRC-32 of the\n"
+      "payload, then the fields below. A field's highest value (`0xFFFF` for a uint16, `0x7FFF`\n"
+      "for an int16, ...) means \"not available\" and reads as `std::nullopt`. Physical value =\n"
+      "wire value / divisor.\n\n"
+      "| Field | Name | JSON key | Offset | Wire type | Divisor | Allowed |\n"
+      "|---|---|---|---|---|---|---|\n");
+  std::uint16_t n = 0;
+  std::apply(
+      [&](const auto&... field) {
+        (
+            [&] {
+              ++n;
+              using raw = typename std::remove_cvref_t<decltype(field)>::raw_type;
+              std::string allowed;
+              if (field.allowed)
+                allowed =
+                    std::to_string(field.allowed->lo) + " to " + std::to_string(field.allowed->hi);
+              if (field.also_not_available)
+                allowed += std::string(allowed.empty() ? "" : "; ") +
+                           "also not available: " + std::to_string(*field.also_not_available);
+              std::printf("| %u | `%s` | `%s` | %zu | %s | %lld | %s |\n", unsigned{n},
+                          std::string(field.name).c_str(),
+                          std::string(anello::about_sensor_field(n).json_key).c_str(), field.offset,
+                          wire_type<raw>().c_str(), static_cast<long long>(field.divisor),
+                          allowed.c_str());
+            }(),
+            ...);
+      },
+      anello::sensor_fields);
+  std::printf("\n");
+}
+
+}  // namespace
+
+int main() {
+  std::printf(
+      "# Messages\n\n"
+      "Every message seawire decodes and encodes, generated from the descriptions in the headers\n"
+      "(`tests/docs/messages_doc.cpp`; the test `docs_messages_current` fails when this file\n"
+      "is out of date). Regenerate with `build/<dir>/tests/seawire_messages_doc > "
+      "docs/messages.md`.\n\n"
+      "Columns: **Field** is the wire field number after the address (errors name the same\n"
+      "numbers; a field that spans two wire fields, such as a position and its hemisphere, has\n"
+      "both). **Name** is the C++ member and the JSON key (positions are written to JSON as\n"
+      "signed decimal degrees). **Blank** says whether an empty field is accepted (it reads as\n"
+      "`std::nullopt`). **Present** says when a field may be missing from the sentence\n"
+      "altogether. **Precision** is the number of fraction digits `nmea::builder` rounds a\n"
+      "double to by default.\n\n");
+  set("Kingfisher: vehicle to payload", "Kingfisher, from the vehicle.",
+      of<kingfisher::from_vehicle>());
+  set("Kingfisher: payload to vehicle", "Kingfisher, a command to the vehicle.",
+      of<kingfisher::to_vehicle>());
+  set("Sandshark: vehicle to payload", "Sandshark SPI, from the vehicle.",
+      of<sandshark::from_vehicle>());
+  set("Sandshark: payload to vehicle", "Sandshark SPI, from the payload.",
+      of<sandshark::to_vehicle>());
+  set("RobotX: team to judges", "RobotX 2018 report.", of<robotx::reports>());
+  set("ANELLO: inputs to the INS", "ANELLO Maritime INS input.", of<anello::nmea_inputs>());
+  set("ANELLO: output of the INS", "ANELLO Maritime INS output.", of<anello::nmea_outputs>());
+  frame();
+  return 0;
+}
