@@ -80,7 +80,7 @@ constexpr time_ms utc(int y, unsigned mo, unsigned d, int h, int mi, int s, int 
 
 }  // namespace
 
-// --- compile time: the spec's example frame decodes, reads right and re-encodes to the same bytes ------
+// --- compile time: the spec's example frame decodes, reads right, re-encodes to the same bytes
 static_assert(seawire::crc32("123456789") == 0xCBF43926U);
 static_assert(decode_frame(seed).ok());
 static_assert(encode_frame(seed_frame) == seed);

@@ -17,8 +17,8 @@
 // (fix_quality, an int in sensor_values) is no measurement and is not rounded: it must be written
 // as an integer (7, not 7.5 or 7.0; bad_number otherwise), as the integer fields of sentences
 // must. Every frame validate() accepts is written by write_json as JSON that reads back as the
-// same frame (with "not available" as each type's maximum: the spec example's 0xFFFF air temperature
-// comes back as 0x7FFF); a frame validate() refuses gives JSON that is refused.
+// same frame (with "not available" as each type's maximum: the spec example's 0xFFFF air
+// temperature comes back as 0x7FFF); a frame validate() refuses gives JSON that is refused.
 
 #include <chrono>
 #include <cstddef>
