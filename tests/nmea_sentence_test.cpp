@@ -50,10 +50,10 @@ TEST_CASE("parse splits address, body and fields") {
   CHECK(r.value.received_checksum == 0x5C);
   CHECK(r.value.body.substr(0, 9) == "164959.00");
   CHECK(r.value.line.back() == 'C');  // ending stripped
-  CHECK(field(r.value, 1).text == "164959.00");
-  CHECK(field(r.value, 14).text.empty());
-  CHECK(field(r.value, 14).present);
-  CHECK_FALSE(field(r.value, 15).present);
+  CHECK(r.value.field(1).text == "164959.00");
+  CHECK(r.value.field(14).text.empty());
+  CHECK(r.value.field(14).present);
+  CHECK_FALSE(r.value.field(15).present);
 }
 
 TEST_CASE("addresses longer or shorter than five characters") {
@@ -192,7 +192,7 @@ TEST_CASE("'!' starts a sentence too: encapsulation sentences such as !AIVDM") {
   CHECK(r.value.start == '!');
   CHECK(r.value.address == "AIVDM");
   CHECK(r.value.field_count == 6);
-  CHECK(field(r.value, 5).text == "15M67FC000G?ufbE`vJ8?wv4R0<4");
+  CHECK(r.value.field(5).text == "15M67FC000G?ufbE`vJ8?wv4R0<4");
   // The checksum is the XOR of the bytes between the '!' and the '*', as for '$'.
   CHECK(r.value.computed_checksum == checksum("AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0"));
   CHECK(r.value.checksum == checksum_state::valid);
@@ -205,7 +205,7 @@ TEST_CASE("'!' starts a sentence too: encapsulation sentences such as !AIVDM") {
   const auto inner = parse("$BPLOG,hello!,ON");
   REQUIRE(inner);
   CHECK(inner.value.start == '$');
-  CHECK(field(inner.value, 1).text == "hello!");
+  CHECK(inner.value.field(1).text == "hello!");
   CHECK(parse("!!AB").ec == errc::bad_address);
   // A failed parse holds the default start.
   CHECK(parse("!AIVDM,1*00").value.start == '$');

@@ -50,7 +50,7 @@ std::string stamp_of(std::string_view line) {
   if (address(line) == "BPLOG") return "";
   const auto s = nmea::parse(line);
   REQUIRE(s.ok());
-  return std::string(nmea::field(s.value, 1).text);
+  return std::string(s.value.field(1).text);
 }
 
 /// The vehicle's acknowledgement of `command` (a line the payload sent).

@@ -113,7 +113,7 @@ constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint1
   const field_about a = about(s.value.address, field, s.value.field_count);
   t.put(s.value.address).put(" field ").put(std::uint64_t{field});
   if (a.found) t.put(" (").put(a.name).put(")");
-  const field_token tok = nmea::field(s.value, field);
+  const field_token tok = s.value.field(field);
   if (tok.present) t.put(" \"").put(tok.text).put("\"");
   t.put(": ").put(message(e));
   if (a.found) describe_allowed(t, e, a.opts);

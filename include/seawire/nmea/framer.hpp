@@ -33,6 +33,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "seawire/detail/inline.hpp"
 #include "seawire/nmea/stream.hpp"
 
 namespace seawire::nmea {
@@ -71,7 +72,7 @@ class framer {
   }
 
   /// The next complete line of the current chunk, or nullopt once the chunk is used up.
-  [[nodiscard]] constexpr std::optional<framed_line> next() noexcept {
+  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::optional<framed_line> next() noexcept {
     return line_of(reader_.next());
   }
 
@@ -111,7 +112,7 @@ class framer {
   using reader = stream_reader<Capacity>;
 
   // Drops are not reported (report_drops is never turned on), so every item is a sentence.
-  static constexpr std::optional<framed_line> line_of(
+  SEAWIRE_ALWAYS_INLINE static constexpr std::optional<framed_line> line_of(
       const std::optional<typename reader::item>& item) noexcept {
     if (!item) return std::nullopt;
     return item->sentence;

@@ -75,6 +75,8 @@ enum class checksum_state : std::uint8_t {
   mismatch,  ///< present and wrong (only returned under checksum_policy::ignore)
 };
 
+struct field_token;
+
 /// A parsed line. `body` is the text between the comma after the address and the '*'
 /// (or the end); `field_count` counts its comma-separated fields, blanks included.
 struct sentence_view {
@@ -89,6 +91,10 @@ struct sentence_view {
   /// sentence back starts it with this. Messages seawire decodes are '$' sentences only: a '!'
   /// sentence matches none of them, whatever its address, and decodes as an unknown_sentence.
   char start = '$';
+
+  /// The i-th field (1-based), or a token that is not present. O(i): for occasional use (an
+  /// error message, a field no message describes); a message's decode reads them in one pass.
+  [[nodiscard]] constexpr field_token field(std::size_t i) const noexcept;
 
   /// Column of the first byte of `body` within `line`.
   [[nodiscard]] constexpr std::size_t body_column() const noexcept {
@@ -511,10 +517,9 @@ class field_reader {
   parse_policy policy_;  // a copy: the compiler need not reload it after each store to a message
 };
 
-/// The i-th field (1-based) of a sentence, or a non-present token. O(i); for occasional use.
-[[nodiscard]] constexpr field_token field(const sentence_view& s, std::size_t i) noexcept {
-  parse_policy p;
-  field_reader r(s, p);
+constexpr field_token sentence_view::field(std::size_t i) const noexcept {
+  const parse_policy p;
+  field_reader r(*this, p);
   field_token t;
   for (std::size_t k = 0; k < i; ++k) t = r.take();
   return i == 0 ? field_token{} : t;
