@@ -72,7 +72,7 @@ class framer {
   }
 
   /// The next complete line of the current chunk, or nullopt once the chunk is used up.
-  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::optional<framed_line> next() noexcept {
+  [[nodiscard]] SEAWIRE_FLATTEN constexpr std::optional<framed_line> next() noexcept {
     return line_of(reader_.next());
   }
 

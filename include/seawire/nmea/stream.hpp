@@ -317,7 +317,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
 
   /// The next item of the current chunk, or nullopt once the chunk is used up (or, after
   /// finish(), once the end of the stream is fully resolved).
-  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::optional<item> next() noexcept {
+  [[nodiscard]] constexpr std::optional<item> next() noexcept {
     for (;;) {
       if (rpos_ < rlen_) {
         if (auto it = step(replay_.data(), rpos_, rlen_)) return it;
@@ -438,8 +438,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
 
   // Reads source s from i (a reference to rpos_ or pos_) until an item, a change of state or
   // the end of s.
-  SEAWIRE_ALWAYS_INLINE constexpr std::optional<item> step(const char* s, std::size_t& i,
-                                                           std::size_t end) noexcept {
+  constexpr std::optional<item> step(const char* s, std::size_t& i, std::size_t end) noexcept {
     switch (state_) {
       case state::held: {
         line_ending e = line_ending::cr;
@@ -473,8 +472,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
   }
 
   // Between items. Real links send items back to back, so this loop mostly sees one byte.
-  SEAWIRE_ALWAYS_INLINE constexpr std::optional<item> idle(const char* s, std::size_t& i,
-                                                           std::size_t end) noexcept {
+  constexpr std::optional<item> idle(const char* s, std::size_t& i, std::size_t end) noexcept {
     for (; i < end; ++i) {
       const char c = s[i];
       if (c == '$' || c == '!') {
@@ -510,9 +508,8 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
 
   // The sentence going on at i; `have` of its bytes are already in lbuf_ (0: it starts with the
   // '$' or '!' at i). Yields the line if it ends in this source, else stashes or drops it.
-  SEAWIRE_ALWAYS_INLINE constexpr std::optional<item> scan_sentence(const char* s, std::size_t& i,
-                                                                    std::size_t end,
-                                                                    std::size_t have) noexcept {
+  constexpr std::optional<item> scan_sentence(const char* s, std::size_t& i, std::size_t end,
+                                              std::size_t have) noexcept {
     using scan = detail::framer_scan;
     const std::size_t start = i;
     if (have == 0) sentence_start_ = offset_of(s, start);
@@ -739,8 +736,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     return std::nullopt;
   }
 
-  SEAWIRE_ALWAYS_INLINE constexpr item yield_sentence(std::string_view line_text,
-                                                      line_ending e) noexcept {
+  constexpr item yield_sentence(std::string_view line_text, line_ending e) noexcept {
     ++stats_.sentences;
     item out;
     out.kind = stream_item_kind::sentence;
