@@ -50,12 +50,6 @@ template <message_like T, std::size_t I>
   return static_cast<std::uint16_t>(n);
 }
 
-template <class V>
-inline constexpr bool fills_from_double =
-    std::is_same_v<V, decimal> || std::is_same_v<V, latitude> || std::is_same_v<V, longitude> ||
-    std::is_same_v<V, decimal_latitude> || std::is_same_v<V, decimal_longitude> ||
-    std::is_same_v<V, magnetic_variation>;
-
 /// The shortest decimal that reads back as v (fixed notation: no exponent).
 [[nodiscard]] inline result<decimal> shortest_decimal(double v) noexcept {
   result<decimal> r;

@@ -197,9 +197,64 @@ struct field_desc {
   }
 };
 
+struct magnetic_variation;
+
+namespace detail {
+template <class V>
+inline constexpr bool fills_from_double =
+    std::is_same_v<V, decimal> || std::is_same_v<V, latitude> || std::is_same_v<V, longitude> ||
+    std::is_same_v<V, decimal_latitude> || std::is_same_v<V, decimal_longitude> ||
+    std::is_same_v<V, magnetic_variation>;
+
+template <class V>
+inline constexpr bool is_integer_field = std::is_integral_v<V> && !std::is_same_v<V, bool>;
+
+template <class V>
+inline constexpr bool is_text_field = requires(const V& v) {
+  v.view();
+  V::capacity;
+};
+
+// An option that does not apply to the member's type would be ignored without a word: it is a
+// compile error instead, naming the option and what it applies to.
+template <class Option, class V, bool Optional>
+consteval bool option_applies() {
+  if constexpr (std::is_same_v<Option, option::range>) {
+    static_assert(std::is_same_v<V, decimal> || is_integer_field<V>,
+                  "in_range / in_range_below / at_least apply to number fields (decimal or an "
+                  "integer type) only");
+  } else if constexpr (std::is_same_v<Option, option::places>) {
+    static_assert(std::is_same_v<V, decimal> || std::is_same_v<V, time_of_day>,
+                  "max_places applies to decimal and time_of_day fields only");
+  } else if constexpr (std::is_same_v<Option, option::when_count>) {
+    static_assert(Optional,
+                  "only_with_field_count applies to std::optional members only (the "
+                  "shorter form has no value for it)");
+  } else if constexpr (std::is_same_v<Option, option::absent_ok>) {
+    static_assert(Optional,
+                  "may_be_absent applies to std::optional members only (a field left "
+                  "out has no value)");
+  } else if constexpr (std::is_same_v<Option, option::pad>) {
+    static_assert(is_integer_field<V>, "zero_pad applies to integer fields only");
+  } else if constexpr (std::is_same_v<Option, option::code> ||
+                       std::is_same_v<Option, option::length>) {
+    static_assert(is_text_field<V>,
+                  "code_chars / length_between / exact_length apply to text fields only");
+  } else if constexpr (std::is_same_v<Option, option::precision>) {
+    static_assert(fills_from_double<V>,
+                  "precision applies to the fields nmea::builder fills from a double: decimal, "
+                  "positions, magnetic variation");
+  }
+  return true;
+}
+}  // namespace detail
+
 template <auto Member, class... Options>
 [[nodiscard]] constexpr field_desc<Member> field(std::string_view name,
                                                  Options... options) noexcept {
+  using desc = field_desc<Member>;
+  static_assert(
+      (detail::option_applies<Options, typename desc::value_type, desc::is_optional>() && ...));
   field_desc<Member> f{name, {}};
   (options.apply(f.opts), ...);
   return f;
