@@ -329,7 +329,8 @@ M make_message(byte_source& src) {
   if constexpr (std::remove_cvref_t<decltype(M::nmea)>::any_talker) {
     constexpr std::string_view alphabet = "GPINVWAE0Z9a,*$";
     char t[2] = {alphabet[src.below(alphabet.size())], alphabet[src.below(alphabet.size())]};
-    (void)m.talker.assign(std::string_view(t, src.below(4) == 0 ? src.below(3) : 2));
+    (void)nmea::detail::talker_of(m).assign(
+        std::string_view(t, src.below(4) == 0 ? src.below(3) : 2));
   }
   nmea::for_each_field(m, [&](std::string_view, auto& member) { fill(src, member); });
   return m;
@@ -342,7 +343,8 @@ M make_message(byte_source& src) {
 template <nmea::message_like M>
 bool same_message(const M& a, const M& b) {
   bool same = true;
-  if constexpr (std::remove_cvref_t<decltype(M::nmea)>::any_talker) same = a.talker == b.talker;
+  if constexpr (std::remove_cvref_t<decltype(M::nmea)>::any_talker)
+    same = nmea::detail::talker_of(a) == nmea::detail::talker_of(b);
   M::nmea.fields.apply(
       [&](const auto&... d) { ((same = same && a.*(d.member) == b.*(d.member)), ...); });
   return same;

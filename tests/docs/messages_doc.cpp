@@ -142,6 +142,12 @@ void message(std::string_view section) {
   std::printf("### %s\n\n", std::string(d.address).c_str());
   std::printf("%s", std::string(section).c_str());
   if (d.any_talker) std::printf(" Any talker: `--` stands for GP, GN, II, ...");
+  if constexpr (d.field_counts.size() != 0) {
+    std::string forms;
+    for (const auto count : d.field_counts)
+      forms += (forms.empty() ? "" : " or ") + std::to_string(count);
+    std::printf(" Standard forms: %s fields.", forms.c_str());
+  }
   std::printf("\n\n```\n%s*hh\n```\n\n", wire.c_str());
   std::printf("| Field | Name (JSON key) | Wire form | Allowed | Blank | Present | Precision |\n");
   std::printf("|---|---|---|---|---|---|---|\n%s\n", rows.c_str());

@@ -117,13 +117,15 @@ struct cprbs {
 
   friend constexpr bool operator==(const cprbs&, const cprbs&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"CPRBS">(
-      nmea::field<&cprbs::timestamp>("timestamp"),
-      nmea::field<&cprbs::battery_id>("battery_id", nmea::only_with_field_count(6)),
-      nmea::field<&cprbs::stack_voltage_v>("stack_voltage_v", nmea::precision(2)),
-      nmea::field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v", nmea::precision(2)),
-      nmea::field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v", nmea::precision(2)),
-      nmea::field<&cprbs::temperature_c>("temperature_c", nmea::precision(1)));
+  static constexpr auto nmea =
+      nmea::sentence<"CPRBS">(
+          nmea::field<&cprbs::timestamp>("timestamp"),
+          nmea::field<&cprbs::battery_id>("battery_id", nmea::only_with_field_count(6)),
+          nmea::field<&cprbs::stack_voltage_v>("stack_voltage_v", nmea::precision(2)),
+          nmea::field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v", nmea::precision(2)),
+          nmea::field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v", nmea::precision(2)),
+          nmea::field<&cprbs::temperature_c>("temperature_c", nmea::precision(1)))
+          .wire_fields_in<&cprbs::wire_fields>();
 };
 
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
@@ -155,15 +157,17 @@ struct cpimu {
 
   friend constexpr bool operator==(const cpimu&, const cpimu&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"CPIMU">(
-      nmea::field<&cpimu::timestamp>("timestamp"),
-      nmea::field<&cpimu::rate_x_dps>("rate_x_dps", nmea::precision(3)),
-      nmea::field<&cpimu::rate_y_dps>("rate_y_dps", nmea::precision(3)),
-      nmea::field<&cpimu::rate_z_dps>("rate_z_dps", nmea::precision(3)),
-      nmea::field<&cpimu::accel_x_mps2>("accel_x_mps2", nmea::precision(3)),
-      nmea::field<&cpimu::accel_y_mps2>("accel_y_mps2", nmea::precision(3)),
-      nmea::field<&cpimu::accel_z_mps2>("accel_z_mps2", nmea::precision(3)),
-      nmea::field<&cpimu::nav_timestamp>("nav_timestamp", nmea::may_be_absent));
+  static constexpr auto nmea =
+      nmea::sentence<"CPIMU">(
+          nmea::field<&cpimu::timestamp>("timestamp"),
+          nmea::field<&cpimu::rate_x_dps>("rate_x_dps", nmea::precision(3)),
+          nmea::field<&cpimu::rate_y_dps>("rate_y_dps", nmea::precision(3)),
+          nmea::field<&cpimu::rate_z_dps>("rate_z_dps", nmea::precision(3)),
+          nmea::field<&cpimu::accel_x_mps2>("accel_x_mps2", nmea::precision(3)),
+          nmea::field<&cpimu::accel_y_mps2>("accel_y_mps2", nmea::precision(3)),
+          nmea::field<&cpimu::accel_z_mps2>("accel_z_mps2", nmea::precision(3)),
+          nmea::field<&cpimu::nav_timestamp>("nav_timestamp", nmea::may_be_absent))
+          .wire_fields_in<&cpimu::wire_fields>();
 };
 
 /// Lights state. Not in the spec; real vehicles send it (PYCLT switches the lights).

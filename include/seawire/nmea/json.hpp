@@ -537,7 +537,7 @@ template <json_sink Sink, message_like T>
 constexpr void write_type(Sink& s, const T& msg) noexcept {
   constexpr auto& desc = T::nmea;
   if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
-    s.put(msg.talker.view());
+    s.put(detail::talker_of(msg).view());
     s.put(desc.address.substr(2));
   } else {
     s.put(desc.address);
@@ -742,7 +742,7 @@ template <message_like T, class Lookup>
     return out;
   }
   if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
-    (void)out.value.talker.assign(type.substr(0, 2));
+    (void)detail::talker_of(out.value).assign(type.substr(0, 2));
   }
   std::uint16_t wire_field = 1;
   const auto one = [&](const auto& d) -> bool {

@@ -14,8 +14,9 @@
 //
 // Member types pick their codec (fields.hpp); std::optional<T> marks a field that may be
 // blank. Options after the name add a range, a unit letter field, or say when a field may be
-// absent. An address starting with "--" ("--RMC") matches any talker; such a message has a
-// `talker_id talker` member that decode fills and encode writes.
+// absent. What the sentence declares besides its fields follows them (sentence_desc): an
+// address starting with "--" ("--RMC") matches any talker and names the talker_id member
+// that decode fills and encode writes with `.talker_in<&rmc::talker>()`.
 
 #include <array>
 #include <concepts>
@@ -294,13 +295,62 @@ template <std::size_t I, class T>
   return slot.value;
 }
 
-/// A message's wire layout: its address and its fields in wire order.
-template <seawire::detail::fixed_string Address, class... Fields>
+/// What a sentence declares besides its fields (see sentence_desc): the member a "--" address's
+/// talker goes to, the member that keeps a decoded sentence's field count, the field counts of
+/// its standard forms, and a larger encode buffer. nullptr / 0 / no counts: not declared.
+template <auto Talker, auto WireFields, std::size_t BufferSize, std::uint8_t... Counts>
+struct sentence_forms {
+  static constexpr auto talker = Talker;
+  static constexpr auto wire_fields = WireFields;
+  static constexpr std::size_t buffer_size = BufferSize;
+  static constexpr std::array<std::uint8_t, sizeof...(Counts)> field_counts{Counts...};
+
+  template <auto M>
+  using with_talker = sentence_forms<M, WireFields, BufferSize, Counts...>;
+  template <auto M>
+  using with_wire_fields = sentence_forms<Talker, M, BufferSize, Counts...>;
+  template <std::size_t N>
+  using with_buffer_size = sentence_forms<Talker, WireFields, N, Counts...>;
+  template <std::uint8_t... C>
+  using with_field_counts = sentence_forms<Talker, WireFields, BufferSize, C...>;
+};
+using no_forms = sentence_forms<nullptr, nullptr, 0>;
+
+namespace detail {
+template <std::uint8_t... C>
+[[nodiscard]] consteval bool increasing() noexcept {
+  const std::uint8_t c[] = {C...};
+  for (std::size_t i = 1; i < sizeof...(C); ++i)
+    if (c[i] <= c[i - 1]) return false;
+  return true;
+}
+template <auto M>
+using member_type_of = typename member_pointer_traits<decltype(M)>::member_type;
+}  // namespace detail
+
+/// A message's wire layout: its address, its fields in wire order, and the forms it comes in,
+/// declared after the fields:
+///
+///   static constexpr auto nmea = nmea::sentence<"--VBW">(nmea::field<...>(...), ...)
+///                                    .talker_in<&vbw::talker>()
+///                                    .field_counts<6, 10>()
+///                                    .wire_fields_in<&vbw::wire_fields>();
+template <seawire::detail::fixed_string Address, class Forms, class... Fields>
 struct sentence_desc {
   static constexpr std::string_view address = Address.view();
   /// "--RMC": any two-character talker followed by RMC. A 'P' first is not a talker but a
   /// proprietary sentence (Garmin's $PGRMC is no RMC), so it never matches.
   static constexpr bool any_talker = Address.size() > 2 && address[0] == '-' && address[1] == '-';
+  /// The talker_id member a "--" sentence's talker is read into and written from (talker_in);
+  /// nullptr for a fixed address.
+  static constexpr auto talker_member = Forms::talker;
+  /// The std::uint8_t member that keeps a decoded sentence's field count (wire_fields_in), or
+  /// nullptr.
+  static constexpr auto wire_fields_member = Forms::wire_fields;
+  /// The field counts of the standard forms, increasing (field_counts); empty: any count.
+  static constexpr auto field_counts = Forms::field_counts;
+  /// The smallest buffer encode() gives the message (buffer_size); 0: what its fields need.
+  static constexpr std::size_t buffer_size = Forms::buffer_size;
   field_list<Fields...> fields;
 
   [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
@@ -311,10 +361,56 @@ struct sentence_desc {
     }
   }
   [[nodiscard]] static constexpr std::size_t size() noexcept { return sizeof...(Fields); }
+
+  /// For an address that starts with "--", which any talker may send: member M (a talker_id)
+  /// receives the talker on decode ("GN" of $GNRMC) and gives it on encode. Such a sentence
+  /// must declare it; no other may.
+  template <auto M>
+  [[nodiscard]] consteval auto talker_in() const noexcept {
+    static_assert(any_talker, "talker_in: only an address starting with \"--\" has a talker");
+    static_assert(std::is_same_v<detail::member_type_of<M>, talker_id>,
+                  "talker_in: the member must be a nmea::talker_id");
+    return sentence_desc<Address, typename Forms::template with_talker<M>, Fields...>{fields};
+  }
+
+  /// For a sentence with fields that senders may leave out (may_be_absent at the end, or
+  /// fields of only the longer form): member M (a std::uint8_t) remembers the field count of
+  /// the sentence a message was decoded from when that is more than its values need, because
+  /// one of those fields came blank instead of left out. Encode then writes that many fields,
+  /// so the Kingfisher spec's eight-field "$CPIMU,...,-0.932172,*hh" goes back out with its
+  /// empty eighth field and a six-field CPRBS with a blank battery id keeps its six. 0 (the
+  /// default, and what decode leaves otherwise) writes the fields the values need.
+  template <auto M>
+  [[nodiscard]] consteval auto wire_fields_in() const noexcept {
+    static_assert(std::is_same_v<detail::member_type_of<M>, std::uint8_t>,
+                  "wire_fields_in: the member must be a std::uint8_t");
+    return sentence_desc<Address, typename Forms::template with_wire_fields<M>, Fields...>{fields};
+  }
+
+  /// A sentence whose standard forms have only some field counts lists them, increasing
+  /// (VBW: 6 and 10). Encode writes the shortest listed form that holds the values (an NMEA 3.0
+  /// stern speed alone goes out with all four stern fields, not as a seven-field sentence); a
+  /// strict decode refuses the counts in between (too_few_fields).
+  template <std::uint8_t... Counts>
+  [[nodiscard]] consteval auto standard_forms() const noexcept {
+    static_assert(sizeof...(Counts) > 0, "standard_forms: list at least one field count");
+    static_assert(detail::increasing<Counts...>(), "standard_forms: the counts must increase");
+    return sentence_desc<Address, typename Forms::template with_field_counts<Counts...>, Fields...>{
+        fields};
+  }
+
+  /// encode() gives the message a buffer of at least N bytes (it gives 256, or what the
+  /// fields' longest text needs when a codec says): for a message with a codec of its own that
+  /// cannot say how long its text gets.
+  template <std::size_t N>
+  [[nodiscard]] consteval auto buffer_size_at_least() const noexcept {
+    return sentence_desc<Address, typename Forms::template with_buffer_size<N>, Fields...>{fields};
+  }
 };
 
 template <seawire::detail::fixed_string Address, class... Fields>
-[[nodiscard]] constexpr sentence_desc<Address, Fields...> sentence(Fields... fields) noexcept {
+[[nodiscard]] constexpr sentence_desc<Address, no_forms, Fields...> sentence(
+    Fields... fields) noexcept {
   static_assert(Address.size() >= 1 && Address.size() <= 15, "addresses are 1-15 characters");
   return {field_list<Fields...>{{{fields}...}}};
 }
@@ -360,34 +456,32 @@ template <auto M>
   return p;
 }
 
-/// A message with fields that senders may leave out (may_be_absent at the end, or a field of
-/// only the longer form) that remembers, in a member `std::uint8_t wire_fields`, the field count
-/// of the sentence it was decoded from when that is more than its values need: one of those
-/// fields came blank instead of left out. Encode then writes that many fields, so the Kingfisher
-/// spec's eight-field "$CPIMU,...,-0.932172,*hh" goes back out with its empty eighth field, and a
-/// six-field CPRBS with a blank battery id keeps its six. 0 (the default, and what decode
-/// leaves otherwise) writes the fields the values need.
+/// A message whose description keeps a decoded sentence's field count (wire_fields_in).
 template <class T>
-concept keeps_wire_fields = message_like<T> && requires(T& m) {
-  { m.wire_fields } -> std::same_as<std::uint8_t&>;
-};
+concept keeps_wire_fields = message_like<T> &&
+    !std::is_null_pointer_v<decltype(std::remove_cvref_t<decltype(T::nmea)>::wire_fields_member)>;
 
-/// A message whose standard forms have only some field counts lists them, in increasing order,
-/// in `static constexpr std::uint8_t field_counts[]` (VBW: {6, 10}): encode then writes the
-/// shortest listed form that holds the values (an NMEA 3.0 stern speed alone is written with
-/// all four stern fields, not as a seven-field sentence), and a strict decode refuses other
-/// counts (too_few_fields).
+/// A message whose description lists its standard forms' field counts (standard_forms).
 template <class T>
-concept lists_field_counts = message_like<T> && requires {
-  T::field_counts[0];
-};
+concept lists_field_counts = message_like<T> &&
+                             std::remove_cvref_t<decltype(T::nmea)>::field_counts.size() != 0;
 
 namespace detail {
+/// The talker member of a message with a "--" address (const or not).
+template <class T>
+[[nodiscard]] constexpr auto& talker_of(T& msg) noexcept {
+  using desc = std::remove_cvref_t<decltype(std::remove_cv_t<T>::nmea)>;
+  static_assert(!std::is_null_pointer_v<decltype(desc::talker_member)>,
+                "an address starting with \"--\" declares the member its talker goes to: "
+                "sentence<\"--XXX\">(...).talker_in<&T::talker>()");
+  return msg.*desc::talker_member;
+}
+
 /// The wire_fields of a message, 0 for one without.
 template <message_like T>
 [[nodiscard]] constexpr std::size_t wire_fields_of(const T& msg) noexcept {
   if constexpr (keeps_wire_fields<T>) {
-    return msg.wire_fields;
+    return msg.*T::nmea.wire_fields_member;
   } else {
     return 0;
   }
@@ -497,7 +591,7 @@ template <class F, class T>
       // (unless a trailing value further on needs it anyway, which resets it below).
       if constexpr (keeps_wire_fields<T>) {
         if ((o.may_be_absent || o.when_count != 0) && t.present)
-          msg.wire_fields =
+          msg.*T::nmea.wire_fields_member =
               static_cast<std::uint8_t>(r.field_count() < 255 ? r.field_count() : 255);
       }
       for (unsigned k = 0; k < nothing; ++k) (void)r.take();
@@ -505,7 +599,7 @@ template <class F, class T>
       return read_unit(r, o, false);
     }
     if constexpr (keeps_wire_fields<T>) {
-      if (o.may_be_absent) msg.wire_fields = 0;
+      if (o.may_be_absent) msg.*T::nmea.wire_fields_member = 0;
     }
     // Read in place: a value built on the side and copied in would be copied through the
     // stack in wide loads that wait on the narrow stores that just wrote it.
@@ -596,11 +690,11 @@ template <message_like T>
     while (keep < n && starts[keep] < wire) ++keep;
   };
   if constexpr (keeps_wire_fields<T>) {
-    if (msg.wire_fields != 0) [[unlikely]]
-      reach(msg.wire_fields);
+    if (const std::size_t wire = wire_fields_of(msg); wire != 0) [[unlikely]]
+      reach(wire);
   }
   if constexpr (lists_field_counts<T>) {
-    for (const std::size_t form : T::field_counts) {
+    for (const std::size_t form : T::nmea.field_counts) {
       if (form >= starts[keep]) {
         reach(form);
         break;
@@ -614,7 +708,7 @@ template <message_like T>
 template <message_like T>
 [[nodiscard]] constexpr bool listed_field_count(std::size_t count) noexcept {
   if constexpr (lists_field_counts<T>) {
-    for (const std::size_t form : T::field_counts)
+    for (const std::size_t form : T::nmea.field_counts)
       if (form == count) return true;
     return false;
   } else {
@@ -629,7 +723,7 @@ template <message_like T, class Status>
 constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T& msg,
                            Status& status) noexcept {
   static_assert(!keeps_wire_fields<T> || !has_both_optional_kinds<T>(),
-                "wire_fields: fields of only the longer form and fields left out at the end in "
+                "wire_fields_in: fields of only the longer form and fields left out at the end in "
                 "one message are not supported");
   status.ec = errc::ok;
   status.field = 0;
@@ -640,7 +734,7 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
     return;
   }
   if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
-    (void)msg.talker.assign(s.address.substr(0, 2));
+    (void)talker_of(msg).assign(s.address.substr(0, 2));
   }
   field_reader r(s, policy);
   errc e = read_fields(
@@ -763,7 +857,7 @@ template <message_like T>
   writer w(out);
   constexpr auto& desc = T::nmea;
   if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
-    const std::string_view t = msg.talker.view();
+    const std::string_view t = detail::talker_of(msg).view();
     if (t.size() != 2 || !seawire::detail::is_upper(t[0]) || t[0] == 'P' ||
         !(seawire::detail::is_upper(t[1]) || seawire::detail::is_digit(t[1]))) {
       result<std::size_t> r;
@@ -837,13 +931,11 @@ template <class T>
 }
 
 /// The buffer encode() gives a message: 256 bytes, or more when its longest sentence needs more
-/// (or T::max_sentence_size says so), so that whatever decodes also encodes.
+/// (or its description's buffer_size_at_least says so), so that whatever decodes also encodes.
 template <class T>
 [[nodiscard]] consteval std::size_t sentence_size() noexcept {
   std::size_t n = longest_sentence<T>() > 256 ? longest_sentence<T>() : 256;
-  if constexpr (requires { T::max_sentence_size; }) {
-    if (T::max_sentence_size > n) n = T::max_sentence_size;
-  }
+  if (T::nmea.buffer_size > n) n = T::nmea.buffer_size;
   return n;
 }
 }  // namespace detail

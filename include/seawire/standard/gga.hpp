@@ -44,17 +44,20 @@ struct gga {
 
   friend constexpr bool operator==(const gga&, const gga&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"--GGA">(
-      nmea::field<&gga::time>("time"), nmea::field<&gga::lat>("latitude", nmea::precision(5)),
-      nmea::field<&gga::lon>("longitude", nmea::precision(5)),
-      nmea::field<&gga::quality>("quality"),
-      nmea::field<&gga::satellites>("satellites", nmea::zero_pad(2)),
-      nmea::field<&gga::hdop>("hdop", nmea::precision(2), nmea::at_least(0)),
-      nmea::field<&gga::altitude_m>("altitude_m", nmea::precision(1), nmea::unit('M')),
-      nmea::field<&gga::geoid_separation_m>("geoid_separation_m", nmea::precision(1),
-                                            nmea::unit('M')),
-      nmea::field<&gga::dgps_age_s>("dgps_age_s", nmea::precision(1), nmea::at_least(0)),
-      nmea::field<&gga::dgps_station>("dgps_station", nmea::in_range(0, 1023), nmea::zero_pad(4)));
+  static constexpr auto nmea =
+      nmea::sentence<"--GGA">(
+          nmea::field<&gga::time>("time"), nmea::field<&gga::lat>("latitude", nmea::precision(5)),
+          nmea::field<&gga::lon>("longitude", nmea::precision(5)),
+          nmea::field<&gga::quality>("quality"),
+          nmea::field<&gga::satellites>("satellites", nmea::zero_pad(2)),
+          nmea::field<&gga::hdop>("hdop", nmea::precision(2), nmea::at_least(0)),
+          nmea::field<&gga::altitude_m>("altitude_m", nmea::precision(1), nmea::unit('M')),
+          nmea::field<&gga::geoid_separation_m>("geoid_separation_m", nmea::precision(1),
+                                                nmea::unit('M')),
+          nmea::field<&gga::dgps_age_s>("dgps_age_s", nmea::precision(1), nmea::at_least(0)),
+          nmea::field<&gga::dgps_station>("dgps_station", nmea::in_range(0, 1023),
+                                          nmea::zero_pad(4)))
+          .talker_in<&gga::talker>();
 };
 
 }  // namespace seawire::standard

@@ -57,20 +57,23 @@ struct rmc {
   std::optional<mode_indicator> mode;                          // 12 NMEA 2.3+
   std::optional<standard::nav_status> navigational_status;     // 13 NMEA 4.1+
   std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 12-13 came
-                                 //   blank, to write back as it came (nmea::keeps_wire_fields)
+                                 //   blank, to write back as it came (wire_fields_in)
 
   friend constexpr bool operator==(const rmc&, const rmc&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"--RMC">(
-      nmea::field<&rmc::time>("time"), nmea::field<&rmc::status>("status"),
-      nmea::field<&rmc::lat>("latitude", nmea::precision(5)),
-      nmea::field<&rmc::lon>("longitude", nmea::precision(5)),
-      nmea::field<&rmc::speed_knots>("speed_knots", nmea::precision(3), nmea::at_least(0)),
-      nmea::field<&rmc::course_true>("course_true", nmea::precision(2), nmea::in_range(0, 360)),
-      nmea::field<&rmc::date>("date"),
-      nmea::field<&rmc::magnetic_variation>("magnetic_variation", nmea::precision(1)),
-      nmea::field<&rmc::mode>("mode", nmea::may_be_absent),
-      nmea::field<&rmc::navigational_status>("navigational_status", nmea::may_be_absent));
+  static constexpr auto nmea =
+      nmea::sentence<"--RMC">(
+          nmea::field<&rmc::time>("time"), nmea::field<&rmc::status>("status"),
+          nmea::field<&rmc::lat>("latitude", nmea::precision(5)),
+          nmea::field<&rmc::lon>("longitude", nmea::precision(5)),
+          nmea::field<&rmc::speed_knots>("speed_knots", nmea::precision(3), nmea::at_least(0)),
+          nmea::field<&rmc::course_true>("course_true", nmea::precision(2), nmea::in_range(0, 360)),
+          nmea::field<&rmc::date>("date"),
+          nmea::field<&rmc::magnetic_variation>("magnetic_variation", nmea::precision(1)),
+          nmea::field<&rmc::mode>("mode", nmea::may_be_absent),
+          nmea::field<&rmc::navigational_status>("navigational_status", nmea::may_be_absent))
+          .talker_in<&rmc::talker>()
+          .wire_fields_in<&rmc::wire_fields>();
 };
 
 }  // namespace seawire::standard

@@ -40,12 +40,14 @@ struct rpm {
 
   friend constexpr bool operator==(const rpm&, const rpm&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"--RPM">(
-      nmea::field<&rpm::source>("source"), nmea::field<&rpm::number>("number"),
-      nmea::field<&rpm::speed_rpm>("speed_rpm", nmea::precision(1)),
-      nmea::field<&rpm::pitch_percent>("pitch_percent", nmea::precision(1),
-                                       nmea::in_range(-100, 100)),
-      nmea::field<&rpm::status>("status"));
+  static constexpr auto nmea =
+      nmea::sentence<"--RPM">(nmea::field<&rpm::source>("source"),
+                              nmea::field<&rpm::number>("number"),
+                              nmea::field<&rpm::speed_rpm>("speed_rpm", nmea::precision(1)),
+                              nmea::field<&rpm::pitch_percent>("pitch_percent", nmea::precision(1),
+                                                               nmea::in_range(-100, 100)),
+                              nmea::field<&rpm::status>("status"))
+          .talker_in<&rpm::talker>();
 };
 
 }  // namespace seawire::standard

@@ -32,12 +32,14 @@ struct rsa {
 
   friend constexpr bool operator==(const rsa&, const rsa&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"--RSA">(
-      nmea::field<&rsa::starboard_angle>("starboard_angle", nmea::precision(1),
-                                         nmea::in_range(-180, 180)),
-      nmea::field<&rsa::starboard_status>("starboard_status"),
-      nmea::field<&rsa::port_angle>("port_angle", nmea::precision(1), nmea::in_range(-180, 180)),
-      nmea::field<&rsa::port_status>("port_status"));
+  static constexpr auto nmea =
+      nmea::sentence<"--RSA">(nmea::field<&rsa::starboard_angle>(
+                                  "starboard_angle", nmea::precision(1), nmea::in_range(-180, 180)),
+                              nmea::field<&rsa::starboard_status>("starboard_status"),
+                              nmea::field<&rsa::port_angle>("port_angle", nmea::precision(1),
+                                                            nmea::in_range(-180, 180)),
+                              nmea::field<&rsa::port_status>("port_status"))
+          .talker_in<&rsa::talker>();
 };
 
 }  // namespace seawire::standard

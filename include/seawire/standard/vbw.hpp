@@ -47,26 +47,29 @@ struct vbw {
   std::optional<nmea::decimal> stern_transverse_ground_knots;
   std::optional<vbw_status> stern_ground_status;  // 10 NMEA 3.0+
   std::uint8_t wire_fields = 0;  // the sentence's field count when one of fields 7-10 came
-                                 //   blank, to write back as it came (nmea::keeps_wire_fields)
-
-  /// The forms: before NMEA 3.0 and since. A stern field is written with all four.
-  static constexpr std::uint8_t field_counts[] = {6, 10};
+                                 //   blank, to write back as it came (wire_fields_in)
 
   friend constexpr bool operator==(const vbw&, const vbw&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"--VBW">(
-      nmea::field<&vbw::longitudinal_water_knots>("longitudinal_water_knots", nmea::precision(2)),
-      nmea::field<&vbw::transverse_water_knots>("transverse_water_knots", nmea::precision(2)),
-      nmea::field<&vbw::water_status>("water_status"),
-      nmea::field<&vbw::longitudinal_ground_knots>("longitudinal_ground_knots", nmea::precision(2)),
-      nmea::field<&vbw::transverse_ground_knots>("transverse_ground_knots", nmea::precision(2)),
-      nmea::field<&vbw::ground_status>("ground_status"),
-      nmea::field<&vbw::stern_transverse_water_knots>("stern_transverse_water_knots",
-                                                      nmea::precision(2), nmea::may_be_absent),
-      nmea::field<&vbw::stern_water_status>("stern_water_status", nmea::may_be_absent),
-      nmea::field<&vbw::stern_transverse_ground_knots>("stern_transverse_ground_knots",
-                                                       nmea::precision(2), nmea::may_be_absent),
-      nmea::field<&vbw::stern_ground_status>("stern_ground_status", nmea::may_be_absent));
+  static constexpr auto nmea =
+      nmea::sentence<"--VBW">(
+          nmea::field<&vbw::longitudinal_water_knots>("longitudinal_water_knots",
+                                                      nmea::precision(2)),
+          nmea::field<&vbw::transverse_water_knots>("transverse_water_knots", nmea::precision(2)),
+          nmea::field<&vbw::water_status>("water_status"),
+          nmea::field<&vbw::longitudinal_ground_knots>("longitudinal_ground_knots",
+                                                       nmea::precision(2)),
+          nmea::field<&vbw::transverse_ground_knots>("transverse_ground_knots", nmea::precision(2)),
+          nmea::field<&vbw::ground_status>("ground_status"),
+          nmea::field<&vbw::stern_transverse_water_knots>("stern_transverse_water_knots",
+                                                          nmea::precision(2), nmea::may_be_absent),
+          nmea::field<&vbw::stern_water_status>("stern_water_status", nmea::may_be_absent),
+          nmea::field<&vbw::stern_transverse_ground_knots>("stern_transverse_ground_knots",
+                                                           nmea::precision(2), nmea::may_be_absent),
+          nmea::field<&vbw::stern_ground_status>("stern_ground_status", nmea::may_be_absent))
+          .talker_in<&vbw::talker>()
+          .standard_forms<6, 10>()  // before NMEA 3.0 and since: a stern field goes with all four
+          .wire_fields_in<&vbw::wire_fields>();
 };
 
 }  // namespace seawire::standard

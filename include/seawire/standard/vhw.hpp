@@ -26,15 +26,17 @@ struct vhw {
 
   friend constexpr bool operator==(const vhw&, const vhw&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"--VHW">(
-      nmea::field<&vhw::heading_true_deg>("heading_true_deg", nmea::precision(1),
-                                          nmea::in_range(0, 360), nmea::unit('T')),
-      nmea::field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", nmea::precision(1),
-                                              nmea::in_range(0, 360), nmea::unit('M')),
-      nmea::field<&vhw::speed_knots>("speed_knots", nmea::precision(2), nmea::at_least(0),
-                                     nmea::unit('N')),
-      nmea::field<&vhw::speed_kmh>("speed_kmh", nmea::precision(2), nmea::at_least(0),
-                                   nmea::unit('K')));
+  static constexpr auto nmea =
+      nmea::sentence<"--VHW">(
+          nmea::field<&vhw::heading_true_deg>("heading_true_deg", nmea::precision(1),
+                                              nmea::in_range(0, 360), nmea::unit('T')),
+          nmea::field<&vhw::heading_magnetic_deg>("heading_magnetic_deg", nmea::precision(1),
+                                                  nmea::in_range(0, 360), nmea::unit('M')),
+          nmea::field<&vhw::speed_knots>("speed_knots", nmea::precision(2), nmea::at_least(0),
+                                         nmea::unit('N')),
+          nmea::field<&vhw::speed_kmh>("speed_kmh", nmea::precision(2), nmea::at_least(0),
+                                       nmea::unit('K')))
+          .talker_in<&vhw::talker>();
 };
 
 }  // namespace seawire::standard

@@ -41,15 +41,17 @@ struct vwr {
 
   friend constexpr bool operator==(const vwr&, const vwr&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"--VWR">(
-      nmea::field<&vwr::angle_deg>("angle_deg", nmea::precision(1), nmea::in_range(0, 180)),
-      nmea::field<&vwr::side>("side"),
-      nmea::field<&vwr::speed_knots>("speed_knots", nmea::precision(1), nmea::at_least(0),
-                                     nmea::unit('N')),
-      nmea::field<&vwr::speed_mps>("speed_mps", nmea::precision(1), nmea::at_least(0),
-                                   nmea::unit('M')),
-      nmea::field<&vwr::speed_kmh>("speed_kmh", nmea::precision(1), nmea::at_least(0),
-                                   nmea::unit('K')));
+  static constexpr auto nmea =
+      nmea::sentence<"--VWR">(
+          nmea::field<&vwr::angle_deg>("angle_deg", nmea::precision(1), nmea::in_range(0, 180)),
+          nmea::field<&vwr::side>("side"),
+          nmea::field<&vwr::speed_knots>("speed_knots", nmea::precision(1), nmea::at_least(0),
+                                         nmea::unit('N')),
+          nmea::field<&vwr::speed_mps>("speed_mps", nmea::precision(1), nmea::at_least(0),
+                                       nmea::unit('M')),
+          nmea::field<&vwr::speed_kmh>("speed_kmh", nmea::precision(1), nmea::at_least(0),
+                                       nmea::unit('K')))
+          .talker_in<&vwr::talker>();
 };
 
 }  // namespace seawire::standard
