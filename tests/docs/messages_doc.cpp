@@ -125,8 +125,9 @@ void message(std::string_view section) {
           }
           if (field.opts.unit != 0) wire += "," + std::string(1, field.opts.unit);
           std::string when;
-          if (field.opts.when_count != 0)
-            when = "only in the " + std::to_string(field.opts.when_count) + "-field form";
+          if (field.opts.only_with_field_count != 0)
+            when =
+                "only in the " + std::to_string(field.opts.only_with_field_count) + "-field form";
           else if (field.opts.may_be_absent)
             when = "may be left out";
           std::string precision =

@@ -786,7 +786,7 @@ template <message_like T, class Lookup>
       return false;
     }
     // Numbered as encode_to numbers: a field of the longer form left out takes no number.
-    if (d.opts.when_count == 0 || !detail::skipped(d, out.value))
+    if (d.opts.only_with_field_count == 0 || !detail::skipped(d, out.value))
       wire_field = static_cast<std::uint16_t>(wire_field + d.width());
     return true;
   };

@@ -12,11 +12,14 @@
 //         field<&pydir::thrust_right>("thrust_right", in_range(-100, 100)));
 //   };
 //
-// Member types pick their codec (fields.hpp); std::optional<T> marks a field that may be
-// blank. Options after the name add a range, a unit letter field, or say when a field may be
-// absent. What the sentence declares besides its fields follows them (sentence_desc): an
-// address starting with "--" ("--RMC") matches any talker and names the talker_id member
-// that decode fills and encode writes with `.talker_in<&rmc::talker>()`.
+// Two words are used in one sense throughout: a field is *blank* when it is in the sentence
+// but empty (",,"), and *absent* when the sentence ends before it (may_be_absent, the codecs'
+// allows_blank, parse_policy::absent_as_blank). Member types pick their codec (fields.hpp);
+// std::optional<T> marks a field that may be blank (nullopt). Options after the name add a
+// range, a unit letter field, or say when a field may be absent. What the sentence declares
+// besides its fields follows them (sentence_desc): an address starting with "--" ("--RMC")
+// matches any talker and names the talker_id member that decode fills and encode writes with
+// `.talker_in<&rmc::talker>()`.
 
 #include <array>
 #include <concepts>
@@ -41,16 +44,18 @@ namespace seawire::nmea {
 // ---------------------------------------------------------------------------------------------
 // field options
 
-/// Everything a field declaration can add to its codec. Built from the option helpers below.
+/// Everything a field declaration can add to its codec. Built from the option helpers below,
+/// each of which sets the member of its name (the range helpers set min and max).
 struct field_options {
   decimal min{};
   decimal max{};
   bool has_min = false;
   bool has_max = false;
   bool max_exclusive = false;
-  std::int8_t max_places = -1;        ///< fraction digits allowed (decimal, time); -1 = any
-  char unit = 0;                      ///< unit letter in the following wire field, e.g. 'N'
-  std::uint16_t when_count = 0;       ///< present only in sentences of at least this many fields
+  std::int8_t max_places = -1;  ///< fraction digits allowed (decimal, time); -1 = any
+  char unit = 0;                ///< unit letter in the following wire field, e.g. 'N'
+  std::uint16_t only_with_field_count =
+      0;                              ///< present only in sentences of at least this many fields
   bool may_be_absent = false;         ///< trailing: a nullopt value is not written at all
   std::uint16_t min_length = 0;       ///< text: fewest characters
   std::uint16_t max_length = 0xFFFF;  ///< text: most characters
@@ -73,26 +78,26 @@ struct range {
     o.max_exclusive = hi_open;
   }
 };
-struct places {
+struct max_places {
   std::int8_t n;
   constexpr void apply(field_options& o) const noexcept { o.max_places = n; }
 };
-struct unit_letter {
+struct unit {
   char c;
   constexpr void apply(field_options& o) const noexcept { o.unit = c; }
 };
-struct when_count {
+struct only_with_field_count {
   std::uint16_t n;
-  constexpr void apply(field_options& o) const noexcept { o.when_count = n; }
+  constexpr void apply(field_options& o) const noexcept { o.only_with_field_count = n; }
 };
-struct absent_ok {
+struct may_be_absent {
   constexpr void apply(field_options& o) const noexcept { o.may_be_absent = true; }
 };
-struct pad {
+struct zero_pad {
   std::uint8_t n;
   constexpr void apply(field_options& o) const noexcept { o.zero_pad = n; }
 };
-struct code {
+struct code_chars {
   constexpr void apply(field_options& o) const noexcept { o.code_chars = true; }
 };
 struct precision {
@@ -127,22 +132,22 @@ struct length {
   return {static_cast<std::int8_t>(n)};
 }
 /// At most n fraction digits (0: whole numbers or whole seconds only).
-[[nodiscard]] constexpr option::places max_places(int n) noexcept {
+[[nodiscard]] constexpr option::max_places max_places(int n) noexcept {
   return {static_cast<std::int8_t>(n)};
 }
 /// The value is followed by a field holding this unit letter ("5.2,N"). On receive the letter
 /// may also be blank; seawire always writes it.
-[[nodiscard]] constexpr option::unit_letter unit(char c) noexcept { return {c}; }
+[[nodiscard]] constexpr option::unit unit(char c) noexcept { return {c}; }
 /// The field exists only in the longer form of the sentence, the one with at least `n` fields
 /// (an optional member; written only when it has a value).
-[[nodiscard]] constexpr option::when_count only_with_field_count(int n) noexcept {
+[[nodiscard]] constexpr option::only_with_field_count only_with_field_count(int n) noexcept {
   return {static_cast<std::uint16_t>(n)};
 }
 /// A trailing optional field that senders may leave out entirely; when the value is nullopt
 /// it is not written (nor any comma for it).
-inline constexpr option::absent_ok may_be_absent{};
+inline constexpr option::may_be_absent may_be_absent{};
 /// Integers written with at least n digits ("06" satellites). Any width is accepted on receive.
-[[nodiscard]] constexpr option::pad zero_pad(int n) noexcept {
+[[nodiscard]] constexpr option::zero_pad zero_pad(int n) noexcept {
   return {static_cast<std::uint8_t>(n)};
 }
 /// Text length bounds.
@@ -151,7 +156,7 @@ inline constexpr option::absent_ok may_be_absent{};
 }
 /// Text that is a code, such as a message id: upper-case letters and digits only (bad_text
 /// otherwise; the protocols are case-sensitive, so "nvg" is not "NVG").
-inline constexpr option::code code_chars{};
+inline constexpr option::code_chars code_chars{};
 [[nodiscard]] constexpr option::length exact_length(int n) noexcept {
   return {static_cast<std::uint16_t>(n), static_cast<std::uint16_t>(n)};
 }
@@ -224,20 +229,20 @@ consteval bool option_applies() {
     static_assert(std::is_same_v<V, decimal> || is_integer_field<V>,
                   "in_range / in_range_below / at_least apply to number fields (decimal or an "
                   "integer type) only");
-  } else if constexpr (std::is_same_v<Option, option::places>) {
+  } else if constexpr (std::is_same_v<Option, option::max_places>) {
     static_assert(std::is_same_v<V, decimal> || std::is_same_v<V, time_of_day>,
                   "max_places applies to decimal and time_of_day fields only");
-  } else if constexpr (std::is_same_v<Option, option::when_count>) {
+  } else if constexpr (std::is_same_v<Option, option::only_with_field_count>) {
     static_assert(Optional,
                   "only_with_field_count applies to std::optional members only (the "
                   "shorter form has no value for it)");
-  } else if constexpr (std::is_same_v<Option, option::absent_ok>) {
+  } else if constexpr (std::is_same_v<Option, option::may_be_absent>) {
     static_assert(Optional,
                   "may_be_absent applies to std::optional members only (a field left "
                   "out has no value)");
-  } else if constexpr (std::is_same_v<Option, option::pad>) {
+  } else if constexpr (std::is_same_v<Option, option::zero_pad>) {
     static_assert(is_integer_field<V>, "zero_pad applies to integer fields only");
-  } else if constexpr (std::is_same_v<Option, option::code> ||
+  } else if constexpr (std::is_same_v<Option, option::code_chars> ||
                        std::is_same_v<Option, option::length>) {
     static_assert(is_text_field<V>,
                   "code_chars / length_between / exact_length apply to text fields only");
@@ -493,7 +498,9 @@ template <message_like T>
   bool longer = false;
   bool absent = false;
   T::nmea.fields.apply([&](const auto&... d) {
-    ((longer = longer || d.opts.when_count != 0, absent = absent || d.opts.may_be_absent), ...);
+    ((longer = longer || d.opts.only_with_field_count != 0,
+      absent = absent || d.opts.may_be_absent),
+     ...);
   });
   return longer && absent;
 }
@@ -566,7 +573,7 @@ template <class F, class T>
   auto& m = msg.*F::member;
   const field_options& o = f.opts;
   if constexpr (F::is_optional) {
-    if (o.when_count != 0 && r.field_count() < o.when_count) {
+    if (o.only_with_field_count != 0 && r.field_count() < o.only_with_field_count) {
       clear_optional(m);
       return errc::ok;
     }
@@ -590,7 +597,7 @@ template <class F, class T>
       // Blank where it could have been left out: the form to write back is the sentence's
       // (unless a trailing value further on needs it anyway, which resets it below).
       if constexpr (keeps_wire_fields<T>) {
-        if ((o.may_be_absent || o.when_count != 0) && t.present)
+        if ((o.may_be_absent || o.only_with_field_count != 0) && t.present)
           msg.*T::nmea.wire_fields_member =
               static_cast<std::uint8_t>(r.field_count() < 255 ? r.field_count() : 255);
       }
@@ -653,7 +660,8 @@ template <class F, class T>
 [[nodiscard]] constexpr bool skipped(const F& f, const T& msg) noexcept {
   if constexpr (F::is_optional) {
     if ((msg.*F::member).has_value()) return false;
-    if (f.opts.when_count != 0) return wire_fields_of(msg) < f.opts.when_count;
+    if (f.opts.only_with_field_count != 0)
+      return wire_fields_of(msg) < f.opts.only_with_field_count;
     return f.opts.may_be_absent;
   } else {
     return false;
@@ -814,7 +822,7 @@ template <class F, class T>
   bool has = true;
   if constexpr (F::is_optional) {
     has = m.has_value();
-    if (!has && o.when_count != 0 && wire_fields_of(msg) < o.when_count)
+    if (!has && o.only_with_field_count != 0 && wire_fields_of(msg) < o.only_with_field_count)
       return errc::ok;  // the shorter form has no such field
     if (has) v = &*m;
   } else {
@@ -884,7 +892,7 @@ template <message_like T>
     constexpr const auto& f = field_at<I>(T::nmea.fields);
     if (index++ >= keep) skip_rest = true;
     // A field of the longer form that this message does not have takes no number.
-    if (f.opts.when_count != 0 && detail::skipped(f, msg)) return true;
+    if (f.opts.only_with_field_count != 0 && detail::skipped(f, msg)) return true;
     ++wire_field;
     e = detail::write_field(f, w, msg, skip_rest);
     using V = typename std::remove_cvref_t<decltype(f)>::value_type;
@@ -976,7 +984,7 @@ template <message_like T>
 [[nodiscard]] constexpr std::size_t form_field_count(const T& msg) noexcept {
   std::size_t n = 0;
   T::nmea.fields.apply([&](const auto&... d) {
-    ((n += (d.opts.when_count != 0 && detail::skipped(d, msg)) ? 0 : d.width()), ...);
+    ((n += (d.opts.only_with_field_count != 0 && detail::skipped(d, msg)) ? 0 : d.width()), ...);
   });
   return n;
 }
@@ -996,7 +1004,7 @@ template <message_like T>
   field_about a;
   std::size_t first = 1;
   T::nmea.fields.apply([&](const auto&... d) {
-    (void)(((d.opts.when_count != 0 && field_count < d.opts.when_count)
+    (void)(((d.opts.only_with_field_count != 0 && field_count < d.opts.only_with_field_count)
                 ? false
                 : (n >= first && n < first + d.width() ? (a = {d.name, d.opts, true}, true)
                                                        : (first += d.width(), false))) ||
