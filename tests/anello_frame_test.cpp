@@ -612,6 +612,26 @@ TEST_CASE("build_frame(to_values(f)) == f for every valid frame", "[anello][buil
   }
 }
 
+TEST_CASE("the table's offsets, computed from the wire types, are the spec's", "[anello][frame]") {
+  // Spec 002 section 2.2, "Offset" column: heading at 8 ... pressure at 54.
+  const std::array<std::size_t, sensor_field_count> spec = {8,  10, 14, 18, 20, 22, 30, 34, 38, 39,
+                                                            40, 41, 42, 44, 46, 48, 50, 52, 54};
+  std::vector<std::size_t> offsets;
+  std::vector<std::string> keys;
+  std::apply(
+      [&](const auto&... field) {
+        (offsets.push_back(field.offset), ...);
+        (keys.emplace_back(field.json_key), ...);
+      },
+      sensor_fields);
+  CHECK(offsets == std::vector<std::size_t>(spec.begin(), spec.end()));
+  // JSON keys are the names, but the position's, which are those of every other message.
+  CHECK(keys[0] == "heading_deg");
+  CHECK(keys[1] == "latitude");
+  CHECK(keys[2] == "longitude");
+  CHECK(keys[18] == "pressure_hpa");
+}
+
 TEST_CASE("for_each_field names every field once, in spec order", "[anello][frame]") {
   std::vector<std::string> names;
   std::vector<std::optional<double>> numbers;

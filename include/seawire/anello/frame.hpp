@@ -11,10 +11,11 @@
 // 0xFFFFFFFF). There is no byte stuffing, so a stream reader resyncs by scanning for AB 00 and
 // letting decode_frame judge: `truncated` always means "a valid beginning, send more bytes".
 //
-// The payload is described once, in `sensor_fields` below: name, offset, scale and allowed range
-// of each field. decode_frame, encode_frame, build_frame, validate, to_values, for_each_field and
-// the accessors of sensor_frame_raw are all loops over that table, so a field cannot be decoded
-// from one offset and encoded at another.
+// The payload is described once, in `sensor_fields` below: name, JSON key, wire type, scale and
+// allowed range of each field, in wire order (offsets follow from the wire types). decode_frame,
+// encode_frame, build_frame, validate, to_values, for_each_field and the accessors of
+// sensor_frame_raw are all loops over that table, so a field cannot be decoded from one offset and
+// encoded at another.
 //
 // Three ways to hold a frame:
 //   raw bytes  <- encode_frame / decode_frame ->  sensor_frame_raw  <- build_frame / to_values ->
@@ -91,28 +92,28 @@ template <class T>
 inline constexpr T not_available = std::numeric_limits<T>::max();
 }  // namespace detail
 
-/// The payload as the wire carries it. Each member: field number, offset in the frame, spec name,
+/// The payload as the wire carries it, in wire order. Each member: field number, spec name,
 /// wire resolution. A default-constructed frame says "nothing available" in every field.
 struct sensor_frame_raw {
-  std::uint16_t heading = detail::not_available<std::uint16_t>;      //  1 @8  IMU heading, 1 deg
-  std::int32_t lat = detail::not_available<std::int32_t>;            //  2 @10 latitude, 1e-6 deg
-  std::int32_t lon = detail::not_available<std::int32_t>;            //  3 @14 longitude, 1e-6 deg
-  std::uint16_t sog = detail::not_available<std::uint16_t>;          //  4 @18 SOG, 0.1 m/s
-  std::uint16_t cog = detail::not_available<std::uint16_t>;          //  5 @20 COG, 1 deg
-  std::uint64_t gps_time_ms = detail::not_available<std::uint64_t>;  //  6 @22 Unix time, 1 ms
-  std::int32_t alt_msl = detail::not_available<std::int32_t>;        //  7 @30 MSL alt, 0.1 m
-  std::int32_t geoid_sep = detail::not_available<std::int32_t>;      //  8 @34 geoid sep, 0.1 m
-  std::uint8_t hdop_tenths = detail::not_available<std::uint8_t>;    //  9 @38 HDOP, 0.1
-  std::uint8_t gga_quality = detail::not_available<std::uint8_t>;    // 10 @39 GGA fix quality
-  std::int8_t motor = detail::not_available<std::int8_t>;            // 11 @40 motor, 1 %
-  std::int8_t rudder = detail::not_available<std::int8_t>;           // 12 @41 rudder, 1 %
-  std::uint16_t stw = detail::not_available<std::uint16_t>;          // 13 @42 STW, 0.1 m/s
-  std::uint16_t wind_speed_abs = detail::not_available<std::uint16_t>;  // 14 @44 0.1 m/s
-  std::uint16_t wind_dir_abs = detail::not_available<std::uint16_t>;    // 15 @46 1 deg
-  std::uint16_t wind_speed_rel = detail::not_available<std::uint16_t>;  // 16 @48 0.1 m/s
-  std::uint16_t wind_dir_rel = detail::not_available<std::uint16_t>;    // 17 @50 1 deg
-  std::int16_t air_temp = detail::not_available<std::int16_t>;          // 18 @52 0.1 degC
-  std::uint16_t pressure = detail::not_available<std::uint16_t>;        // 19 @54 1 hPa
+  std::uint16_t heading = detail::not_available<std::uint16_t>;         //  1 IMU heading, 1 deg
+  std::int32_t lat = detail::not_available<std::int32_t>;               //  2 latitude, 1e-6 deg
+  std::int32_t lon = detail::not_available<std::int32_t>;               //  3 longitude, 1e-6 deg
+  std::uint16_t sog = detail::not_available<std::uint16_t>;             //  4 SOG, 0.1 m/s
+  std::uint16_t cog = detail::not_available<std::uint16_t>;             //  5 COG, 1 deg
+  std::uint64_t gps_time_ms = detail::not_available<std::uint64_t>;     //  6 Unix time, 1 ms
+  std::int32_t alt_msl = detail::not_available<std::int32_t>;           //  7 MSL alt, 0.1 m
+  std::int32_t geoid_sep = detail::not_available<std::int32_t>;         //  8 geoid sep, 0.1 m
+  std::uint8_t hdop_tenths = detail::not_available<std::uint8_t>;       //  9 HDOP, 0.1
+  std::uint8_t gga_quality = detail::not_available<std::uint8_t>;       // 10 GGA fix quality
+  std::int8_t motor = detail::not_available<std::int8_t>;               // 11 motor, 1 %
+  std::int8_t rudder = detail::not_available<std::int8_t>;              // 12 rudder, 1 %
+  std::uint16_t stw = detail::not_available<std::uint16_t>;             // 13 STW, 0.1 m/s
+  std::uint16_t wind_speed_abs = detail::not_available<std::uint16_t>;  // 14 0.1 m/s
+  std::uint16_t wind_dir_abs = detail::not_available<std::uint16_t>;    // 15 1 deg
+  std::uint16_t wind_speed_rel = detail::not_available<std::uint16_t>;  // 16 0.1 m/s
+  std::uint16_t wind_dir_rel = detail::not_available<std::uint16_t>;    // 17 1 deg
+  std::int16_t air_temp = detail::not_available<std::int16_t>;          // 18 0.1 degC
+  std::uint16_t pressure = detail::not_available<std::uint16_t>;        // 19 1 hPa
 
   // Physical values; nullopt when the field says "not available".
   [[nodiscard]] constexpr std::optional<double> heading_deg() const noexcept;
@@ -188,13 +189,17 @@ struct sensor_field {
   static constexpr auto raw_member = RawMember;
   static constexpr auto value_member = ValueMember;
 
-  std::string_view name;     ///< snake_case; also the sensor_values member, accessor and JSON key
-  std::size_t offset;        ///< of the field's first byte, counted from the frame's first byte
+  std::string_view name;  ///< snake_case; also the sensor_values member and the accessor
+  /// The key in JSON; empty in a table row when it is the name (the table then fills it in).
+  std::string_view json_key = {};
   std::int64_t divisor = 1;  ///< wire counts per physical unit: physical = raw / divisor
   /// What the spec allows, in physical units; without it, whatever the wire type holds.
   std::optional<value_range> allowed = std::nullopt;
   /// A value read as "not available" besides the type's maximum.
   std::optional<raw_type> also_not_available = std::nullopt;
+  /// Of the field's first byte, counted from the frame's first byte: the table computes it from
+  /// the wire types of the fields before.
+  std::size_t offset = 0;
 
   [[nodiscard]] constexpr bool not_available(raw_type raw) const noexcept {
     return raw == detail::not_available<raw_type> ||
@@ -275,34 +280,57 @@ consteval auto make_sensor_fields() {
   constexpr std::int64_t tenths = 10;
   constexpr std::int64_t millionths = 1'000'000;
   // Rows follow the spec's table; a row's position (1-based) is the field number in errors.
-  return std::tuple{
-      sensor_field<&r::heading, &v::heading_deg>{"heading_deg", 8, 1, degrees},
-      sensor_field<&r::lat, &v::latitude_deg>{"latitude_deg", 10, millionths, {{-90, 90}}},
-      sensor_field<&r::lon, &v::longitude_deg>{"longitude_deg", 14, millionths, {{-180, 180}}},
-      sensor_field<&r::sog, &v::sog_mps>{"sog_mps", 18, tenths},
-      sensor_field<&r::cog, &v::cog_deg>{"cog_deg", 20, 1, degrees},
-      sensor_field<&r::gps_time_ms, &v::gps_time>{"gps_time", 22},
-      sensor_field<&r::alt_msl, &v::alt_msl_m>{"alt_msl_m", 30, tenths},
-      sensor_field<&r::geoid_sep, &v::geoid_sep_m>{"geoid_sep_m", 34, tenths},
+  auto fields = std::tuple{
+      sensor_field<&r::heading, &v::heading_deg>{.name = "heading_deg", .allowed = degrees},
+      // Positions are "latitude" and "longitude" (signed decimal degrees) in JSON, as in every
+      // other message.
+      sensor_field<&r::lat, &v::latitude_deg>{.name = "latitude_deg",
+                                              .json_key = "latitude",
+                                              .divisor = millionths,
+                                              .allowed = {{-90, 90}}},
+      sensor_field<&r::lon, &v::longitude_deg>{.name = "longitude_deg",
+                                               .json_key = "longitude",
+                                               .divisor = millionths,
+                                               .allowed = {{-180, 180}}},
+      sensor_field<&r::sog, &v::sog_mps>{.name = "sog_mps", .divisor = tenths},
+      sensor_field<&r::cog, &v::cog_deg>{.name = "cog_deg", .allowed = degrees},
+      sensor_field<&r::gps_time_ms, &v::gps_time>{.name = "gps_time"},
+      sensor_field<&r::alt_msl, &v::alt_msl_m>{.name = "alt_msl_m", .divisor = tenths},
+      sensor_field<&r::geoid_sep, &v::geoid_sep_m>{.name = "geoid_sep_m", .divisor = tenths},
       // Not enforced, though the spec says it: "HDOP range 0-1; this field range 0-10". Real fixes
       // often have HDOP above 1, and refusing the whole frame for that would drop good positions.
-      sensor_field<&r::hdop_tenths, &v::hdop>{"hdop", 38, tenths},
+      sensor_field<&r::hdop_tenths, &v::hdop>{.name = "hdop", .divisor = tenths},
       // "as defined by GPGGA": NMEA 0183 defines qualities 0 (invalid) to 8 (simulation).
-      sensor_field<&r::gga_quality, &v::fix_quality>{"fix_quality", 39, 1, {{0, 8}}},
-      sensor_field<&r::motor, &v::motor_pct>{"motor_pct", 40, 1, {{-100, 100}}},
-      sensor_field<&r::rudder, &v::rudder_pct>{"rudder_pct", 41, 1, {{-100, 100}}},
-      sensor_field<&r::stw, &v::stw_mps>{"stw_mps", 42, tenths},
-      sensor_field<&r::wind_speed_abs, &v::wind_speed_abs_mps>{"wind_speed_abs_mps", 44, tenths},
-      sensor_field<&r::wind_dir_abs, &v::wind_dir_abs_deg>{"wind_dir_abs_deg", 46, 1, degrees},
-      sensor_field<&r::wind_speed_rel, &v::wind_speed_rel_mps>{"wind_speed_rel_mps", 48, tenths},
-      sensor_field<&r::wind_dir_rel, &v::wind_dir_rel_deg>{"wind_dir_rel_deg", 50, 1, degrees},
+      sensor_field<&r::gga_quality, &v::fix_quality>{.name = "fix_quality", .allowed = {{0, 8}}},
+      sensor_field<&r::motor, &v::motor_pct>{.name = "motor_pct", .allowed = {{-100, 100}}},
+      sensor_field<&r::rudder, &v::rudder_pct>{.name = "rudder_pct", .allowed = {{-100, 100}}},
+      sensor_field<&r::stw, &v::stw_mps>{.name = "stw_mps", .divisor = tenths},
+      sensor_field<&r::wind_speed_abs, &v::wind_speed_abs_mps>{.name = "wind_speed_abs_mps",
+                                                               .divisor = tenths},
+      sensor_field<&r::wind_dir_abs, &v::wind_dir_abs_deg>{.name = "wind_dir_abs_deg",
+                                                           .allowed = degrees},
+      sensor_field<&r::wind_speed_rel, &v::wind_speed_rel_mps>{.name = "wind_speed_rel_mps",
+                                                               .divisor = tenths},
+      sensor_field<&r::wind_dir_rel, &v::wind_dir_rel_deg>{.name = "wind_dir_rel_deg",
+                                                           .allowed = degrees},
       // The spec's note makes 0x7FFF "not available", but its own example sends 0xFFFF for an
       // air temperature "invalid / not reported". So 0xFFFF (-0.1 degC taken literally) is read
       // as not available too, and build_frame refuses -0.1 degC rather than send it ambiguously;
       // nullopt is sent as the spec's 0x7FFF.
-      sensor_field<&r::air_temp, &v::air_temp_c>{"air_temp_c", 52, tenths, {}, std::int16_t{-1}},
-      sensor_field<&r::pressure, &v::pressure_hpa>{"pressure_hpa", 54},
+      sensor_field<&r::air_temp, &v::air_temp_c>{
+          .name = "air_temp_c", .divisor = tenths, .also_not_available = std::int16_t{-1}},
+      sensor_field<&r::pressure, &v::pressure_hpa>{.name = "pressure_hpa"},
   };
+  // Each field starts where the one before ends; the JSON key is the name unless a row says.
+  std::apply(
+      [](auto&... field) {
+        std::size_t at = header_size;
+        ((field.offset = at, at += sizeof(typename std::remove_cvref_t<decltype(field)>::raw_type),
+          field.json_key = field.json_key.empty() ? field.name : field.json_key),
+         ...);
+      },
+      fields);
+  return fields;
 }
 
 }  // namespace detail
@@ -323,20 +351,20 @@ constexpr bool visit_sensor_fields(Fn&& fn) {
   (std::make_index_sequence<std::tuple_size_v<std::remove_cv_t<decltype(sensor_fields)>>>{});
 }
 
-// The table against the spec: contiguous from byte 8 to byte 56, in order, and no sender range
+// The table against the spec: 19 fields filling bytes 8 to 56, named, and no sender range
 // reaching past its wire type.
 consteval bool sensor_fields_match_spec() {
-  std::size_t next = header_size;
+  std::size_t end = header_size;
   bool ok = true;
   visit_sensor_fields([&](std::uint16_t, const auto& field) {
     using raw_type = typename std::remove_cvref_t<decltype(field)>::raw_type;
     const auto [lo, hi] = field.wire_limits();
-    ok = ok && field.offset == next && lo <= hi && std::in_range<raw_type>(lo) &&
-         std::in_range<raw_type>(hi) && !field.name.empty();
-    next += sizeof(raw_type);
+    ok = ok && lo <= hi && std::in_range<raw_type>(lo) && std::in_range<raw_type>(hi) &&
+         !field.name.empty() && !field.json_key.empty();
+    end = field.offset + sizeof(raw_type);
     return true;
   });
-  return ok && next == frame_size &&
+  return ok && end == frame_size &&
          std::tuple_size_v<std::remove_cv_t<decltype(sensor_fields)>> == sensor_field_count;
 }
 static_assert(sensor_fields_match_spec(), "sensor_fields disagrees with the spec's layout");

@@ -5,11 +5,11 @@
 //   {"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,"sog_mps":0.0,
 //    "cog_deg":null,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,...}
 //
-// Keys are the field names of anello::sensor_fields, except that the position is "latitude" and
-// "longitude" (signed decimal degrees) as in every other message. Values come from the wire's
-// integers, never through double: a field with resolution 0.1 has one fraction digit, latitude
-// six. "Not available" is null. gps_time is ISO 8601 UTC with milliseconds (a time outside the
-// years 1970..9999 is written as its integer milliseconds).
+// Keys are the JSON keys of anello::sensor_fields: the field names, but "latitude" and
+// "longitude" (signed decimal degrees) for the position, as in every other message. Values come
+// from the wire's integers, never through double: a field with resolution 0.1 has one fraction
+// digit, latitude six. "Not available" is null. gps_time is ISO 8601 UTC with milliseconds (a time
+// outside the years 1970..9999 is written as its integer milliseconds).
 //
 // Reading (read_frame_json) is strict like build_frame: a measured value is rounded to the field's
 // resolution (halves away from zero) and refused, with the field number 1..19, when it is outside
@@ -42,13 +42,6 @@ namespace seawire::anello {
 inline constexpr std::string_view frame_json_type = "AB00";
 
 namespace detail {
-
-/// The JSON key of a sensor field: its table name, with the position as latitude/longitude.
-[[nodiscard]] constexpr std::string_view json_key(std::string_view field_name) noexcept {
-  if (field_name == "latitude_deg") return "latitude";
-  if (field_name == "longitude_deg") return "longitude";
-  return field_name;
-}
 
 /// Fraction digits of a power-of-ten divisor (1 -> 0, 10 -> 1, 1'000'000 -> 6).
 [[nodiscard]] constexpr unsigned divisor_places(std::int64_t divisor) noexcept {
@@ -191,7 +184,7 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
 [[nodiscard]] constexpr bool has_json_field(std::string_view key) noexcept {
   bool found = false;
   detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
-    found = found || detail::json_key(field.name) == key;
+    found = found || field.json_key == key;
     return !found;
   });
   return found;
@@ -210,7 +203,7 @@ struct sensor_field_about {
   detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
     if (n != number) return true;
     using value_type = typename std::remove_cvref_t<decltype(field)>::value_type;
-    a = {field.name, detail::json_key(field.name), std::is_integral_v<value_type>, true};
+    a = {field.name, field.json_key, std::is_integral_v<value_type>, true};
     return false;
   });
   return a;
@@ -228,7 +221,7 @@ constexpr std::string_view describe(std::span<char> out, const result<sensor_fra
   detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
     if (n != r.field) return true;
     using field_type = std::remove_cvref_t<decltype(field)>;
-    t.put(" (").put(detail::json_key(field.name)).put(") ");
+    t.put(" (").put(field.json_key).put(") ");
     t.put(detail::raw_decimal(field, frame.*field_type::raw_member));
     return false;
   });
@@ -246,7 +239,7 @@ constexpr void write_json(Sink& s, const sensor_frame_raw& frame) noexcept {
     using raw_type = typename field_type::raw_type;
     const raw_type raw = frame.*field_type::raw_member;
     s.put(",\"");
-    s.put(detail::json_key(field.name));
+    s.put(field.json_key);
     s.put("\":");
     if (field.not_available(raw)) {
       s.put("null");
@@ -269,7 +262,7 @@ template <class Lookup>
     using field_type = std::remove_cvref_t<decltype(field)>;
     using raw_type = typename field_type::raw_type;
     raw_type& raw = out.value.*field_type::raw_member;
-    const nmea::json_value v = lookup(std::string_view{}, detail::json_key(field.name));
+    const nmea::json_value v = lookup(std::string_view{}, field.json_key);
     errc e = errc::ok;
     if (v.blank()) {
       raw = detail::not_available<raw_type>;
