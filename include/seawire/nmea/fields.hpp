@@ -705,6 +705,9 @@ using talker_id = text<2>;
 //
 // A single-letter field is an `enum class E : char` whose enumerators are the letters, with a
 // function found by ADL listing them:   constexpr std::string_view enum_chars(E) { return "AV"; }
+// (C++20 cannot list an enum's enumerators without parsing compiler-specific text, which costs
+// every translation unit about 7 ms an enum with GCC and 18 ms with Clang; seawire's tests check
+// that each enum_chars lists exactly its enum's enumerators instead.)
 // A word field is an enum whose values index an array of its spellings, with
 //   constexpr std::array<std::string_view, K> enum_words(E) { return {"ON", "OFF"}; }
 // and optionally other spellings accepted on receive:
