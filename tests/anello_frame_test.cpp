@@ -20,7 +20,11 @@
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
 
+#include "support.hpp"
+
 namespace {
+
+using namespace support;
 
 using namespace seawire::anello;
 using seawire::errc;
@@ -54,23 +58,6 @@ constexpr sensor_frame_raw seed_frame = decode_frame(seed).value;
 void seal(std::span<std::uint8_t> frame) {
   seawire::detail::store_be(frame, 4, seawire::crc32(frame.subspan(header_size, payload_size)));
 }
-
-// Deterministic pseudo-random numbers (splitmix64), so a failure can be replayed.
-struct splitmix64 {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15U);
-    z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9U;
-    z = (z ^ (z >> 27U)) * 0x94D049BB133111EBU;
-    return z ^ (z >> 31U);
-  }
-  // Uniform enough in [lo, hi] for tests.
-  std::int64_t between(std::int64_t lo, std::int64_t hi) {
-    const auto span = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
-    if (span == std::numeric_limits<std::uint64_t>::max()) return static_cast<std::int64_t>(next());
-    return static_cast<std::int64_t>(static_cast<std::uint64_t>(lo) + next() % (span + 1));
-  }
-};
 
 constexpr time_ms utc(int y, unsigned mo, unsigned d, int h, int mi, int s, int ms) {
   using namespace std::chrono;
@@ -306,7 +293,7 @@ TEST_CASE("encode_frame refuses a short buffer and writes nothing", "[anello][fr
 
 TEST_CASE("any payload survives decode -> encode bit for bit", "[anello][frame]") {
   // Also shows that the table covers each payload byte exactly once.
-  splitmix64 rng{1};
+  prng rng{1};
   for (int round = 0; round < 2000; ++round) {
     frame_bytes bytes = seed;
     for (std::size_t i = header_size; i < frame_size; ++i) {
@@ -586,7 +573,7 @@ TEST_CASE("validate holds a decoded frame to build_frame's ranges", "[anello][fr
 }
 
 TEST_CASE("build_frame(to_values(f)) == f for every valid frame", "[anello][builder]") {
-  splitmix64 rng{42};
+  prng rng{42};
   for (int round = 0; round < 5000; ++round) {
     sensor_frame_raw f;
     std::apply(

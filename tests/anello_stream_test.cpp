@@ -22,7 +22,11 @@
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
 
+#include "support.hpp"
+
 namespace {
+
+using namespace support;
 
 using namespace seawire::anello;
 using seawire::nmea::line_ending;
@@ -193,19 +197,6 @@ outcome without_drops(outcome o) {
   std::erase_if(o.items, [](const rec& r) { return r.kind == stream_item_kind::dropped; });
   return o;
 }
-
-// splitmix64: tiny, deterministic on every platform (std distributions are not).
-struct prng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15U);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9U;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBU;
-    return z ^ (z >> 31);
-  }
-  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
-  bool chance(unsigned percent) { return below(100) < percent; }
-};
 
 // Splits `s` into chunks of 1..max_chunk bytes.
 std::vector<std::string_view> chop(std::string_view s, prng& r, std::size_t max_chunk) {

@@ -23,22 +23,14 @@
 #include "seawire/standard/rmc.hpp"
 #include "seawire/standard/vwr.hpp"
 
+#include "support.hpp"
+
 using namespace seawire;
 using namespace seawire::nmea;
 
 namespace {
 
-// splitmix64: deterministic, so a failure names an input that can be replayed.
-struct prng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15U);
-    z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9U;
-    z = (z ^ (z >> 27U)) * 0x94D049BB133111EBU;
-    return z ^ (z >> 31U);
-  }
-  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
-};
+using namespace support;
 
 // Up to `max` characters drawn from `chars`.
 std::string random_text(prng& g, std::string_view chars, std::size_t max) {

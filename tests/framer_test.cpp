@@ -10,7 +10,11 @@
 #include <string_view>
 #include <vector>
 
+#include "support.hpp"
+
 namespace {
+
+using namespace support;
 
 using seawire::nmea::framed_line;
 using seawire::nmea::framer;
@@ -100,19 +104,6 @@ void check_accounting(std::string_view stream, const std::vector<rec>& lines,
   CHECK(text + st.noise_bytes + st.dropped_bytes + count_line_breaks(stream) == stream.size());
   CHECK(st.sentences == lines.size());
 }
-
-// splitmix64: tiny, deterministic on every platform (std distributions are not).
-struct prng {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15U);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9U;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBU;
-    return z ^ (z >> 31);
-  }
-  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
-  bool chance(unsigned percent) { return below(100) < percent; }
-};
 
 // Splits `s` into chunks of 1..max_chunk bytes.
 std::vector<std::string_view> chop(std::string_view s, prng& r, std::size_t max_chunk) {

@@ -36,7 +36,11 @@
 #include "seawire/standard/vhw.hpp"
 #include "seawire/standard/vwr.hpp"
 
+#include "support.hpp"
+
 namespace {
+
+using namespace support;
 
 using namespace seawire;
 using namespace seawire::nmea;
@@ -71,20 +75,6 @@ void for_each_family(F&& f) {
   f(sandshark_set{}, sandshark_line);
   f(robotx_set{}, robotx_line);
   f(anello_set{}, anello_line);
-}
-
-/// The line with a right checksum and CR LF: '*', the XOR and the ending appended (replacing any
-/// checksum already there).
-std::string sealed(std::string_view without_checksum) {
-  const std::size_t star = without_checksum.find('*');
-  const std::string_view data = without_checksum.substr(0, star);
-  const std::uint8_t x = checksum(data.substr(1));
-  std::string s(data);
-  s += '*';
-  s += "0123456789ABCDEF"[x >> 4U];
-  s += "0123456789ABCDEF"[x & 15U];
-  s += "\r\n";
-  return s;
 }
 
 template <class Set>
@@ -213,7 +203,7 @@ TEST_CASE("10^6 commas: too_long, however long the policy lets lines be") {
   const auto r = standard_set::decode(many, liberal);
   REQUIRE(r.ok());
   CHECK_FALSE(std::get<standard::rsa>(r.value).starboard_angle.has_value());
-  CHECK(standard_set::decode(sealed(many), strict).ec == errc::too_many_fields);
+  CHECK(standard_set::decode(resealed(many), strict).ec == errc::too_many_fields);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -222,14 +212,14 @@ TEST_CASE("10^6 commas: too_long, however long the policy lets lines be") {
 TEST_CASE("19-digit numbers are read, 20 and 400 digits are number_too_long") {
   constexpr std::string_view nineteen = "9999999999999999999";
   // A decimal without a range (BPRMB speed): 19 digits come back exactly.
-  const std::string ok = sealed("$BPRMB,231137.32,,,," + std::string(nineteen) + ",0,1");
+  const std::string ok = resealed("$BPRMB,231137.32,,,," + std::string(nineteen) + ",0,1");
   const auto r = sandshark_set::decode(ok, strict);
   REQUIRE(r.ok());
   const auto& rmb = std::get<sandshark::bprmb>(r.value);
   CHECK(rmb.speed->mantissa == 9'999'999'999'999'999'999ULL);
   CHECK(encode(rmb).view() == ok);
   // With a range (PYDIR thrust -100..100): a number, but out of range.
-  const auto pydir = kingfisher_set::decode(sealed("$PYDIR," + std::string(nineteen) + ",0"));
+  const auto pydir = kingfisher_set::decode(resealed("$PYDIR," + std::string(nineteen) + ",0"));
   CHECK(pydir.ec == errc::out_of_range);
   CHECK(pydir.field == 1);
 
@@ -238,31 +228,33 @@ TEST_CASE("19-digit numbers are read, 20 and 400 digits are number_too_long") {
   for (const std::string& n : {twenty, four_hundred, "0." + four_hundred,
                                "1." + std::string(19, '0'), "-" + four_hundred}) {
     INFO(n.size() << " characters");
-    const auto d = sandshark_set::decode(sealed("$BPRMB,231137.32,,,," + n + ",0,1"));
+    const auto d = sandshark_set::decode(resealed("$BPRMB,231137.32,,,," + n + ",0,1"));
     CHECK(d.ec == errc::number_too_long);
     CHECK(d.field == 5);
     // An integer field, a time, a position.
-    const auto id = kingfisher_set::decode(sealed("$CPRCM,164959.065," + n + ",234.3,-1.6,-6.6,"));
+    const auto id =
+        kingfisher_set::decode(resealed("$CPRCM,164959.065," + n + ",234.3,-1.6,-6.6,"));
     CHECK(id.ec == errc::number_too_long);
     CHECK(id.field == 2);
-    CHECK(kingfisher_set::decode(sealed("$CPALT," + n + ",1")).ec == errc::bad_time);
-    CHECK(kingfisher_set::decode(sealed("$GPRMC,,A," + n + ",N,,,,,,,")).ec == errc::bad_latitude);
+    CHECK(kingfisher_set::decode(resealed("$CPALT," + n + ",1")).ec == errc::bad_time);
+    CHECK(kingfisher_set::decode(resealed("$GPRMC,,A," + n + ",N,,,,,,,")).ec ==
+          errc::bad_latitude);
   }
   // 19 digits in an unsigned 16-bit field: a number, out of the field's range.
   const auto wide = kingfisher_set::decode(
-      sealed("$CPRCM,164959.065," + std::string(nineteen) + ",234.3,-1.6,-6.6,"));
+      resealed("$CPRCM,164959.065," + std::string(nineteen) + ",234.3,-1.6,-6.6,"));
   CHECK(wide.ec == errc::out_of_range);
   CHECK(wide.field == 2);
   // Leading zeros are not significant digits: 400 of them before a 1 still read as 1, with the
   // padding forgotten (it is wider than any sender pads).
   const auto zeros =
-      sandshark_set::decode(sealed("$BPRMB,231137.32,,,," + std::string(400, '0') + "1,0,1"));
+      sandshark_set::decode(resealed("$BPRMB,231137.32,,,," + std::string(400, '0') + "1,0,1"));
   REQUIRE(zeros.ok());
   CHECK(std::get<sandshark::bprmb>(zeros.value).speed == decimal(1));
 }
 
 TEST_CASE("-0 keeps its sign where a sign may stand, and is refused where none may") {
-  const std::string line = sealed("$BPRMB,231137.32,-0,-0.0,,750,0,1");
+  const std::string line = resealed("$BPRMB,231137.32,-0,-0.0,,750,0,1");
   const auto r = sandshark_set::decode(line, strict);
   REQUIRE(r.ok());
   const auto& m = std::get<sandshark::bprmb>(r.value);
@@ -271,17 +263,17 @@ TEST_CASE("-0 keeps its sign where a sign may stand, and is refused where none m
   CHECK(m.depth->places == 1);
   CHECK(encode(m).view() == line);
   // Ranges compare values: -0 is 0, inside [0, 360) and >= 0.
-  CHECK(kingfisher_set::decode(sealed("$PYDEV,-0,-0.0")).ok());
+  CHECK(kingfisher_set::decode(resealed("$PYDEV,-0,-0.0")).ok());
   // RobotX decimal degrees are unsigned: the letter is the sign.
-  const auto hrb = robotx_set::decode(sealed("$RXHRB,111221,161229,-0,N,157.88972,W,ROBOT,2,1"));
+  const auto hrb = robotx_set::decode(resealed("$RXHRB,111221,161229,-0,N,157.88972,W,ROBOT,2,1"));
   CHECK(hrb.ec == errc::bad_latitude);
   CHECK(hrb.field == 3);
   // A time, a date and NMEA positions have no sign at all.
-  CHECK(kingfisher_set::decode(sealed("$CPALT,-00000,1")).ec == errc::bad_time);
-  CHECK(robotx_set::decode(sealed("$RXHRB,-11221,161229,,,,,ROBOT,2,1")).ec == errc::bad_date);
-  CHECK(standard_set::decode(sealed("$GPRMC,,A,-000.0,N,,,,,,,")).ec == errc::bad_latitude);
+  CHECK(kingfisher_set::decode(resealed("$CPALT,-00000,1")).ec == errc::bad_time);
+  CHECK(robotx_set::decode(resealed("$RXHRB,-11221,161229,,,,,ROBOT,2,1")).ec == errc::bad_date);
+  CHECK(standard_set::decode(resealed("$GPRMC,,A,-000.0,N,,,,,,,")).ec == errc::bad_latitude);
   // An unsigned integer reads -0 as the 0 it is.
-  const auto id = kingfisher_set::decode(sealed("$CPRCM,164959.065,-0,234.3,-1.6,-6.6,"));
+  const auto id = kingfisher_set::decode(resealed("$CPRCM,164959.065,-0,234.3,-1.6,-6.6,"));
   REQUIRE(id.ok());
   CHECK(std::get<kingfisher::cprcm>(id.value).compass_id == 0);
 }
@@ -291,11 +283,12 @@ TEST_CASE("exponents, hex, inf and nan are not numbers") {
        {"1e5", "1E5", "1.5e-3", "1e", "e5", "inf", "-inf", "nan", "0x10", "1.2.3",
         "1-2", "+-1", "--1",    ".",  "-",  "+",   " ",    "1 2", "- 1",  "1_000"}) {
     INFO(n);
-    const auto d = sandshark_set::decode(sealed("$BPRMB,231137.32,,,," + std::string(n) + ",0,1"));
+    const auto d =
+        sandshark_set::decode(resealed("$BPRMB,231137.32,,,," + std::string(n) + ",0,1"));
     CHECK(d.ec == errc::bad_number);
     CHECK(d.field == 5);
-    const auto i =
-        kingfisher_set::decode(sealed("$CPRCM,164959.065," + std::string(n) + ",234.3,-1.6,-6.6,"));
+    const auto i = kingfisher_set::decode(
+        resealed("$CPRCM,164959.065," + std::string(n) + ",234.3,-1.6,-6.6,"));
     CHECK(i.ec == errc::bad_number);
     CHECK(i.field == 2);
   }
@@ -303,12 +296,12 @@ TEST_CASE("exponents, hex, inf and nan are not numbers") {
   // and the strict policy refuses.
   for (const std::string_view n : {"+5", " 5", "5 ", " -5 "}) {
     INFO(n);
-    const std::string line = sealed("$BPRMB,231137.32,,,," + std::string(n) + ",0,1");
+    const std::string line = resealed("$BPRMB,231137.32,,,," + std::string(n) + ",0,1");
     CHECK(sandshark_set::decode(line, sandshark::to_vehicle_policy).ok());
     CHECK(sandshark_set::decode(line, strict).ec == errc::bad_number);
   }
   // Elsewhere a space is not part of a number.
-  CHECK(kingfisher_set::decode(sealed("$CPRCM,164959.065, 2,234.3,-1.6,-6.6,")).ec ==
+  CHECK(kingfisher_set::decode(resealed("$CPRCM,164959.065, 2,234.3,-1.6,-6.6,")).ec ==
         errc::bad_number);
 }
 
@@ -438,7 +431,7 @@ TEST_CASE("every field blank: decoded where the spec allows it, missing_field wh
     REQUIRE(every_set::knows(row.address));
     std::size_t fields = 0;  // every wire field of the message's longest form
     while (!every_set::field_name(row.address, fields + 1).empty()) ++fields;
-    const std::string line = sealed("$" + std::string(row.address) + std::string(fields, ','));
+    const std::string line = resealed("$" + std::string(row.address) + std::string(fields, ','));
     INFO(line);
     for (const parse_policy& p : {liberal, strict}) {
       const auto d = every_set::decode(line, p);
@@ -647,8 +640,8 @@ TEST_CASE("fuzz: encode() holds every sentence that decodes") {
   // receiver takes) but did not fit encode()'s 256 bytes. The buffer now comes from the longest
   // text each field's codec can write.
   const std::string d = "-0000000000000000000.000000000000000001";
-  const std::string line = sealed("$CPIMU,235959.123456789," + d + "," + d + "," + d + "," + d +
-                                  "," + d + "," + d + ",235959.123456789");
+  const std::string line = resealed("$CPIMU,235959.123456789," + d + "," + d + "," + d + "," + d +
+                                    "," + d + "," + d + ",235959.123456789");
   const auto r = decode<kingfisher::cpimu>(line);
   REQUIRE(r);
   const auto e = encode(r.value);

@@ -13,10 +13,14 @@
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/message.hpp"
 
+#include "support.hpp"
+
 using namespace seawire;
 using namespace seawire::nmea;
 
 namespace {
+
+using namespace support;
 
 enum class status : char { valid = 'A', invalid = 'V' };
 constexpr std::string_view enum_chars(status) noexcept { return "AV"; }
@@ -64,15 +68,6 @@ struct optionals {
                         field<&optionals::level>("level", max_places(1)),
                         field<&optionals::tail>("tail", may_be_absent));
 };
-
-std::string seal(std::string_view body) {
-  const auto cs = checksum(body);
-  char hex[3];
-  hex[0] = "0123456789ABCDEF"[cs >> 4];
-  hex[1] = "0123456789ABCDEF"[cs & 15];
-  hex[2] = 0;
-  return "$" + std::string(body) + "*" + hex + "\r\n";
-}
 
 constexpr std::string_view kAll =
     "$TSALL,235960.123456789,290224,0000.0000,S,17959.9999,E,-0.0,-32768,1,V,OFF,a b:c*3C\r\n";
@@ -185,8 +180,8 @@ TEST_CASE("positions: split at the decimal point, unpadded degrees, domain check
                     {"521.5", "521.5", 5.3583333333, -5.3583333333},
                     {"4221", "07105", 42.35, -71.0833333333}};
   for (const auto& r : ok) {
-    const std::string line = seal("TSALL,000000,010100," + std::string(r.lat) + ",N," +
-                                  std::string(r.lon) + ",W,0,0,0,A,ON,");
+    const std::string line = sealed("TSALL,000000,010100," + std::string(r.lat) + ",N," +
+                                    std::string(r.lon) + ",W,0,0,0,A,ON,");
     INFO(line);
     const auto d = decode<all_types>(line);
     REQUIRE(d);
@@ -198,7 +193,7 @@ TEST_CASE("positions: split at the decimal point, unpadded degrees, domain check
     if (lat.find('.') == std::string::npos) lat += ".0";
     if (lon.find('.') == std::string::npos) lon += ".0";
     CHECK(encode(d.value).view() ==
-          seal("TSALL,000000,010100," + lat + ",N," + lon + ",W,0,0,0,A,ON,"));
+          sealed("TSALL,000000,010100," + lat + ",N," + lon + ",W,0,0,0,A,ON,"));
   }
 }
 
@@ -264,7 +259,7 @@ TEST_CASE("malformed fields: errc and field number") {
       {"TSALL,120000,010100,4221.7", errc::too_few_fields, 4},
   };
   for (const auto& r : rows) {
-    const std::string line = seal(r.body);
+    const std::string line = sealed(r.body);
     INFO(line);
     const auto d = decode<all_types>(line);
     CHECK(d.ec == r.expected);
@@ -274,14 +269,14 @@ TEST_CASE("malformed fields: errc and field number") {
 }
 
 TEST_CASE("error columns point at the offending field") {
-  const std::string line = seal("TSALL,120000,010100,4261.7,N,07105.4,W,0,0,0,A,ON,");
+  const std::string line = sealed("TSALL,120000,010100,4261.7,N,07105.4,W,0,0,0,A,ON,");
   const auto d = decode<all_types>(line);
   CHECK(d.ec == errc::minute_out_of_range);
   CHECK(line.substr(d.column, 6) == "4261.7");
 }
 
 TEST_CASE("extra trailing fields: ignored by default, refused under strict") {
-  const std::string line = seal("TSALL,120000,010100,4221.7,N,07105.4,W,0,0,0,A,ON,x,extra,more");
+  const std::string line = sealed("TSALL,120000,010100,4221.7,N,07105.4,W,0,0,0,A,ON,x,extra,more");
   CHECK(decode<all_types>(line));
   const auto strict = decode<all_types>(line, parse_policy::strict());
   CHECK(strict.ec == errc::too_many_fields);
@@ -289,11 +284,11 @@ TEST_CASE("extra trailing fields: ignored by default, refused under strict") {
 }
 
 TEST_CASE("strict values: no '+' signs, no reserved characters in text; spaces by numbers") {
-  const std::string plus = seal("TSALL,120000,010100,4221.7,N,07105.4,W,+5,0,0,A,ON,");
+  const std::string plus = sealed("TSALL,120000,010100,4221.7,N,07105.4,W,+5,0,0,A,ON,");
   CHECK(decode<all_types>(plus));
   CHECK(decode<all_types>(plus).value.value == decimal{5});
   CHECK(decode<all_types>(plus, parse_policy::strict()).ec == errc::bad_number);
-  const std::string spaced = seal("TSALL,120000,010100,4221.7,N,07105.4,W, -5.5,0,0,A,ON,");
+  const std::string spaced = sealed("TSALL,120000,010100,4221.7,N,07105.4,W, -5.5,0,0,A,ON,");
   parse_policy spi;
   spi.spaced_numbers = true;
   REQUIRE(decode<all_types>(spaced, spi));
@@ -306,13 +301,13 @@ TEST_CASE("strict values: no '+' signs, no reserved characters in text; spaces b
     CHECK(r.ec == errc::bad_number);
     CHECK(r.field == 7);
   }
-  const std::string bang = seal("TSALL,120000,010100,4221.7,N,07105.4,W,5,0,0,A,ON,hi!");
+  const std::string bang = sealed("TSALL,120000,010100,4221.7,N,07105.4,W,5,0,0,A,ON,hi!");
   CHECK(decode<all_types>(bang));
   CHECK(decode<all_types>(bang, parse_policy::strict()).ec == errc::bad_text);
 }
 
 TEST_CASE("word enum aliases are accepted and written in the main spelling") {
-  const std::string line = seal("TSALL,120000,010100,4221.7,N,07105.4,W,5,0,0,A,OF,");
+  const std::string line = sealed("TSALL,120000,010100,4221.7,N,07105.4,W,5,0,0,A,OF,");
   const auto d = decode<all_types>(line);
   REQUIRE(d);
   CHECK(d.value.power == switch_state::off);
@@ -321,7 +316,7 @@ TEST_CASE("word enum aliases are accepted and written in the main spelling") {
 
 TEST_CASE("optional fields, units, field-count forms and absent tails") {
   SECTION("all blank") {
-    const std::string line = seal("TSOPT,,N,,");
+    const std::string line = sealed("TSOPT,,N,,");
     const auto d = decode<optionals>(line);
     REQUIRE(d);
     CHECK_FALSE(d.value.speed);
@@ -332,13 +327,13 @@ TEST_CASE("optional fields, units, field-count forms and absent tails") {
     CHECK(encode(d.value).view() == line);
   }
   SECTION("blank unit letter is accepted, the right one is written") {
-    const auto d = decode<optionals>(seal("TSOPT,5.2,,359.9,1.5"));
+    const auto d = decode<optionals>(sealed("TSOPT,5.2,,359.9,1.5"));
     REQUIRE(d);
     CHECK(*d.value.speed == decimal::scaled(52, 1));
-    CHECK(encode(d.value).view() == seal("TSOPT,5.2,N,359.9,1.5"));
+    CHECK(encode(d.value).view() == sealed("TSOPT,5.2,N,359.9,1.5"));
   }
   SECTION("a sentence that stops early: blanks when liberal, too_few_fields when strict") {
-    const std::string short_line = seal("TSOPT,5.2,N");
+    const std::string short_line = sealed("TSOPT,5.2,N");
     const auto liberal = decode<optionals>(short_line);
     REQUIRE(liberal);
     CHECK_FALSE(liberal.value.heading);
@@ -346,30 +341,30 @@ TEST_CASE("optional fields, units, field-count forms and absent tails") {
     CHECK(strict.ec == errc::too_few_fields);
     CHECK(strict.field == 3);
     // Fields declared droppable may still be left out under strict.
-    CHECK(decode<optionals>(seal("TSOPT,5.2,N,1,2"), parse_policy::strict()));
+    CHECK(decode<optionals>(sealed("TSOPT,5.2,N,1,2"), parse_policy::strict()));
   }
   SECTION("wrong unit letter") {
-    const auto d = decode<optionals>(seal("TSOPT,5.2,K,1,1"));
+    const auto d = decode<optionals>(sealed("TSOPT,5.2,K,1,1"));
     CHECK(d.ec == errc::bad_unit);
     CHECK(d.field == 2);
   }
   SECTION("half-open range") {
-    CHECK(decode<optionals>(seal("TSOPT,1,N,360,1")).ec == errc::out_of_range);
-    CHECK(decode<optionals>(seal("TSOPT,1,N,0,1")));
-    CHECK(decode<optionals>(seal("TSOPT,-1,N,0,1")).ec == errc::out_of_range);
+    CHECK(decode<optionals>(sealed("TSOPT,1,N,360,1")).ec == errc::out_of_range);
+    CHECK(decode<optionals>(sealed("TSOPT,1,N,0,1")));
+    CHECK(decode<optionals>(sealed("TSOPT,-1,N,0,1")).ec == errc::out_of_range);
   }
   SECTION("max places") {
-    CHECK(decode<optionals>(seal("TSOPT,1,N,0,1.25")).ec == errc::out_of_range);
+    CHECK(decode<optionals>(sealed("TSOPT,1,N,0,1.25")).ec == errc::out_of_range);
   }
   SECTION("a field present only in the longer form") {
-    const std::string six = seal("TSOPT,1,N,2,7,3.5,tl");
+    const std::string six = sealed("TSOPT,1,N,2,7,3.5,tl");
     const auto d = decode<optionals>(six);
     REQUIRE(d);
     CHECK(*d.value.id == 7);
     CHECK(*d.value.level == decimal::scaled(35, 1));
     CHECK(*d.value.tail == "tl");
     CHECK(encode(d.value).view() == six);
-    const std::string five = seal("TSOPT,1,N,2,3.5,tl");
+    const std::string five = sealed("TSOPT,1,N,2,3.5,tl");
     const auto e = decode<optionals>(five);
     REQUIRE(e);
     CHECK_FALSE(e.value.id);
@@ -377,7 +372,7 @@ TEST_CASE("optional fields, units, field-count forms and absent tails") {
     CHECK(encode(e.value).view() == five);
   }
   SECTION("the longer form with an extra trailing field is still the longer form") {
-    const auto d = decode<optionals>(seal("TSOPT,1,N,2,7,3.5,tl,extra"));
+    const auto d = decode<optionals>(sealed("TSOPT,1,N,2,7,3.5,tl,extra"));
     REQUIRE(d);
     CHECK(*d.value.id == 7);
     CHECK(*d.value.level == decimal::scaled(35, 1));
@@ -392,7 +387,7 @@ TEST_CASE("optional fields, units, field-count forms and absent tails") {
     CHECK(encode(o).field == 5);
   }
   SECTION("a blank tail is empty text, an absent one is nullopt") {
-    const std::string blank = seal("TSOPT,1,N,2,3,");
+    const std::string blank = sealed("TSOPT,1,N,2,3,");
     const auto d = decode<optionals>(blank);
     REQUIRE(d);
     REQUIRE(d.value.tail);
@@ -530,22 +525,22 @@ TEST_CASE("dispatch by address: variant, visitor, unknown sentences") {
   using set = message_set<all_types, optionals>;
   STATIC_REQUIRE(set::knows("TSOPT"));
   STATIC_REQUIRE_FALSE(set::knows("TSXXX"));
-  auto r = set::decode(seal("TSOPT,1,N,2,3"));
+  auto r = set::decode(sealed("TSOPT,1,N,2,3"));
   REQUIRE(r);
   CHECK(std::holds_alternative<optionals>(r.value));
-  const std::string unknown = seal("TSXXX,1,2");
+  const std::string unknown = sealed("TSXXX,1,2");
   r = set::decode(unknown);
   REQUIRE(r);
   REQUIRE(std::holds_alternative<unknown_sentence>(r.value));
   CHECK(std::get<unknown_sentence>(r.value).sentence.address == "TSXXX");
-  r = set::decode(seal("TSOPT,1,X,2,3"));
+  r = set::decode(sealed("TSOPT,1,X,2,3"));
   CHECK(r.ec == errc::bad_unit);
   CHECK(r.field == 2);
   CHECK(set::field_name("TSOPT", 2) == "speed");
   CHECK(set::field_name("TSOPT", 3) == "heading");
 
   int seen = 0;
-  const std::string line = seal("TSOPT,1,N,2,3");
+  const std::string line = sealed("TSOPT,1,N,2,3");
   const auto s = parse(line);
   REQUIRE(s);
   const auto v = set::visit(s.value, {}, [&](const auto& msg) {

@@ -8,18 +8,14 @@
 
 #include "seawire/seawire.hpp"
 
+#include "support.hpp"
+
 namespace {
+
+using namespace support;
 
 using namespace seawire;
 using nmea::decimal;
-
-std::string seal(std::string_view body) {
-  const auto cs = nmea::checksum(body);
-  std::string s = "$" + std::string(body) + "*";
-  s += "0123456789ABCDEF"[cs >> 4];
-  s += "0123456789ABCDEF"[cs & 15];
-  return s + "\r\n";
-}
 
 template <class T>
 std::string round_trip(const std::string& line) {
@@ -33,7 +29,8 @@ std::string round_trip(const std::string& line) {
 }  // namespace
 
 TEST_CASE("GGA with a blank fix quality: not available, and the rest of the fix kept") {
-  const std::string line = seal("GPGGA,105027.80,5612.9956,N,00306.6983,W,,3,2.506,160.002,M,,M,,");
+  const std::string line =
+      sealed("GPGGA,105027.80,5612.9956,N,00306.6983,W,,3,2.506,160.002,M,,M,,");
   const auto g = nmea::decode<standard::gga>(line);
   REQUIRE(g);
   CHECK_FALSE(g.value.quality.has_value());
@@ -47,11 +44,11 @@ TEST_CASE("GGA with a blank fix quality: not available, and the rest of the fix 
   CHECK_FALSE(g.value.geoid_separation_m);
   // Satellites are written with two digits, the standard's form (a documented normalization).
   CHECK(round_trip<standard::gga>(line) ==
-        seal("GPGGA,105027.80,5612.9956,N,00306.6983,W,,03,2.506,160.002,M,,M,,"));
+        sealed("GPGGA,105027.80,5612.9956,N,00306.6983,W,,03,2.506,160.002,M,,M,,"));
 
   // A quality that is there is still checked.
   CHECK(nmea::decode<standard::gga>(
-            seal("GPGGA,105027.80,5612.9956,N,00306.6983,W,9,03,2.5,160.0,M,,M,,"))
+            sealed("GPGGA,105027.80,5612.9956,N,00306.6983,W,9,03,2.5,160.0,M,,M,,"))
             .ec == errc::bad_enum);
   standard::gga built;
   built.quality = standard::gps_quality::dgps;
@@ -63,19 +60,19 @@ TEST_CASE("GGA with a blank fix quality: not available, and the rest of the fix 
 TEST_CASE("RMC magnetic variation: its own type, and an impossible one costs no fix") {
   const std::string base = "GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,";
   SECTION("a real variation, signed east positive") {
-    const auto r = nmea::decode<standard::rmc>(seal(base + "15.3,W,A"));
+    const auto r = nmea::decode<standard::rmc>(sealed(base + "15.3,W,A"));
     REQUIRE(r);
     REQUIRE(r.value.magnetic_variation);
     CHECK(r.value.magnetic_variation->value == decimal::parse("15.3").value);
     CHECK(r.value.magnetic_variation->direction == nmea::hemisphere::west);
     CHECK(*r.value.magnetic_variation->degrees() == Approx(-15.3));
-    CHECK(round_trip<standard::rmc>(seal(base + "15.3,W,A")) == seal(base + "15.3,W,A"));
-    CHECK(nmea::decode<standard::rmc>(seal(base + "180.0,E,A")));
+    CHECK(round_trip<standard::rmc>(sealed(base + "15.3,W,A")) == sealed(base + "15.3,W,A"));
+    CHECK(nmea::decode<standard::rmc>(sealed(base + "180.0,E,A")));
   }
   SECTION("999.9,E (\"unknown\" on some receivers): the fix is kept, the variation is not") {
     for (const std::string v : {"999.9,E", "180.1,W", "360,E"}) {
       INFO(v);
-      const auto r = nmea::decode<standard::rmc>(seal(base + v + ",A"));
+      const auto r = nmea::decode<standard::rmc>(sealed(base + v + ",A"));
       REQUIRE(r);
       REQUIRE(r.value.lat);
       CHECK(r.value.speed_knots == decimal::parse("0.145").value);
@@ -84,24 +81,25 @@ TEST_CASE("RMC magnetic variation: its own type, and an impossible one costs no 
       CHECK_FALSE(r.value.magnetic_variation->degrees());
       // Written back as the letter alone: "no value" is what the sender meant.
       const std::string letter = v.substr(v.size() - 1);
-      CHECK(round_trip<standard::rmc>(seal(base + v + ",A")) == seal(base + "," + letter + ",A"));
+      CHECK(round_trip<standard::rmc>(sealed(base + v + ",A")) ==
+            sealed(base + "," + letter + ",A"));
     }
   }
   SECTION("a letter without a value is kept as it came") {
-    const auto r = nmea::decode<standard::rmc>(seal(base + ",E,A"));
+    const auto r = nmea::decode<standard::rmc>(sealed(base + ",E,A"));
     REQUIRE(r);
     REQUIRE(r.value.magnetic_variation);
     CHECK_FALSE(r.value.magnetic_variation->value);
     CHECK(r.value.magnetic_variation->direction == nmea::hemisphere::east);
-    CHECK(round_trip<standard::rmc>(seal(base + ",E,A")) == seal(base + ",E,A"));
+    CHECK(round_trip<standard::rmc>(sealed(base + ",E,A")) == sealed(base + ",E,A"));
   }
   SECTION("both blank, or a value with no letter: no variation") {
     for (const std::string v : {",", "15.3,"}) {
       INFO(v);
-      const auto r = nmea::decode<standard::rmc>(seal(base + v + ",A"));
+      const auto r = nmea::decode<standard::rmc>(sealed(base + v + ",A"));
       REQUIRE(r);
       CHECK_FALSE(r.value.magnetic_variation);
-      CHECK(round_trip<standard::rmc>(seal(base + v + ",A")) == seal(base + ",,A"));
+      CHECK(round_trip<standard::rmc>(sealed(base + v + ",A")) == sealed(base + ",,A"));
     }
   }
   SECTION("the letter left out and the mode in its place (11 fields, SiRF and Saab receivers)") {
@@ -120,13 +118,13 @@ TEST_CASE("RMC magnetic variation: its own type, and an impossible one costs no 
     REQUIRE(saab);
     CHECK_FALSE(saab.value.magnetic_variation);
     CHECK(saab.value.mode == standard::mode_indicator::autonomous);
-    const auto no_fix = nmea::decode<standard::rmc>(seal(base + "0,N"));
+    const auto no_fix = nmea::decode<standard::rmc>(sealed(base + "0,N"));
     REQUIRE(no_fix);
     CHECK(no_fix.value.mode == standard::mode_indicator::not_valid);
     // Only as the last field: with 12 fields the 11th is the letter, and 'A' is no letter.
-    CHECK(nmea::decode<standard::rmc>(seal(base + "0,A,A")).ec == errc::bad_variation_direction);
+    CHECK(nmea::decode<standard::rmc>(sealed(base + "0,A,A")).ec == errc::bad_variation_direction);
     // 'E' is a direction before it is a mode ("estimated"): the standard form wins.
-    const auto e = nmea::decode<standard::rmc>(seal(base + ",E"));
+    const auto e = nmea::decode<standard::rmc>(sealed(base + ",E"));
     REQUIRE(e);
     REQUIRE(e.value.magnetic_variation);
     CHECK(e.value.magnetic_variation->direction == nmea::hemisphere::east);
@@ -145,7 +143,7 @@ TEST_CASE("RMC magnetic variation: its own type, and an impossible one costs no 
           row{",X", errc::bad_variation_direction, 11},
           row{"3.1,EW", errc::bad_variation_direction, 11}}) {
       INFO(r.v);
-      const auto d = nmea::decode<standard::rmc>(seal(base + r.v + ",A"));
+      const auto d = nmea::decode<standard::rmc>(sealed(base + r.v + ",A"));
       CHECK(d.ec == r.ec);
       CHECK(d.field == r.field);
       CHECK(nmea::field_name<standard::rmc>(d.field) == "magnetic_variation");
@@ -179,11 +177,11 @@ TEST_CASE("without a checksum, a sentence must reach its shortest form") {
   CHECK(nmea::field_name<standard::rmc>(r.field) == "course_true");
 
   // With a checksum the sender says it stopped there: absent fields read as blank.
-  const auto sealed =
-      nmea::decode<standard::rmc>(seal("GNRMC,001053.00,A,4404.14083,N,12118.85886,W,0."));
-  REQUIRE(sealed);
-  CHECK_FALSE(sealed.value.course_true);
-  CHECK_FALSE(sealed.value.date);
+  const auto vouched =
+      nmea::decode<standard::rmc>(sealed("GNRMC,001053.00,A,4404.14083,N,12118.85886,W,0."));
+  REQUIRE(vouched);
+  CHECK_FALSE(vouched.value.course_true);
+  CHECK_FALSE(vouched.value.date);
 
   // Fields a sender may leave out (RMC 12 and 13) may still be missing without a checksum.
   const auto v22 = nmea::decode<standard::rmc>(
@@ -195,7 +193,7 @@ TEST_CASE("without a checksum, a sentence must reach its shortest form") {
   using set = nmea::message_set<standard::rmc, standard::gga, standard::vhw>;
   CHECK(set::decode("$GPGGA,105027.80,5612.9956,N,00306.6983,W,1,03\r\n").ec ==
         errc::too_few_fields);
-  CHECK(set::decode(seal("GPGGA,105027.80,5612.9956,N,00306.6983,W,1,03")).ok());
+  CHECK(set::decode(sealed("GPGGA,105027.80,5612.9956,N,00306.6983,W,1,03")).ok());
   CHECK(sandshark::decode_to_vehicle("$BPRMB,081025.987,90.0,5.0,0\r\n").ec ==
         errc::too_few_fields);
   CHECK(kingfisher::decode_to_vehicle("$PYDIR,12.5\r\n").ec == errc::too_few_fields);

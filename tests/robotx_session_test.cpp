@@ -14,7 +14,11 @@
 #include <string_view>
 #include <vector>
 
+#include "support.hpp"
+
 namespace {
+
+using namespace support;
 
 using namespace std::chrono;
 using namespace std::chrono_literals;
@@ -40,19 +44,6 @@ static_assert(rx::from_hst(hst(2018, 12, 10, 16, 12, 29)).value == seed_utc);
 static_assert(rx::to_hst(utc(2019y / 1 / 1, 9h + 59min + 59s)).value ==
               hst(2018, 12, 31, 23, 59, 59));
 static_assert(rx::to_hst(utc(2019y / 1 / 1, 10h)).value == hst(2019, 1, 1, 0, 0, 0));
-
-std::string sealed(std::string_view body) {
-  std::uint8_t x = 0;
-  for (char c : body) x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(c));
-  constexpr char hex[] = "0123456789ABCDEF";
-  std::string s = "$";
-  s += body;
-  s += '*';
-  s += hex[x >> 4];
-  s += hex[x & 0xF];
-  s += "\r\n";
-  return s;
-}
 
 rx::rxhrb heartbeat_content() {
   rx::rxhrb hb;

@@ -14,6 +14,8 @@
 #include "seawire/nmea/checksum.hpp"
 #include "seawire/sandshark/session.hpp"
 
+#include "support.hpp"
+
 using namespace seawire;
 using namespace seawire::sandshark;
 using namespace seawire::nmea;
@@ -21,13 +23,9 @@ using namespace std::chrono_literals;
 
 namespace {
 
-time_point at(std::chrono::milliseconds ms) { return time_point{} + ms; }
+using namespace support;
 
-std::string sealed(std::string_view body) {
-  char hex[3];
-  std::snprintf(hex, sizeof hex, "%02X", static_cast<unsigned>(nmea::checksum(body)));
-  return "$" + std::string(body) + "*" + hex + "\r\n";
-}
+time_point at(std::chrono::milliseconds ms) { return time_point{} + ms; }
 
 template <class S>
 std::vector<std::string> sent(S& s) {

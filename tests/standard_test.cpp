@@ -10,25 +10,22 @@
 #include "seawire/standard/gga.hpp"
 #include "seawire/standard/rmc.hpp"
 
+#include "support.hpp"
+
 using namespace seawire;
 using namespace seawire::nmea;
 using standard::gga;
 using standard::rmc;
 
 namespace {
+
+using namespace support;
 // From a real Kingfisher vehicle (2014), relayed from its GPS receiver.
 constexpr std::string_view kRmc =
     "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70\r\n";
 constexpr std::string_view kGga =
     "$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C\r\n";
 
-std::string seal(std::string_view body) {
-  const auto cs = checksum(body);
-  std::string s = "$" + std::string(body) + "*";
-  s += "0123456789ABCDEF"[cs >> 4];
-  s += "0123456789ABCDEF"[cs & 15];
-  return s + "\r\n";
-}
 }  // namespace
 
 // decode -> encode is the identity on canonical input, at compile time.
@@ -59,15 +56,15 @@ TEST_CASE("RMC from a real receiver") {
 
 TEST_CASE("RMC in the forms of NMEA 2.2, 2.3 and 4.1, from any talker") {
   const std::string forms[] = {
-      seal("GPRMC,081836,A,3751.65,S,14507.36,E,000.0,360.0,130998,011.3,E"),  // 11 fields
-      seal("GNRMC,092750.000,A,5321.6802,N,00630.3372,W,0.02,31.66,280511,,,A"),
-      seal("INRMC,235959.99,V,,,,,,,010180,,,N"),
-      seal("GNRMC,120000.00,A,0000.0000,S,00000.0000,W,0.00,0.00,290224,3.1,W,D,S"),
-      seal("GPRMC,,V,,,,,,,,,,N"),
+      sealed("GPRMC,081836,A,3751.65,S,14507.36,E,000.0,360.0,130998,011.3,E"),  // 11 fields
+      sealed("GNRMC,092750.000,A,5321.6802,N,00630.3372,W,0.02,31.66,280511,,,A"),
+      sealed("INRMC,235959.99,V,,,,,,,010180,,,N"),
+      sealed("GNRMC,120000.00,A,0000.0000,S,00000.0000,W,0.00,0.00,290224,3.1,W,D,S"),
+      sealed("GPRMC,,V,,,,,,,,,,N"),
       // Blank mode (2.3) and blank navigational status (4.1): written back blank, not left out.
-      seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,"),
-      seal("GNRMC,120000.00,A,0000.0000,S,00000.0000,W,0.00,0.00,290224,3.1,W,D,"),
-      seal("GNRMC,120000.00,V,,,,,,,290224,,,,"),
+      sealed("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,"),
+      sealed("GNRMC,120000.00,A,0000.0000,S,00000.0000,W,0.00,0.00,290224,3.1,W,D,"),
+      sealed("GNRMC,120000.00,V,,,,,,,290224,,,,"),
   };
   for (const auto& line : forms) {
     INFO(line);
@@ -102,17 +99,17 @@ TEST_CASE("RMC in the forms of NMEA 2.2, 2.3 and 4.1, from any talker") {
   CHECK(decode<rmc>(forms[5]).value.wire_fields == 12);
   CHECK(decode<rmc>(forms[6]).value.wire_fields == 13);
   CHECK(decode<rmc>(forms[7]).value.wire_fields == 13);
-  CHECK(decode<rmc>(seal("GNRMC,120000.00,A,,,,,,,290224,,,,S")).value.wire_fields == 0);
+  CHECK(decode<rmc>(sealed("GNRMC,120000.00,A,,,,,,,290224,,,,S")).value.wire_fields == 0);
   // Built in code, no mode: the 11-field form.
   rmc built = decode<rmc>(forms[5]).value;
   built.wire_fields = 0;
-  CHECK(encode(built).view() == seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
-                                     "311214,,"));
+  CHECK(encode(built).view() == sealed("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
+                                       "311214,,"));
   // A mode set later is written, and the fields wire_fields asks for after it.
   built.mode = standard::mode_indicator::autonomous;
   built.wire_fields = 13;
-  CHECK(encode(built).view() == seal("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
-                                     "311214,,,A,"));
+  CHECK(encode(built).view() == sealed("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
+                                       "311214,,,A,"));
 }
 
 TEST_CASE("GGA from a real receiver") {
@@ -131,7 +128,7 @@ TEST_CASE("GGA from a real receiver") {
   CHECK(encode(m).view() == kGga);
 
   const std::string dgps =
-      seal("GNGGA,001043.00,4404.14036,N,12118.85961,W,2,12,0.98,1113.0,M,-21.3,M,1.2,0042");
+      sealed("GNGGA,001043.00,4404.14036,N,12118.85961,W,2,12,0.98,1113.0,M,-21.3,M,1.2,0042");
   const auto d = decode<gga>(dgps);
   REQUIRE(d);
   CHECK(d.value.quality == standard::gps_quality::dgps);
@@ -139,7 +136,7 @@ TEST_CASE("GGA from a real receiver") {
   CHECK(*d.value.dgps_station == 42);
   CHECK(encode(d.value).view() == dgps);
 
-  const std::string nofix = seal("GPGGA,,,,,,0,,,,M,,M,,");
+  const std::string nofix = sealed("GPGGA,,,,,,0,,,,M,,M,,");
   const auto n = decode<gga>(nofix);
   REQUIRE(n);
   CHECK(n.value.quality == standard::gps_quality::invalid);
@@ -187,7 +184,7 @@ TEST_CASE("RMC and GGA malformed input: errc and field number") {
       {"GPRMC,164959.00", errc::too_few_fields, 2},
   };
   for (const auto& r : rmc_rows) {
-    const std::string line = seal(r.body);
+    const std::string line = sealed(r.body);
     INFO(line);
     const auto d = decode<rmc>(line);
     CHECK(d.ec == r.expected);
@@ -203,7 +200,7 @@ TEST_CASE("RMC and GGA malformed input: errc and field number") {
       {"GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6", errc::too_few_fields, 10},
   };
   for (const auto& r : gga_rows) {
-    const std::string line = seal(r.body);
+    const std::string line = sealed(r.body);
     INFO(line);
     const auto d = decode<gga>(line);
     CHECK(d.ec == r.expected);
@@ -267,13 +264,13 @@ TEST_CASE("RMC/GGA round trip over generated values") {
 TEST_CASE("a standard set dispatches any talker") {
   using set = message_set<rmc, gga>;
   for (std::string_view t : {"GP", "GN", "GL", "GA", "BD", "IN", "II"}) {
-    const std::string line = seal(std::string(t) + "GGA,,,,,,0,,,,M,,M,,");
+    const std::string line = sealed(std::string(t) + "GGA,,,,,,0,,,,M,,M,,");
     const auto r = set::decode(line);
     REQUIRE(r);
     REQUIRE(std::holds_alternative<gga>(r.value));
     CHECK(std::get<gga>(r.value).talker == t);
   }
   // Not a talker + RMC: seven characters.
-  const std::string odd = seal("GPXRMC,,V,,,,,,,,,,N");
+  const std::string odd = sealed("GPXRMC,,V,,,,,,,,,,N");
   CHECK(std::holds_alternative<unknown_sentence>(set::decode(odd).value));
 }

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// What many tests need: a sentence sealed with its right checksum, a deterministic random number
+// generator, and the check of a table of malformed sentences (each with the errc and the field
+// number decode must report).
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+
+#include "seawire/error.hpp"
+#include "seawire/nmea/message.hpp"
+
+namespace support {
+
+/// "$" body "*HH" CR LF with the right checksum, so that a table row can break one field only.
+inline std::string sealed(std::string_view body) {
+  std::uint8_t x = 0;
+  for (const char c : body) x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(c));
+  constexpr std::string_view hex = "0123456789ABCDEF";
+  std::string s = "$";
+  s += body;
+  s += '*';
+  s += hex[x >> 4U];
+  s += hex[x & 15U];
+  s += "\r\n";
+  return s;
+}
+
+/// A line that starts with '$' or '!' (and may end in a checksum) with its checksum made right
+/// and CR LF after it.
+inline std::string resealed(std::string_view line) {
+  const std::string_view data = line.substr(0, line.find('*'));
+  std::string s = sealed(data.substr(1));
+  s[0] = data[0];
+  return s;
+}
+
+/// splitmix64: tiny and the same on every platform (std distributions are not), so a failure
+/// names an input that can be replayed from its seed.
+struct prng {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15U);
+    z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9U;
+    z = (z ^ (z >> 27U)) * 0x94D049BB133111EBU;
+    return z ^ (z >> 31U);
+  }
+  /// 0 .. n-1 (n > 0); uniform enough for tests.
+  std::uint64_t below(std::uint64_t n) { return next() % n; }
+  bool chance(unsigned percent) { return below(100) < percent; }
+  bool coin() { return (next() & 1U) != 0; }
+  /// lo .. hi, both included.
+  std::int64_t between(std::int64_t lo, std::int64_t hi) {
+    const auto span = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
+    if (span == std::numeric_limits<std::uint64_t>::max()) return static_cast<std::int64_t>(next());
+    return static_cast<std::int64_t>(static_cast<std::uint64_t>(lo) + next() % (span + 1));
+  }
+};
+
+/// A malformed sentence and what decode must say of it.
+struct bad_case {
+  std::string body;  ///< between '$' and '*'; sealed with the right checksum
+  seawire::errc ec;
+  std::uint16_t field;
+};
+
+/// decode(sealed(c.body)) must fail with c.ec at field c.field.
+template <class Decode>
+void check_bad(const bad_case& c, Decode&& decode) {
+  const std::string line = sealed(c.body);
+  INFO(line);
+  const auto r = decode(std::string_view(line));
+  CHECK(seawire::name(r.ec) == seawire::name(c.ec));
+  CHECK(r.field == c.field);
+}
+
+/// The same through nmea::decode<M> under `policy`.
+template <class M>
+void check_bad(const bad_case& c, const seawire::nmea::parse_policy& policy = {}) {
+  check_bad(c, [&](std::string_view line) { return seawire::nmea::decode<M>(line, policy); });
+}
+
+}  // namespace support
