@@ -15,25 +15,16 @@
 #include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/message.hpp"
 
+#include "support.hpp"
+
 namespace {
+
+using namespace support;
 
 using namespace seawire;
 using seawire::anello::gps_control;
 using seawire::anello::papgpsctrl;
 using seawire::nmea::decimal;
-
-/// "$" body "*HH" CR LF with the right checksum.
-std::string line(std::string_view body) {
-  static constexpr char hex[] = "0123456789ABCDEF";
-  const std::uint8_t x = nmea::checksum(body);
-  std::string s = "$";
-  s += body;
-  s += '*';
-  s += hex[x >> 4u];
-  s += hex[x & 0xFu];
-  s += "\r\n";
-  return s;
-}
 
 template <class T>
 constexpr bool round_trips(std::string_view text,
@@ -118,35 +109,25 @@ TEST_CASE("PAPGPSCTRL: the three values", "[anello][papgpsctrl]") {
 }
 
 TEST_CASE("PAPGPSCTRL: malformed input, errc and field number", "[anello][papgpsctrl]") {
-  struct bad {
-    std::string_view body;
-    errc ec;
-    std::uint16_t field;
-  };
-  const bad cases[] = {
+  const bad_case cases[] = {
       {"PAPGPSCTRL,3", errc::bad_enum, 1},     {"PAPGPSCTRL,01", errc::bad_enum, 1},
       {"PAPGPSCTRL,1.0", errc::bad_enum, 1},   {"PAPGPSCTRL,-1", errc::bad_enum, 1},
       {"PAPGPSCTRL,Y", errc::bad_enum, 1},     {"PAPGPSCTRL,", errc::missing_field, 1},
       {"PAPGPSCTRL", errc::too_few_fields, 1},
   };
-  for (const auto& c : cases) {
-    const std::string text = line(c.body);
-    INFO(text);
-    const auto r = nmea::decode<papgpsctrl>(text, anello::input_policy);
-    CHECK(name(r.ec) == name(c.ec));
-    CHECK(r.field == c.field);
-  }
-  const auto extra = nmea::decode<papgpsctrl>(line("PAPGPSCTRL,1,0"), nmea::parse_policy::strict());
+  for (const auto& c : cases) check_bad<papgpsctrl>(c, anello::input_policy);
+  const auto extra =
+      nmea::decode<papgpsctrl>(sealed("PAPGPSCTRL,1,0"), nmea::parse_policy::strict());
   CHECK(extra.ec == errc::too_many_fields);
   CHECK(extra.field == 2);
   // The INS's own policy ignores trailing fields.
-  CHECK(nmea::decode<papgpsctrl>(line("PAPGPSCTRL,1,0"), anello::input_policy).value.control ==
+  CHECK(nmea::decode<papgpsctrl>(sealed("PAPGPSCTRL,1,0"), anello::input_policy).value.control ==
         gps_control::use);
 
   // The address is matched whole: neither a shorter nor a longer one is PAPGPSCTRL.
-  CHECK(nmea::decode<papgpsctrl>(line("PAPGPSCTR,1")).ec == errc::wrong_address);
-  CHECK(nmea::decode<papgpsctrl>(line("PAPGPSCTRLX,1")).ec == errc::wrong_address);
-  CHECK(nmea::decode<papgpsctrl>(line("XXGPSCTRL,1")).ec == errc::wrong_address);
+  CHECK(nmea::decode<papgpsctrl>(sealed("PAPGPSCTR,1")).ec == errc::wrong_address);
+  CHECK(nmea::decode<papgpsctrl>(sealed("PAPGPSCTRLX,1")).ec == errc::wrong_address);
+  CHECK(nmea::decode<papgpsctrl>(sealed("XXGPSCTRL,1")).ec == errc::wrong_address);
 }
 
 TEST_CASE("PAPGPSCTRL: the encoder refuses a value that is not one of the three",
@@ -181,7 +162,7 @@ TEST_CASE("nmea_inputs: each input from any talker, re-encoded byte for byte", "
       {"PAPGPSCTRL,2", 6},
   };
   for (const auto& in : inputs) {
-    const std::string text = line(in.body);
+    const std::string text = sealed(in.body);
     INFO(text);
     const auto r = anello::decode_input(text);
     REQUIRE(r.ec == errc::ok);
@@ -230,16 +211,16 @@ TEST_CASE("nmea_inputs: what the INS does not take is not an error", "[anello]")
 }
 
 TEST_CASE("nmea_inputs: a bad field is reported with its number", "[anello]") {
-  const auto vhw = anello::decode_input(line("VWVHW,87.3,M,,M,4.67,N,8.64,K"));
+  const auto vhw = anello::decode_input(sealed("VWVHW,87.3,M,,M,4.67,N,8.64,K"));
   CHECK(vhw.ec == errc::bad_unit);
   CHECK(vhw.field == 2);
   CHECK(anello::nmea_inputs::field_name("VWVHW", vhw.field) == "heading_true_deg");
 
-  const auto vbw = anello::decode_input(line("VMVBW,0.0,0.0,X,0.0,0.0,A"));
+  const auto vbw = anello::decode_input(sealed("VMVBW,0.0,0.0,X,0.0,0.0,A"));
   CHECK(vbw.ec == errc::bad_enum);
   CHECK(vbw.field == 3);
 
-  const auto ctl = anello::decode_input(line("PAPGPSCTRL,9"));
+  const auto ctl = anello::decode_input(sealed("PAPGPSCTRL,9"));
   CHECK(ctl.ec == errc::bad_enum);
   CHECK(ctl.field == 1);
 }
@@ -258,7 +239,7 @@ TEST_CASE("input_policy: checksum required, otherwise liberal", "[anello][policy
   CHECK(anello::decode_input("$PAPGPSCTRL,1*11\n").ec == errc::ok);
   CHECK(anello::decode_input("$PAPGPSCTRL,1*11").ec == errc::ok);
   // Fields a later NMEA version appends are ignored.
-  const auto longer = anello::decode_input(line("VWVHW,87.3,T,,M,4.67,N,8.64,K,extra"));
+  const auto longer = anello::decode_input(sealed("VWVHW,87.3,T,,M,4.67,N,8.64,K,extra"));
   CHECK(longer.ec == errc::ok);
   CHECK(std::get_if<standard::vhw>(&longer.value) != nullptr);
 
@@ -281,7 +262,7 @@ TEST_CASE("make_vhw: m/s to knots and km/h, headings in degrees", "[anello][si]"
   CHECK(r.value.heading_magnetic_deg == decimal::scaled(750, 1));
   CHECK(r.value.speed_knots == decimal::scaled(467, 2));
   CHECK(r.value.speed_kmh == decimal::scaled(864, 2));
-  CHECK(nmea::encode(r.value).view() == line("VWVHW,87.3,T,75.0,M,4.67,N,8.64,K"));
+  CHECK(nmea::encode(r.value).view() == sealed("VWVHW,87.3,T,75.0,M,4.67,N,8.64,K"));
 
   // One knot is 1852 m per hour, exactly.
   anello::vhw_si knot;
@@ -291,7 +272,7 @@ TEST_CASE("make_vhw: m/s to knots and km/h, headings in degrees", "[anello][si]"
   CHECK(k.value.speed_knots == decimal::scaled(100, 2));
   CHECK(k.value.speed_kmh == decimal::scaled(185, 2));  // 1.852 km/h
   CHECK_FALSE(k.value.heading_true_deg.has_value());
-  CHECK(nmea::encode(k.value).view() == line("VWVHW,,T,,M,1.00,N,1.85,K"));
+  CHECK(nmea::encode(k.value).view() == sealed("VWVHW,,T,,M,1.00,N,1.85,K"));
 
   anello::vhw_si fast;
   fast.speed_mps = 10.0;
@@ -364,7 +345,7 @@ TEST_CASE("make_vhw: refusals name the wire field", "[anello][si]") {
   creep.speed_mps = -0.001;
   const auto z = anello::make_vhw(creep);
   REQUIRE(z.ec == errc::ok);
-  CHECK(nmea::encode(z.value).view() == line("VWVHW,,T,,M,0.00,N,0.00,K"));
+  CHECK(nmea::encode(z.value).view() == sealed("VWVHW,,T,,M,0.00,N,0.00,K"));
 }
 
 TEST_CASE("make_vbw: body-frame speeds, m/s to knots, status from what is given", "[anello][si]") {
@@ -396,7 +377,7 @@ TEST_CASE("make_vbw: body-frame speeds, m/s to knots, status from what is given"
   const auto g = anello::make_vbw(ground);
   CHECK(g.value.water_status == standard::vbw_status::invalid);
   CHECK(g.value.ground_status == standard::vbw_status::valid);
-  CHECK(nmea::encode(g.value).view() == line("VWVBW,,,V,1.94,,A"));
+  CHECK(nmea::encode(g.value).view() == sealed("VWVBW,,,V,1.94,,A"));
 
   anello::vbw_si broken;
   broken.longitudinal_ground_mps = 1.0;
@@ -511,15 +492,15 @@ TEST_CASE("RMC output: policy and malformed lines", "[anello][rmc]") {
   CHECK(anello::decode_output("$GNRMC,154258.00,A,3249.72026,N,11713.79556,W,0.05,89.00,030724,,")
             .ec == errc::missing_checksum);
   const auto lat = anello::decode_output(
-      line("GNRMC,154258.00,A,3249.72026,X,11713.79556,W,0.05,89.00,030724,,"));
+      sealed("GNRMC,154258.00,A,3249.72026,X,11713.79556,W,0.05,89.00,030724,,"));
   CHECK(lat.ec == errc::bad_hemisphere);
   CHECK(lat.field == 4);
   const auto status = anello::decode_output(
-      line("INRMC,154258.00,X,3249.72026,N,11713.79556,W,0.05,89.00,030724,,"));
+      sealed("INRMC,154258.00,X,3249.72026,N,11713.79556,W,0.05,89.00,030724,,"));
   CHECK(status.ec == errc::bad_enum);
   CHECK(status.field == 2);
   // The INS output set knows only RMC.
-  const auto other = anello::decode_output(line("VMVBW,0.0,0.0,A,0.0,0.0,A"));
+  const auto other = anello::decode_output(sealed("VMVBW,0.0,0.0,A,0.0,0.0,A"));
   REQUIRE(other.ec == errc::ok);
   CHECK(std::holds_alternative<nmea::unknown_sentence>(other.value));
 }
