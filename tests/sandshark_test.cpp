@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Sandshark SPI messages: the verified vectors, the spec's examples, the role policies,
-// malformed input per message (errc + field), and round trips over generated values.
+// malformed input per message (errc + field). Round trips over generated values are in
+// round_trip_test.cpp.
 
 #include <catch2/catch.hpp>
 #include <cstdint>
@@ -576,104 +577,6 @@ TEST_CASE("encoding refuses what the spec forbids, naming the field") {
   b = encode(v);
   CHECK(b.ec == errc::bad_length);
   CHECK(b.field == 2);
-}
-
-// -- round trips over generated values -------------------------------------------------------
-
-namespace {
-/// The shared generator, with the message fields' values.
-struct generator : prng {
-  time_of_day time() {
-    const auto places = static_cast<std::uint8_t>(below(10));
-    return {static_cast<std::uint8_t>(below(24)), static_cast<std::uint8_t>(below(60)),
-            static_cast<std::uint8_t>(below(60)),
-            static_cast<std::uint32_t>(below(seawire::detail::pow10_table[places])), places};
-  }
-  decimal number() {
-    decimal d;
-    d.places = static_cast<std::uint8_t>(below(6));
-    d.mantissa = below(10'000'000);
-    d.negative = coin();
-    return d;
-  }
-  template <std::size_t N>
-  text<N> words(std::size_t max) {
-    // Printable, no reserved characters; spaces allowed.
-    constexpr std::string_view alphabet = "abcXYZ019 ._-/:()#%&+=?@[]{}|<>";
-    char buf[N]{};
-    const std::size_t n = below((max < N ? max : N) + 1);
-    for (std::size_t i = 0; i < n; ++i) buf[i] = alphabet[below(alphabet.size())];
-    text<N> t;
-    (void)t.assign(std::string_view(buf, n));
-    return t;
-  }
-  template <class E>
-  E pick(std::string_view chars) {
-    return static_cast<E>(chars[below(chars.size())]);
-  }
-};
-
-template <class M>
-void check_round_trip(const M& m, const parse_policy& policy) {
-  const auto first = encode(m);
-  REQUIRE(first.ec == errc::ok);
-  INFO(std::string(first.view()));
-  const result<M> back = decode<M>(first.view(), policy);
-  REQUIRE(back.ok());
-  CHECK(back.value == m);
-  CHECK(encode(back.value).view() == first.view());
-}
-}  // namespace
-
-TEST_CASE("round trips over generated values") {
-  generator g{{20150903}};
-  for (int i = 0; i < 500; ++i) {
-    bprmb r;
-    r.timestamp = g.time();
-    if (g.coin()) r.heading = g.number();
-    if (g.coin()) r.depth = g.number();
-    if (g.coin()) r.depth_mode = g.pick<depth_mode>("0123");
-    if (g.coin()) r.speed = g.number();
-    if (g.coin()) r.speed_mode = g.pick<speed_mode>("01");
-    if (g.coin()) r.horizontal_mode = g.pick<horizontal_mode>("01");
-    check_round_trip(r, to_vehicle_policy);
-
-    bfack a;
-    a.timestamp = g.time();
-    a.command = g.coin() ? text<16>("RMB") : text<16>("LOG");
-    if (g.coin()) a.command_timestamp = g.time();
-    if (g.coin()) a.behavior_id = static_cast<std::int32_t>(g.below(100000));
-    a.status = g.pick<ack_status>("0123");
-    if (g.coin()) a.future_use.reset();
-    const auto form = g.below(3);  // 6, 7 or 8 fields
-    if (form == 0) a.description.reset();
-    if (form == 0 || form == 1) a.trailing.reset();
-    if (a.description) a.description = g.words<256>(256);
-    check_round_trip(a, from_vehicle_policy);
-
-    bpsts s{g.time(), g.coin(), g.words<128>(128)};
-    check_round_trip(s, to_vehicle_policy);
-
-    bfmis m{g.time(), g.words<256>(256), g.words<256>(256), g.words<512>(512)};
-    check_round_trip(m, from_vehicle_policy);
-
-    bplog l;
-    l.code = g.coin() ? text<3>("ALL") : text<3>("NVG");
-    l.state = g.coin() ? log_state::on : log_state::off;
-    check_round_trip(l, to_vehicle_policy);
-
-    bpabt b{g.time(), g.words<128>(128), std::nullopt};
-    if (g.coin()) b.reason = g.pick<abort_reason>("01");
-    check_round_trip(b, to_vehicle_policy);
-
-    bfctl c{g.time(), g.coin()};
-    check_round_trip(c, from_vehicle_policy);
-
-    bfver v{g.time(), {}};
-    v.version = g.words<32>(32);
-    if (v.version.empty()) v.version = "1";
-    check_round_trip(v, from_vehicle_policy);
-  }
 }
 
 TEST_CASE("every payload sentence fits the 256-byte sentence buffer at full capacity") {
