@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
-// merge_sets: the union of message sets, each message once.
+// merge_sets: the union of message sets, each message once; which sentence is which message.
 
 #include <catch2/catch.hpp>
 #include <string_view>
 #include <type_traits>
 #include <variant>
 
+#include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/standard/gga.hpp"
 #include "seawire/standard/rmc.hpp"
@@ -76,4 +77,20 @@ TEST_CASE("a '!' sentence is no message, whatever its address: it stays unknown"
   CHECK(decode<ping>(bang_ping).ec == errc::wrong_address);
   CHECK(decode<rmc>(s.value).ec == errc::wrong_address);
   CHECK(decode<ping>(std::string_view("$XXPNG,7")).value.n == 7);
+}
+
+TEST_CASE("a proprietary sentence is not a standard one from a talker named P.") {
+  // Garmin's sensor configuration sentence ends in RMC but is no RMC: a payload reading the
+  // Kingfisher's relayed GPS lines must ignore it (unknown_sentence), not report RMC errors.
+  constexpr std::string_view pgrmc =
+      "$PGRMC,A,218.8,100,6378137.000,298.257223563,0.0,0.0,0.0,A,3,1,1,4,30*72\r\n";
+  const auto k = kingfisher::decode_from_vehicle(pgrmc);
+  REQUIRE(k);
+  CHECK(std::holds_alternative<unknown_sentence>(k.value));
+  CHECK(decode<standard::rmc>(pgrmc).ec == errc::wrong_address);
+  // Talkers of standard sentences are two letters (or a letter and a digit), never P + one.
+  standard::rmc m;
+  CHECK(encode(m));
+  m.talker = "PG";
+  CHECK(encode(m).ec == errc::bad_address);
 }
