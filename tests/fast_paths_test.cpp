@@ -363,7 +363,7 @@ TEST_CASE("decimal::compare without division agrees with the value") {
 
 namespace {
 
-// Positions as fields.hpp read them before the one-pass reader: split at the point, degrees by
+// Positions as the position codec read them before the one-pass reader: split at the point, degrees by
 // parse_fixed_digits, minutes by parse_decimal.
 template <class Axis>
 errc reference_position(std::string_view s, nmea_coordinate<Axis>& v) {
@@ -391,7 +391,7 @@ errc reference_position(std::string_view s, nmea_coordinate<Axis>& v) {
   return errc::ok;
 }
 
-// Times as fields.hpp read them before: three parse_fixed_digits and the fraction.
+// Times as the time codec read them before: three parse_fixed_digits and the fraction.
 errc reference_time(std::string_view s, time_of_day& v) {
   unsigned h = 0, m = 0, sec = 0;
   if (!nmea::detail::parse_fixed_digits(s, 0, 2, h) ||

@@ -144,7 +144,8 @@ nm::text<N> any_text(prng& g, const nm::field_options& o) {
   const std::size_t most = std::min<std::size_t>(o.max_length, N);
   const std::size_t least = std::min<std::size_t>(o.min_length, most);
   // Short text mostly; the longest the field holds now and then.
-  std::size_t n = g.chance(10) ? most : least + g.below(std::min<std::size_t>(most - least, 24) + 1);
+  std::size_t n =
+      g.chance(10) ? most : least + g.below(std::min<std::size_t>(most - least, 24) + 1);
   std::string s;
   for (std::size_t i = 0; i < n; ++i) s += chars[g.below(chars.size())];
   nm::text<N> t;
@@ -267,8 +268,8 @@ M generate(prng& g) {
       if constexpr (F::is_optional) {
         auto& member = m.*F::member;
         if (!member) {
-          const bool left_out = f.opts.only_with_field_count != 0 ||
-                                (f.opts.may_be_absent && !later_written);
+          const bool left_out =
+              f.opts.only_with_field_count != 0 || (f.opts.may_be_absent && !later_written);
           if (left_out) return;
           if constexpr (generated::is_text<typename F::value_type>) {
             typename F::value_type v{};

@@ -1,0 +1,412 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Numbers as the wire has them: nmea::decimal keeps every digit as written ("4.50" stays "4.50",
+// "045" keeps its padding), and the codecs of decimal, of integer fields (read as decimals with no
+// fraction, range-checked for their type) and of 0/1 flags.
+
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+#include <type_traits>
+
+#include "seawire/detail/ascii.hpp"
+#include "seawire/detail/inline.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/codec.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+namespace seawire::nmea {
+
+namespace detail {
+/// The integer nearest x >= 0 (halves up), for x below 2^64. Not static_cast(x + 0.5): that sum
+/// is itself rounded, so 0.49999999999999994 gave 1 and 2^52 + 1 gave 2^52 + 2. The fraction
+/// taken by subtraction is exact.
+[[nodiscard]] constexpr std::uint64_t round_nonnegative(double x) noexcept {
+  auto whole = static_cast<std::uint64_t>(x);
+  if (x - static_cast<double>(whole) >= 0.5) ++whole;
+  return whole;
+}
+}  // namespace detail
+
+namespace detail {
+/// Whether any of the arguments is floating-point: the value types below refuse such a call
+/// rather than cut 42.5 degrees or 12.5 hours to an integer.
+template <class... A>
+concept any_floating = (std::floating_point<std::remove_cvref_t<A>> || ...);
+}  // namespace detail
+
+/// A decimal number exactly as written: digits, number of fraction digits, sign.
+/// "-0.0" keeps its sign and "4.50" its trailing zero. Equality compares the written form;
+/// `compare()` compares values. At most 19 significant digits and 19 fraction digits.
+struct decimal {
+  std::uint64_t mantissa = 0;  ///< all digits as one integer: "4.50" -> 450
+  std::uint8_t places = 0;     ///< digits after the point: "4.50" -> 2
+  bool negative = false;
+  /// Integer digits as written when the sender zero-padded them ("000.0" -> 3, "011.3" -> 3);
+  /// 0 when written naturally. Only the text form depends on it.
+  std::uint8_t int_width = 0;
+
+  constexpr decimal() noexcept = default;
+  /// An integer value: `decimal{45}` is "45", and `msg.thrust = 45;` reads as it should.
+  template <std::integral I>
+  requires(!std::same_as<I, bool>)
+      // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
+      constexpr decimal(I integer) noexcept
+      : mantissa(integer < 0 ? 0 - static_cast<std::uint64_t>(integer)
+                             : static_cast<std::uint64_t>(integer)),
+        negative(integer < 0) {}
+  /// A floating-point value is never taken silently: 1.5 would have to be cut to some number of
+  /// places, and a speed or depth command cut to an integer is a different command. Say how many
+  /// places: decimal::from_double(1.5, 1), decimal::parse("1.5"), or the literal 1.5_dec.
+  template <std::floating_point F>
+  decimal(F) = delete;  // use decimal::from_double(v, places), decimal::parse("1.5") or 1.5_dec
+
+  /// `mantissa` / 10^places: decimal::scaled(450, 2) is "4.50". Both are integers (a double
+  /// does not compile); places above 19 is refused when the value is written (value_too_large).
+  template <std::integral I, std::integral P>
+  requires(!std::same_as<I, bool> && !std::same_as<P, bool>) [[nodiscard]] static constexpr decimal
+      scaled(I mantissa, P places) noexcept {
+    decimal d(mantissa);
+    d.places = places < 0 || places > 255 ? std::uint8_t{255} : static_cast<std::uint8_t>(places);
+    return d;
+  }
+  template <class I, class P>
+  requires(std::floating_point<I> || std::floating_point<P>) static decimal
+      scaled(I, P) = delete;  // integers only: use decimal::from_double(v, places)
+
+  /// The number written in `text`: [-] digits [. digits], as a sender writes it (no '+', no
+  /// spaces, no exponent), at most 19 digits. bad_number or number_too_long otherwise.
+  [[nodiscard]] static constexpr result<decimal> parse(std::string_view text) noexcept;
+
+  /// The same number with the other sign ("-1.5" from 1.5_dec).
+  [[nodiscard]] constexpr decimal operator-() const noexcept {
+    decimal d = *this;
+    d.negative = !negative;
+    return d;
+  }
+
+  /// The value rounded to `places` fraction digits; refuses NaN/inf and what 19 digits cannot
+  /// hold.
+  [[nodiscard]] static constexpr result<decimal> from_double(double v, unsigned places) noexcept {
+    result<decimal> r;
+    if (!(v == v) || v > std::numeric_limits<double>::max() ||
+        v < -std::numeric_limits<double>::max()) {
+      r.ec = errc::not_finite;
+      return r;
+    }
+    if (places > 18) {
+      r.ec = errc::value_too_large;
+      return r;
+    }
+    const double mag = (v < 0 ? -v : v) * static_cast<double>(seawire::detail::pow10_table[places]);
+    if (mag >= 1e19) {
+      r.ec = errc::value_too_large;
+      return r;
+    }
+    r.value.mantissa = detail::round_nonnegative(mag);
+    r.value.places = static_cast<std::uint8_t>(places);
+    r.value.negative = v < 0 && r.value.mantissa != 0;
+    return r;
+  }
+
+  [[nodiscard]] constexpr double to_double() const noexcept {
+    // Both operands are exact doubles for mantissa < 2^53 and places <= 19, so the one
+    // division is correctly rounded.
+    double d =
+        static_cast<double>(mantissa) / static_cast<double>(seawire::detail::pow10_table[places]);
+    return negative ? -d : d;
+  }
+
+  [[nodiscard]] constexpr bool is_zero() const noexcept { return mantissa == 0; }
+
+  /// Numeric comparison: -1, 0 or 1. "-0" equals "0"; "4.5" equals "4.50".
+  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr int compare(const decimal& o) const noexcept {
+    const bool n1 = negative && mantissa != 0;
+    const bool n2 = o.negative && o.mantissa != 0;
+    if (n1 != n2) return n1 ? -1 : 1;
+    const int mag = compare_magnitude(o);
+    return n1 ? -mag : mag;
+  }
+
+  /// Integer digits of the written form: int_width, or the natural count when that is more (an
+  /// int_width of 1 on "45" pads nothing); the writer pads to 20 digits at most.
+  [[nodiscard]] constexpr unsigned written_int_digits() const noexcept {
+    const unsigned natural =
+        places > 19 ? 0
+                    : seawire::detail::digit_count(mantissa / seawire::detail::pow10_table[places]);
+    const unsigned padded = int_width < 20 ? int_width : 20;
+    return natural > padded ? natural : padded;
+  }
+
+  /// The same written form: digits, places, sign and integer padding.
+  friend constexpr bool operator==(const decimal& a, const decimal& b) noexcept {
+    return a.mantissa == b.mantissa && a.places == b.places && a.negative == b.negative &&
+           a.written_int_digits() == b.written_int_digits();
+  }
+
+ private:
+  [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr int compare_magnitude(
+      const decimal& o) const noexcept {
+    // Scale the mantissa with fewer places up to the other's: no division, and a product that
+    // would pass 2^64 is certainly the larger (the other mantissa is below 2^64).
+    if (places == o.places) return three_way(mantissa, o.mantissa);
+    if (places < o.places) return scaled_compare(mantissa, o.places - places, o.mantissa);
+    return -scaled_compare(o.mantissa, places - o.places, mantissa);
+  }
+  // a * 10^k against b, for k < 20.
+  [[nodiscard]] static constexpr int scaled_compare(std::uint64_t a, unsigned k,
+                                                    std::uint64_t b) noexcept {
+    if (a > seawire::detail::scale_limit[k]) return 1;
+    return three_way(a * seawire::detail::pow10_table[k], b);
+  }
+  [[nodiscard]] static constexpr int three_way(std::uint64_t a, std::uint64_t b) noexcept {
+    return a == b ? 0 : (a < b ? -1 : 1);
+  }
+};
+
+namespace detail {
+
+/// Parse [sign] digits [. digits] the slow, general way: any number of leading zeros.
+[[nodiscard]] constexpr errc parse_decimal_long(std::string_view s, std::size_t i, bool neg,
+                                                decimal& out) noexcept {
+  const std::size_t n = s.size();
+  std::uint64_t m = 0;
+  unsigned significant = 0;
+  unsigned places = 0;
+  unsigned int_written = 0;
+  bool point = false;
+  bool any = false;
+  for (; i < n; ++i) {
+    const char c = s[i];
+    if (seawire::detail::is_digit(c)) {
+      any = true;
+      if (point) {
+        ++places;
+      } else {
+        ++int_written;
+      }
+      if (m != 0 || c != '0') {
+        if (++significant > 19) [[unlikely]]
+          return errc::number_too_long;
+        m = m * 10 + static_cast<std::uint64_t>(c - '0');
+      }
+    } else if (c == '.' && !point) {
+      point = true;
+    } else {
+      return errc::bad_number;
+    }
+  }
+  if (!any) [[unlikely]]
+    return errc::bad_number;
+  if (places > 19) [[unlikely]]
+    return errc::number_too_long;
+  out.mantissa = m;
+  out.places = static_cast<std::uint8_t>(places);
+  out.negative = neg;
+  const unsigned natural = seawire::detail::digit_count(m / seawire::detail::pow10_table[places]);
+  out.int_width =
+      static_cast<std::uint8_t>(int_written > natural && int_written <= 20 ? int_written : 0);
+  return errc::ok;
+}
+
+/// Reads the run of digits at s[i] onto m (m * 10 + digit each; past 19 digits m wraps, and the
+/// caller, which sees the count, does not use it) and moves i past it.
+SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t& i,
+                                                 std::uint64_t& m) noexcept {
+  for (unsigned d = 0; i < s.size() && (d = static_cast<unsigned char>(s[i]) - unsigned{'0'}) < 10;
+       ++i)
+    m = m * 10 + d;
+}
+
+[[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
+
+/// Parse [sign] digits [. digits] with the leniencies of a receive policy: a '+' unless
+/// strict_values, spaces before and after the number when spaced_numbers too (receivers accept
+/// them, senders never write them). No exponent, no spaces inside. The policy is consulted
+/// only for a sign or a bad byte, so the common number does not work its rules out.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s,
+                                                                 const parse_policy& p,
+                                                                 decimal& out) noexcept {
+  std::size_t i = 0;
+  const std::size_t n = s.size();
+  bool neg = false;
+  if (i < n && (s[i] == '-' || s[i] == '+')) {
+    if (s[i] == '+' && p.strict_values) [[unlikely]]
+      return errc::bad_number;
+    neg = s[i] == '-';
+    ++i;
+  }
+  // Up to 19 digits in all fit the mantissa whatever they are, and no division is needed to
+  // find the integer digits as written; anything longer takes the general path.
+  const std::size_t int_begin = i;
+  std::uint64_t m = 0;
+  read_digits(s, i, m);
+  const std::size_t int_written = i - int_begin;
+  std::size_t places = 0;
+  if (i < n && s[i] == '.') {
+    const std::size_t frac_begin = ++i;
+    read_digits(s, i, m);
+    places = i - frac_begin;
+  }
+  // Past 19 digits the general path decides, down to which error comes first.
+  if (int_written + places > 19) [[unlikely]]
+    return parse_decimal_long(s, int_begin, neg, out);
+  if (i != n || int_written + places == 0) [[unlikely]] {
+    // SPI 4.2: "if negative, the first non-whitespace character will be the minus sign", so a
+    // receiver takes " -5.0" (and "12 "); senders never write spaces.
+    if (n != 0 && (s.front() == ' ' || s.back() == ' ') && p.spaced_numbers && !p.strict_values)
+      return parse_decimal_spaced(s, out);
+    return errc::bad_number;
+  }
+  out.mantissa = m;
+  out.places = static_cast<std::uint8_t>(places);
+  out.negative = neg;
+  out.int_width = 0;
+  if (int_written > 1 && s[int_begin] == '0') {  // zero-padded ("007.5", "00"): keep the width
+    std::size_t zeros = 1;
+    while (zeros < int_written && s[int_begin + zeros] == '0') ++zeros;
+    const std::size_t natural = int_written - zeros == 0 ? 1 : int_written - zeros;
+    out.int_width = static_cast<std::uint8_t>(int_written > natural ? int_written : 0);
+  }
+  return errc::ok;
+}
+
+/// The same with the two leniencies as flags: a '+' only when `liberal`, spaces around the
+/// number only when `spaced` too.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s, bool liberal,
+                                                                 decimal& out,
+                                                                 bool spaced = false) noexcept {
+  parse_policy p;
+  p.strict_values = !liberal;
+  p.spaced_numbers = spaced;
+  return parse_decimal(s, p, out);
+}
+
+/// parse_decimal of a number with spaces around it (parse_policy::spaced_numbers).
+[[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept {
+  std::size_t b = 0;
+  std::size_t e = s.size();
+  while (b < e && s[b] == ' ') ++b;
+  while (e > b && s[e - 1] == ' ') --e;
+  if (b == e) [[unlikely]]
+    return errc::bad_number;  // nothing but spaces
+  return parse_decimal(s.substr(b, e - b), true, out, false);
+}
+
+/// Whether write_decimal writes `d` as text parse_decimal reads back to `d`: at most 19 digits
+/// (the mantissa below 10^19, at most 19 of them after the point) and an integer padding the
+/// writer can produce (20 digits at most).
+[[nodiscard]] constexpr errc check_decimal(const decimal& d) noexcept {
+  constexpr std::uint64_t max_mantissa = 9'999'999'999'999'999'999ULL;
+  return d.places > 19 || d.mantissa > max_mantissa || d.int_width > 20 ? errc::value_too_large
+                                                                        : errc::ok;
+}
+
+constexpr void write_decimal(writer& w, const decimal& d) noexcept {
+  if (d.negative) w.put('-');
+  w.put_fixed(d.mantissa, d.places, d.int_width);
+}
+
+}  // namespace detail
+
+constexpr result<decimal> decimal::parse(std::string_view text) noexcept {
+  result<decimal> r;
+  r.ec = detail::parse_decimal(text, false, r.value);
+  if (!r) r.value = decimal{};
+  return r;
+}
+
+namespace detail {
+// Not constexpr: a literal that reaches it does not compile, and the error names it.
+inline void literal_is_not_a_decimal_with_at_most_19_digits() noexcept {}
+}  // namespace detail
+
+namespace literals {
+/// `1.5_dec` is decimal::parse("1.5"): the digits as written, checked when compiled. Only plain
+/// decimal literals ("1.50", "45"); an exponent, hex or digit separators do not compile.
+template <char... Chars>
+consteval decimal operator""_dec() {
+  constexpr char text[] = {Chars...};
+  const result<decimal> r = decimal::parse(std::string_view(text, sizeof...(Chars)));
+  if (!r) detail::literal_is_not_a_decimal_with_at_most_19_digits();
+  return r.value;
+}
+}  // namespace literals
+
+// ---------------------------------------------------------------------------------------------
+// codecs
+
+template <>
+struct codec<decimal> {
+  static constexpr unsigned width = 1;
+  /// Longest text written: sign, 20 integer digits (padding), point, 19 fraction digits.
+  static constexpr std::size_t max_chars = 41;
+  static constexpr bool allows_blank = false;
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, decimal& v) noexcept {
+    return detail::parse_decimal(r.take().text, r.policy(), v);
+  }
+  static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
+  static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
+};
+
+template <std::integral I>
+requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
+  static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars =
+      std::numeric_limits<I>::digits10 + 1 + (std::is_signed_v<I> ? 1 : 0);
+  static constexpr bool allows_blank = false;
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, I& v) noexcept {
+    decimal d;
+    const errc e = detail::parse_decimal(r.take().text, r.policy(), d);
+    if (e != errc::ok) return e;
+    if (d.places != 0) [[unlikely]]
+      return errc::bad_number;
+    if (d.negative && d.mantissa != 0) {
+      if constexpr (std::is_unsigned_v<I>) {
+        return errc::out_of_range;
+      } else {
+        if (d.mantissa > static_cast<std::uint64_t>(std::numeric_limits<I>::max()) + 1)
+          return errc::out_of_range;
+        v = static_cast<I>(0 - d.mantissa);
+        return errc::ok;
+      }
+    }
+    if (d.mantissa > static_cast<std::uint64_t>(std::numeric_limits<I>::max()))
+      return errc::out_of_range;
+    v = static_cast<I>(d.mantissa);
+    return errc::ok;
+  }
+  static constexpr errc check(const I&) noexcept { return errc::ok; }
+  static constexpr void write(writer& w, const I& v) noexcept {
+    if constexpr (std::is_signed_v<I>) {
+      if (v < 0) {
+        w.put('-');
+        w.put_uint(0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
+        return;
+      }
+    }
+    w.put_uint(static_cast<std::uint64_t>(v));
+  }
+};
+
+/// A 0/1 flag.
+template <>
+struct codec<bool> {
+  static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = 1;
+  static constexpr bool allows_blank = false;
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, bool& v) noexcept {
+    const std::string_view t = r.take().text;
+    if (t.size() != 1 || (t[0] != '0' && t[0] != '1')) [[unlikely]]
+      return errc::bad_flag;
+    v = t[0] == '1';
+    return errc::ok;
+  }
+  static constexpr errc check(const bool&) noexcept { return errc::ok; }
+  static constexpr void write(writer& w, const bool& v) noexcept { w.put(v ? '1' : '0'); }
+};
+
+}  // namespace seawire::nmea

@@ -1,0 +1,588 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The message description: one declaration per message, from which decode, encode, field
+// names and validation all follow. A message is a plain struct with a static `nmea` member:
+//
+//   // $PYDIR,<thrust_left>,<thrust_right>*hh
+//   struct pydir {
+//     decimal thrust_left;   // 1 percent, -100..100
+//     decimal thrust_right;  // 2 percent, -100..100
+//     static constexpr auto nmea = sentence<"PYDIR">(
+//         field<&pydir::thrust_left>("thrust_left", in_range(-100, 100)),
+//         field<&pydir::thrust_right>("thrust_right", in_range(-100, 100)));
+//   };
+//
+// Two words are used in one sense throughout: a field is *blank* when it is in the sentence
+// but empty (",,"), and *absent* when the sentence ends before it (may_be_absent, the codecs'
+// allows_blank, parse_policy::absent_as_blank). Member types pick their codec (fields.hpp);
+// std::optional<T> marks a field that may be blank (nullopt). Options after the name add a
+// range, a unit letter field, or say when a field may be absent. What the sentence declares
+// besides its fields follows them (sentence_desc): an address starting with "--" ("--RMC")
+// matches any talker and names the talker_id member that decode fills and encode writes with
+// `.talker_in<&rmc::talker>()`.
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/detail/fixed_string.hpp"
+#include "seawire/detail/inline.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/writer.hpp"
+
+namespace seawire::nmea {
+
+// ---------------------------------------------------------------------------------------------
+// field options
+
+/// Everything a field declaration can add to its codec. Built from the option helpers below,
+/// each of which sets the member of its name (the range helpers set min and max).
+struct field_options {
+  decimal min{};
+  decimal max{};
+  bool has_min = false;
+  bool has_max = false;
+  bool max_exclusive = false;
+  std::int8_t max_places = -1;  ///< fraction digits allowed (decimal, time); -1 = any
+  char unit = 0;                ///< unit letter in the following wire field, e.g. 'N'
+  std::uint16_t only_with_field_count =
+      0;                              ///< present only in sentences of at least this many fields
+  bool may_be_absent = false;         ///< trailing: a nullopt value is not written at all
+  std::uint16_t min_length = 0;       ///< text: fewest characters
+  std::uint16_t max_length = 0xFFFF;  ///< text: most characters
+  std::uint8_t zero_pad = 0;          ///< integers: write at least this many digits ("06")
+  bool code_chars = false;            ///< text: upper-case letters and digits only ("NVG")
+  /// Fraction digits a double given to nmea::builder is rounded to (minute digits for DDMM.m
+  /// positions); -1 = not declared.
+  std::int8_t precision = -1;
+};
+
+namespace option {
+struct range {
+  decimal lo, hi;
+  bool has_lo = false, has_hi = false, hi_open = false;
+  constexpr void apply(field_options& o) const noexcept {
+    o.min = lo;
+    o.has_min = has_lo;
+    o.max = hi;
+    o.has_max = has_hi;
+    o.max_exclusive = hi_open;
+  }
+};
+struct max_places {
+  std::int8_t n;
+  constexpr void apply(field_options& o) const noexcept { o.max_places = n; }
+};
+struct unit {
+  char c;
+  constexpr void apply(field_options& o) const noexcept { o.unit = c; }
+};
+struct only_with_field_count {
+  std::uint16_t n;
+  constexpr void apply(field_options& o) const noexcept { o.only_with_field_count = n; }
+};
+struct may_be_absent {
+  constexpr void apply(field_options& o) const noexcept { o.may_be_absent = true; }
+};
+struct zero_pad {
+  std::uint8_t n;
+  constexpr void apply(field_options& o) const noexcept { o.zero_pad = n; }
+};
+struct code_chars {
+  constexpr void apply(field_options& o) const noexcept { o.code_chars = true; }
+};
+struct precision {
+  std::int8_t n;
+  constexpr void apply(field_options& o) const noexcept { o.precision = n; }
+};
+struct length {
+  std::uint16_t lo, hi;
+  constexpr void apply(field_options& o) const noexcept {
+    o.min_length = lo;
+    o.max_length = hi;
+  }
+};
+}  // namespace option
+
+/// lo <= value <= hi.
+[[nodiscard]] constexpr option::range in_range(decimal lo, decimal hi) noexcept {
+  return {.lo = lo, .hi = hi, .has_lo = true, .has_hi = true};
+}
+/// lo <= value < hi (headings: [0, 360)).
+[[nodiscard]] constexpr option::range in_range_below(decimal lo, decimal hi) noexcept {
+  return {.lo = lo, .hi = hi, .has_lo = true, .has_hi = true, .hi_open = true};
+}
+/// lo <= value.
+[[nodiscard]] constexpr option::range at_least(decimal lo) noexcept {
+  return {.lo = lo, .hi = {}, .has_lo = true};
+}
+/// A double given to nmea::builder for this field is rounded to n fraction digits (minute
+/// digits for a DDMM.m position): what the spec or real senders write. A call may ask for
+/// others. Every number and position field of a message declares one.
+[[nodiscard]] constexpr option::precision precision(int n) noexcept {
+  return {static_cast<std::int8_t>(n)};
+}
+/// At most n fraction digits (0: whole numbers or whole seconds only).
+[[nodiscard]] constexpr option::max_places max_places(int n) noexcept {
+  return {static_cast<std::int8_t>(n)};
+}
+/// The value is followed by a field holding this unit letter ("5.2,N"). On receive the letter
+/// may also be blank; seawire always writes it.
+[[nodiscard]] constexpr option::unit unit(char c) noexcept { return {c}; }
+/// The field exists only in the longer form of the sentence, the one with at least `n` fields
+/// (an optional member; written only when it has a value).
+[[nodiscard]] constexpr option::only_with_field_count only_with_field_count(int n) noexcept {
+  return {static_cast<std::uint16_t>(n)};
+}
+/// A trailing optional field that senders may leave out entirely; when the value is nullopt
+/// it is not written (nor any comma for it).
+inline constexpr option::may_be_absent may_be_absent{};
+/// Integers written with at least n digits ("06" satellites). Any width is accepted on receive.
+[[nodiscard]] constexpr option::zero_pad zero_pad(int n) noexcept {
+  return {static_cast<std::uint8_t>(n)};
+}
+/// Text length bounds.
+[[nodiscard]] constexpr option::length length_between(int lo, int hi) noexcept {
+  return {static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(hi)};
+}
+/// Text that is a code, such as a message id: upper-case letters and digits only (bad_text
+/// otherwise; the protocols are case-sensitive, so "nvg" is not "NVG").
+inline constexpr option::code_chars code_chars{};
+[[nodiscard]] constexpr option::length exact_length(int n) noexcept {
+  return {static_cast<std::uint16_t>(n), static_cast<std::uint16_t>(n)};
+}
+
+// ---------------------------------------------------------------------------------------------
+// descriptors
+
+namespace detail {
+template <class T>
+struct optional_traits {
+  static constexpr bool is_optional = false;
+  using value_type = T;
+};
+template <class T>
+struct optional_traits<std::optional<T>> {
+  static constexpr bool is_optional = true;
+  using value_type = T;
+};
+template <class M>
+struct member_pointer_traits;
+template <class C, class T>
+struct member_pointer_traits<T C::*> {
+  using class_type = C;
+  using member_type = T;
+};
+}  // namespace detail
+
+/// One field of a message: which member, its name in JSON/fmt, its options.
+template <auto Member>
+struct field_desc {
+  using class_type = typename detail::member_pointer_traits<decltype(Member)>::class_type;
+  using member_type = typename detail::member_pointer_traits<decltype(Member)>::member_type;
+  using value_type = typename detail::optional_traits<member_type>::value_type;
+  static constexpr bool is_optional = detail::optional_traits<member_type>::is_optional;
+  static constexpr auto member = Member;
+  static_assert(has_codec<value_type>, "no codec for this member type");
+
+  std::string_view name;
+  field_options opts;
+
+  /// Wire fields this declaration spans.
+  [[nodiscard]] constexpr unsigned width() const noexcept {
+    return codec<value_type>::width + (opts.unit != 0 ? 1u : 0u);
+  }
+};
+
+struct magnetic_variation;
+
+namespace detail {
+template <class V>
+inline constexpr bool fills_from_double =
+    std::is_same_v<V, decimal> || std::is_same_v<V, latitude> || std::is_same_v<V, longitude> ||
+    std::is_same_v<V, decimal_latitude> || std::is_same_v<V, decimal_longitude> ||
+    std::is_same_v<V, magnetic_variation>;
+
+template <class V>
+inline constexpr bool is_integer_field = std::is_integral_v<V> && !std::is_same_v<V, bool>;
+
+template <class V>
+inline constexpr bool is_text_field = requires(const V& v) {
+  v.view();
+  V::capacity;
+};
+
+// An option that does not apply to the member's type would be ignored without a word: it is a
+// compile error instead, naming the option and what it applies to.
+template <class Option, class V, bool Optional>
+consteval bool option_applies() {
+  if constexpr (std::is_same_v<Option, option::range>) {
+    static_assert(std::is_same_v<V, decimal> || is_integer_field<V>,
+                  "in_range / in_range_below / at_least apply to number fields (decimal or an "
+                  "integer type) only");
+  } else if constexpr (std::is_same_v<Option, option::max_places>) {
+    static_assert(std::is_same_v<V, decimal> || std::is_same_v<V, time_of_day>,
+                  "max_places applies to decimal and time_of_day fields only");
+  } else if constexpr (std::is_same_v<Option, option::only_with_field_count>) {
+    static_assert(Optional,
+                  "only_with_field_count applies to std::optional members only (the "
+                  "shorter form has no value for it)");
+  } else if constexpr (std::is_same_v<Option, option::may_be_absent>) {
+    static_assert(Optional,
+                  "may_be_absent applies to std::optional members only (a field left "
+                  "out has no value)");
+  } else if constexpr (std::is_same_v<Option, option::zero_pad>) {
+    static_assert(is_integer_field<V>, "zero_pad applies to integer fields only");
+  } else if constexpr (std::is_same_v<Option, option::code_chars> ||
+                       std::is_same_v<Option, option::length>) {
+    static_assert(is_text_field<V>,
+                  "code_chars / length_between / exact_length apply to text fields only");
+  } else if constexpr (std::is_same_v<Option, option::precision>) {
+    static_assert(fills_from_double<V>,
+                  "precision applies to the fields nmea::builder fills from a double: decimal, "
+                  "positions, magnetic variation");
+  }
+  return true;
+}
+}  // namespace detail
+
+template <auto Member, class... Options>
+[[nodiscard]] constexpr field_desc<Member> field(std::string_view name,
+                                                 Options... options) noexcept {
+  using desc = field_desc<Member>;
+  static_assert(
+      (detail::option_applies<Options, typename desc::value_type, desc::is_optional>() && ...));
+  field_desc<Member> f{name, {}};
+  (options.apply(f.opts), ...);
+  return f;
+}
+
+namespace detail {
+template <std::size_t I, class T>
+struct field_slot {
+  T value;
+};
+template <class Indices, class... Fields>
+struct field_slots;
+template <std::size_t... I, class... Fields>
+struct field_slots<std::index_sequence<I...>, Fields...> : field_slot<I, Fields>... {};
+}  // namespace detail
+
+/// The field descriptors of a message in wire order: a flat aggregate with one base per field.
+/// (std::tuple, which this replaces, instantiates a recursive chain of bases and constraint
+/// checks per message: a large share of the compile time of a file that includes every family.)
+template <class... Fields>
+struct field_list : detail::field_slots<std::index_sequence_for<Fields...>, Fields...> {
+  static constexpr std::size_t size = sizeof...(Fields);
+
+  /// f(descriptor...), all of them in wire order.
+  template <class F>
+  constexpr decltype(auto) apply(F&& f) const {
+    return [&]<std::size_t... I>(std::index_sequence<I...>)->decltype(auto) {
+      return f(static_cast<const detail::field_slot<I, Fields>&>(*this).value...);
+    }
+    (std::index_sequence_for<Fields...>{});
+  }
+};
+
+/// The I-th descriptor (0-based) of a field_list.
+template <std::size_t I, class T>
+[[nodiscard]] constexpr const T& field_at(const detail::field_slot<I, T>& slot) noexcept {
+  return slot.value;
+}
+
+/// What a sentence declares besides its fields (see sentence_desc): the member a "--" address's
+/// talker goes to, the member that keeps a decoded sentence's field count, the field counts of
+/// its standard forms, and a larger encode buffer. nullptr / 0 / no counts: not declared.
+template <auto Talker, auto WireFields, std::size_t BufferSize, std::uint8_t... Counts>
+struct sentence_forms {
+  static constexpr auto talker = Talker;
+  static constexpr auto wire_fields = WireFields;
+  static constexpr std::size_t buffer_size = BufferSize;
+  static constexpr std::array<std::uint8_t, sizeof...(Counts)> field_counts{Counts...};
+
+  template <auto M>
+  using with_talker = sentence_forms<M, WireFields, BufferSize, Counts...>;
+  template <auto M>
+  using with_wire_fields = sentence_forms<Talker, M, BufferSize, Counts...>;
+  template <std::size_t N>
+  using with_buffer_size = sentence_forms<Talker, WireFields, N, Counts...>;
+  template <std::uint8_t... C>
+  using with_field_counts = sentence_forms<Talker, WireFields, BufferSize, C...>;
+};
+using no_forms = sentence_forms<nullptr, nullptr, 0>;
+
+namespace detail {
+template <std::uint8_t... C>
+[[nodiscard]] consteval bool increasing() noexcept {
+  const std::uint8_t c[] = {C...};
+  for (std::size_t i = 1; i < sizeof...(C); ++i)
+    if (c[i] <= c[i - 1]) return false;
+  return true;
+}
+template <auto M>
+using member_type_of = typename member_pointer_traits<decltype(M)>::member_type;
+}  // namespace detail
+
+/// A message's wire layout: its address, its fields in wire order, and the forms it comes in,
+/// declared after the fields:
+///
+///   static constexpr auto nmea = nmea::sentence<"--VBW">(nmea::field<...>(...), ...)
+///                                    .talker_in<&vbw::talker>()
+///                                    .field_counts<6, 10>()
+///                                    .wire_fields_in<&vbw::wire_fields>();
+template <seawire::detail::fixed_string Address, class Forms, class... Fields>
+struct sentence_desc {
+  static constexpr std::string_view address = Address.view();
+  /// "--RMC": any two-character talker followed by RMC. A 'P' first is not a talker but a
+  /// proprietary sentence (Garmin's $PGRMC is no RMC), so it never matches.
+  static constexpr bool any_talker = Address.size() > 2 && address[0] == '-' && address[1] == '-';
+  /// The talker_id member a "--" sentence's talker is read into and written from (talker_in);
+  /// nullptr for a fixed address.
+  static constexpr auto talker_member = Forms::talker;
+  /// The std::uint8_t member that keeps a decoded sentence's field count (wire_fields_in), or
+  /// nullptr.
+  static constexpr auto wire_fields_member = Forms::wire_fields;
+  /// The field counts of the standard forms, increasing (field_counts); empty: any count.
+  static constexpr auto field_counts = Forms::field_counts;
+  /// The smallest buffer encode() gives the message (buffer_size); 0: what its fields need.
+  static constexpr std::size_t buffer_size = Forms::buffer_size;
+  field_list<Fields...> fields;
+
+  [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
+    if constexpr (any_talker) {
+      return a.size() == address.size() && a[0] != 'P' && a.substr(2) == address.substr(2);
+    } else {
+      return a == address;
+    }
+  }
+  [[nodiscard]] static constexpr std::size_t size() noexcept { return sizeof...(Fields); }
+
+  /// For an address that starts with "--", which any talker may send: member M (a talker_id)
+  /// receives the talker on decode ("GN" of $GNRMC) and gives it on encode. Such a sentence
+  /// must declare it; no other may.
+  template <auto M>
+  [[nodiscard]] consteval auto talker_in() const noexcept {
+    static_assert(any_talker, "talker_in: only an address starting with \"--\" has a talker");
+    static_assert(std::is_same_v<detail::member_type_of<M>, talker_id>,
+                  "talker_in: the member must be a nmea::talker_id");
+    return sentence_desc<Address, typename Forms::template with_talker<M>, Fields...>{fields};
+  }
+
+  /// For a sentence with fields that senders may leave out (may_be_absent at the end, or
+  /// fields of only the longer form): member M (a std::uint8_t) remembers the field count of
+  /// the sentence a message was decoded from when that is more than its values need, because
+  /// one of those fields came blank instead of left out. Encode then writes that many fields,
+  /// so the Kingfisher spec's eight-field "$CPIMU,...,-0.932172,*hh" goes back out with its
+  /// empty eighth field and a six-field CPRBS with a blank battery id keeps its six. 0 (the
+  /// default, and what decode leaves otherwise) writes the fields the values need.
+  template <auto M>
+  [[nodiscard]] consteval auto wire_fields_in() const noexcept {
+    static_assert(std::is_same_v<detail::member_type_of<M>, std::uint8_t>,
+                  "wire_fields_in: the member must be a std::uint8_t");
+    return sentence_desc<Address, typename Forms::template with_wire_fields<M>, Fields...>{fields};
+  }
+
+  /// A sentence whose standard forms have only some field counts lists them, increasing
+  /// (VBW: 6 and 10). Encode writes the shortest listed form that holds the values (an NMEA 3.0
+  /// stern speed alone goes out with all four stern fields, not as a seven-field sentence); a
+  /// strict decode refuses the counts in between (too_few_fields).
+  template <std::uint8_t... Counts>
+  [[nodiscard]] consteval auto standard_forms() const noexcept {
+    static_assert(sizeof...(Counts) > 0, "standard_forms: list at least one field count");
+    static_assert(detail::increasing<Counts...>(), "standard_forms: the counts must increase");
+    return sentence_desc<Address, typename Forms::template with_field_counts<Counts...>, Fields...>{
+        fields};
+  }
+
+  /// encode() gives the message a buffer of at least N bytes (it gives 256, or what the
+  /// fields' longest text needs when a codec says): for a message with a codec of its own that
+  /// cannot say how long its text gets.
+  template <std::size_t N>
+  [[nodiscard]] consteval auto buffer_size_at_least() const noexcept {
+    return sentence_desc<Address, typename Forms::template with_buffer_size<N>, Fields...>{fields};
+  }
+};
+
+template <seawire::detail::fixed_string Address, class... Fields>
+[[nodiscard]] constexpr sentence_desc<Address, no_forms, Fields...> sentence(
+    Fields... fields) noexcept {
+  static_assert(Address.size() >= 1 && Address.size() <= 15, "addresses are 1-15 characters");
+  return {field_list<Fields...>{{{fields}...}}};
+}
+
+/// A type with a sentence description.
+template <class T>
+concept message_like = requires {
+  T::nmea.fields;
+  T::nmea.address;
+};
+
+namespace detail {
+template <auto A, auto B>
+[[nodiscard]] consteval bool same_member() noexcept {
+  if constexpr (std::is_same_v<decltype(A), decltype(B)>) {
+    return A == B;
+  } else {
+    return false;
+  }
+}
+/// The descriptor index of member M in T's description (fields.size when it is not a field).
+template <message_like T, auto M>
+[[nodiscard]] consteval std::size_t field_index_of() noexcept {
+  std::size_t index = 0;
+  std::size_t found = T::nmea.fields.size;
+  T::nmea.fields.apply([&](const auto&... d) {
+    (((same_member<std::remove_cvref_t<decltype(d)>::member, M>() ? (found = index) : 0), ++index),
+     ...);
+  });
+  return found;
+}
+}  // namespace detail
+
+/// The fraction digits (minute digits for a DDMM.m position) a double given for member M is
+/// rounded to by default: the precision its field declares. `precision_of<&pydev::speed_mps>()`.
+template <auto M>
+[[nodiscard]] consteval int precision_of() noexcept {
+  using T = typename detail::member_pointer_traits<decltype(M)>::class_type;
+  constexpr std::size_t i = detail::field_index_of<T, M>();
+  static_assert(i < T::nmea.fields.size, "precision_of: the member is not a field");
+  constexpr int p = field_at<i>(T::nmea.fields).opts.precision;
+  static_assert(p >= 0, "precision_of: the field declares no precision");
+  return p;
+}
+
+/// A message whose description keeps a decoded sentence's field count (wire_fields_in).
+template <class T>
+concept keeps_wire_fields = message_like<T> &&
+    !std::is_null_pointer_v<decltype(std::remove_cvref_t<decltype(T::nmea)>::wire_fields_member)>;
+
+/// A message whose description lists its standard forms' field counts (standard_forms).
+template <class T>
+concept lists_field_counts = message_like<T> &&
+                             std::remove_cvref_t<decltype(T::nmea)>::field_counts.size() != 0;
+
+namespace detail {
+/// The talker member of a message with a "--" address (const or not).
+template <class T>
+[[nodiscard]] constexpr auto& talker_of(T& msg) noexcept {
+  using desc = std::remove_cvref_t<decltype(std::remove_cv_t<T>::nmea)>;
+  static_assert(!std::is_null_pointer_v<decltype(desc::talker_member)>,
+                "an address starting with \"--\" declares the member its talker goes to: "
+                "sentence<\"--XXX\">(...).talker_in<&T::talker>()");
+  return msg.*desc::talker_member;
+}
+
+/// The wire_fields of a message, 0 for one without.
+template <message_like T>
+[[nodiscard]] constexpr std::size_t wire_fields_of(const T& msg) noexcept {
+  if constexpr (keeps_wire_fields<T>) {
+    return msg.*T::nmea.wire_fields_member;
+  } else {
+    return 0;
+  }
+}
+/// Whether T declares a field that only the longer form has, and one that may be left out at
+/// the end: a message that keeps its wire_fields may have one kind or the other, not both.
+template <message_like T>
+[[nodiscard]] consteval bool has_both_optional_kinds() noexcept {
+  bool longer = false;
+  bool absent = false;
+  T::nmea.fields.apply([&](const auto&... d) {
+    ((longer = longer || d.opts.only_with_field_count != 0,
+      absent = absent || d.opts.may_be_absent),
+     ...);
+  });
+  return longer && absent;
+}
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// forms
+
+namespace detail {
+/// Whether encode leaves field `f` out of `msg`'s sentence for want of a value: a field that may
+/// be absent at the end (if nothing after it is written), or one of only the longer form when
+/// the message is not written in that form.
+template <class F, class T>
+[[nodiscard]] constexpr bool skipped(const F& f, const T& msg) noexcept {
+  if constexpr (F::is_optional) {
+    if ((msg.*F::member).has_value()) return false;
+    if (f.opts.only_with_field_count != 0)
+      return wire_fields_of(msg) < f.opts.only_with_field_count;
+    return f.opts.may_be_absent;
+  } else {
+    return false;
+  }
+}
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// reflection
+
+/// Calls f(name, member) for each field in wire order (name as declared: snake_case).
+template <message_like T, class F>
+constexpr void for_each_field(const T& msg, F&& f) {
+  T::nmea.fields.apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); });
+}
+/// The same with mutable members, to fill a message field by field.
+template <message_like T, class F>
+constexpr void for_each_field(T& msg, F&& f) {
+  T::nmea.fields.apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); });
+}
+
+/// The number of wire fields of the form `msg` is written in, for field_name: every field's,
+/// but for a field only the longer form has (only_with_field_count) that holds no value.
+template <message_like T>
+[[nodiscard]] constexpr std::size_t form_field_count(const T& msg) noexcept {
+  std::size_t n = 0;
+  T::nmea.fields.apply([&](const auto&... d) {
+    ((n += (d.opts.only_with_field_count != 0 && detail::skipped(d, msg)) ? 0 : d.width()), ...);
+  });
+  return n;
+}
+
+/// What a message's description says of wire field `n`: its declared name and options (found
+/// false when the message has no such field).
+struct field_about {
+  std::string_view name;
+  field_options opts{};
+  bool found = false;
+};
+
+/// Wire field `n` of T (field_count as field_name's).
+template <message_like T>
+[[nodiscard]] constexpr field_about about_field(
+    std::size_t n, std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
+  field_about a;
+  std::size_t first = 1;
+  T::nmea.fields.apply([&](const auto&... d) {
+    (void)(((d.opts.only_with_field_count != 0 && field_count < d.opts.only_with_field_count)
+                ? false
+                : (n >= first && n < first + d.width() ? (a = {d.name, d.opts, true}, true)
+                                                       : (first += d.width(), false))) ||
+           ...);
+  });
+  return a;
+}
+
+/// The declared name of the field that holds wire field `n` (1-based), or "" if none.
+/// Numbered as in the longest form of the sentence; give the sentence's field count (e.g.
+/// sentence_view::field_count) to number a shorter form as it came: a five-field CPRBS has no
+/// battery id, so its field 2 is the stack voltage.
+template <message_like T>
+[[nodiscard]] constexpr std::string_view field_name(
+    std::size_t n, std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
+  return about_field<T>(n, field_count).name;
+}
+
+}  // namespace seawire::nmea
