@@ -363,8 +363,8 @@ TEST_CASE("decimal::compare without division agrees with the value") {
 
 namespace {
 
-// Positions as the position codec read them before the one-pass reader: split at the point, degrees by
-// parse_fixed_digits, minutes by parse_decimal.
+// Positions as the position codec read them before the one-pass reader: split at the point, degrees
+// by parse_fixed_digits, minutes by parse_decimal.
 template <class Axis>
 errc reference_position(std::string_view s, nmea_coordinate<Axis>& v) {
   std::size_t point = s.find('.');
