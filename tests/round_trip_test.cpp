@@ -72,10 +72,9 @@ void round_trip(support::prng& g, const nm::parse_policy& role, int iterations, 
     for (const nm::parse_policy& p : {nm::parse_policy::strict(), nm::parse_policy{}, role}) {
       const auto back = nm::decode<M>(line, p);
       const auto via_set = Set::decode(line, p);
-      const bool this_ok = back && same_values(back.value, m) &&
-                           nm::encode(back.value).view() == line && via_set &&
-                           std::holds_alternative<M>(via_set.value) &&
-                           same_values(std::get<M>(via_set.value), m);
+      const bool this_ok =
+          back && same_values(back.value, m) && nm::encode(back.value).view() == line && via_set &&
+          std::holds_alternative<M>(via_set.value) && same_values(std::get<M>(via_set.value), m);
       if (!this_ok) {
         FAIL_CHECK(M::nmea.address << ": round trip failed for " << line << " ("
                                    << seawire::name(back.ec) << " field " << back.field << ")");
