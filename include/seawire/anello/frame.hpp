@@ -62,25 +62,26 @@ using frame_bytes = std::array<std::uint8_t, frame_size>;
 using time_ms = std::chrono::sys_time<std::chrono::milliseconds>;
 
 /// The payload in physical units, as a sender has it; nullopt = not available. Member names are
-/// the field names of the table, the accessors of sensor_frame_raw and the JSON keys.
+/// the field names of the table, the accessors of sensor_frame_raw and the JSON keys; the ranges
+/// are the table's (sensor_fields, listed in docs/messages.md).
 struct sensor_values {
-  std::optional<double> heading_deg;         ///<  1 IMU compass heading, 0..360 degrees
-  std::optional<double> latitude_deg;        ///<  2 degrees north, -90..90
-  std::optional<double> longitude_deg;       ///<  3 degrees east, -180..180
+  std::optional<double> heading_deg;         ///<  1 IMU compass heading, degrees
+  std::optional<double> latitude_deg;        ///<  2 degrees, north positive
+  std::optional<double> longitude_deg;       ///<  3 degrees, east positive
   std::optional<double> sog_mps;             ///<  4 speed over ground, m/s
-  std::optional<double> cog_deg;             ///<  5 course over ground, 0..360 degrees
+  std::optional<double> cog_deg;             ///<  5 course over ground, degrees
   std::optional<time_ms> gps_time;           ///<  6 time of the GPS fix
   std::optional<double> alt_msl_m;           ///<  7 altitude above mean sea level, m
   std::optional<double> geoid_sep_m;         ///<  8 geoid separation, m
   std::optional<double> hdop;                ///<  9 horizontal dilution of precision
-  std::optional<int> fix_quality;            ///< 10 GGA quality indicator 0..8 (0 = no fix)
-  std::optional<double> motor_pct;           ///< 11 motor, -100..100 %
-  std::optional<double> rudder_pct;          ///< 12 rudder, -100..100 %, +100 = full starboard
+  std::optional<int> fix_quality;            ///< 10 GGA quality indicator (0 = no fix)
+  std::optional<double> motor_pct;           ///< 11 motor, %
+  std::optional<double> rudder_pct;          ///< 12 rudder, %, +100 = full starboard
   std::optional<double> stw_mps;             ///< 13 speed through water, m/s
   std::optional<double> wind_speed_abs_mps;  ///< 14 true wind speed, m/s
-  std::optional<double> wind_dir_abs_deg;    ///< 15 true wind direction, 0..360 degrees
+  std::optional<double> wind_dir_abs_deg;    ///< 15 true wind direction, degrees
   std::optional<double> wind_speed_rel_mps;  ///< 16 apparent wind speed, m/s
-  std::optional<double> wind_dir_rel_deg;    ///< 17 apparent wind angle, 0..360 degrees
+  std::optional<double> wind_dir_rel_deg;    ///< 17 apparent wind angle, degrees
   std::optional<double> air_temp_c;          ///< 18 air temperature, degrees Celsius
   std::optional<double> pressure_hpa;        ///< 19 barometric pressure, hPa
 

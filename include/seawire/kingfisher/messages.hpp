@@ -69,10 +69,10 @@ using cpnvr = bluefin::velocity_update<"CPNVR">;
 struct cprcm {
   nmea::time_of_day timestamp;                  // 1 [Timestamp] when the sentence was made
   std::optional<std::uint16_t> compass_id = 0;  // 2 [ID_Compass] which compass
-  // 3 [Heading] degrees clockwise from true north, 0..360
+  // 3 [Heading] degrees clockwise from true north
   std::optional<nmea::decimal> heading_deg;
-  std::optional<nmea::decimal> pitch_deg;  // 4 [Pitch] degrees, -90..90, positive bow up
-  std::optional<nmea::decimal> roll_deg;   // 5 [Roll] degrees, -180..180; the spec's 2.8 says
+  std::optional<nmea::decimal> pitch_deg;  // 4 [Pitch] degrees, positive bow up
+  std::optional<nmea::decimal> roll_deg;   // 5 [Roll] degrees; the spec's 2.8 says
                                            //   positive port side up, its Appendix B starboard
   std::optional<nmea::time_of_day> nav_timestamp;  // 6 [NavTimestamp] when the compass measured;
                                                    //   blank means "the same as field 1"
@@ -216,7 +216,7 @@ struct pydep {
   nmea::decimal
       yaw_rate;          // 1 [DesYawRate] desired rate of yaw. UNIT CONFLICT: the spec says rad/s;
                          //   the Clearpath vehicle reads deg/s, positive clockwise. Sent as given.
-  nmea::decimal thrust;  // 2 [DesThrustPct] percent of thrust, -100..100; 0 stopped, > 0 forward
+  nmea::decimal thrust;  // 2 [DesThrustPct] percent of thrust; 0 stopped, > 0 forward
 
   /// Both numbers rounded to `places` fraction digits, or (places < 0) to each field's
   /// declared precision: 2 for the yaw rate, 1 for the thrust.
@@ -284,8 +284,8 @@ struct pydev {
 ///   $PYDIR,45,55*57
 ///          1  2
 struct pydir {
-  nmea::decimal thrust_left;   // 1 [DesThrustPct_L] percent of thrust, -100..100, port motor
-  nmea::decimal thrust_right;  // 2 [DesThrustPct_R] percent of thrust, -100..100, starboard motor
+  nmea::decimal thrust_left;   // 1 [DesThrustPct_L] percent of thrust, port motor
+  nmea::decimal thrust_right;  // 2 [DesThrustPct_R] percent of thrust, starboard motor
 
   /// Both percentages rounded to `places` fraction digits, or (places < 0) to the declared
   /// precision: 1.

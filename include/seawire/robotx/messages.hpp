@@ -178,8 +178,8 @@ struct rxgat {
   nmea::date date;                                     // 1 [HST date] ddmmyy
   nmea::time_of_day time;                              // 2 [HST time] hhmmss
   nmea::text<5> team_id;                               // 3 [Team ID]
-  std::optional<gate> entrance_gate;                   // 4 [Active Entrance Gate] 1..3
-  std::optional<gate> exit_gate;                       // 5 [Active Exit Gate] 1..3
+  std::optional<gate> entrance_gate;                   // 4 [Active Entrance Gate]
+  std::optional<gate> exit_gate;                       // 5 [Active Exit Gate]
   std::optional<light_buoy> light_buoy_active;         // 6 [Light Buoy Active] Y/N
   std::optional<robotx::light_pattern> light_pattern;  // 7 [Light Pattern] R/B/G x 3
 
