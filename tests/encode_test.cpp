@@ -22,10 +22,6 @@ using namespace seawire;
 using namespace seawire::nmea;
 using support::resealed;
 
-namespace {
-constexpr parse_policy strict = parse_policy::strict();
-}  // namespace
-
 // ---------------------------------------------------------------------------------------------
 // refusals
 
@@ -129,7 +125,7 @@ TEST_CASE("an absent text field can only be left out at the end") {
     b.trailing.reset();  // both absent: the 6-field form
     const auto six = encode(b);
     REQUIRE(six);
-    const auto back = decode<sandshark::bfack>(six.view(), strict);
+    const auto back = decode<sandshark::bfack>(six.view(), parse_policy::strict());
     REQUIRE(back);
     CHECK(back.value == b);
   }
@@ -183,7 +179,7 @@ TEST_CASE("decimal equality is the text form: int_width that pads nothing is no 
   const auto line = encode(m);
   REQUIRE(line);
   CHECK(line.view() == "$PYDIR,-25.7,-25.7*56\r\n");
-  const auto back = decode<kingfisher::pydir>(line.view(), strict);
+  const auto back = decode<kingfisher::pydir>(line.view(), parse_policy::strict());
   REQUIRE(back);
   CHECK(back.value == m);
   CHECK(decimal(5) == decimal(5));
@@ -200,7 +196,7 @@ TEST_CASE("position equality is the text form: degree digits the degrees need an
   const auto line = encode(m);
   REQUIRE(line);
   CHECK(line.view().starts_with("$GPGGA,,000.0,N,000.0,E,"));  // minutes: one fraction digit
-  const auto back = decode<standard::gga>(line.view(), strict);
+  const auto back = decode<standard::gga>(line.view(), parse_policy::strict());
   REQUIRE(back);
   CHECK(back.value.lat == m.lat);
   CHECK(back.value.lon == m.lon);
