@@ -34,24 +34,16 @@ namespace generated {
 
 namespace nm = seawire::nmea;
 
-inline constexpr std::uint64_t pow10(unsigned n) {
-  std::uint64_t p = 1;
-  while (n-- > 0) p *= 10;
-  return p;
-}
+using seawire::detail::pow10_table;
 
 /// Integer digits of |d|'s integer part (1 for zero).
 inline unsigned int_digits(const nm::decimal& d) {
-  std::uint64_t v = d.mantissa / pow10(d.places);
-  unsigned n = 1;
-  while (v >= 10) {
-    v /= 10;
-    ++n;
-  }
-  return n;
+  return seawire::detail::digit_count(d.mantissa / pow10_table[d.places]);
 }
 
-/// Whether d lies inside the range the options declare.
+/// Whether d lies inside the range the options declare. Written here rather than taken from
+/// the message layer's own check, so that a wrong check cannot narrow the values it is tested
+/// on.
 inline bool in_declared_range(const nm::decimal& d, const nm::field_options& o) {
   if (o.has_min && d.compare(o.min) < 0) return false;
   if (o.has_max) {
@@ -67,7 +59,7 @@ inline nm::decimal any_decimal(prng& g, unsigned digits, int max_places, bool ma
   nm::decimal d;
   const unsigned most = max_places >= 0 ? static_cast<unsigned>(max_places) : 9U;
   d.places = static_cast<std::uint8_t>(g.below(std::min(most, 9U) + 1));
-  d.mantissa = g.below(pow10(digits + d.places));
+  d.mantissa = g.below(pow10_table[digits + d.places]);
   d.negative = may_be_negative && g.coin();
   if (g.chance(10)) d.int_width = static_cast<std::uint8_t>(int_digits(d) + g.below(3));
   return d;
@@ -81,9 +73,12 @@ inline nm::decimal bounded_decimal(prng& g, const nm::field_options& o) {
     nm::decimal end = g.coin() ? o.min : o.max;
     if (in_declared_range(end, o) && (o.max_places < 0 || end.places <= o.max_places)) return end;
   }
-  unsigned digits = 6;
-  if (o.has_min) digits = std::max(digits, int_digits(o.min));
-  if (o.has_max) digits = o.has_min ? std::max(int_digits(o.min), int_digits(o.max)) : digits;
+  unsigned digits = 6;  // an end left open: numbers of up to six integer digits
+  if (o.has_min && o.has_max) {
+    digits = std::max(int_digits(o.min), int_digits(o.max));
+  } else if (o.has_min) {
+    digits = std::max(digits, int_digits(o.min));
+  }
   const bool may_be_negative = !o.has_min || o.min.negative;
   for (;;) {
     const nm::decimal d = any_decimal(g, digits, o.max_places, may_be_negative);
@@ -94,7 +89,7 @@ inline nm::decimal bounded_decimal(prng& g, const nm::field_options& o) {
 template <std::integral I>
 I bounded_integer(prng& g, const nm::field_options& o) {
   const auto lo_of = [](const nm::decimal& d) {
-    const auto v = static_cast<std::int64_t>(d.mantissa / pow10(d.places));
+    const auto v = static_cast<std::int64_t>(d.mantissa / pow10_table[d.places]);
     return d.negative ? -v : v;
   };
   std::int64_t lo = static_cast<std::int64_t>(std::numeric_limits<I>::min());
@@ -119,7 +114,7 @@ inline nm::time_of_day any_time(prng& g, const nm::field_options& o) {
   if (g.chance(2)) t = {23, 59, 60, 0, 0};  // a leap second
   const unsigned most = o.max_places >= 0 ? static_cast<unsigned>(o.max_places) : 9U;
   t.places = static_cast<std::uint8_t>(g.below(most + 1));
-  t.fraction = static_cast<std::uint32_t>(g.below(pow10(t.places)));
+  t.fraction = static_cast<std::uint32_t>(g.below(pow10_table[t.places]));
   return t;
 }
 
@@ -158,7 +153,7 @@ void fill_position(prng& g, nm::nmea_coordinate<Axis>& c) {
   c.whole_degrees = static_cast<std::uint16_t>(g.below(Axis::max_degrees + 1U));
   c.minutes.places = static_cast<std::uint8_t>(g.below(13));
   c.minutes.mantissa =
-      c.whole_degrees == Axis::max_degrees ? 0 : g.below(60 * pow10(c.minutes.places));
+      c.whole_degrees == Axis::max_degrees ? 0 : g.below(60 * pow10_table[c.minutes.places]);
   c.hemi = static_cast<nm::hemisphere>(g.coin() ? Axis::positive : Axis::negative);
   // 0 writes the degrees naturally; up to the axis's width pads them ("007").
   c.degree_digits = static_cast<std::uint8_t>(g.below(Axis::width + 1U));

@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "../fuzz/fuzz_common.hpp"
 #include "generate.hpp"
 #include "seawire/anello/inputs.hpp"
 #include "seawire/kingfisher/messages.hpp"
@@ -34,19 +35,14 @@ struct support::values<rx::light_pattern> {
 
 namespace {
 
-/// The same values field by field (and the same talker): what decode(encode(m)) must give. A
-/// message that keeps the field count it was decoded from may differ in that count only.
+/// What decode(encode(m)) must give: the same values field by field and the same talker (the
+/// fuzz targets' definition), and the same message, but for a message that keeps the field count
+/// it was decoded from, which may differ in that count only.
 template <nm::message_like M>
 bool same_values(const M& a, const M& b) {
-  bool same = true;
-  if constexpr (std::remove_cvref_t<decltype(M::nmea)>::any_talker)
-    same = nm::detail::talker_of(a) == nm::detail::talker_of(b);
-  M::nmea.fields.apply(
-      [&](const auto&... d) { ((same = same && a.*(d.member) == b.*(d.member)), ...); });
-  if constexpr (!nm::keeps_wire_fields<M>) {
-    if constexpr (std::equality_comparable<M>) same = same && a == b;
-  }
-  return same;
+  if (!seawire::fuzz::same_message(a, b)) return false;
+  if constexpr (!nm::keeps_wire_fields<M> && std::equality_comparable<M>) return a == b;
+  return true;
 }
 
 struct counts {
