@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // nmea/json.hpp and anello/frame_json.hpp: every value type's JSON form, whole messages, unknown
 // sentences and errors, the exact position conversions, and reading messages back. Where
-// nlohmann-json is installed, every document written here must also parse as JSON.
+// nlohmann-json is installed, every document written here must also parse as JSON. And
+// nmea/csv.hpp with the frame's CSV: the same values as table cells.
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -19,6 +20,7 @@
 
 #include "seawire/anello/frame_json.hpp"
 #include "seawire/kingfisher/messages.hpp"
+#include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/robotx/messages.hpp"
 #include "seawire/sandshark/messages.hpp"
@@ -957,4 +959,76 @@ TEST_CASE("ANELLO frame: fields named by number, and errors told for people") {
   CHECK(describe(small, r2, f) == "AB00 field ");  // cut to fit, NUL kept
   CHECK(small.back() == '\0');
   CHECK(describe(buf, validate(sensor_frame_raw{}), sensor_frame_raw{}) == "ok");
+}
+
+TEST_CASE("CSV: a header of field names, rows of the JSON values, blank for not available") {
+  string_sink h;
+  write_csv_header<kingfisher::cpnvg>(h);
+  CHECK(h.s ==
+        "timestamp,latitude,longitude,position_quality,altitude_m,depth_m,heading_deg,roll_deg,"
+        "pitch_deg,nav_timestamp\n");
+
+  const auto nvg = must_decode<kingfisher::cpnvg>(
+      "$CPNVG,164959.034,4221.711142,N,07105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
+      "164959.006*48\r\n");
+  string_sink row;
+  write_csv(row, nvg);
+  CHECK(row.s ==
+        "16:49:59.034,42.36185236666667,-71.0908130,true,0,0,234.32964,-6.796959,-1.706798,"
+        "16:49:59.006\n");
+
+  // Blank fields and a variation without a value are empty cells; one with a value is signed.
+  auto rmc = must_decode<standard::rmc>("$GPRMC,164959.00,V,,,,,,,311214,,,N*7F\r\n");
+  string_sink blank;
+  write_csv(blank, rmc);
+  CHECK(blank.s == "16:49:59.00,V,,,,,2014-12-31,,N,\n");
+  rmc.magnetic_variation = nmea::magnetic_variation{decimal::scaled(153, 1), hemisphere::west};
+  blank.s.clear();
+  write_csv(blank, rmc);
+  CHECK(blank.s == "16:49:59.00,V,,,,,2014-12-31,-15.3,N,\n");
+  rmc.magnetic_variation = nmea::magnetic_variation{std::nullopt, hemisphere::east};
+  blank.s.clear();
+  write_csv(blank, rmc);
+  CHECK(blank.s == "16:49:59.00,V,,,,,2014-12-31,,N,\n");
+}
+
+TEST_CASE("CSV: text is quoted only when it must be, quotes doubled") {
+  string_sink s;
+  write_csv_text(s, "Running /var/log/mission_12");
+  CHECK(s.s == "Running /var/log/mission_12");
+  s.s.clear();
+  write_csv_text(s, R"(said "stop", twice)");
+  CHECK(s.s == R"("said ""stop"", twice")");
+  s.s.clear();
+  write_csv_text(s, "two\nlines");
+  CHECK(s.s == "\"two\nlines\"");
+  s.s.clear();
+  write_csv_text(s, "");
+  CHECK(s.s.empty());
+
+  sandshark::bfmis m;
+  m.timestamp = {23, 11, 21, 30, 2};
+  m.dive_file = "dive1.xml";
+  m.status = "Aborted";
+  m.details = R"(depth "12.5" > max, surfacing)";
+  string_sink row;
+  write_csv(row, m);
+  CHECK(row.s == R"(23:11:21.30,dive1.xml,Aborted,"depth ""12.5"" > max, surfacing")"
+                 "\n");
+}
+
+TEST_CASE("CSV of ANELLO frames: the JSON keys, unquoted values, empty when not available") {
+  const auto f = anello::decode_frame(seed_frame());
+  REQUIRE(f);
+  string_sink h;
+  anello::write_csv_header(h);
+  CHECK(h.s ==
+        "heading_deg,latitude,longitude,sog_mps,cog_deg,gps_time,alt_msl_m,geoid_sep_m,hdop,"
+        "fix_quality,motor_pct,rudder_pct,stw_mps,wind_speed_abs_mps,wind_dir_abs_deg,"
+        "wind_speed_rel_mps,wind_dir_rel_deg,air_temp_c,pressure_hpa\n");
+  string_sink row;
+  anello::write_csv(row, f.value);
+  CHECK(row.s ==
+        "89,32.828671,-117.229926,0.0,,2024-07-03T15:42:58.000Z,48.0,,,,0,0,0.0,0.2,108,0.3,90,,"
+        "\n");
 }

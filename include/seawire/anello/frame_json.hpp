@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// JSON for the ANELLO 0xAB00 binary frame, by the conventions of nmea/json.hpp:
+// JSON and CSV for the ANELLO 0xAB00 binary frame, by the conventions of nmea/json.hpp and
+// nmea/csv.hpp:
 //
 //   {"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,"sog_mps":0.0,
 //    "cog_deg":null,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,...}
@@ -95,7 +96,7 @@ struct civil {
 // Milliseconds of 10000-01-01T00:00:00Z: ISO text is written below it.
 inline constexpr std::uint64_t iso_limit_ms = 253402300800000ULL;
 
-template <nmea::json_sink Sink>
+template <nmea::json_style Style = nmea::json_style::json, nmea::json_sink Sink>
 constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   if (ms >= iso_limit_ms) {
     nmea::detail::json_uint(s, ms);
@@ -104,7 +105,7 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   const auto days = static_cast<std::int64_t>(ms / 86'400'000);
   const std::uint64_t in_day = ms % 86'400'000;
   const civil c = civil_from_days(days);
-  s.put('"');
+  if constexpr (Style == nmea::json_style::json) s.put('"');
   nmea::detail::json_uint(s, static_cast<std::uint64_t>(c.year), 4);
   s.put('-');
   nmea::detail::json_uint(s, c.month, 2);
@@ -118,7 +119,8 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   nmea::detail::json_uint(s, in_day / 1000 % 60, 2);
   s.put('.');
   nmea::detail::json_uint(s, in_day % 1000, 3);
-  s.put("Z\"");
+  s.put('Z');
+  if constexpr (Style == nmea::json_style::json) s.put('"');
 }
 
 /// "YYYY-MM-DDThh:mm:ss[.fff]Z" (0 to 3 fraction digits; "Z" or "+00:00" optional) or integer
@@ -178,6 +180,17 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   return errc::ok;
 }
 
+/// A field's value (one that is available) as JSON writes it, or plain: ISO time unquoted.
+template <nmea::json_style Style = nmea::json_style::json, nmea::json_sink Sink, class Field>
+constexpr void write_field_value(Sink& s, const Field& field,
+                                 const sensor_frame_raw& frame) noexcept {
+  const typename Field::raw_type raw = frame.*Field::raw_member;
+  if constexpr (std::is_same_v<typename Field::value_type, time_ms>) {
+    write_time_ms<Style>(s, static_cast<std::uint64_t>(raw));
+  } else {
+    nmea::write_json_value(s, raw_decimal(field, raw));
+  }
+}
 }  // namespace detail
 
 /// Whether `key` is a JSON key of the frame (for reporting unknown keys).
@@ -236,21 +249,43 @@ constexpr void write_json(Sink& s, const sensor_frame_raw& frame) noexcept {
   s.put('"');
   detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
     using field_type = std::remove_cvref_t<decltype(field)>;
-    using raw_type = typename field_type::raw_type;
-    const raw_type raw = frame.*field_type::raw_member;
     s.put(",\"");
     s.put(field.json_key);
     s.put("\":");
-    if (field.not_available(raw)) {
+    if (field.not_available(frame.*field_type::raw_member)) {
       s.put("null");
-    } else if constexpr (std::is_same_v<typename field_type::value_type, time_ms>) {
-      detail::write_time_ms(s, static_cast<std::uint64_t>(raw));
     } else {
-      nmea::write_json_value(s, detail::raw_decimal(field, raw));
+      detail::write_field_value(s, field, frame);
     }
     return true;
   });
   s.put('}');
+}
+
+/// The header row of the frame's CSV table (with its LF): the 19 JSON keys in table order, as
+/// nmea/csv.hpp writes tables of messages.
+template <nmea::json_sink Sink>
+constexpr void write_csv_header(Sink& s) noexcept {
+  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
+    if (n != 1) s.put(',');
+    s.put(field.json_key);
+    return true;
+  });
+  s.put('\n');
+}
+
+/// A frame as one CSV row (with its LF): the values write_json writes, unquoted (gps_time
+/// "2024-07-03T15:42:58.000Z"), an empty cell for "not available".
+template <nmea::json_sink Sink>
+constexpr void write_csv(Sink& s, const sensor_frame_raw& frame) noexcept {
+  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
+    using field_type = std::remove_cvref_t<decltype(field)>;
+    if (n != 1) s.put(',');
+    if (!field.not_available(frame.*field_type::raw_member))
+      detail::write_field_value<nmea::json_style::plain>(s, field, frame);
+    return true;
+  });
+  s.put('\n');
 }
 
 /// Reads a frame from a JSON object: `lookup(object, key)` as for nmea::read_json (only

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// CSV for messages: one table per message type, a header row of the description's field names
+// and one row per message, for pandas, R and spreadsheets.
+//
+//   latitude,longitude,...                  write_csv_header<T>(sink)
+//   42.3618523333333,-71.0908130,...        write_csv(sink, msg)
+//
+// RFC 4180 text with LF line ends (which every CSV reader takes): fields separated by commas, a
+// field quoted ("...", inner quotes doubled) only when it holds a comma, a quote, CR or LF. The
+// values are those of nmea/json.hpp, unquoted: numbers with the wire's digits, positions in
+// signed decimal degrees, times "hh:mm:ss.sss", dates "YYYY-MM-DD", enums their wire spelling,
+// flags true/false. A blank or not-available field is an empty cell (so is blank text), which
+// pandas reads as NaN and R as NA. No "type" column: a table holds one type (its file name or
+// the caller says which).
+
+#include <string_view>
+#include <type_traits>
+
+#include "seawire/nmea/description.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/nmea/variation.hpp"
+
+namespace seawire::nmea {
+
+/// One CSV field holding `text`: as is, or quoted with inner quotes doubled when it holds a
+/// comma, a quote, CR or LF.
+template <json_sink Sink>
+constexpr void write_csv_text(Sink& s, std::string_view text) noexcept {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) {
+    s.put(text);
+    return;
+  }
+  s.put('"');
+  for (const char c : text) {
+    if (c == '"') s.put('"');
+    s.put(c);
+  }
+  s.put('"');
+}
+
+/// One value as a CSV field, by the conventions at the top of this file.
+template <json_sink Sink, class T>
+constexpr void write_csv_value(Sink& s, const T& v) noexcept {
+  if constexpr (detail::is_optional<T>::value) {
+    if (v) write_csv_value(s, *v);
+  } else if constexpr (std::is_same_v<T, magnetic_variation>) {
+    if (v.value) write_json_value<json_style::plain>(s, v);
+  } else if constexpr (detail::is_text<T>::value) {
+    write_csv_text(s, v.view());
+  } else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, decimal> ||
+                       is_ddmm_position<T> || is_degrees_position<T> ||
+                       std::is_same_v<T, time_of_day> || std::is_same_v<T, date> ||
+                       char_enum_like<T> || word_enum_like<T>) {
+    write_json_value<json_style::plain>(s, v);  // digits, ':', '-', '.' and letters only
+  } else {
+    // Any other value with a codec (a RobotX light pattern): its wire text, quoted if need be.
+    json_buffer<256> text;
+    write_json_value<json_style::plain>(text, v);
+    write_csv_text(s, text.view());
+  }
+}
+
+/// The header row of T's table (with its LF): the field names in wire order.
+template <message_like T, json_sink Sink>
+constexpr void write_csv_header(Sink& s) noexcept {
+  bool first = true;
+  T::nmea.fields.apply([&](const auto&... d) {
+    ((first ? void(first = false) : s.put(','), write_csv_text(s, d.name)), ...);
+  });
+  s.put('\n');
+}
+
+/// A message as one row of its type's table (with its LF): each field in wire order.
+template <json_sink Sink, message_like T>
+constexpr void write_csv(Sink& s, const T& msg) noexcept {
+  bool first = true;
+  for_each_field(msg, [&](std::string_view, const auto& value) {
+    if (!first) s.put(',');
+    first = false;
+    write_csv_value(s, value);
+  });
+  s.put('\n');
+}
+
+}  // namespace seawire::nmea
