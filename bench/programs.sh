@@ -5,7 +5,9 @@
 #   seawire-decode --format none   (frame, parse, decode every field of every message)
 # against
 #   seawire-xor-baseline           (split lines, check the XOR checksum, nothing else)
-# with hyperfine when it is installed (else bash's time). The target: within 2x.
+# with hyperfine when it is installed (else bash's time). The target: within 2x. Then the
+# output formats against --format json: csv (a table per type, in build/bench-programs/csv),
+# geojson and svg (the tracks), each targeted at most 1.5x json's time.
 #   bench/programs.sh [lines]      SEAWIRE_JOBS=N for the build (default 1)
 set -euo pipefail
 root=$(cd -- "$(dirname -- "${BASH_SOURCE[0]}")/.." && pwd)
@@ -40,9 +42,15 @@ if command -v hyperfine >/dev/null; then
     -n xor-baseline "$tools/seawire-xor-baseline < $corpus" \
     -n 'decode --format none' "$tools/seawire-decode --format none < $corpus" \
     -n 'decode --format json' "$tools/seawire-decode --format json < $corpus" \
-    -n 'decode --format nmea' "$tools/seawire-decode --format nmea < $corpus"
+    -n 'decode --format nmea' "$tools/seawire-decode --format nmea < $corpus" \
+    -n 'decode --format csv' \
+    "$tools/seawire-decode --format csv --output-dir $build/csv < $corpus" \
+    -n 'decode --format geojson' "$tools/seawire-decode --format geojson < $corpus" \
+    -n 'decode --format svg' "$tools/seawire-decode --format svg < $corpus"
 else
-  for cmd in seawire-xor-baseline "seawire-decode --format none" "seawire-decode --format json"; do
+  for cmd in seawire-xor-baseline "seawire-decode --format none" "seawire-decode --format json" \
+    "seawire-decode --format csv --output-dir $build/csv" "seawire-decode --format geojson" \
+    "seawire-decode --format svg"; do
     echo "== $cmd"
     time $tools/$cmd <"$corpus" >/dev/null
   done

@@ -1,22 +1,32 @@
 // SPDX-License-Identifier: BSL-1.0
 // seawire-decode: NMEA-style sentences (and ANELLO 0xAB00 binary frames mixed in) on stdin ->
-// one JSON object per message (or re-encoded messages, or nothing but a verdict). A thin program
-// over the library: anello::stream_reader cuts the stream into sentences and frames,
-// message_set::visit decodes each sentence by its address, nmea/json.hpp and
-// anello/frame_json.hpp write them. See --help, and the README's seawire-decode(1) for the manual.
+// one JSON object per message (or re-encoded messages, CSV tables, a GeoJSON or SVG track, or
+// nothing but a verdict). A thin program over the library: anello::stream_reader cuts the stream
+// into sentences and frames, message_set::visit decodes each sentence by its address,
+// nmea/json.hpp, nmea/csv.hpp and anello/frame_json.hpp write them; track.hpp gathers positions.
+// See --help, and docs/seawire-decode.md for the manual.
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "io.hpp"
 #include "messages.hpp"
@@ -24,6 +34,7 @@
 #include "seawire/anello/frame_json.hpp"
 #include "seawire/anello/stream.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/json.hpp"
@@ -31,19 +42,58 @@
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/writer.hpp"
 #include "seawire/version.hpp"
+#include "track.hpp"
 
 namespace {
 
 using namespace seawire;
 using seawire::tools::all_messages;
 
-enum class format { json, nmea, none };
+enum class format { json, nmea, none, csv, geojson, svg };
 
 struct options {
   format fmt = format::json;
   nmea::parse_policy policy;
   bool stats = false;
   bool line_buffered = false;
+  bool quiet = false;
+  std::vector<std::string> types;  // only these types (the JSON "type"); empty: every type
+  std::string output_dir;          // --format csv: one <TYPE>.csv per type here
+};
+
+// Whether a message type has a position: fields called "latitude" and "longitude", as in JSON.
+template <class M>
+constexpr bool has_position() {
+  if constexpr (nmea::message_like<M>) {
+    bool lat = false, lon = false;
+    M::nmea.fields.apply([&](const auto&... d) {
+      ((lat = lat || d.name == "latitude", lon = lon || d.name == "longitude"), ...);
+    });
+    return lat && lon;
+  } else {
+    return false;
+  }
+}
+
+// Whether a field's values are states (enums and flags) whose changes along a track are events.
+template <class V>
+struct is_state : std::bool_constant<std::is_same_v<V, bool> || nmea::char_enum_like<V> ||
+                                     nmea::word_enum_like<V>> {};
+template <class V>
+struct is_state<std::optional<V>> : is_state<V> {};
+
+// One CSV table: a file of its own (--output-dir) with its header written once.
+struct csv_table {
+  std::FILE* file = nullptr;
+  std::unique_ptr<tools::output> out;
+  bool header = false;
+  csv_table() = default;
+  csv_table(const csv_table&) = delete;
+  csv_table& operator=(const csv_table&) = delete;
+  ~csv_table() {
+    out.reset();
+    if (file != nullptr) std::fclose(file);
+  }
 };
 
 // Rejected input shows at most this much of its line.
@@ -65,8 +115,32 @@ class decoder {
 
   void finish() {
     while (const std::optional<anello::stream_item> item = reader_.finish()) handle(*item);
+    switch (opt_.fmt) {
+      case format::geojson: tracks_.write_geojson(out_); break;
+      case format::svg: tracks_.write_svg(out_); break;
+      case format::csv:
+        for (auto& [type, t] : tables_) {
+          t->out->flush();
+          if (t->out->failed()) {
+            std::fprintf(stderr, "seawire-decode: writing %s: %s\n", table_path(type).c_str(),
+                         std::strerror(errno));
+            ++table_failures_;
+          }
+        }
+        for (const auto& [type, n] : not_tabled_) {
+          std::fprintf(stderr,
+                       "seawire-decode: %llu %s sentence%s left out of the CSV output: no "
+                       "message describes their fields\n",
+                       static_cast<unsigned long long>(n), type.c_str(), n == 1 ? "" : "s");
+        }
+        break;
+      default: break;
+    }
     out_.flush();
   }
+
+  [[nodiscard]] std::uint64_t decoded() const { return decoded_; }
+  [[nodiscard]] std::uint64_t rejected() const { return rejected_; }
 
   // The input went quiet: a sentence ended by a CR that may yet be followed by LF is decoded
   // now rather than when the next byte comes. Not when CR LF is required: there the LF decides.
@@ -75,8 +149,8 @@ class decoder {
     if (const std::optional<anello::stream_item> item = reader_.flush()) handle(*item);
   }
 
-  [[nodiscard]] bool all_good() const { return rejected_ == 0 && !out_.failed(); }
-  [[nodiscard]] bool output_failed() const { return out_.failed(); }
+  [[nodiscard]] bool all_good() const { return rejected_ == 0 && !output_failed(); }
+  [[nodiscard]] bool output_failed() const { return out_.failed() || table_failures_ > 0; }
 
   void print_stats() const {
     const anello::stream_stats& f = reader_.stats();
@@ -132,6 +206,7 @@ class decoder {
       reject(item.line, v.ec, v.field, frame_error(item.frame, v), hex(item.bytes));
       return;
     }
+    if (!wanted(anello::frame_json_type)) return;
     switch (opt_.fmt) {
       case format::json:
         anello::write_json(out_, item.frame);
@@ -143,6 +218,25 @@ class decoder {
         break;
       }
       case format::none: break;
+      case format::csv:
+        if (csv_table* t = table(anello::frame_json_type)) {
+          if (!t->header) anello::write_csv_header(*t->out);
+          t->header = true;
+          anello::write_csv(*t->out, item.frame);
+        }
+        break;
+      case format::geojson:
+      case format::svg: {
+        nmea::json_buffer<2048> json;
+        anello::write_json(json, item.frame);
+        if (tools::split_json_object(json.view(), fields_)) {
+          // The frame's codes (fix quality) are its states.
+          for (std::size_t i = 1; i < fields_.size(); ++i)
+            fields_[i].state = anello::about_sensor_field(static_cast<std::uint16_t>(i)).is_code;
+          tracks_.add(fields_);
+        }
+        break;
+      }
     }
     ++decoded_;
     if (opt_.stats) ++by_type_[std::string(anello::frame_json_type)];
@@ -187,8 +281,22 @@ class decoder {
     if (!r) decode_error(l, r);
   }
 
+  // The JSON "type" of a message: its address, or talker + type for talker-agnostic ones.
+  template <class M>
+  static std::string_view type_of(const nmea::sentence_view& s, const M& msg,
+                                  nmea::json_buffer<16>& buf) {
+    if constexpr (nmea::message_like<M>) {
+      nmea::write_type(buf, msg);
+      return buf.view();
+    } else {
+      return s.address;
+    }
+  }
+
   template <class M>
   void emit(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
+    nmea::json_buffer<16> type_buf;
+    if (!opt_.types.empty() && !wanted(type_of(s, msg, type_buf))) return;
     switch (opt_.fmt) {
       case format::json:
         nmea::write_json(out_, msg);
@@ -198,6 +306,22 @@ class decoder {
         if (!reencode(l, s, msg)) return;
         break;
       case format::none: break;
+      case format::csv:
+        if constexpr (nmea::message_like<M>) {
+          if (type_buf.view().empty()) nmea::write_type(type_buf, msg);
+          if (csv_table* t = table(type_buf.view())) {
+            if (!t->header) nmea::write_csv_header<M>(*t->out);
+            t->header = true;
+            nmea::write_csv(*t->out, msg);
+          }
+        } else {
+          ++not_tabled_[std::string(s.address)];
+        }
+        break;
+      case format::geojson:
+      case format::svg:
+        if constexpr (has_position<M>()) track(msg);
+        break;
     }
     ++decoded_;
     if (opt_.stats) ++by_type_[std::string(s.address)];
@@ -234,6 +358,55 @@ class decoder {
     }
     out_.put(std::string_view(buf.data(), r.value));
     return true;
+  }
+
+  // ---- types, tables and tracks ----
+
+  [[nodiscard]] bool wanted(std::string_view type) const {
+    return opt_.types.empty() ||
+           std::find(opt_.types.begin(), opt_.types.end(), type) != opt_.types.end();
+  }
+
+  [[nodiscard]] std::string table_path(const std::string& type) const {
+    return (std::filesystem::path(opt_.output_dir) / (type + ".csv")).string();
+  }
+
+  // The table of a type: stdout when there is no output directory (one type only), else the
+  // type's file, created when its first message comes. nullptr when it cannot be created.
+  csv_table* table(std::string_view type) {
+    auto it = tables_.find(type);
+    if (it != tables_.end()) return it->second.get();
+    auto t = std::make_unique<csv_table>();
+    if (opt_.output_dir.empty()) {
+      t->out = std::make_unique<tools::output>(stdout);
+    } else {
+      const std::string path = table_path(std::string(type));
+      t->file = std::fopen(path.c_str(), "w");
+      if (t->file == nullptr) {
+        std::fprintf(stderr, "seawire-decode: cannot create %s: %s\n", path.c_str(),
+                     std::strerror(errno));
+        ++table_failures_;
+        tables_.emplace(std::string(type), nullptr);
+        return nullptr;
+      }
+      t->out = std::make_unique<tools::output>(t->file, 64 * 1024);
+    }
+    return tables_.emplace(std::string(type), std::move(t)).first->second.get();
+  }
+
+  // A message with a position, to its source's track: its JSON members, states marked.
+  template <class M>
+  void track(const M& msg) {
+    nmea::json_buffer<4096> json;
+    nmea::write_json(json, msg);
+    if (json.overflow() || !tools::split_json_object(json.view(), fields_)) return;
+    std::size_t i = 1;  // fields_[0] is "type"
+    nmea::for_each_field(msg, [&](std::string_view, const auto& value) {
+      if (i < fields_.size())
+        fields_[i].state = is_state<std::remove_cvref_t<decltype(value)>>::value;
+      ++i;
+    });
+    tracks_.add(fields_);
   }
 
   // ---- errors ----
@@ -328,10 +501,78 @@ class decoder {
   std::uint64_t reencode_failures_ = 0;
   std::map<std::string, std::uint64_t> by_type_;
   std::array<std::uint64_t, 256> by_error_{};
+  std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
+  std::map<std::string, std::uint64_t> not_tabled_;  // unknown sentences, by address
+  std::uint64_t table_failures_ = 0;
+  tools::tracks tracks_;
+  std::vector<tools::json_field> fields_;
+};
+
+// The progress line: on stderr when it is a terminal and stdin a regular file (whose size is
+// known), at most ten times a second, erased at the end.
+class progress {
+ public:
+  explicit progress(bool wanted) {
+    struct stat st {};
+    if (wanted && ::isatty(2) == 1 && ::fstat(0, &st) == 0 && S_ISREG(st.st_mode)) {
+      total_ = static_cast<std::uint64_t>(st.st_size);
+      on_ = true;
+    }
+  }
+  progress(const progress&) = delete;
+  progress& operator=(const progress&) = delete;
+  ~progress() { done(); }
+
+  void update(std::uint64_t bytes, const decoder& d) {
+    if (!on_) return;
+    read_ += bytes;
+    const auto now = std::chrono::steady_clock::now();
+    if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    shown_ = true;
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    const double rate = seconds > 0 ? static_cast<double>(d.decoded()) / seconds : 0;
+    std::fprintf(
+        stderr,
+        "\rseawire-decode: %.1f of %.1f MB (%.0f%%), %llu messages, %.0f messages/s, "
+        "%llu rejected\033[K",
+        static_cast<double>(read_) / 1e6, static_cast<double>(total_) / 1e6,
+        total_ > 0 ? 100.0 * static_cast<double>(read_) / static_cast<double>(total_) : 100.0,
+        static_cast<unsigned long long>(d.decoded()), rate,
+        static_cast<unsigned long long>(d.rejected()));
+    std::fflush(stderr);
+  }
+
+  // Erases the line, so what follows on the terminal starts clean.
+  void done() {
+    if (on_ && shown_) {
+      std::fputs("\r\033[K", stderr);
+      std::fflush(stderr);
+    }
+    on_ = false;
+  }
+
+ private:
+  bool on_ = false;
+  bool shown_ = false;
+  std::uint64_t total_ = 0;
+  std::uint64_t read_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_{};
 };
 
 int run(const options& o) {
+  if (!o.output_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.output_dir, ec);
+    if (ec) {
+      std::fprintf(stderr, "seawire-decode: cannot create %s: %s\n", o.output_dir.c_str(),
+                   ec.message().c_str());
+      return 1;
+    }
+  }
   decoder d(o);
+  progress shown(!o.quiet);
   tools::chunk_reader in(0);
   // Live streams: a line whose CR ended the input so far is let out after 50 ms without more.
   constexpr int quiet_ms = 50;
@@ -340,8 +581,10 @@ int run(const options& o) {
     const std::string_view chunk = in.next();
     if (chunk.empty()) break;
     d.feed(chunk);
+    shown.update(chunk.size(), d);
   }
   d.finish();
+  shown.done();
   if (o.stats) d.print_stats();
   if (in.failed()) {
     std::perror("seawire-decode: reading stdin");
@@ -365,6 +608,9 @@ int main(int argc, char** argv) {
       "{\"line\":N,\"error\":\"<errc>\",\"field\":K,\"detail\":\"...\",\"input\":\"...\"}.\n\n"
       "Examples:\n"
       "  nc vehicle 29500 | seawire-decode --line-buffered | jq -c 'select(.type==\"CPNVG\")'\n"
+      "  seawire-decode --format csv --output-dir tables < mission.nmea   # tables/CPNVG.csv ...\n"
+      "  seawire-decode --format geojson < mission.nmea > track.geojson\n"
+      "  seawire-decode --format svg < mission.nmea > track.svg           # open in a browser\n"
       "  seawire-decode --format none --stats < mission.nmea      # check a log\n"
       "  seawire-decode --format nmea < raw.nmea > clean.nmea     # canonical sentences only\n"
       "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error.",
@@ -375,9 +621,22 @@ int main(int argc, char** argv) {
   options o;
   app.add_option("-f,--format", fmt,
                  "json: one JSON object per message (default); nmea: each message re-encoded "
-                 "canonically (uppercase checksum, CR LF), rejected lines reported on stderr; "
-                 "none: decode and validate only (e.g. --format none --stats)")
-      ->check(CLI::IsMember({"json", "nmea", "none"}));
+                 "canonically (uppercase checksum, CR LF); none: decode and validate only (e.g. "
+                 "--format none --stats); csv: a table per message type (with --type or "
+                 "--output-dir); geojson: the tracks of every source of positions, and their "
+                 "state changes as points; svg: a picture of the tracks. With every format but "
+                 "json, rejected lines are reported on stderr")
+      ->check(CLI::IsMember({"json", "nmea", "none", "csv", "geojson", "svg"}));
+  CLI::Option* type_opt = app.add_option(
+      "-t,--type", o.types,
+      "only messages of this type, as JSON's \"type\" names it (CPNVG, GPRMC, AB00); may be "
+      "given more than once (e.g. --format csv --type CPNVG)");
+  CLI::Option* dir_opt = app.add_option(
+      "-o,--output-dir", o.output_dir,
+      "with --format csv: write each type's table to DIR/<TYPE>.csv (created, or replaced), "
+      "stdout unused (e.g. --format csv --output-dir tables)");
+  app.add_flag("-q,--quiet", o.quiet,
+               "no progress line (shown on stderr when it is a terminal and stdin a file)");
   CLI::Option* checksum_opt =
       app.add_option("-c,--checksum", checksum,
                      "required: a sentence without *hh is rejected; verify: checked when present "
@@ -410,7 +669,22 @@ int main(int argc, char** argv) {
     (void)app.exit(e);
     return 2;
   }
-  o.fmt = fmt == "nmea" ? format::nmea : fmt == "none" ? format::none : format::json;
+  o.fmt = fmt == "nmea"      ? format::nmea
+          : fmt == "none"    ? format::none
+          : fmt == "csv"     ? format::csv
+          : fmt == "geojson" ? format::geojson
+          : fmt == "svg"     ? format::svg
+                             : format::json;
+  if (dir_opt->count() > 0 && o.fmt != format::csv) {
+    std::fprintf(stderr, "seawire-decode: --output-dir is for --format csv\n");
+    return 2;
+  }
+  if (o.fmt == format::csv && dir_opt->count() == 0 && type_opt->count() != 1) {
+    std::fprintf(stderr,
+                 "seawire-decode: --format csv writes one table to stdout: give one --type "
+                 "(e.g. --type CPNVG), or --output-dir DIR for a table per type\n");
+    return 2;
+  }
   if (strict) o.policy = nmea::parse_policy::strict();
   // Numbers with spaces around them (" -3.4"): Sandshark's SPI allows them, and a liberal reader
   // of every family at once takes them; --strict does not.

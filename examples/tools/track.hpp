@@ -1,0 +1,345 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Tracks for seawire-decode --format geojson and --format svg: every message that carries a
+// position ("latitude" and "longitude" in its JSON form) adds a vertex to the track of its
+// source; the track is written at the end, as GeoJSON (RFC 7946) or as an SVG picture.
+//
+// A source is the message type ("CPNVG", "GPRMC", "AB00"), or type and team for messages that
+// name one ("RXHRB AUVSI"). A change of state between consecutive positions of a source (an enum
+// or flag such as the RobotX system mode, the RMC status, a frame's fix quality) is an event:
+// a GeoJSON Point where it happened.
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "io.hpp"
+
+namespace seawire::tools {
+
+/// One field of a message as its JSON object has it: key, value text, and whether it is a
+/// state (an enum, a flag or a code) whose changes are events.
+struct json_field {
+  std::string_view key;
+  std::string_view value;
+  bool state = false;
+};
+
+/// Splits a flat JSON object as the library's write_json writes it ({"type":"X","k":v,...}:
+/// keys without escapes, values numbers, literals or strings) into its members, "type" first.
+/// Returns false when the text is not such an object.
+inline bool split_json_object(std::string_view text, std::vector<json_field>& out) {
+  out.clear();
+  std::size_t i = 0;
+  if (text.empty() || text[i++] != '{') return false;
+  while (i < text.size() && text[i] == '"') {
+    const std::size_t key_end = text.find('"', i + 1);
+    if (key_end == std::string_view::npos || key_end + 1 >= text.size() || text[key_end + 1] != ':')
+      return false;
+    json_field f;
+    f.key = text.substr(i + 1, key_end - i - 1);
+    std::size_t v = key_end + 2;
+    std::size_t end = v;
+    if (v < text.size() && text[v] == '"') {
+      for (end = v + 1; end < text.size() && text[end] != '"'; ++end)
+        if (text[end] == '\\') ++end;
+      if (end >= text.size()) return false;
+      ++end;
+    } else {
+      while (end < text.size() && text[end] != ',' && text[end] != '}') ++end;
+    }
+    f.value = text.substr(v, end - v);
+    out.push_back(f);
+    if (end >= text.size()) return false;
+    if (text[end] == '}') return end + 1 == text.size();
+    i = end + 1;
+  }
+  return false;
+}
+
+/// A JSON string's text without its quotes (the library's escapes left as they are: the names
+/// of sources are plain letters and digits).
+inline std::string_view unquoted(std::string_view v) {
+  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') return v.substr(1, v.size() - 2);
+  return v;
+}
+
+class tracks {
+ public:
+  /// Adds a message given as its JSON members (split_json_object's output, "type" first).
+  /// Messages without a position (or with a blank one) are not part of any track.
+  void add(std::span<const json_field> fields) {
+    const json_field* lat = nullptr;
+    const json_field* lon = nullptr;
+    std::string_view type;
+    std::string_view team;
+    for (const json_field& f : fields) {
+      if (f.key == "latitude") lat = &f;
+      if (f.key == "longitude") lon = &f;
+      if (f.key == "type") type = unquoted(f.value);
+      if (f.key == "team_id") team = unquoted(f.value);
+    }
+    if (lat == nullptr || lon == nullptr || lat->value == "null" || lon->value == "null") return;
+    std::string name(type);
+    if (!team.empty()) name.append(" ").append(team);
+    auto [it, is_new] = sources_.try_emplace(name);
+    source& s = it->second;
+    if (is_new) {
+      s.index = sources_.size() - 1;
+      s.name = name;
+      s.type = type;
+    }
+    s.points.emplace_back(number(lon->value), number(lat->value));
+    if (s.points.size() > 1) s.coordinates += ',';
+    s.coordinates.append("[").append(lon->value).append(",").append(lat->value).append("]");
+
+    // Per-vertex properties: every member but the type and the position, in field order.
+    std::size_t k = 0;
+    std::string changes;
+    std::string previous;
+    for (const json_field& f : fields) {
+      if (&f == lat || &f == lon || f.key == "type") continue;
+      if (k == s.columns.size()) s.columns.push_back({std::string(f.key), {}, {}});
+      column& c = s.columns[k++];
+      if (!c.values.empty()) c.values += ',';
+      c.values += f.value;
+      // A state that was or is blank says nothing about a change (an RMC without the mode
+      // field between two with it has not changed mode).
+      if (f.state && f.value != "null") {
+        if (!c.last.empty() && c.last != f.value) {
+          changes.append(changes.empty() ? "\"" : ",\"").append(f.key).append("\"");
+          previous.append(previous.empty() ? "\"" : ",\"").append(f.key).append("\":");
+          previous.append(c.last);
+        }
+        c.last = f.value;
+      }
+    }
+    if (!changes.empty()) {
+      // An event: a Point with the message's own values, what changed, and what it was.
+      std::string& e = events_;
+      e.append(",\n{\"type\":\"Feature\",\"geometry\":{\"type\":\"Point\",\"coordinates\":[");
+      e.append(lon->value).append(",").append(lat->value).append("]},\"properties\":{");
+      e.append("\"source\":\"").append(name).append("\",\"event\":\"state change\",\"changed\":[");
+      e.append(changes).append("],\"previous\":{").append(previous).append("}");
+      for (const json_field& f : fields) {
+        if (f.key == "type" || &f == lat || &f == lon) continue;
+        e.append(",\"").append(f.key).append("\":").append(f.value);
+      }
+      e.append("}}");
+    }
+  }
+
+  [[nodiscard]] std::size_t source_count() const { return sources_.size(); }
+
+  /// A GeoJSON FeatureCollection: per source, a LineString of its positions (a Point when it
+  /// has only one) whose properties are the source, the message type, the vertex count and,
+  /// per field, the array of each vertex's value; then the events' Points.
+  void write_geojson(output& out) const {
+    out.put("{\"type\":\"FeatureCollection\",\"features\":[");
+    bool first = true;
+    for (const source* s : in_order()) {
+      const bool single = s->points.size() == 1;
+      out.put(first ? "\n" : ",\n");
+      first = false;
+      out.put("{\"type\":\"Feature\",\"geometry\":{\"type\":\"");
+      out.put(single ? "Point" : "LineString");
+      out.put("\",\"coordinates\":");
+      if (single) {
+        out.put(s->coordinates);
+      } else {
+        out.put('[');
+        out.put(s->coordinates);
+        out.put(']');
+      }
+      out.put("},\"properties\":{\"source\":\"");
+      out.put(s->name);
+      out.put("\",\"message_type\":\"");
+      out.put(s->type);
+      out.put("\",\"points\":");
+      out.put(std::to_string(s->points.size()));
+      for (const column& c : s->columns) {
+        out.put(",\"");
+        out.put(c.key);
+        out.put("\":");
+        if (!single) out.put('[');
+        out.put(c.values);
+        if (!single) out.put(']');
+      }
+      out.put("}}");
+    }
+    if (!events_.empty()) out.put(first ? std::string_view(events_).substr(1) : events_);
+    out.put("\n]}\n");
+  }
+
+  /// An SVG picture of the tracks, 800 x 600 px: each source's polyline in its own colour, a
+  /// filled circle at its start and a filled square at its end, a scale bar in metres and a
+  /// legend. Equirectangular around the mean latitude of all positions (x = R lon cos(lat0),
+  /// y = R lat, R = 6371008.8 m), scaled alike both ways to fit the plot area (40,40)-(760,520)
+  /// and centred in it, north up.
+  void write_svg(output& out) const {
+    constexpr double width = 800, height = 600, left = 40, top = 40, right = 760, bottom = 520;
+    constexpr double earth_radius_m = 6371008.8;
+    constexpr double rad = 3.14159265358979323846 / 180.0;
+    double lat_sum = 0;
+    std::size_t n = 0;
+    for (const auto& [name, s] : sources_) {
+      for (const auto& [x, y] : s.points) lat_sum += y;
+      n += s.points.size();
+    }
+    const double k = n == 0 ? 0 : earth_radius_m * rad;
+    const double cos0 = n == 0 ? 1 : std::cos(lat_sum / static_cast<double>(n) * rad);
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    bool any = false;
+    for (const auto& [name, s] : sources_) {
+      for (const auto& [lon, lat] : s.points) {
+        const double x = k * lon * cos0, y = k * lat;
+        x0 = any ? std::min(x0, x) : x;
+        x1 = any ? std::max(x1, x) : x;
+        y0 = any ? std::min(y0, y) : y;
+        y1 = any ? std::max(y1, y) : y;
+        any = true;
+      }
+    }
+    const double dx = x1 - x0, dy = y1 - y0;
+    double scale = 1;  // px per metre
+    if (dx > 0 || dy > 0) {
+      scale = std::min(dx > 0 ? (right - left) / dx : 1e300, dy > 0 ? (bottom - top) / dy : 1e300);
+    }
+    const double cx = (left + right) / 2, cy = (top + bottom) / 2;
+    const double mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
+    char buf[160];
+    const auto put = [&](const char* fmt, auto... args) {
+      const int len = std::snprintf(buf, sizeof buf, fmt, args...);
+      if (len > 0)
+        out.put(std::string_view(buf, std::min(static_cast<std::size_t>(len), sizeof buf - 1)));
+    };
+    const auto px = [&](double lon) { return cx + (k * lon * cos0 - mx) * scale; };
+    const auto py = [&](double lat) { return cy - (k * lat - my) * scale; };
+
+    out.put("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    put("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+        "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" font-size=\"13\">\n",
+        width, height, width, height);
+    put("<rect width=\"%.0f\" height=\"%.0f\" fill=\"#ffffff\"/>\n", width, height);
+    put("<text x=\"%.0f\" y=\"24\">seawire-decode: %zu source%s, %zu position%s</text>\n", left,
+        sources_.size(), sources_.size() == 1 ? "" : "s", n, n == 1 ? "" : "s");
+    const std::vector<const source*> order = in_order();
+    for (const source* s : order) {
+      const char* colour = palette[s->index % palette.size()];
+      out.put("<g><title>");
+      put_xml(out, s->name);
+      out.put("</title>\n");
+      if (s->points.size() > 1) {
+        put("<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" "
+            "stroke-linejoin=\"round\" points=\"",
+            colour);
+        for (std::size_t i = 0; i < s->points.size(); ++i)
+          put(i == 0 ? "%.1f,%.1f" : " %.1f,%.1f", px(s->points[i].first), py(s->points[i].second));
+        out.put("\"/>\n");
+      }
+      const auto& [first_lon, first_lat] = s->points.front();
+      const auto& [last_lon, last_lat] = s->points.back();
+      put("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"6\" fill=\"%s\" stroke=\"#000000\"/>\n",
+          px(first_lon), py(first_lat), colour);
+      put("<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\" "
+          "stroke=\"#000000\"/>\n",
+          px(last_lon) - 5, py(last_lat) - 5, colour);
+      out.put("</g>\n");
+    }
+    // Scale bar: the longest 1, 2 or 5 x 10^n metres no longer than a quarter of the plot.
+    if (any) {
+      const double max_m = (right - left) / 4 / scale;
+      double bar = std::pow(10.0, std::floor(std::log10(max_m)));
+      if (5 * bar <= max_m) {
+        bar *= 5;
+      } else if (2 * bar <= max_m) {
+        bar *= 2;
+      }
+      const double len = bar * scale, y = 560;
+      put("<path d=\"M%.0f %.0fv6h%.1fv-6\" fill=\"none\" stroke=\"#000000\" "
+          "stroke-width=\"2\"/>\n",
+          left, y - 6, len);
+      if (bar >= 1000) {
+        put("<text x=\"%.0f\" y=\"%.0f\">%g km</text>\n", left, y + 20, bar / 1000);
+      } else {
+        put("<text x=\"%.0f\" y=\"%.0f\">%g m</text>\n", left, y + 20, bar);
+      }
+    }
+    // Legend: a swatch and the name of each source (the first eight), then start and end.
+    double lx = 260;
+    double ly = 548;
+    for (std::size_t i = 0; i < order.size() && i < 8; ++i) {
+      const double x = lx + static_cast<double>(i % 2) * 250;
+      const double y = ly + static_cast<double>(i / 2) * 16 - (order.size() > 2 ? 8 : 0);
+      put("<path d=\"M%.0f %.0fh24\" stroke=\"%s\" stroke-width=\"4\"/>\n", x, y - 4,
+          palette[order[i]->index % palette.size()]);
+      put("<text x=\"%.0f\" y=\"%.0f\">", x + 30, y);
+      put_xml(out, order[i]->name);
+      out.put("</text>\n");
+    }
+    if (order.size() > 8)
+      put("<text x=\"%.0f\" y=\"594\">and %zu more</text>\n", lx, order.size() - 8);
+    put("<text x=\"%.0f\" y=\"24\" text-anchor=\"end\">&#9679; start  &#9632; end</text>\n", right);
+    out.put("</svg>\n");
+  }
+
+ private:
+  struct column {
+    std::string key;
+    std::string values;  // comma-separated JSON values, one per vertex
+    std::string last;    // the last value of a state column
+  };
+  struct source {
+    std::size_t index = 0;  // order of first appearance
+    std::string name;
+    std::string type;
+    std::string coordinates;                        // "[lon,lat],[lon,lat]..."
+    std::vector<std::pair<double, double>> points;  // (longitude, latitude)
+    std::vector<column> columns;
+  };
+
+  static double number(std::string_view text) {
+    double v = 0;
+    std::from_chars(text.data(), text.data() + text.size(), v);
+    return v;
+  }
+
+  [[nodiscard]] std::vector<const source*> in_order() const {
+    std::vector<const source*> v(sources_.size());
+    for (const auto& [name, s] : sources_) v[s.index] = &s;
+    return v;
+  }
+
+  // Ten colours that stay apart from each other and from the white ground.
+  static constexpr std::array<const char*, 10> palette = {
+      "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+      "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+
+  // Text in XML: the five special characters escaped.
+  static void put_xml(output& out, std::string_view text) {
+    for (const char c : text) {
+      switch (c) {
+        case '<': out.put("&lt;"); break;
+        case '>': out.put("&gt;"); break;
+        case '&': out.put("&amp;"); break;
+        case '"': out.put("&quot;"); break;
+        case '\'': out.put("&apos;"); break;
+        default: out.put(c);
+      }
+    }
+  }
+
+  std::map<std::string, source, std::less<>> sources_;
+  std::string events_;  // ",\n{Feature}" per event
+};
+
+}  // namespace seawire::tools
