@@ -120,6 +120,7 @@ class decoder {
       case format::svg: tracks_.write_svg(out_); break;
       case format::csv:
         for (auto& [type, t] : tables_) {
+          if (t == nullptr) continue;  // could not be created: reported then
           t->out->flush();
           if (t->out->failed()) {
             std::fprintf(stderr, "seawire-decode: writing %s: %s\n", table_path(type).c_str(),

@@ -105,6 +105,14 @@ def case_csv():
                 with open(os.path.join(d, t + ".csv"), "rb") as f:
                     check(one == f.read(), f"{family} {t}: --type table differs from its file")
 
+        # A table that cannot be created is reported, the others still written, exit status 1.
+        d = os.path.join(tmp, "blocked")
+        os.makedirs(os.path.join(d, "CPNVG.csv"))
+        p = run(["--format", "csv", "--output-dir", d], read("kingfisher"), 1)
+        check(b"cannot create" in p.stderr and b"CPNVG.csv" in p.stderr,
+              f"blocked table: {p.stderr[:300]!r}")
+        check(os.path.getsize(os.path.join(d, "GPRMC.csv")) > 0, "other tables still written")
+
     # Text with a quote is quoted with the quote doubled; the csv module reads it back.
     data = seal('BFMIS,231121.30,dive1.xml,Aborted,said "too deep", then stopped')
     p = run(["--format", "csv", "--type", "BFMIS"], data, 0)
