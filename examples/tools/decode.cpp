@@ -82,8 +82,28 @@ struct is_state : std::bool_constant<std::is_same_v<V, bool> || nmea::char_enum_
 template <class V>
 struct is_state<std::optional<V>> : is_state<V> {};
 
+// Writes the CSV header of the type JSON calls `type` (GPRMC, CPNVG, AB00); false when no
+// message of the set, nor the frame, has that type.
+template <class Set>
+struct csv_headers;
+template <class... Ms>
+struct csv_headers<nmea::message_set<Ms...>> {
+  static bool write(std::string_view type, tools::output& out) {
+    if (type == anello::frame_json_type) {
+      anello::write_csv_header(out);
+      return true;
+    }
+    return ((Ms::nmea.matches(type) ? (nmea::write_csv_header<Ms>(out), true) : false) || ...);
+  }
+  static bool knows(std::string_view type) {
+    return type == anello::frame_json_type || (Ms::nmea.matches(type) || ...);
+  }
+};
+using all_headers = csv_headers<all_messages>;
+
 // One CSV table: a file of its own (--output-dir) with its header written once.
 struct csv_table {
+  std::string name;  // for errors: the file's path, or "stdout"
   std::FILE* file = nullptr;
   std::unique_ptr<tools::output> out;
   bool header = false;
@@ -99,13 +119,79 @@ struct csv_table {
 // Rejected input shows at most this much of its line.
 constexpr std::size_t max_input_shown = 256;
 
+// The progress line: on stderr when it is a terminal, stdin a regular file (whose size is known)
+// and stdout not a terminal (whose output would run into the line); at most ten times a second,
+// erased at the end and before anything else is written to stderr.
+class progress {
+ public:
+  explicit progress(bool wanted) {
+    struct stat st {};
+    if (wanted && ::isatty(2) == 1 && ::isatty(1) == 0 && ::fstat(0, &st) == 0 &&
+        S_ISREG(st.st_mode)) {
+      total_ = static_cast<std::uint64_t>(st.st_size);
+      on_ = true;
+    }
+  }
+  progress(const progress&) = delete;
+  progress& operator=(const progress&) = delete;
+  ~progress() { done(); }
+
+  void update(std::uint64_t bytes, std::uint64_t decoded, std::uint64_t rejected) {
+    if (!on_) return;
+    read_ += bytes;
+    const auto now = std::chrono::steady_clock::now();
+    if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    shown_ = true;
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    const double rate = seconds > 0 ? static_cast<double>(decoded) / seconds : 0;
+    std::fprintf(
+        stderr,
+        "\rseawire-decode: %.1f of %.1f MB (%.0f%%), %llu messages, %.0f messages/s, "
+        "%llu rejected\033[K",
+        static_cast<double>(read_) / 1e6, static_cast<double>(total_) / 1e6,
+        total_ > 0 ? 100.0 * static_cast<double>(read_) / static_cast<double>(total_) : 100.0,
+        static_cast<unsigned long long>(decoded), rate, static_cast<unsigned long long>(rejected));
+    std::fflush(stderr);
+  }
+
+  // Erases the line (shown again at the next update), so a message on stderr starts clean.
+  void erase() {
+    if (on_ && shown_) {
+      std::fputs("\r\033[K", stderr);
+      std::fflush(stderr);
+    }
+    shown_ = false;
+  }
+
+  // Erases the line for good.
+  void done() {
+    erase();
+    on_ = false;
+  }
+
+ private:
+  bool on_ = false;
+  bool shown_ = false;
+  std::uint64_t total_ = 0;
+  std::uint64_t read_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_{};
+};
+
 class decoder {
  public:
-  explicit decoder(const options& o) : opt_(o), policy_(o.policy), out_(stdout) {
+  decoder(const options& o, progress& shown)
+      : opt_(o), policy_(o.policy), out_(stdout), progress_(shown) {
     // The reader has taken the line ending off: it is checked here, from what the reader saw.
     policy_.require_crlf = false;
     // What the reader drops comes as items of its own, in order with the messages.
     reader_.report_drops(true);
+    // The one table on stdout has its header even when no message of its type comes.
+    if (o.fmt == format::csv && o.output_dir.empty() && o.types.size() == 1) {
+      if (csv_table* t = table(o.types.front()))
+        t->header = all_headers::write(o.types.front(), *t->out);
+    }
   }
 
   void feed(std::string_view chunk) {
@@ -123,8 +209,8 @@ class decoder {
           if (t == nullptr) continue;  // could not be created: reported then
           t->out->flush();
           if (t->out->failed()) {
-            std::fprintf(stderr, "seawire-decode: writing %s: %s\n", table_path(type).c_str(),
-                         std::strerror(errno));
+            std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
+                         std::strerror(t->out->error()));
             ++table_failures_;
           }
         }
@@ -150,8 +236,12 @@ class decoder {
     if (const std::optional<anello::stream_item> item = reader_.flush()) handle(*item);
   }
 
-  [[nodiscard]] bool all_good() const { return rejected_ == 0 && !output_failed(); }
-  [[nodiscard]] bool output_failed() const { return out_.failed() || table_failures_ > 0; }
+  [[nodiscard]] bool all_good() const {
+    return rejected_ == 0 && !out_.failed() && table_failures_ == 0;
+  }
+  // stdout failed (the tables' failures are reported as they are found).
+  [[nodiscard]] bool stdout_failed() const { return out_.failed(); }
+  [[nodiscard]] int stdout_error() const { return out_.error(); }
 
   void print_stats() const {
     const anello::stream_stats& f = reader_.stats();
@@ -224,6 +314,7 @@ class decoder {
           if (!t->header) anello::write_csv_header(*t->out);
           t->header = true;
           anello::write_csv(*t->out, item.frame);
+          if (opt_.line_buffered) t->out->flush();
         }
         break;
       case format::geojson:
@@ -314,6 +405,7 @@ class decoder {
             if (!t->header) nmea::write_csv_header<M>(*t->out);
             t->header = true;
             nmea::write_csv(*t->out, msg);
+            if (opt_.line_buffered) t->out->flush();
           }
         } else {
           ++not_tabled_[std::string(s.address)];
@@ -379,18 +471,23 @@ class decoder {
     if (it != tables_.end()) return it->second.get();
     auto t = std::make_unique<csv_table>();
     if (opt_.output_dir.empty()) {
+      t->name = "stdout";
       t->out = std::make_unique<tools::output>(stdout);
+      stdout_table_ = t.get();
     } else {
-      const std::string path = table_path(std::string(type));
-      t->file = std::fopen(path.c_str(), "w");
+      t->name = table_path(std::string(type));
+      t->file = std::fopen(t->name.c_str(), "w");
       if (t->file == nullptr) {
-        std::fprintf(stderr, "seawire-decode: cannot create %s: %s\n", path.c_str(),
-                     std::strerror(errno));
+        const int e = errno;
+        progress_.erase();
+        std::fprintf(stderr, "seawire-decode: cannot create %s: %s\n", t->name.c_str(),
+                     std::strerror(e));
         ++table_failures_;
         tables_.emplace(std::string(type), nullptr);
         return nullptr;
       }
-      t->out = std::make_unique<tools::output>(t->file, 64 * 1024);
+      // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
+      t->out = std::make_unique<tools::output>(t->file, 16 * 1024);
     }
     return tables_.emplace(std::string(type), std::move(t)).first->second.get();
   }
@@ -434,6 +531,8 @@ class decoder {
     } else {
       // stdout keeps only good sentences; the reasons go to stderr, in order with them.
       out_.flush();
+      if (stdout_table_ != nullptr) stdout_table_->out->flush();
+      progress_.erase();
       std::fprintf(stderr, "seawire-decode: line %llu: %.*s: %.*s\n",
                    static_cast<unsigned long long>(line), static_cast<int>(name(e).size()),
                    name(e).data(), static_cast<int>(detail.size()), detail.data());
@@ -495,6 +594,7 @@ class decoder {
   const options& opt_;
   nmea::parse_policy policy_;  // opt_.policy, but for the line ending
   tools::output out_;
+  progress& progress_;
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
   std::uint64_t decoded_ = 0;
@@ -505,61 +605,9 @@ class decoder {
   std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
   std::map<std::string, std::uint64_t> not_tabled_;  // unknown sentences, by address
   std::uint64_t table_failures_ = 0;
+  csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
   tools::tracks tracks_;
   std::vector<tools::json_field> fields_;
-};
-
-// The progress line: on stderr when it is a terminal and stdin a regular file (whose size is
-// known), at most ten times a second, erased at the end.
-class progress {
- public:
-  explicit progress(bool wanted) {
-    struct stat st {};
-    if (wanted && ::isatty(2) == 1 && ::fstat(0, &st) == 0 && S_ISREG(st.st_mode)) {
-      total_ = static_cast<std::uint64_t>(st.st_size);
-      on_ = true;
-    }
-  }
-  progress(const progress&) = delete;
-  progress& operator=(const progress&) = delete;
-  ~progress() { done(); }
-
-  void update(std::uint64_t bytes, const decoder& d) {
-    if (!on_) return;
-    read_ += bytes;
-    const auto now = std::chrono::steady_clock::now();
-    if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
-    last_ = now;
-    shown_ = true;
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    const double rate = seconds > 0 ? static_cast<double>(d.decoded()) / seconds : 0;
-    std::fprintf(
-        stderr,
-        "\rseawire-decode: %.1f of %.1f MB (%.0f%%), %llu messages, %.0f messages/s, "
-        "%llu rejected\033[K",
-        static_cast<double>(read_) / 1e6, static_cast<double>(total_) / 1e6,
-        total_ > 0 ? 100.0 * static_cast<double>(read_) / static_cast<double>(total_) : 100.0,
-        static_cast<unsigned long long>(d.decoded()), rate,
-        static_cast<unsigned long long>(d.rejected()));
-    std::fflush(stderr);
-  }
-
-  // Erases the line, so what follows on the terminal starts clean.
-  void done() {
-    if (on_ && shown_) {
-      std::fputs("\r\033[K", stderr);
-      std::fflush(stderr);
-    }
-    on_ = false;
-  }
-
- private:
-  bool on_ = false;
-  bool shown_ = false;
-  std::uint64_t total_ = 0;
-  std::uint64_t read_ = 0;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point last_{};
 };
 
 int run(const options& o) {
@@ -572,8 +620,8 @@ int run(const options& o) {
       return 1;
     }
   }
-  decoder d(o);
   progress shown(!o.quiet);
+  decoder d(o, shown);
   tools::chunk_reader in(0);
   // Live streams: a line whose CR ended the input so far is let out after 50 ms without more.
   constexpr int quiet_ms = 50;
@@ -582,17 +630,17 @@ int run(const options& o) {
     const std::string_view chunk = in.next();
     if (chunk.empty()) break;
     d.feed(chunk);
-    shown.update(chunk.size(), d);
+    shown.update(chunk.size(), d.decoded(), d.rejected());
   }
-  d.finish();
   shown.done();
+  d.finish();
   if (o.stats) d.print_stats();
   if (in.failed()) {
     std::perror("seawire-decode: reading stdin");
     return 1;
   }
-  if (d.output_failed()) {
-    std::perror("seawire-decode: writing stdout");
+  if (d.stdout_failed()) {
+    std::fprintf(stderr, "seawire-decode: writing stdout: %s\n", std::strerror(d.stdout_error()));
     return 1;
   }
   return d.all_good() ? 0 : 1;
@@ -676,8 +724,20 @@ int main(int argc, char** argv) {
           : fmt == "geojson" ? format::geojson
           : fmt == "svg"     ? format::svg
                              : format::json;
+  if (dir_opt->count() > 0 && o.output_dir.empty()) {
+    std::fprintf(stderr, "seawire-decode: --output-dir needs a directory (e.g. --output-dir .)\n");
+    return 2;
+  }
   if (dir_opt->count() > 0 && o.fmt != format::csv) {
     std::fprintf(stderr, "seawire-decode: --output-dir is for --format csv\n");
+    return 2;
+  }
+  if (o.fmt == format::csv && dir_opt->count() == 0 && o.types.size() == 1 &&
+      !all_headers::knows(o.types.front())) {
+    std::fprintf(stderr,
+                 "seawire-decode: --type %s: no message seawire describes has this type, so it "
+                 "has no table (types are as JSON names them: CPNVG, GPRMC, AB00)\n",
+                 o.types.front().c_str());
     return 2;
   }
   if (o.fmt == format::csv && dir_opt->count() == 0 && type_opt->count() != 1) {

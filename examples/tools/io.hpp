@@ -95,19 +95,26 @@ class output {
   void flush() {
     if (size_ > 0) write(buf_.data(), size_);
     size_ = 0;
-    if (std::fflush(f_) != 0) failed_ = true;
+    if (std::fflush(f_) != 0) fail();
   }
   [[nodiscard]] bool failed() const { return failed_; }
+  /// The errno of the first failed write (0 if none).
+  [[nodiscard]] int error() const { return error_; }
 
  private:
   void write(const char* p, std::size_t n) {
-    if (!failed_ && std::fwrite(p, 1, n, f_) != n) failed_ = true;
+    if (!failed_ && std::fwrite(p, 1, n, f_) != n) fail();
+  }
+  void fail() {
+    if (!failed_) error_ = errno;
+    failed_ = true;
   }
 
   std::FILE* f_;
   std::vector<char> buf_;
   std::size_t size_ = 0;
   bool failed_ = false;
+  int error_ = 0;
 };
 
 }  // namespace seawire::tools

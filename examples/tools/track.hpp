@@ -66,11 +66,38 @@ inline bool split_json_object(std::string_view text, std::vector<json_field>& ou
   return false;
 }
 
-/// A JSON string's text without its quotes (the library's escapes left as they are: the names
-/// of sources are plain letters and digits).
+/// A JSON string's content without its quotes, still escaped (as it goes back into JSON).
 inline std::string_view unquoted(std::string_view v) {
   if (v.size() >= 2 && v.front() == '"' && v.back() == '"') return v.substr(1, v.size() - 2);
   return v;
+}
+
+/// Escaped JSON string content as the text it stands for: \" \\ \/ \n \r \t and \u00XX (the
+/// library writes no other escapes).
+inline std::string unescaped(std::string_view v) {
+  std::string out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (v[i] != '\\' || i + 1 == v.size()) {
+      out += v[i];
+      continue;
+    }
+    const char e = v[++i];
+    if (e == 'n') {
+      out += '\n';
+    } else if (e == 'r') {
+      out += '\r';
+    } else if (e == 't') {
+      out += '\t';
+    } else if (e == 'u' && i + 4 < v.size()) {
+      unsigned code = 0;
+      std::from_chars(v.data() + i + 1, v.data() + i + 5, code, 16);
+      out += static_cast<char>(code & 0xFFU);
+      i += 4;
+    } else {
+      out += e;
+    }
+  }
+  return out;
 }
 
 class tracks {
@@ -140,9 +167,10 @@ class tracks {
 
   [[nodiscard]] std::size_t source_count() const { return sources_.size(); }
 
-  /// A GeoJSON FeatureCollection: per source, a LineString of its positions (a Point when it
-  /// has only one) whose properties are the source, the message type, the vertex count and,
-  /// per field, the array of each vertex's value; then the events' Points.
+  /// A GeoJSON FeatureCollection: per source, a LineString of its positions whose properties
+  /// are the source, the message type, the vertex count and, per field, the array of each
+  /// vertex's value (a source with one position: a Point, with the values themselves); then the
+  /// events' Points.
   void write_geojson(output& out) const {
     out.put("{\"type\":\"FeatureCollection\",\"features\":[");
     bool first = true;
@@ -236,7 +264,7 @@ class tracks {
     for (const source* s : order) {
       const char* colour = palette[s->index % palette.size()];
       out.put("<g><title>");
-      put_xml(out, s->name);
+      put_xml(out, unescaped(s->name));
       out.put("</title>\n");
       if (s->points.size() > 1) {
         put("<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" "
@@ -283,7 +311,7 @@ class tracks {
       put("<path d=\"M%.0f %.0fh24\" stroke=\"%s\" stroke-width=\"4\"/>\n", x, y - 4,
           palette[order[i]->index % palette.size()]);
       put("<text x=\"%.0f\" y=\"%.0f\">", x + 30, y);
-      put_xml(out, order[i]->name);
+      put_xml(out, unescaped(order[i]->name));
       out.put("</text>\n");
     }
     if (order.size() > 8)
@@ -333,7 +361,11 @@ class tracks {
         case '&': out.put("&amp;"); break;
         case '"': out.put("&quot;"); break;
         case '\'': out.put("&apos;"); break;
-        default: out.put(c);
+        default: {
+          // XML 1.0 has no control characters; bytes above ASCII would need an encoding.
+          const auto u = static_cast<unsigned char>(c);
+          out.put(u < 0x20 || u >= 0x7F ? '?' : c);
+        }
       }
     }
   }
