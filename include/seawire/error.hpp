@@ -60,6 +60,9 @@ enum class errc : std::uint8_t {
   bad_variation,            ///< magnetic variation not an unsigned number of degrees
   bad_variation_direction,  ///< magnetic variation letter other than E or W
   variation_out_of_range,   ///< magnetic variation to send beyond 0..180 degrees
+  // -- NMEA 2000 --
+  bad_can_id,    ///< not a 29-bit identifier, or fields no identifier can carry
+  bad_log_line,  ///< a CAN log line of no known format, or malformed in its format
 };
 
 /// The identifier of an errc as text ("checksum_mismatch"), for logs and JSON.
@@ -108,6 +111,8 @@ enum class errc : std::uint8_t {
     case errc::bad_variation: return "bad_variation";
     case errc::bad_variation_direction: return "bad_variation_direction";
     case errc::variation_out_of_range: return "variation_out_of_range";
+    case errc::bad_can_id: return "bad_can_id";
+    case errc::bad_log_line: return "bad_log_line";
   }
   return "unknown_error";
 }
@@ -158,6 +163,9 @@ enum class errc : std::uint8_t {
     case errc::bad_variation: return "magnetic variation is not an unsigned number of degrees";
     case errc::bad_variation_direction: return "magnetic variation letter is not E or W";
     case errc::variation_out_of_range: return "magnetic variation beyond 0..180 degrees";
+    case errc::bad_can_id:
+      return "not a 29-bit CAN identifier, or priority/PGN/destination it cannot carry";
+    case errc::bad_log_line: return "not a CAN log line of a known format";
   }
   return "unknown error";
 }

@@ -27,6 +27,9 @@
 //   anello              seawire/anello/            seawire::anello -- ANELLO INS inputs:
 //                                                  PAPGPSCTRL, the 0xAB00 binary frame, mixed
 //                                                  NMEA + binary streams
+//   nmea2000            seawire/nmea2000/          seawire::nmea2000 -- CAN identifier, PGN
+//                                                  descriptions, the ANELLO input PGNs, fast
+//                                                  packets, CAN log formats, JSON, log reader
 //   shared layouts      seawire/bluefin/           seawire::bluefin -- the NVG/NVR layout that
 //                                                  Sandshark and Kingfisher both use
 //
@@ -78,3 +81,12 @@
 #include "seawire/anello/gpsctrl.hpp"
 #include "seawire/anello/inputs.hpp"
 #include "seawire/anello/stream.hpp"
+
+// nmea2000
+#include "seawire/nmea2000/can_id.hpp"
+#include "seawire/nmea2000/fast_packet.hpp"
+#include "seawire/nmea2000/field.hpp"
+#include "seawire/nmea2000/json.hpp"
+#include "seawire/nmea2000/log.hpp"
+#include "seawire/nmea2000/pgns.hpp"
+#include "seawire/nmea2000/reader.hpp"

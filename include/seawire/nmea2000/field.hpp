@@ -1,0 +1,679 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// NMEA 2000 field values and the PGN description they are declared with.
+//
+// A PGN's payload is one little-endian bit string: the field at bit offset o starts at bit o % 8
+// of byte o / 8, counting from the least significant bit, and a field of several bytes has its
+// least significant byte first. Signed fields are two's complement. A PGN struct holds one member
+// per field and a table (`static constexpr auto n2k = describe_pgn<...>(...)`) listing them in
+// wire order; each field's width, signedness and resolution come from its member's type, so the
+// table is names only and the bit offsets follow from the widths. decode<P>, encode<P>, the JSON
+// and CSV forms, fmt output and the documentation are all loops over that table.
+//
+// Values are kept as the wire's integers ("raw") and converted on access, so whatever a sender
+// put on the bus survives decode -> encode bit for bit. A field of n >= 8 bits reserves its top
+// raw values (canboat's "top of range" rule, what every NMEA 2000 device uses):
+//
+//   all ones (unsigned) / 0x7F.. (signed)   not available     (field_state::not_available)
+//   one below                               out of range      (field_state::out_of_range)
+//   two below                               reserved          (field_state::reserved)
+//
+// Fields of 4 to 7 bits reserve the first two, of 2 or 3 bits only "not available"; lookups and
+// flag sets of the standard follow the same rule, except flag words, where all ones is all flags.
+// A value in one of these states reads as an empty optional; the state says which. The most
+// negative signed value (0x80.., -32.768 m/s in a speed) is an ordinary number.
+//
+// Reserved bits (`reserved_bits<N>` in a table) are sent as ones and ignored when received.
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <system_error>
+#include <tuple>
+#include <type_traits>
+
+#include "seawire/detail/ascii.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/decimal.hpp"
+
+namespace seawire::nmea2000 {
+
+/// What a field's raw value means.
+enum class field_state : std::uint8_t {
+  value,          ///< an ordinary value
+  not_available,  ///< the sender has no data for this field
+  out_of_range,   ///< the sender's value did not fit the field, or its sensor reports an error
+  reserved,       ///< a raw value the standard keeps for future use
+};
+
+[[nodiscard]] constexpr std::string_view name(field_state s) noexcept {
+  switch (s) {
+    case field_state::value: return "value";
+    case field_state::not_available: return "not_available";
+    case field_state::out_of_range: return "out_of_range";
+    case field_state::reserved: return "reserved";
+  }
+  return "value";
+}
+
+/// The size of one raw step: physical value = raw x mantissa x 10^exponent. Every resolution in
+/// the standard is of this form (0.25 rpm = 25e-2, 0.004 % = 4e-3, 100 Pa = 1e2), so physical
+/// values convert to and from decimal text exactly.
+struct resolution {
+  std::int64_t mantissa = 1;
+  int exponent = 0;
+
+  [[nodiscard]] constexpr bool operator==(const resolution&) const noexcept = default;
+  /// Fraction digits of a value at this resolution: 2 for 0.25, 3 for 0.004, 0 for 100.
+  [[nodiscard]] constexpr unsigned places() const noexcept {
+    return exponent < 0 ? static_cast<unsigned>(-exponent) : 0U;
+  }
+};
+
+namespace detail {
+
+/// How many of a field's top raw values are sentinels (see the top of this file).
+[[nodiscard]] constexpr unsigned sentinel_count(unsigned bits) noexcept {
+  return bits >= 8 ? 3U : bits >= 4 ? 2U : bits >= 2 ? 1U : 0U;
+}
+
+/// The raw value as a decimal at resolution R: raw 3194 at 0.25 is 798.50.
+template <resolution R>
+[[nodiscard]] constexpr nmea::decimal scaled_decimal(std::int64_t raw) noexcept {
+  nmea::decimal d;
+  const std::uint64_t mag =
+      raw < 0 ? 0 - static_cast<std::uint64_t>(raw) : static_cast<std::uint64_t>(raw);
+  std::uint64_t m = mag * static_cast<std::uint64_t>(R.mantissa);
+  if constexpr (R.exponent > 0) m *= seawire::detail::pow10_table[R.exponent];
+  d.mantissa = m;
+  d.places = static_cast<std::uint8_t>(R.places());
+  d.negative = raw < 0;
+  return d;
+}
+
+/// The raw value nearest d at resolution R (halves away from zero). False when it is beyond
+/// what 64 bits hold (the caller's range check then refuses it).
+template <resolution R>
+[[nodiscard]] constexpr bool raw_from_decimal(const nmea::decimal& d, std::int64_t& out) noexcept {
+  // raw = mantissa_d x 10^(-places_d - exponent) / R.mantissa
+  const int k = -static_cast<int>(d.places) - R.exponent;
+  std::uint64_t num = d.mantissa;
+  std::uint64_t den = static_cast<std::uint64_t>(R.mantissa);
+  if (k > 0) {
+    if (k > 19) return d.mantissa == 0 ? (out = 0, true) : false;
+    const std::uint64_t p = seawire::detail::pow10_table[k];
+    if (num > std::numeric_limits<std::uint64_t>::max() / p) return false;
+    num *= p;
+  } else if (k < 0) {
+    if (-k > 19) {
+      out = 0;  // below a millionth of a step of any resolution here
+      return true;
+    }
+    const std::uint64_t p = seawire::detail::pow10_table[-k];
+    if (den > std::numeric_limits<std::uint64_t>::max() / p) {
+      out = 0;
+      return true;
+    }
+    den *= p;
+  }
+  std::uint64_t q = num / den;
+  if (num % den >= den - num % den) ++q;  // remainder >= half of den, without overflow
+  if (q > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) return false;
+  out = d.negative ? -static_cast<std::int64_t>(q) : static_cast<std::int64_t>(q);
+  return true;
+}
+
+/// The shortest decimal that reads back as v (what a person typing v meant), or an error for
+/// NaN, infinities and magnitudes no field carries.
+[[nodiscard]] inline errc decimal_from_double(double v, nmea::decimal& out) noexcept {
+  if (!(v == v) || v > std::numeric_limits<double>::max() ||
+      v < -std::numeric_limits<double>::max())
+    return errc::not_finite;
+  if (v >= 1e15 || v <= -1e15) return errc::out_of_range;
+  if (v < 1e-12 && v > -1e-12) {
+    out = nmea::decimal{};
+    return errc::ok;
+  }
+  char buf[64];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  if (r.ec != std::errc{}) return errc::out_of_range;
+  const result<nmea::decimal> d = nmea::decimal::parse(std::string_view(buf, r.ptr));
+  if (!d) {
+    // More than 19 digits after the point: |v| < 1e-2, far below every resolution's half step
+    // that matters, so 18 places lose nothing the rounding to a step keeps.
+    const result<nmea::decimal> rounded = nmea::decimal::from_double(v, 18);
+    if (!rounded) return rounded.ec;
+    out = rounded.value;
+    return errc::ok;
+  }
+  out = d.value;
+  return errc::ok;
+}
+
+}  // namespace detail
+
+/// An integer field of `Bits` bits, `Signed` or not, at resolution `Res` (1 by default).
+/// Default-constructed it is "not available". It never converts from a plain number: build one
+/// with from() (a physical value, rounded to the resolution and range-checked) or from_raw()
+/// (the wire's integer), so 3 m/s can never be sent as raw 3 = 0.03 m/s.
+template <unsigned Bits, bool Signed, resolution Res = resolution{}>
+class number {
+  static_assert(Bits >= 1 && Bits <= 32 && (!Signed || Bits >= 2), "field width 1..32 bits");
+  static_assert(Res.mantissa > 0, "resolution must be positive");
+
+ public:
+  static constexpr unsigned bits = Bits;
+  static constexpr bool is_signed = Signed;
+  static constexpr resolution res = Res;
+  static constexpr unsigned sentinels = detail::sentinel_count(Bits);
+  /// All ones (unsigned) or the largest positive value (signed): "not available".
+  static constexpr std::int64_t top_raw =
+      Signed ? (std::int64_t{1} << (Bits - 1)) - 1 : (std::int64_t{1} << Bits) - 1;
+  static constexpr std::int64_t min_raw = Signed ? -(std::int64_t{1} << (Bits - 1)) : 0;
+  /// The largest raw value that is an ordinary value.
+  static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
+
+  constexpr number() noexcept = default;
+  template <class V>
+  requires std::is_arithmetic_v<V> number(V)
+  = delete;  // a plain number is ambiguous here: use number::from(v) or from_raw(raw)
+
+  /// The wire's integer as it is. encode refuses one that does not fit `Bits`.
+  [[nodiscard]] static constexpr number from_raw(std::int64_t raw) noexcept {
+    number n;
+    n.raw_ = raw;
+    return n;
+  }
+  [[nodiscard]] static constexpr number not_available() noexcept { return number{}; }
+  [[nodiscard]] static constexpr number out_of_range() noexcept requires(sentinels >= 2) {
+    return from_raw(top_raw - 1);
+  }
+  [[nodiscard]] static constexpr number reserved() noexcept requires(sentinels >= 3) {
+    return from_raw(top_raw - 2);
+  }
+
+  /// The physical value `d` (in the field's unit), rounded to the nearest step (halves away from
+  /// zero). out_of_range when it is outside what the field carries as an ordinary value.
+  [[nodiscard]] static constexpr result<number> from(const nmea::decimal& d) noexcept {
+    result<number> r;
+    std::int64_t raw = 0;
+    if (!detail::raw_from_decimal<Res>(d, raw) || raw < min_raw || raw > max_valid_raw) {
+      r.ec = errc::out_of_range;
+      return r;
+    }
+    r.value = from_raw(raw);
+    return r;
+  }
+  /// The physical value `v`, taken as the shortest decimal that reads back as v (so 363.15 K is
+  /// 363.15, not 363.149999...), then as from(decimal). not_finite for NaN and infinities.
+  [[nodiscard]] static result<number> from(double v) noexcept {
+    nmea::decimal d;
+    const errc e = detail::decimal_from_double(v, d);
+    if (e != errc::ok) return {number{}, e};
+    return from(d);
+  }
+  template <std::integral I>
+  requires(!std::same_as<I, bool>)
+      [[nodiscard]] static constexpr result<number> from(I v) noexcept {
+    return from(nmea::decimal(v));
+  }
+
+  /// Sets the field to the physical value `v` (double, decimal or integer); on error the field is
+  /// left as it was and the errc says why.
+  template <class V>
+  constexpr errc assign(const V& v) noexcept {
+    const auto r = from(v);
+    if (r) *this = r.value;
+    return r.ec;
+  }
+
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= min_raw && raw_ <= top_raw; }
+  [[nodiscard]] constexpr field_state state() const noexcept {
+    if (raw_ <= max_valid_raw) return field_state::value;
+    if (raw_ == top_raw) return field_state::not_available;
+    if (raw_ == top_raw - 1) return field_state::out_of_range;
+    return field_state::reserved;
+  }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
+  /// The physical value exactly, with the resolution's fraction digits; nullopt unless a value.
+  [[nodiscard]] constexpr std::optional<nmea::decimal> exact() const noexcept {
+    if (!has_value()) return std::nullopt;
+    return detail::scaled_decimal<Res>(raw_);
+  }
+  /// The physical value; nullopt unless a value.
+  [[nodiscard]] constexpr std::optional<double> value() const noexcept {
+    if (!has_value()) return std::nullopt;
+    return exact()->to_double();
+  }
+
+  [[nodiscard]] constexpr bool operator==(const number& o) const noexcept { return raw_ == o.raw_; }
+
+ private:
+  std::int64_t raw_ = top_raw;
+};
+
+template <unsigned Bits, resolution Res = resolution{}>
+using unsigned_number = number<Bits, false, Res>;
+template <unsigned Bits, resolution Res = resolution{}>
+using signed_number = number<Bits, true, Res>;
+
+// ---------------------------------------------------------------------------------------------
+// lookups and flag sets
+
+/// The names of a lookup's values or of a flag set's bits, indexed by value or bit: declared
+/// beside the enum as `constexpr std::array<std::string_view, N> lookup_names(E)` (found by
+/// argument-dependent lookup). These are the JSON and fmt spellings.
+template <class E>
+concept named_enum = std::is_enum_v<E> && requires(E e) {
+  { lookup_names(e).size() } -> std::convertible_to<std::size_t>;
+};
+
+namespace detail {
+template <named_enum E>
+inline constexpr auto names_of = lookup_names(E{});
+
+template <named_enum E>
+[[nodiscard]] constexpr std::string_view enum_name(std::uint64_t v) noexcept {
+  return v < names_of<E>.size() ? names_of<E>[v] : std::string_view{};
+}
+template <named_enum E>
+[[nodiscard]] constexpr std::optional<std::uint64_t> enum_value(std::string_view name) noexcept {
+  for (std::size_t i = 0; i < names_of<E>.size(); ++i)
+    if (!names_of<E>[i].empty() && names_of<E>[i] == name) return i;
+  return std::nullopt;
+}
+}  // namespace detail
+
+/// A field of `Bits` bits whose values name things (a speed sensor's type, a temperature's
+/// source). Values the standard has not named are kept and sent as they are. The top raw values
+/// are sentinels as for numbers (63 and 62 in a 6-bit lookup, 3 in a 2-bit one).
+template <named_enum E, unsigned Bits>
+class lookup {
+  static_assert(Bits >= 1 && Bits <= 16);
+
+ public:
+  static constexpr unsigned bits = Bits;
+  static constexpr bool is_signed = false;
+  static constexpr unsigned sentinels = detail::sentinel_count(Bits);
+  static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
+  static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
+  static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(max_valid_raw) + 1,
+                "more names than the field has ordinary values");
+
+  constexpr lookup() noexcept = default;
+  // NOLINTNEXTLINE(google-explicit-constructor): m.speed_type = water_reference::doppler;
+  constexpr lookup(E e) noexcept : raw_(static_cast<std::int64_t>(e)) {}
+
+  [[nodiscard]] static constexpr lookup from_raw(std::int64_t raw) noexcept {
+    lookup l;
+    l.raw_ = raw;
+    return l;
+  }
+  [[nodiscard]] static constexpr lookup not_available() noexcept { return lookup{}; }
+  /// The value called `name` (a name of lookup_names); bad_enum for any other.
+  [[nodiscard]] static constexpr result<lookup> from_name(std::string_view name) noexcept {
+    const auto v = detail::enum_value<E>(name);
+    if (!v) return {lookup{}, errc::bad_enum};
+    return {from_raw(static_cast<std::int64_t>(*v)), errc::ok};
+  }
+
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
+  [[nodiscard]] constexpr field_state state() const noexcept {
+    if (raw_ <= max_valid_raw) return field_state::value;
+    if (raw_ == top_raw) return field_state::not_available;
+    if (raw_ == top_raw - 1) return field_state::out_of_range;
+    return field_state::reserved;
+  }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
+  /// The value, named or not; nullopt unless state() is value.
+  [[nodiscard]] constexpr std::optional<E> value() const noexcept {
+    if (!has_value()) return std::nullopt;
+    return static_cast<E>(raw_);
+  }
+  /// The value's name; empty for a sentinel or a value the standard has not named.
+  [[nodiscard]] constexpr std::string_view name() const noexcept {
+    return has_value() ? detail::enum_name<E>(static_cast<std::uint64_t>(raw_))
+                       : std::string_view{};
+  }
+  [[nodiscard]] constexpr bool operator==(const lookup& o) const noexcept { return raw_ == o.raw_; }
+  [[nodiscard]] constexpr bool operator==(E e) const noexcept {
+    return raw_ == static_cast<std::int64_t>(e);
+  }
+
+ private:
+  std::int64_t raw_ = top_raw;
+};
+
+/// A word of `Bits` independent flags (an engine's discrete status). E's values are bit numbers;
+/// bits without a name are kept. There is no sentinel: all ones means every flag is set.
+template <named_enum E, unsigned Bits>
+class flags {
+  static_assert(Bits >= 1 && Bits <= 32);
+
+ public:
+  static constexpr unsigned bits = Bits;
+  static constexpr bool is_signed = false;
+  static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
+
+  constexpr flags() noexcept = default;  // no flag set
+  constexpr flags(std::initializer_list<E> set) noexcept {
+    for (const E e : set) raw_ |= std::int64_t{1} << static_cast<unsigned>(e);
+  }
+  [[nodiscard]] static constexpr flags from_raw(std::int64_t raw) noexcept {
+    flags f;
+    f.raw_ = raw;
+    return f;
+  }
+  [[nodiscard]] constexpr bool test(E e) const noexcept {
+    return ((raw_ >> static_cast<unsigned>(e)) & 1) != 0;
+  }
+  [[nodiscard]] constexpr bool test_bit(unsigned bit) const noexcept {
+    return bit < Bits && ((raw_ >> bit) & 1) != 0;
+  }
+  constexpr void set(E e, bool on = true) noexcept {
+    const std::int64_t m = std::int64_t{1} << static_cast<unsigned>(e);
+    raw_ = on ? (raw_ | m) : (raw_ & ~m);
+  }
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
+  [[nodiscard]] constexpr field_state state() const noexcept { return field_state::value; }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return true; }
+  [[nodiscard]] constexpr bool operator==(const flags& o) const noexcept { return raw_ == o.raw_; }
+
+ private:
+  std::int64_t raw_ = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// date and time of day
+
+/// A date as days since 1970-01-01 (16 bits: up to 2149-06-03).
+class date {
+ public:
+  static constexpr unsigned bits = 16;
+  static constexpr bool is_signed = false;
+  using number_type = number<16, false>;
+
+  constexpr date() noexcept = default;
+  [[nodiscard]] static constexpr date from_raw(std::int64_t raw) noexcept {
+    date d;
+    d.n_ = number_type::from_raw(raw);
+    return d;
+  }
+  /// out_of_range before 1970 or after 2149-06-03.
+  [[nodiscard]] static constexpr result<date> from(std::chrono::sys_days day) noexcept {
+    const auto r = number_type::from(day.time_since_epoch().count());
+    date d;
+    d.n_ = r.value;
+    return {d, r.ec};
+  }
+  [[nodiscard]] constexpr std::optional<std::chrono::sys_days> value() const noexcept {
+    if (!n_.has_value()) return std::nullopt;
+    return std::chrono::sys_days(std::chrono::days(n_.raw()));
+  }
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return n_.raw(); }
+  [[nodiscard]] constexpr bool fits() const noexcept { return n_.fits(); }
+  [[nodiscard]] constexpr field_state state() const noexcept { return n_.state(); }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return n_.has_value(); }
+  [[nodiscard]] constexpr bool operator==(const date&) const noexcept = default;
+
+ private:
+  number_type n_;
+};
+
+/// A time of day in units of 0.1 ms since midnight (32 bits; up to 86 401 s, a leap second).
+class time_of_day {
+ public:
+  static constexpr unsigned bits = 32;
+  static constexpr bool is_signed = false;
+  using ticks = std::chrono::duration<std::int64_t, std::ratio<1, 10000>>;
+  using number_type = number<32, false, resolution{1, -4}>;
+  static constexpr std::int64_t max_ticks = 864'010'000;  // 24 h and one leap second
+
+  constexpr time_of_day() noexcept = default;
+  [[nodiscard]] static constexpr time_of_day from_raw(std::int64_t raw) noexcept {
+    time_of_day t;
+    t.n_ = number_type::from_raw(raw);
+    return t;
+  }
+  /// The time `since_midnight`, rounded to 0.1 ms; out_of_range when negative or past 86 401 s.
+  template <class Rep, class Period>
+  [[nodiscard]] static constexpr result<time_of_day> from(
+      std::chrono::duration<Rep, Period> since_midnight) noexcept {
+    const auto t = std::chrono::round<ticks>(since_midnight);
+    if (t.count() < 0 || t.count() > max_ticks) return {time_of_day{}, errc::out_of_range};
+    return {from_raw(t.count()), errc::ok};
+  }
+  /// Since midnight; nullopt for a sentinel. A sender's value past 86 401 s is kept as it is.
+  [[nodiscard]] constexpr std::optional<ticks> value() const noexcept {
+    if (!n_.has_value()) return std::nullopt;
+    return ticks(n_.raw());
+  }
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return n_.raw(); }
+  [[nodiscard]] constexpr bool fits() const noexcept { return n_.fits(); }
+  [[nodiscard]] constexpr field_state state() const noexcept { return n_.state(); }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return n_.has_value(); }
+  [[nodiscard]] constexpr bool operator==(const time_of_day&) const noexcept = default;
+
+ private:
+  number_type n_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// descriptions
+
+/// A value type a PGN member may have: bits, signedness, raw access.
+template <class T>
+concept field_value = requires(const T& t, std::int64_t raw) {
+  { T::bits } -> std::convertible_to<unsigned>;
+  { T::is_signed } -> std::convertible_to<bool>;
+  { T::from_raw(raw) } -> std::same_as<T>;
+  { t.raw() } -> std::same_as<std::int64_t>;
+  { t.fits() } -> std::same_as<bool>;
+  { t.state() } -> std::same_as<field_state>;
+};
+
+namespace detail {
+template <class M>
+struct member_traits;
+template <class C, class T>
+struct member_traits<T C::*> {
+  using owner = C;
+  using value_type = T;
+};
+}  // namespace detail
+
+/// One row of a PGN table: the member, its name (snake_case with the unit last, as JSON, CSV and
+/// fmt show it) and the standard's name for the field.
+template <auto Member>
+struct field_entry {
+  using value_type = typename detail::member_traits<decltype(Member)>::value_type;
+  static_assert(field_value<value_type>,
+                "a PGN member must be a number, lookup, flags, date or time_of_day");
+  static constexpr auto member = Member;
+  static constexpr unsigned bits = value_type::bits;
+  static constexpr bool is_reserved = false;
+  std::string_view name;
+  std::string_view title;
+};
+
+template <auto Member>
+[[nodiscard]] constexpr field_entry<Member> field(std::string_view name,
+                                                  std::string_view title) noexcept {
+  return {name, title};
+}
+
+/// `Bits` bits the standard reserves: sent as ones, ignored when received.
+template <unsigned Bits>
+struct reserved_bits {
+  static constexpr unsigned bits = Bits;
+  static constexpr bool is_reserved = true;
+  std::string_view name = "reserved";
+  std::string_view title = "Reserved";
+};
+template <unsigned Bits>
+inline constexpr reserved_bits<Bits> reserved{};
+
+/// How a PGN travels: in one CAN frame (up to 8 bytes) or as a fast packet (up to 223 bytes over
+/// up to 32 frames; fast_packet.hpp).
+enum class framing : std::uint8_t { single_frame, fast_packet };
+
+/// What the standard says about a PGN besides its fields.
+struct pgn_info {
+  std::uint32_t pgn = 0;
+  std::string_view name;      ///< snake_case, the C++ struct's name
+  std::string_view title;     ///< the standard's name
+  std::uint8_t priority = 6;  ///< default priority (0 highest .. 7)
+  framing transport = framing::single_frame;
+  std::uint16_t interval_ms = 0;  ///< default transmit interval; 0 = on demand
+};
+
+template <class... F>
+struct pgn_description {
+  pgn_info info;
+  std::tuple<F...> fields;
+
+  static constexpr unsigned bit_length = (F::bits + ... + 0);
+  static_assert(bit_length % 8 == 0, "a PGN's fields must fill whole bytes");
+  /// The payload's length in bytes.
+  static constexpr std::size_t length = bit_length / 8;
+  static constexpr std::size_t field_count = sizeof...(F);
+
+  /// fn(entry, bit_offset, number) for every row, reserved ones too, in wire order; `number`
+  /// counts from 1 as the table does.
+  template <class Fn>
+  constexpr void for_each(Fn&& fn) const {
+    unsigned offset = 0;
+    std::uint16_t n = 0;
+    std::apply(
+        [&](const auto&... f) {
+          ((fn(f, offset, ++n), offset += std::remove_cvref_t<decltype(f)>::bits), ...);
+        },
+        fields);
+  }
+};
+
+template <class... F>
+[[nodiscard]] constexpr pgn_description<F...> describe_pgn(pgn_info info, F... fields) noexcept {
+  return {info, {fields...}};
+}
+
+/// A PGN struct: has `static constexpr auto n2k = describe_pgn(...)`.
+template <class P>
+concept pgn_like = requires {
+  P::n2k.info.pgn;
+};
+
+template <pgn_like P>
+using description_of = std::remove_cvref_t<decltype(P::n2k)>;
+
+/// The payload of P as bytes.
+template <pgn_like P>
+using payload_of = std::array<std::uint8_t, description_of<P>::length>;
+
+// ---------------------------------------------------------------------------------------------
+// decode and encode
+
+namespace detail {
+
+[[nodiscard]] constexpr std::uint64_t get_bits(std::span<const std::uint8_t> p, unsigned offset,
+                                               unsigned width) noexcept {
+  std::uint64_t v = 0;
+  for (unsigned i = 0; i < width;) {
+    const unsigned bit = offset + i;
+    const unsigned in_byte = bit % 8;
+    const unsigned take = std::min(8 - in_byte, width - i);
+    const std::uint64_t chunk =
+        (static_cast<std::uint64_t>(p[bit / 8]) >> in_byte) & ((std::uint64_t{1} << take) - 1);
+    v |= chunk << i;
+    i += take;
+  }
+  return v;
+}
+
+constexpr void put_bits(std::span<std::uint8_t> p, unsigned offset, unsigned width,
+                        std::uint64_t v) noexcept {
+  for (unsigned i = 0; i < width;) {
+    const unsigned bit = offset + i;
+    const unsigned in_byte = bit % 8;
+    const unsigned take = std::min(8 - in_byte, width - i);
+    const auto mask = static_cast<std::uint8_t>(((1U << take) - 1) << in_byte);
+    const auto chunk = static_cast<std::uint8_t>(((v >> i) << in_byte) & mask);
+    p[bit / 8] = static_cast<std::uint8_t>((p[bit / 8] & ~mask) | chunk);
+    i += take;
+  }
+}
+
+}  // namespace detail
+
+/// P from a payload. Fields the payload is too short to hold in full read as not available (a
+/// sender may leave trailing fields out); bytes past P's length are ignored (a later version of
+/// the standard may add fields). Reserved bits are not looked at. Never fails.
+template <pgn_like P>
+[[nodiscard]] constexpr P decode(std::span<const std::uint8_t> payload) noexcept {
+  P out{};
+  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      using V = typename F::value_type;
+      if (offset + F::bits > payload.size() * 8) return;
+      const std::uint64_t u = detail::get_bits(payload, offset, F::bits);
+      std::int64_t raw = static_cast<std::int64_t>(u);
+      if constexpr (V::is_signed) {
+        if (F::bits < 64 && ((u >> (F::bits - 1)) & 1) != 0)
+          raw = static_cast<std::int64_t>(u) - (std::int64_t{1} << F::bits);
+      }
+      out.*F::member = V::from_raw(raw);
+    }
+  });
+  return out;
+}
+
+/// P's payload: every field at its offset, reserved bits as ones. value_too_large, with `field`
+/// = the row number, when a member holds a raw value (from_raw) its width cannot carry.
+template <pgn_like P>
+[[nodiscard]] constexpr result<payload_of<P>> encode(const P& msg) noexcept {
+  result<payload_of<P>> r;
+  r.value.fill(0xFF);
+  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      const auto& v = msg.*F::member;
+      if (!v.fits()) {
+        if (r.ec == errc::ok) {
+          r.ec = errc::value_too_large;
+          r.field = n;
+          r.column = static_cast<std::uint16_t>(offset / 8);
+        }
+        return;
+      }
+      const std::uint64_t mask =
+          F::bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << F::bits) - 1;
+      detail::put_bits(r.value, offset, F::bits, static_cast<std::uint64_t>(v.raw()) & mask);
+    }
+  });
+  return r;
+}
+
+/// The name of row `n` (1-based, reserved rows included) of P's table, for error messages.
+template <pgn_like P>
+[[nodiscard]] constexpr std::string_view field_name(std::uint16_t n) noexcept {
+  std::string_view out;
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t k) {
+    if (k == n) out = f.name;
+  });
+  return out;
+}
+
+}  // namespace seawire::nmea2000

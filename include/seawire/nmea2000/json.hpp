@@ -1,0 +1,471 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// NMEA 2000 messages as JSON, one object per message, and read back from a JSON object's values
+// (the same tokenised json_value the sentences use: nmea/json.hpp).
+//
+//   {"type":"PGN128259","time_s":1502984866.953084,"interface":"slcan0","prio":2,"src":116,
+//    "dst":255,"sid":0,"speed_water_mps":0.18,"speed_ground_mps":null,"speed_type":"paddle_wheel",
+//    "speed_direction":null}
+//
+//   "type"         "PGN" and the number, for every PGN, described or not
+//   "time_s"       the log's time in seconds (log.hpp: Unix time, or time of day for yd_raw);
+//                  absent when the line has none
+//   "interface"    candump formats; "direction" ("R"/"T") yd_raw
+//   "prio" "src" "dst"   the identifier's priority, source and destination (255 = broadcast)
+//   then each field of the PGN's table by name, reserved bits left out:
+//   numbers        the physical value with the resolution's digits (798.50 rpm, 60.116 %), null
+//                  when not available, "out_of_range" / "reserved" for those states
+//   lookups        the value's name ("doppler"); the number for a value without a name
+//   flag sets      an array of the names of the flags set (["over_temperature"]); a set bit
+//                  without a name as "bit_N"
+//   date, time     "YYYY-MM-DD" and "hh:mm:ss.ffff" (UTC)
+//   a PGN of no description: "data" with its bytes in hex ("FF0000FFFF03FFFF")
+//
+// Reading takes the same forms: a number (or numeric string) for a number field, rounded to the
+// resolution and range-checked; null or absent for not available; the state names; a name or a
+// number for a lookup; an array of names (or the raw word as a number) for flags.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <type_traits>
+
+#include "seawire/error.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/nmea2000/field.hpp"
+#include "seawire/nmea2000/log.hpp"
+
+namespace seawire::nmea2000 {
+
+using nmea::json_kind;
+using nmea::json_sink;
+using nmea::json_value;
+
+/// How a message was carried: what the JSON object says besides the fields.
+struct message_header {
+  can_id id;
+  std::optional<std::int64_t> time_us;
+  nmea::text<15> interface;  ///< empty when the log has none
+  char direction = 0;        ///< 'R' or 'T' for yd_raw, 0 otherwise
+};
+
+/// The header of the message the log record `r` carries (or completes).
+[[nodiscard]] constexpr message_header header_of(const log_record& r) noexcept {
+  message_header h;
+  h.id = r.id;
+  h.time_us = r.time_us;
+  h.interface = r.interface;
+  if (r.format == log_format::yd_raw) h.direction = r.direction;
+  return h;
+}
+
+namespace detail {
+
+template <json_sink Sink>
+constexpr void json_state(Sink& s, field_state st) noexcept {
+  if (st == field_state::not_available) {
+    s.put("null");
+  } else {
+    s.put('"');
+    s.put(name(st));
+    s.put('"');
+  }
+}
+
+template <class T>
+struct is_number : std::false_type {};
+template <unsigned B, bool S, resolution R>
+struct is_number<number<B, S, R>> : std::true_type {};
+template <class T>
+struct is_lookup : std::false_type {};
+template <class E, unsigned B>
+struct is_lookup<lookup<E, B>> : std::true_type {};
+template <class T>
+struct is_flags : std::false_type {};
+template <class E, unsigned B>
+struct is_flags<flags<E, B>> : std::true_type {};
+
+template <class T>
+struct enum_of;
+template <class E, unsigned B>
+struct enum_of<lookup<E, B>> {
+  using type = E;
+};
+template <class E, unsigned B>
+struct enum_of<flags<E, B>> {
+  using type = E;
+};
+
+template <json_sink Sink>
+constexpr void json_int(Sink& s, std::int64_t v) noexcept {
+  if (v < 0) s.put('-');
+  nmea::detail::json_uint(
+      s, v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v));
+}
+
+template <nmea::json_style Style, json_sink Sink>
+constexpr void quote(Sink& s) noexcept {
+  if constexpr (Style == nmea::json_style::json) s.put('"');
+}
+
+}  // namespace detail
+
+/// One field value by the conventions at the top of this file.
+template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, field_value T>
+constexpr void write_json_value(Sink& s, const T& v) noexcept {
+  using nmea::detail::json_uint;
+  if constexpr (detail::is_flags<T>::value) {
+    using E = typename detail::enum_of<T>::type;
+    s.put('[');
+    bool first = true;
+    for (unsigned bit = 0; bit < T::bits; ++bit) {
+      if (!v.test_bit(bit)) continue;
+      if (!first) s.put(',');
+      first = false;
+      detail::quote<Style>(s);
+      const std::string_view n = nmea2000::detail::enum_name<E>(bit);
+      if (n.empty()) {
+        s.put("bit_");
+        json_uint(s, bit);
+      } else {
+        s.put(n);
+      }
+      detail::quote<Style>(s);
+    }
+    s.put(']');
+    return;
+  } else {
+    if (!v.has_value()) {
+      detail::json_state(s, v.state());
+      return;
+    }
+    if constexpr (detail::is_number<T>::value) {
+      nmea::detail::json_decimal(s, *v.exact());
+    } else if constexpr (detail::is_lookup<T>::value) {
+      if (v.name().empty()) {
+        json_uint(s, static_cast<std::uint64_t>(v.raw()));
+      } else {
+        detail::quote<Style>(s);
+        s.put(v.name());
+        detail::quote<Style>(s);
+      }
+    } else if constexpr (std::is_same_v<T, date>) {
+      const std::chrono::year_month_day ymd(*v.value());
+      detail::quote<Style>(s);
+      json_uint(s, static_cast<std::uint64_t>(static_cast<int>(ymd.year())), 4);
+      s.put('-');
+      json_uint(s, static_cast<unsigned>(ymd.month()), 2);
+      s.put('-');
+      json_uint(s, static_cast<unsigned>(ymd.day()), 2);
+      detail::quote<Style>(s);
+    } else if constexpr (std::is_same_v<T, time_of_day>) {
+      const auto ticks = static_cast<std::uint64_t>(v.raw());
+      detail::quote<Style>(s);
+      json_uint(s, ticks / 36'000'000, 2);
+      s.put(':');
+      json_uint(s, ticks / 600'000 % 60, 2);
+      s.put(':');
+      json_uint(s, ticks / 10'000 % 60, 2);
+      s.put('.');
+      json_uint(s, ticks % 10'000, 4);
+      detail::quote<Style>(s);
+    }
+  }
+}
+
+/// `{"type":"PGN<n>"` and the header members, without the closing brace.
+template <json_sink Sink>
+constexpr void write_json_header(Sink& s, const message_header& h) noexcept {
+  using nmea::detail::json_uint;
+  s.put("{\"type\":\"PGN");
+  json_uint(s, h.id.pgn);
+  s.put('"');
+  if (h.time_us) {
+    s.put(",\"time_s\":");
+    const std::int64_t t = *h.time_us;
+    if (t < 0) s.put('-');
+    const std::uint64_t m =
+        t < 0 ? 0 - static_cast<std::uint64_t>(t) : static_cast<std::uint64_t>(t);
+    json_uint(s, m / 1'000'000);
+    s.put('.');
+    if (m % 1000 == 0) {
+      json_uint(s, m % 1'000'000 / 1000, 3);
+    } else {
+      json_uint(s, m % 1'000'000, 6);
+    }
+  }
+  if (h.interface.size() != 0) {
+    s.put(",\"interface\":");
+    nmea::detail::json_string<nmea::json_style::json>(s, h.interface.view());
+  }
+  if (h.direction != 0) {
+    s.put(",\"direction\":\"");
+    s.put(h.direction);
+    s.put('"');
+  }
+  s.put(",\"prio\":");
+  json_uint(s, h.id.priority);
+  s.put(",\"src\":");
+  json_uint(s, h.id.source);
+  s.put(",\"dst\":");
+  json_uint(s, h.id.destination);
+}
+
+/// A message of a described PGN as one JSON object (no newline).
+template <json_sink Sink, pgn_like P>
+constexpr void write_json(Sink& s, const message_header& h, const P& msg) noexcept {
+  write_json_header(s, h);
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      s.put(",\"");
+      s.put(f.name);
+      s.put("\":");
+      write_json_value(s, msg.*F::member);
+    }
+  });
+  s.put('}');
+}
+
+/// A message of a PGN without a description: its bytes in "data" (hex, upper case).
+template <json_sink Sink>
+constexpr void write_json_raw(Sink& s, const message_header& h,
+                              std::span<const std::uint8_t> data) noexcept {
+  write_json_header(s, h);
+  s.put(",\"data\":\"");
+  for (const std::uint8_t b : data) detail::put_hex_byte(s, b, true);
+  s.put("\"}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// reading
+
+namespace detail {
+
+[[nodiscard]] constexpr std::optional<field_state> state_named(const json_value& v) noexcept {
+  if (v.blank()) return field_state::not_available;
+  if (v.kind != json_kind::string) return std::nullopt;
+  if (v.text == "not_available") return field_state::not_available;
+  if (v.text == "out_of_range") return field_state::out_of_range;
+  if (v.text == "reserved") return field_state::reserved;
+  return std::nullopt;
+}
+
+template <class T>
+[[nodiscard]] constexpr std::optional<T> sentinel(field_state st) noexcept {
+  constexpr std::int64_t top = T::top_raw;
+  constexpr unsigned n = detail::sentinel_count(T::bits);
+  if (st == field_state::not_available && n >= 1) return T::from_raw(top);
+  if (st == field_state::out_of_range && n >= 2) return T::from_raw(top - 1);
+  if (st == field_state::reserved && n >= 3) return T::from_raw(top - 2);
+  return std::nullopt;
+}
+
+[[nodiscard]] constexpr bool parse_plain_uint(std::string_view t, std::int64_t& out) noexcept {
+  std::uint64_t u = 0;
+  if (!parse_uint(t, u)) return false;
+  out = static_cast<std::int64_t>(u);
+  return true;
+}
+
+[[nodiscard]] constexpr bool parse_date_text(std::string_view t,
+                                             std::chrono::sys_days& out) noexcept {
+  if (t.size() != 10 || t[4] != '-' || t[7] != '-') return false;
+  const int y1 = two_digits(t, 0);
+  const int y2 = two_digits(t, 2);
+  const int m = two_digits(t, 5);
+  const int d = two_digits(t, 8);
+  if (y1 < 0 || y2 < 0 || m < 1 || d < 1) return false;
+  const std::chrono::year_month_day ymd{std::chrono::year{y1 * 100 + y2},
+                                        std::chrono::month{static_cast<unsigned>(m)},
+                                        std::chrono::day{static_cast<unsigned>(d)}};
+  if (!ymd.ok()) return false;
+  out = std::chrono::sys_days(ymd);
+  return true;
+}
+
+}  // namespace detail
+
+/// One field value from JSON (see the top of this file). `lookup(name, index)` is consulted for
+/// the elements of a flag array ("0", "1", ...), `name` being the field's.
+template <field_value T, class Lookup>
+[[nodiscard]] constexpr errc read_json_value(const json_value& v, T& out, std::string_view name,
+                                             Lookup&& lookup) noexcept {
+  if constexpr (detail::is_flags<T>::value) {
+    using E = typename detail::enum_of<T>::type;
+    if (v.kind == json_kind::number) {
+      std::int64_t raw = 0;
+      if (!detail::parse_plain_uint(v.text, raw) || raw > T::top_raw) return errc::out_of_range;
+      out = T::from_raw(raw);
+      return errc::ok;
+    }
+    if (v.blank()) {
+      out = T{};
+      return errc::ok;
+    }
+    if (v.kind != json_kind::other) return errc::bad_flag;
+    std::int64_t raw = 0;
+    constexpr std::string_view index[] = {"0",  "1",  "2",  "3",  "4",  "5",  "6",  "7",
+                                          "8",  "9",  "10", "11", "12", "13", "14", "15",
+                                          "16", "17", "18", "19", "20", "21", "22", "23",
+                                          "24", "25", "26", "27", "28", "29", "30", "31"};
+    for (const std::string_view i : index) {
+      const json_value e = lookup(name, i);
+      if (e.kind == json_kind::absent) break;
+      if (e.kind != json_kind::string) return errc::bad_flag;
+      std::optional<std::uint64_t> bit = nmea2000::detail::enum_value<E>(e.text);
+      std::int64_t n = 0;
+      if (!bit && e.text.starts_with("bit_") && detail::parse_plain_uint(e.text.substr(4), n))
+        bit = static_cast<std::uint64_t>(n);
+      if (!bit || *bit >= T::bits) return errc::bad_flag;
+      raw |= std::int64_t{1} << *bit;
+    }
+    out = T::from_raw(raw);
+    return errc::ok;
+  } else {
+    if (const auto st = detail::state_named(v)) {
+      const auto s = detail::sentinel<T>(*st);
+      if (!s) return errc::out_of_range;  // a state this field cannot carry
+      out = *s;
+      return errc::ok;
+    }
+    if constexpr (detail::is_number<T>::value) {
+      nmea::decimal d;
+      if (nmea::detail::json_number(v, d) != errc::ok) return errc::bad_number;
+      const auto r = T::from(d);
+      if (r) out = r.value;
+      return r.ec;
+    } else if constexpr (detail::is_lookup<T>::value) {
+      std::int64_t raw = 0;
+      if (v.kind == json_kind::number ||
+          (v.kind == json_kind::string && detail::parse_plain_uint(v.text, raw))) {
+        if (!detail::parse_plain_uint(v.text, raw) || raw > T::max_valid_raw)
+          return errc::out_of_range;
+        out = T::from_raw(raw);
+        return errc::ok;
+      }
+      if (v.kind != json_kind::string) return errc::bad_enum;
+      const auto r = T::from_name(v.text);
+      if (r) out = r.value;
+      return r.ec;
+    } else if constexpr (std::is_same_v<T, date>) {
+      std::chrono::sys_days day{};
+      if (v.kind != json_kind::string || !detail::parse_date_text(v.text, day))
+        return errc::bad_date;
+      const auto r = date::from(day);
+      if (r) out = r.value;
+      return r.ec;
+    } else if constexpr (std::is_same_v<T, time_of_day>) {
+      std::int64_t us = 0;
+      if (v.kind != json_kind::string) return errc::bad_time;
+      // hh:mm:ss with up to 4 fraction digits (the field's 0.1 ms)
+      const std::size_t used = detail::parse_clock(v.text, us);
+      if (used == 0 || used != v.text.size()) return errc::bad_time;
+      const std::size_t dot = v.text.find('.');
+      if (dot != std::string_view::npos && v.text.size() - dot - 1 > 4) return errc::bad_time;
+      const auto r = time_of_day::from(std::chrono::microseconds(us));
+      if (r) out = r.value;
+      return r.ec;
+    }
+  }
+}
+
+/// A message of PGN struct P from the members of a JSON object. `lookup(object, key)` returns
+/// member `key` of the object (object == "") or element `key` ("0", "1", ...) of its array member
+/// `object`. On failure: the errc and `field` = the row of P's table (field_name<P> names it).
+/// Unknown members are not looked at (the caller reports them if it wants).
+template <pgn_like P, class Lookup>
+[[nodiscard]] constexpr result<P> read_json(Lookup&& lookup) noexcept {
+  result<P> r;
+  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      if (r.ec != errc::ok) return;
+      const json_value v = lookup(std::string_view{}, f.name);
+      const errc e = read_json_value(v, r.value.*F::member, f.name, lookup);
+      if (e != errc::ok) {
+        r.ec = e;
+        r.field = n;
+        r.column = static_cast<std::uint16_t>(offset / 8);
+      }
+    }
+  });
+  return r;
+}
+
+/// Whether P has a field called `name` (for reporting unknown members).
+template <pgn_like P>
+[[nodiscard]] constexpr bool has_field(std::string_view name) noexcept {
+  bool found = false;
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) found = found || f.name == name;
+  });
+  return found;
+}
+
+/// The PGN a "type" names ("PGN128259"), or nullopt.
+[[nodiscard]] constexpr std::optional<std::uint32_t> pgn_of_type(std::string_view type) noexcept {
+  std::uint64_t n = 0;
+  if (!type.starts_with("PGN") || !detail::parse_uint(type.substr(3), n) || n > max_pgn)
+    return std::nullopt;
+  return static_cast<std::uint32_t>(n);
+}
+
+/// The header members of a JSON object (see the top of this file) for a message of `pgn`.
+/// "prio" defaults to `default_priority`, "src" to 0 and "dst" to 255; "time_s" absent leaves no
+/// time. On failure `field` is 1 for time_s, 2 interface, 3 direction, 4 prio, 5 src, 6 dst.
+template <class Lookup>
+[[nodiscard]] constexpr result<message_header> read_json_header(std::uint32_t pgn,
+                                                                std::uint8_t default_priority,
+                                                                Lookup&& lookup) noexcept {
+  result<message_header> r;
+  r.value.id.pgn = pgn;
+  r.value.id.priority = default_priority;
+  r.value.id.source = 0;
+  const auto fail = [&](errc e, std::uint16_t field) {
+    r.ec = e;
+    r.field = field;
+    return r;
+  };
+  if (const json_value t = lookup(std::string_view{}, "time_s"); !t.blank()) {
+    std::int64_t us = 0;
+    if (t.kind != json_kind::number || !detail::parse_seconds(t.text, us))
+      return fail(errc::bad_time, 1);
+    r.value.time_us = us;
+  }
+  if (const json_value i = lookup(std::string_view{}, "interface"); !i.blank()) {
+    if (i.kind != json_kind::string || i.text.empty() ||
+        i.text.find_first_of(" \t#(") != std::string_view::npos)
+      return fail(errc::bad_text, 2);
+    if (!r.value.interface.assign(i.text)) return fail(errc::text_too_long, 2);
+  }
+  if (const json_value d = lookup(std::string_view{}, "direction"); !d.blank()) {
+    if (d.kind != json_kind::string || (d.text != "R" && d.text != "T"))
+      return fail(errc::bad_enum, 3);
+    r.value.direction = d.text[0];
+  }
+  const auto small = [&](std::string_view key, std::uint64_t max, std::uint8_t& out,
+                         std::uint16_t field) {
+    const json_value v = lookup(std::string_view{}, key);
+    if (v.blank()) return true;
+    std::uint64_t n = 0;
+    if (v.kind != json_kind::number || !detail::parse_uint(v.text, n) || n > max) {
+      r.ec = errc::out_of_range;
+      r.field = field;
+      return false;
+    }
+    out = static_cast<std::uint8_t>(n);
+    return true;
+  };
+  if (!small("prio", 7, r.value.id.priority, 4) || !small("src", 255, r.value.id.source, 5) ||
+      !small("dst", 255, r.value.id.destination, 6))
+    return r;
+  if (!is_addressed(pgn) && r.value.id.destination != broadcast_address)
+    return fail(errc::bad_can_id, 6);
+  return r;
+}
+
+}  // namespace seawire::nmea2000

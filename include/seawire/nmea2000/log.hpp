@@ -1,0 +1,586 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Text logs of NMEA 2000 traffic: read a line of any of these formats, write any of them.
+//
+//   candump_log    (1700000000.123456) can0 09F50323#FF0000FFFF03FFFF
+//                  can-utils' `candump -L` / `-l` and what `canplayer` reads; a trailing
+//                  direction token (` R`, ` T`) of newer can-utils is accepted
+//   candump        can0  09F50323   [8]  FF 00 00 FF FF 03 FF FF
+//                  can-utils' `candump` screen output, optionally led by a (timestamp)
+//   canboat        2020-08-22T13:52:55.194Z,2,128259,35,255,8,ff,00,00,ff,ff,03,ff,ff
+//                  canboat's PLAIN (len <= 8: one CAN frame as it was on the bus) and FAST
+//                  (len > 8: a fast packet's whole payload) lines, what actisense-serial writes
+//                  and canboat's analyzer reads
+//   yd_raw         21:55:35.925 R 19F51323 20 0E FF FF FF FF FF FF
+//                  Yacht Devices gateways' RAW format; R = received from the bus, T = sent
+//
+// parse_log_line() tells the formats apart by their shape ('#' for candump_log, '[' for
+// candump, ',' for canboat, hh:mm:ss first for yd_raw). A malformed line is an error with the
+// token it concerns (`field`, see log_field_name) and its byte column; a caller reading a file
+// reports it and goes on with the next line.
+//
+// Timestamps are kept in microseconds: of Unix time (UTC) for candump and canboat lines, of the
+// day for yd_raw lines (the gateway's clock: UTC once it has seen the time on the bus, time since
+// power-up before). canboat's timestamp is free text to canboat; the forms it writes
+// (2016-04-09T16:41:39.628Z, 2011-04-25-10:16:42.094, an offset such as -07:00) are read, with
+// no zone taken as UTC; any other text leaves the time empty.
+
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "seawire/detail/ascii.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/text.hpp"
+#include "seawire/nmea2000/can_id.hpp"
+#include "seawire/nmea2000/fast_packet.hpp"
+
+namespace seawire::nmea2000 {
+
+enum class log_format : std::uint8_t { candump_log, candump, canboat, yd_raw };
+
+[[nodiscard]] constexpr std::string_view name(log_format f) noexcept {
+  switch (f) {
+    case log_format::candump_log: return "candump_log";
+    case log_format::candump: return "candump";
+    case log_format::canboat: return "canboat";
+    case log_format::yd_raw: return "yd_raw";
+  }
+  return "candump_log";
+}
+
+/// The format called `text` (as name() spells it), or nullopt.
+[[nodiscard]] constexpr std::optional<log_format> log_format_named(std::string_view text) noexcept {
+  for (const auto f :
+       {log_format::candump_log, log_format::candump, log_format::canboat, log_format::yd_raw})
+    if (name(f) == text) return f;
+  return std::nullopt;
+}
+
+/// One line of a log: a CAN frame, or (canboat FAST) a whole fast-packet payload.
+struct log_record {
+  log_format format = log_format::candump_log;
+  can_id id;
+  std::optional<std::int64_t> time_us;  ///< see the top of this file for what it counts from
+  nmea::text<15> interface;             ///< candump formats: the CAN interface ("can0")
+  char direction = 'R';                 ///< yd_raw: 'R' received, 'T' transmitted
+  bool assembled = false;               ///< data is a whole payload (canboat FAST), not a frame
+  std::array<std::uint8_t, max_fast_packet_length> bytes{};
+  std::uint8_t size = 0;
+
+  [[nodiscard]] constexpr std::span<const std::uint8_t> data() const noexcept {
+    return {bytes.data(), size};
+  }
+  /// Copies `d` (at most 223 bytes; false and nothing copied otherwise).
+  constexpr bool assign(std::span<const std::uint8_t> d) noexcept {
+    if (d.size() > bytes.size()) return false;
+    for (std::size_t i = 0; i < d.size(); ++i) bytes[i] = d[i];
+    size = static_cast<std::uint8_t>(d.size());
+    return true;
+  }
+};
+
+/// The name of token `field` of a line of format `f`, as parse errors number them.
+[[nodiscard]] constexpr std::string_view log_field_name(log_format f,
+                                                        std::uint16_t field) noexcept {
+  constexpr std::string_view candump_log[] = {"line", "timestamp", "interface", "frame"};
+  constexpr std::string_view candump[] = {"line", "interface", "identifier", "length", "data"};
+  constexpr std::string_view canboat[] = {"line",   "timestamp",   "priority", "pgn",
+                                          "source", "destination", "length",   "data"};
+  constexpr std::string_view yd_raw[] = {"line", "time", "direction", "identifier", "data"};
+  const auto pick = [&](std::span<const std::string_view> names) {
+    return field < names.size() ? names[field] : names.back();
+  };
+  switch (f) {
+    case log_format::candump_log: return pick(candump_log);
+    case log_format::candump: return pick(candump);
+    case log_format::canboat: return pick(canboat);
+    case log_format::yd_raw: return pick(yd_raw);
+  }
+  return "line";
+}
+
+namespace detail {
+
+class log_cursor {
+ public:
+  constexpr explicit log_cursor(std::string_view line) noexcept : s_(line) {}
+  [[nodiscard]] constexpr std::size_t pos() const noexcept { return i_; }
+  [[nodiscard]] constexpr bool done() const noexcept { return i_ >= s_.size(); }
+  [[nodiscard]] constexpr char peek() const noexcept { return done() ? '\0' : s_[i_]; }
+  constexpr bool skip_spaces() noexcept {
+    const std::size_t at = i_;
+    while (!done() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
+    return i_ != at;
+  }
+  constexpr bool eat(char c) noexcept {
+    if (peek() != c || done()) return false;
+    ++i_;
+    return true;
+  }
+  /// Characters up to (not including) one of `stops` or the end.
+  constexpr std::string_view until(std::string_view stops) noexcept {
+    const std::size_t at = i_;
+    while (!done() && stops.find(s_[i_]) == std::string_view::npos) ++i_;
+    return s_.substr(at, i_ - at);
+  }
+
+ private:
+  std::string_view s_;
+  std::size_t i_ = 0;
+};
+
+/// An unsigned decimal of 1-18 digits.
+[[nodiscard]] constexpr bool parse_uint(std::string_view t, std::uint64_t& out) noexcept {
+  if (t.empty() || t.size() > 18) return false;
+  std::uint64_t v = 0;
+  for (const char c : t) {
+    if (!seawire::detail::is_digit(c)) return false;
+    v = v * 10 + static_cast<std::uint64_t>(c - '0');
+  }
+  out = v;
+  return true;
+}
+
+/// Hex of 1-8 digits.
+[[nodiscard]] constexpr bool parse_hex(std::string_view t, std::uint32_t& out) noexcept {
+  if (t.empty() || t.size() > 8) return false;
+  std::uint32_t v = 0;
+  for (const char c : t) {
+    const int h = seawire::detail::hex_value(c);
+    if (h < 0) return false;
+    v = v << 4 | static_cast<std::uint32_t>(h);
+  }
+  out = v;
+  return true;
+}
+
+/// "sec[.frac]" as microseconds (fraction digits past 6 are cut).
+[[nodiscard]] constexpr bool parse_seconds(std::string_view t, std::int64_t& us) noexcept {
+  const std::size_t dot = t.find('.');
+  std::uint64_t sec = 0;
+  if (!parse_uint(t.substr(0, dot), sec) || sec > 9'000'000'000'000ULL) return false;
+  std::uint64_t frac = 0;
+  if (dot != std::string_view::npos) {
+    const std::string_view f = t.substr(dot + 1);
+    if (f.empty()) return false;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (!seawire::detail::is_digit(f[i])) return false;
+      if (i < 6) frac = frac * 10 + static_cast<std::uint64_t>(f[i] - '0');
+    }
+    for (std::size_t i = f.size(); i < 6; ++i) frac *= 10;
+  }
+  us = static_cast<std::int64_t>(sec * 1'000'000 + frac);
+  return true;
+}
+
+/// Two-digit number at t[i].
+[[nodiscard]] constexpr int two_digits(std::string_view t, std::size_t i) noexcept {
+  if (i + 2 > t.size() || !seawire::detail::is_digit(t[i]) || !seawire::detail::is_digit(t[i + 1]))
+    return -1;
+  return (t[i] - '0') * 10 + (t[i + 1] - '0');
+}
+
+/// "hh:mm:ss[.f...]" at the start of t as microseconds of the day; the characters used.
+[[nodiscard]] constexpr std::size_t parse_clock(std::string_view t, std::int64_t& us) noexcept {
+  const int h = two_digits(t, 0);
+  const int m = two_digits(t, 3);
+  const int s = two_digits(t, 6);
+  if (h < 0 || m < 0 || s < 0 || t[2] != ':' || t[5] != ':' || h > 23 || m > 59 || s > 60) return 0;
+  std::size_t i = 8;
+  std::int64_t frac = 0;
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    std::size_t digits = 0;
+    for (; i < t.size() && seawire::detail::is_digit(t[i]); ++i, ++digits)
+      if (digits < 6) frac = frac * 10 + (t[i] - '0');
+    if (digits == 0) return 0;
+    for (; digits < 6; ++digits) frac *= 10;
+  }
+  us = ((std::int64_t{h} * 60 + m) * 60 + s) * 1'000'000 + frac;
+  return i;
+}
+
+/// canboat's timestamps: YYYY-MM-DD[T or -]hh:mm:ss[.f...][Z | +hh:mm | -hh:mm | +hhmm].
+[[nodiscard]] constexpr std::optional<std::int64_t> parse_canboat_time(
+    std::string_view t) noexcept {
+  if (t.size() < 19 || t[4] != '-' || t[7] != '-' || (t[10] != 'T' && t[10] != '-' && t[10] != ' '))
+    return std::nullopt;
+  const int y1 = two_digits(t, 0);
+  const int y2 = two_digits(t, 2);
+  const int mo = two_digits(t, 5);
+  const int d = two_digits(t, 8);
+  if (y1 < 0 || y2 < 0 || mo < 1 || mo > 12 || d < 1) return std::nullopt;
+  const std::chrono::year_month_day ymd{std::chrono::year{y1 * 100 + y2},
+                                        std::chrono::month{static_cast<unsigned>(mo)},
+                                        std::chrono::day{static_cast<unsigned>(d)}};
+  if (!ymd.ok()) return std::nullopt;
+  std::int64_t clock = 0;
+  const std::size_t used = parse_clock(t.substr(11), clock);
+  if (used == 0) return std::nullopt;
+  std::size_t i = 11 + used;
+  std::int64_t offset_us = 0;
+  if (i < t.size()) {
+    if (t[i] == 'Z' && i + 1 == t.size()) {
+      ++i;
+    } else if (t[i] == '+' || t[i] == '-') {
+      const int sign = t[i] == '-' ? -1 : 1;
+      const int oh = two_digits(t, i + 1);
+      const std::size_t mi = i + 3 < t.size() && t[i + 3] == ':' ? i + 4 : i + 3;
+      const int om = two_digits(t, mi);
+      if (oh < 0 || om < 0 || mi + 2 != t.size()) return std::nullopt;
+      offset_us = sign * (std::int64_t{oh} * 60 + om) * 60 * 1'000'000;
+      i = t.size();
+    }
+    if (i != t.size()) return std::nullopt;
+  }
+  const std::int64_t days = std::chrono::sys_days(ymd).time_since_epoch().count();
+  return days * 86'400'000'000 + clock - offset_us;
+}
+
+/// Up to `max` hex byte tokens separated by `sep` (' ' or ','); false on a bad token.
+template <bool Spaced>
+[[nodiscard]] constexpr bool parse_byte_tokens(log_cursor& c, log_record& r,
+                                               std::size_t max) noexcept {
+  r.size = 0;
+  while (true) {
+    if constexpr (Spaced) {
+      c.skip_spaces();
+      if (c.done()) return true;
+    } else {
+      if (c.done()) return true;
+      if (!c.eat(',')) return false;
+    }
+    const std::string_view tok = c.until(Spaced ? " \t" : ",");
+    std::uint32_t v = 0;
+    if (tok.size() != 2 || !parse_hex(tok, v) || r.size >= max) return false;
+    r.bytes[r.size++] = static_cast<std::uint8_t>(v);
+  }
+}
+
+/// The CAN identifier text `t` (8 hex digits, a 29-bit identifier) into r.id.
+[[nodiscard]] constexpr errc parse_identifier(std::string_view t, log_record& r) noexcept {
+  std::uint32_t raw = 0;
+  if (t.size() != 8 || !parse_hex(t, raw)) return errc::bad_can_id;
+  const result<can_id> id = parse_can_id(raw);
+  if (!id) return id.ec;
+  r.id = id.value;
+  return errc::ok;
+}
+
+constexpr std::string_view trim_line_end(std::string_view line) noexcept {
+  while (!line.empty() &&
+         (line.back() == '\n' || line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
+    line.remove_suffix(1);
+  return line;
+}
+
+[[nodiscard]] constexpr result<log_record> log_fail(const log_record& r, errc e,
+                                                    std::uint16_t field,
+                                                    std::size_t column) noexcept {
+  return {r, e, field, static_cast<std::uint16_t>(column > 0xFFFF ? 0xFFFF : column)};
+}
+
+constexpr result<log_record> parse_candump_log(std::string_view line) noexcept {
+  log_record r;
+  r.format = log_format::candump_log;
+  log_cursor c(line);
+  c.skip_spaces();
+  std::size_t at = c.pos();
+  if (!c.eat('(')) return log_fail(r, errc::bad_log_line, 1, at);
+  const std::string_view ts = c.until(")");
+  std::int64_t us = 0;
+  if (!c.eat(')') || !parse_seconds(ts, us)) return log_fail(r, errc::bad_time, 1, at);
+  r.time_us = us;
+  c.skip_spaces();
+  at = c.pos();
+  const std::string_view iface = c.until(" \t");
+  if (iface.empty() || !r.interface.assign(iface)) return log_fail(r, errc::bad_log_line, 2, at);
+  c.skip_spaces();
+  at = c.pos();
+  const std::string_view id = c.until("#");
+  if (!c.eat('#')) return log_fail(r, errc::bad_log_line, 3, at);
+  if (const errc e = parse_identifier(id, r); e != errc::ok) return log_fail(r, e, 3, at);
+  const std::size_t data_at = c.pos();
+  if (c.peek() == 'R' || c.peek() == '#')  // remote request or CAN FD: not NMEA 2000 data
+    return log_fail(r, errc::bad_log_line, 3, data_at);
+  const std::string_view hex = c.until(" \t");
+  if (hex.size() % 2 != 0 || hex.size() > 16) return log_fail(r, errc::bad_length, 3, data_at);
+  for (std::size_t i = 0; i < hex.size(); i += 2) {
+    std::uint32_t v = 0;
+    if (!parse_hex(hex.substr(i, 2), v)) return log_fail(r, errc::bad_number, 3, data_at + i);
+    r.bytes[r.size++] = static_cast<std::uint8_t>(v);
+  }
+  c.skip_spaces();
+  at = c.pos();
+  if (!c.done()) {  // newer can-utils: " R" / " T"
+    const std::string_view dir = c.until(" \t");
+    c.skip_spaces();
+    if ((dir != "R" && dir != "T") || !c.done()) return log_fail(r, errc::bad_log_line, 3, at);
+    r.direction = dir[0];
+  }
+  return {r, errc::ok, 0, 0};
+}
+
+constexpr result<log_record> parse_candump(std::string_view line) noexcept {
+  log_record r;
+  r.format = log_format::candump;
+  log_cursor c(line);
+  c.skip_spaces();
+  std::size_t at = c.pos();
+  if (c.eat('(')) {  // candump -t a: (1700000000.123456)
+    const std::string_view ts = c.until(")");
+    std::int64_t us = 0;
+    if (!c.eat(')') || !parse_seconds(ts, us)) return log_fail(r, errc::bad_time, 1, at);
+    r.time_us = us;
+    c.skip_spaces();
+    at = c.pos();
+  }
+  const std::string_view iface = c.until(" \t");
+  if (iface.empty() || !r.interface.assign(iface)) return log_fail(r, errc::bad_log_line, 1, at);
+  c.skip_spaces();
+  at = c.pos();
+  if (const errc e = parse_identifier(c.until(" \t"), r); e != errc::ok)
+    return log_fail(r, e, 2, at);
+  c.skip_spaces();
+  at = c.pos();
+  std::uint64_t dlc = 0;
+  if (!c.eat('[')) return log_fail(r, errc::bad_log_line, 3, at);
+  if (!parse_uint(c.until("]"), dlc) || !c.eat(']') || dlc > 8)
+    return log_fail(r, errc::bad_length, 3, at);
+  at = c.pos();
+  if (!parse_byte_tokens<true>(c, r, 8)) return log_fail(r, errc::bad_number, 4, at);
+  if (r.size != dlc) return log_fail(r, errc::bad_length, 4, at);
+  return {r, errc::ok, 0, 0};
+}
+
+constexpr result<log_record> parse_canboat(std::string_view line) noexcept {
+  log_record r;
+  r.format = log_format::canboat;
+  log_cursor c(line);
+  r.time_us = parse_canboat_time(c.until(","));
+  std::uint64_t v[5] = {};
+  for (std::uint16_t k = 0; k < 5; ++k) {
+    const std::size_t at = c.pos();
+    if (!c.eat(',')) return log_fail(r, errc::bad_log_line, static_cast<std::uint16_t>(k + 2), at);
+    if (!parse_uint(c.until(","), v[k]))
+      return log_fail(r, errc::bad_number, static_cast<std::uint16_t>(k + 2), at + 1);
+  }
+  const std::size_t at = c.pos();
+  if (v[0] > 7) return log_fail(r, errc::bad_can_id, 2, at);
+  if (v[1] > max_pgn) return log_fail(r, errc::bad_can_id, 3, at);
+  if (v[2] > 255) return log_fail(r, errc::bad_can_id, 4, at);
+  if (v[3] > 255) return log_fail(r, errc::bad_can_id, 5, at);
+  if (v[4] > max_fast_packet_length) return log_fail(r, errc::bad_length, 6, at);
+  r.id.priority = static_cast<std::uint8_t>(v[0]);
+  r.id.pgn = static_cast<std::uint32_t>(v[1]);
+  r.id.source = static_cast<std::uint8_t>(v[2]);
+  r.id.destination = is_addressed(r.id.pgn) ? static_cast<std::uint8_t>(v[3]) : broadcast_address;
+  if (!parse_byte_tokens<false>(c, r, max_fast_packet_length))
+    return log_fail(r, errc::bad_number, 7, at);
+  if (r.size != v[4]) return log_fail(r, errc::bad_length, 7, at);
+  r.assembled = r.size > 8;
+  return {r, errc::ok, 0, 0};
+}
+
+constexpr result<log_record> parse_yd_raw(std::string_view line) noexcept {
+  log_record r;
+  r.format = log_format::yd_raw;
+  log_cursor c(line);
+  c.skip_spaces();
+  std::size_t at = c.pos();
+  std::int64_t us = 0;
+  const std::string_view clock = c.until(" \t");
+  if (parse_clock(clock, us) != clock.size()) return log_fail(r, errc::bad_time, 1, at);
+  r.time_us = us;
+  c.skip_spaces();
+  at = c.pos();
+  const std::string_view dir = c.until(" \t");
+  if (dir != "R" && dir != "T") return log_fail(r, errc::bad_log_line, 2, at);
+  r.direction = dir[0];
+  c.skip_spaces();
+  at = c.pos();
+  if (const errc e = parse_identifier(c.until(" \t"), r); e != errc::ok)
+    return log_fail(r, e, 3, at);
+  at = c.pos();
+  if (!parse_byte_tokens<true>(c, r, 8)) return log_fail(r, errc::bad_number, 4, at);
+  if (r.size == 0) return log_fail(r, errc::bad_length, 4, at);
+  return {r, errc::ok, 0, 0};
+}
+
+}  // namespace detail
+
+/// One line of a log in format `f` (a trailing CR/LF is ignored).
+[[nodiscard]] constexpr result<log_record> parse_log_line(std::string_view line,
+                                                          log_format f) noexcept {
+  line = detail::trim_line_end(line);
+  switch (f) {
+    case log_format::candump_log: return detail::parse_candump_log(line);
+    case log_format::candump: return detail::parse_candump(line);
+    case log_format::canboat: return detail::parse_canboat(line);
+    case log_format::yd_raw: return detail::parse_yd_raw(line);
+  }
+  return {};
+}
+
+/// The format a line looks like, or nullopt for a line of none (see the top of this file).
+[[nodiscard]] constexpr std::optional<log_format> detect_log_format(
+    std::string_view line) noexcept {
+  if (line.find('#') != std::string_view::npos) return log_format::candump_log;
+  if (line.find('[') != std::string_view::npos) return log_format::candump;
+  if (line.find(',') != std::string_view::npos) return log_format::canboat;
+  std::size_t i = 0;
+  while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+  if (line.size() - i >= 8 && line[i + 2] == ':' && line[i + 5] == ':' &&
+      seawire::detail::is_digit(line[i]))
+    return log_format::yd_raw;
+  return std::nullopt;
+}
+
+/// One line of a log of any format, detected per line. empty_input for a blank line,
+/// bad_log_line (field 0) for a line of no known shape.
+[[nodiscard]] constexpr result<log_record> parse_log_line(std::string_view line) noexcept {
+  line = detail::trim_line_end(line);
+  if (line.find_first_not_of(" \t") == std::string_view::npos) return {{}, errc::empty_input, 0, 0};
+  const auto f = detect_log_format(line);
+  if (!f) return {{}, errc::bad_log_line, 0, 0};
+  return parse_log_line(line, *f);
+}
+
+// ---------------------------------------------------------------------------------------------
+// writing
+
+namespace detail {
+
+template <class Sink>
+constexpr void put_hex_byte(Sink& s, std::uint8_t b, bool upper) noexcept {
+  constexpr std::string_view lower = "0123456789abcdef";
+  constexpr std::string_view higher = "0123456789ABCDEF";
+  const std::string_view digits = upper ? higher : lower;
+  s.put(digits[b >> 4]);
+  s.put(digits[b & 0xF]);
+}
+
+template <class Sink>
+constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
+  char buf[20];
+  unsigned n = 0;
+  do {
+    buf[n++] = static_cast<char>('0' + v % 10);
+    v /= 10;
+  } while (v != 0 && n < 20);
+  while (n < min_digits && n < 20) buf[n++] = '0';
+  while (n > 0) s.put(buf[--n]);
+}
+
+template <class Sink>
+constexpr void put_can_id(Sink& s, std::uint32_t id) noexcept {
+  for (int shift = 24; shift >= 0; shift -= 8)
+    put_hex_byte(s, static_cast<std::uint8_t>(id >> shift), true);
+}
+
+template <class Sink>
+constexpr void put_clock(Sink& s, std::int64_t us_of_day, unsigned places) noexcept {
+  const auto us = static_cast<std::uint64_t>(us_of_day);
+  put_uint(s, us / 3'600'000'000, 2);
+  s.put(':');
+  put_uint(s, us / 60'000'000 % 60, 2);
+  s.put(':');
+  put_uint(s, us / 1'000'000 % 60, 2);
+  if (places > 0) {
+    s.put('.');
+    put_uint(s, us % 1'000'000 / seawire::detail::pow10_table[6 - places], places);
+  }
+}
+
+}  // namespace detail
+
+/// Writes `r` as one line of format `f`, ending in LF. A record holding more than 8 bytes (a
+/// whole fast packet) can only be written as canboat (FAST); bad_length for the other formats:
+/// split it into frames first (split_fast_packet). bad_can_id when r.id cannot be an identifier.
+/// A missing time is written as 0 (candump formats, yd_raw) or 1970-01-01 (canboat); yd_raw
+/// keeps the time of day of a Unix time and canboat writes a time of day as a time on
+/// 1970-01-01. Milliseconds are written, or microseconds when the time has them, except by
+/// yd_raw (milliseconds, as the gateways write).
+template <class Sink>
+constexpr errc write_log_line(Sink& s, const log_record& r, log_format f) noexcept {
+  if (r.size > 8 && f != log_format::canboat) return errc::bad_length;
+  const result<std::uint32_t> id = make_can_id(r.id);
+  if (!id) return id.ec;
+  const std::int64_t time = r.time_us.value_or(0) < 0 ? 0 : r.time_us.value_or(0);
+  const unsigned places = time % 1000 == 0 ? 3 : 6;
+  const std::string_view iface =
+      r.interface.size() == 0 ? std::string_view("can0") : r.interface.view();
+  switch (f) {
+    case log_format::candump_log:
+      s.put('(');
+      detail::put_uint(s, static_cast<std::uint64_t>(time / 1'000'000));
+      s.put('.');
+      detail::put_uint(s, static_cast<std::uint64_t>(time % 1'000'000), 6);
+      s.put(") ");
+      s.put(iface);
+      s.put(' ');
+      detail::put_can_id(s, id.value);
+      s.put('#');
+      for (const std::uint8_t b : r.data()) detail::put_hex_byte(s, b, true);
+      break;
+    case log_format::candump:
+      s.put("  ");
+      s.put(iface);
+      s.put("  ");
+      detail::put_can_id(s, id.value);
+      s.put("   [");
+      detail::put_uint(s, r.size);
+      s.put("] ");
+      for (const std::uint8_t b : r.data()) {
+        s.put(' ');
+        detail::put_hex_byte(s, b, true);
+      }
+      break;
+    case log_format::canboat: {
+      const auto days = std::chrono::sys_days(std::chrono::days(time / 86'400'000'000));
+      const std::chrono::year_month_day ymd(days);
+      detail::put_uint(s, static_cast<std::uint64_t>(static_cast<int>(ymd.year())), 4);
+      s.put('-');
+      detail::put_uint(s, static_cast<unsigned>(ymd.month()), 2);
+      s.put('-');
+      detail::put_uint(s, static_cast<unsigned>(ymd.day()), 2);
+      s.put('T');
+      detail::put_clock(s, time % 86'400'000'000, places);
+      s.put("Z,");
+      detail::put_uint(s, r.id.priority);
+      s.put(',');
+      detail::put_uint(s, r.id.pgn);
+      s.put(',');
+      detail::put_uint(s, r.id.source);
+      s.put(',');
+      detail::put_uint(s, r.id.destination);
+      s.put(',');
+      detail::put_uint(s, r.size);
+      for (const std::uint8_t b : r.data()) {
+        s.put(',');
+        detail::put_hex_byte(s, b, false);
+      }
+      break;
+    }
+    case log_format::yd_raw:
+      detail::put_clock(s, time % 86'400'000'000, 3);
+      s.put(' ');
+      s.put(r.direction == 'T' ? 'T' : 'R');
+      s.put(' ');
+      detail::put_can_id(s, id.value);
+      for (const std::uint8_t b : r.data()) {
+        s.put(' ');
+        detail::put_hex_byte(s, b, true);
+      }
+      break;
+  }
+  s.put('\n');
+  return errc::ok;
+}
+
+}  // namespace seawire::nmea2000

@@ -1,0 +1,340 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The NMEA 2000 PGNs the ANELLO Maritime INS takes as sensor input: engine, speed through the
+// water, distance log, environment and speed components. Each struct is one PGN: its members in
+// wire order, then its table (field.hpp says how the table is read). Physical values are SI, as
+// on the wire: pressures in Pa, temperatures in K, speeds in m/s, plus rpm, L/h, % and seconds
+// where the standard uses them.
+//
+// Where ANELLO's field lists differ from what devices send, these follow the wire:
+// - 128259's last byte and a half ("Reserved Bits" in ANELLO's list) start with a 4-bit speed
+//   direction; the remaining 12 bits are reserved.
+// - 130311's "Temperature Instance" and "Humidity Instance" are the temperature and humidity
+//   *source* lookups (6 and 2 bits of one byte).
+// - 127489's field 10 ("Not Available") is a reserved byte.
+// - Resolutions and signedness are the standard's: 127488 boost pressure is unsigned at 100 Pa,
+//   127489 oil and coolant pressures 100 Pa (fuel pressure 1 kPa), engine load and torque signed,
+//   128259 speeds unsigned, 130311 temperature unsigned and humidity signed at 0.004 %.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "seawire/nmea2000/field.hpp"
+
+namespace seawire::nmea2000 {
+
+// ---------------------------------------------------------------------------------------------
+// lookups
+
+/// The kind of sensor behind a speed through the water (128259).
+enum class water_reference : std::uint8_t {
+  paddle_wheel = 0,
+  pitot_tube = 1,
+  doppler = 2,
+  correlation = 3,  ///< correlation (ultrasound)
+  electro_magnetic = 4,
+};
+constexpr std::array<std::string_view, 5> lookup_names(water_reference) noexcept {
+  return {"paddle_wheel", "pitot_tube", "doppler", "correlation", "electro_magnetic"};
+}
+
+/// Where a temperature is measured (130311).
+enum class temperature_source : std::uint8_t {
+  sea = 0,
+  outside = 1,
+  inside = 2,
+  engine_room = 3,
+  main_cabin = 4,
+  live_well = 5,
+  bait_well = 6,
+  refrigeration = 7,
+  heating_system = 8,
+  dew_point = 9,
+  apparent_wind_chill = 10,
+  theoretical_wind_chill = 11,
+  heat_index = 12,
+  freezer = 13,
+  exhaust_gas = 14,
+  shaft_seal = 15,
+};
+constexpr std::array<std::string_view, 16> lookup_names(temperature_source) noexcept {
+  return {"sea",
+          "outside",
+          "inside",
+          "engine_room",
+          "main_cabin",
+          "live_well",
+          "bait_well",
+          "refrigeration",
+          "heating_system",
+          "dew_point",
+          "apparent_wind_chill",
+          "theoretical_wind_chill",
+          "heat_index",
+          "freezer",
+          "exhaust_gas",
+          "shaft_seal"};
+}
+
+/// Where a humidity is measured (130311).
+enum class humidity_source : std::uint8_t { inside = 0, outside = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(humidity_source) noexcept {
+  return {"inside", "outside"};
+}
+
+/// Engine discrete status 1 (127489): bit numbers.
+enum class engine_status_1 : std::uint8_t {
+  check_engine = 0,
+  over_temperature = 1,
+  low_oil_pressure = 2,
+  low_oil_level = 3,
+  low_fuel_pressure = 4,
+  low_system_voltage = 5,
+  low_coolant_level = 6,
+  water_flow = 7,
+  water_in_fuel = 8,
+  charge_indicator = 9,
+  preheat_indicator = 10,
+  high_boost_pressure = 11,
+  rev_limit_exceeded = 12,
+  egr_system = 13,
+  throttle_position_sensor = 14,
+  emergency_stop = 15,
+};
+constexpr std::array<std::string_view, 16> lookup_names(engine_status_1) noexcept {
+  return {
+      "check_engine",       "over_temperature",   "low_oil_pressure",         "low_oil_level",
+      "low_fuel_pressure",  "low_system_voltage", "low_coolant_level",        "water_flow",
+      "water_in_fuel",      "charge_indicator",   "preheat_indicator",        "high_boost_pressure",
+      "rev_limit_exceeded", "egr_system",         "throttle_position_sensor", "emergency_stop"};
+}
+
+/// Engine discrete status 2 (127489): bit numbers. Bits 8-15 have no name and are kept as sent.
+enum class engine_status_2 : std::uint8_t {
+  warning_level_1 = 0,
+  warning_level_2 = 1,
+  power_reduction = 2,
+  maintenance_needed = 3,
+  engine_comm_error = 4,
+  sub_or_secondary_throttle = 5,
+  neutral_start_protect = 6,
+  engine_shutting_down = 7,
+};
+constexpr std::array<std::string_view, 8> lookup_names(engine_status_2) noexcept {
+  return {"warning_level_1",       "warning_level_2",     "power_reduction",
+          "maintenance_needed",    "engine_comm_error",   "sub_or_secondary_throttle",
+          "neutral_start_protect", "engine_shutting_down"};
+}
+
+// ---------------------------------------------------------------------------------------------
+// the PGNs
+
+namespace res {
+inline constexpr resolution quarter{25, -2};    ///< 0.25
+inline constexpr resolution hundred{1, 2};      ///< 100
+inline constexpr resolution thousand{1, 3};     ///< 1000
+inline constexpr resolution tenth{1, -1};       ///< 0.1
+inline constexpr resolution hundredth{1, -2};   ///< 0.01
+inline constexpr resolution thousandth{1, -3};  ///< 0.001
+inline constexpr resolution humidity{4, -3};    ///< 0.004
+}  // namespace res
+
+/// PGN 127488 Engine Parameters, Rapid Update: 8 bytes, single frame, priority 2, 10 Hz.
+/// Instance 0 is the single engine or the port one of two, 1 the starboard one.
+struct engine_parameters_rapid {
+  unsigned_number<8> instance;
+  unsigned_number<16, res::quarter> speed_rpm;
+  unsigned_number<16, res::hundred> boost_pressure_pa;
+  signed_number<8> tilt_trim_pct;  ///< negative = trimmed down
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127488, "engine_parameters_rapid", "Engine Parameters, Rapid Update", 2,
+               framing::single_frame, 100},
+      field<&engine_parameters_rapid::instance>("instance", "Engine Instance"),
+      field<&engine_parameters_rapid::speed_rpm>("speed_rpm", "Engine Speed"),
+      field<&engine_parameters_rapid::boost_pressure_pa>("boost_pressure_pa",
+                                                         "Engine Boost Pressure"),
+      field<&engine_parameters_rapid::tilt_trim_pct>("tilt_trim_pct", "Engine Tilt/Trim"),
+      reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const engine_parameters_rapid&) const noexcept = default;
+};
+
+/// PGN 127489 Engine Parameters, Dynamic: 26 bytes, fast packet, priority 2, 2 Hz.
+struct engine_parameters_dynamic {
+  unsigned_number<8> instance;
+  unsigned_number<16, res::hundred> oil_pressure_pa;
+  unsigned_number<16, res::tenth> oil_temperature_k;
+  unsigned_number<16, res::hundredth> temperature_k;  ///< coolant
+  signed_number<16, res::hundredth> alternator_potential_v;
+  signed_number<16, res::tenth> fuel_rate_lph;  ///< litres per hour
+  unsigned_number<32> total_engine_hours_s;     ///< in seconds, despite the name
+  unsigned_number<16, res::hundred> coolant_pressure_pa;
+  unsigned_number<16, res::thousand> fuel_pressure_pa;
+  flags<engine_status_1, 16> discrete_status_1;
+  flags<engine_status_2, 16> discrete_status_2;
+  signed_number<8> engine_load_pct;
+  signed_number<8> engine_torque_pct;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127489, "engine_parameters_dynamic", "Engine Parameters, Dynamic", 2,
+               framing::fast_packet, 500},
+      field<&engine_parameters_dynamic::instance>("instance", "Engine Instance"),
+      field<&engine_parameters_dynamic::oil_pressure_pa>("oil_pressure_pa", "Engine Oil Pressure"),
+      field<&engine_parameters_dynamic::oil_temperature_k>("oil_temperature_k",
+                                                           "Engine Oil Temperature"),
+      field<&engine_parameters_dynamic::temperature_k>("temperature_k", "Engine Temperature"),
+      field<&engine_parameters_dynamic::alternator_potential_v>("alternator_potential_v",
+                                                                "Alternator Potential"),
+      field<&engine_parameters_dynamic::fuel_rate_lph>("fuel_rate_lph", "Fuel Rate"),
+      field<&engine_parameters_dynamic::total_engine_hours_s>("total_engine_hours_s",
+                                                              "Total Engine Hours"),
+      field<&engine_parameters_dynamic::coolant_pressure_pa>("coolant_pressure_pa",
+                                                             "Engine Coolant Pressure"),
+      field<&engine_parameters_dynamic::fuel_pressure_pa>("fuel_pressure_pa", "Fuel Pressure"),
+      reserved<8>,
+      field<&engine_parameters_dynamic::discrete_status_1>("discrete_status_1",
+                                                           "Engine Discrete Status 1"),
+      field<&engine_parameters_dynamic::discrete_status_2>("discrete_status_2",
+                                                           "Engine Discrete Status 2"),
+      field<&engine_parameters_dynamic::engine_load_pct>("engine_load_pct", "Percent Engine Load"),
+      field<&engine_parameters_dynamic::engine_torque_pct>("engine_torque_pct",
+                                                           "Percent Engine Torque"));
+  [[nodiscard]] constexpr bool operator==(const engine_parameters_dynamic&) const noexcept =
+      default;
+};
+
+/// PGN 128259 Speed, Water Referenced: 8 bytes, single frame, priority 2, 1 Hz.
+struct speed_water_referenced {
+  unsigned_number<8> sid;  ///< ties readings of one moment together across PGNs
+  unsigned_number<16, res::hundredth> speed_water_mps;
+  unsigned_number<16, res::hundredth> speed_ground_mps;
+  lookup<water_reference, 8> speed_type;
+  unsigned_number<4> speed_direction;  ///< meaning not published; senders leave it at 15
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{128259, "speed_water_referenced", "Speed, Water Referenced", 2,
+               framing::single_frame, 1000},
+      field<&speed_water_referenced::sid>("sid", "Sequence ID"),
+      field<&speed_water_referenced::speed_water_mps>("speed_water_mps", "Speed Water Referenced"),
+      field<&speed_water_referenced::speed_ground_mps>("speed_ground_mps",
+                                                       "Speed Ground Referenced"),
+      field<&speed_water_referenced::speed_type>("speed_type", "Speed Water Referenced Type"),
+      field<&speed_water_referenced::speed_direction>("speed_direction", "Speed Direction"),
+      reserved<12>);
+  [[nodiscard]] constexpr bool operator==(const speed_water_referenced&) const noexcept = default;
+};
+
+/// PGN 128275 Distance Log: 14 bytes, fast packet, priority 6, 1 Hz. Date and time are of the
+/// measurement (UTC); most logs send them as not available and fill only the two distances.
+struct distance_log {
+  nmea2000::date date;
+  nmea2000::time_of_day time;
+  unsigned_number<32> log_m;       ///< total cumulative distance
+  unsigned_number<32> trip_log_m;  ///< distance since last reset
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{128275, "distance_log", "Distance Log", 6, framing::fast_packet, 1000},
+                   field<&distance_log::date>("date", "Measurement Date"),
+                   field<&distance_log::time>("time", "Measurement Time"),
+                   field<&distance_log::log_m>("log_m", "Total Cumulative Distance"),
+                   field<&distance_log::trip_log_m>("trip_log_m", "Distance Since Last Reset"));
+  [[nodiscard]] constexpr bool operator==(const distance_log&) const noexcept = default;
+};
+
+/// PGN 130311 Environmental Parameters: 8 bytes, single frame, priority 5, 2 Hz.
+struct environmental_parameters {
+  unsigned_number<8> sid;
+  lookup<nmea2000::temperature_source, 6> temperature_source;
+  lookup<nmea2000::humidity_source, 2> humidity_source;
+  unsigned_number<16, res::hundredth> temperature_k;
+  signed_number<16, res::humidity> humidity_pct;  ///< relative humidity
+  unsigned_number<16, res::hundred> atmospheric_pressure_pa;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130311, "environmental_parameters", "Environmental Parameters", 5,
+               framing::single_frame, 500},
+      field<&environmental_parameters::sid>("sid", "Sequence ID"),
+      field<&environmental_parameters::temperature_source>("temperature_source",
+                                                           "Temperature Source"),
+      field<&environmental_parameters::humidity_source>("humidity_source", "Humidity Source"),
+      field<&environmental_parameters::temperature_k>("temperature_k", "Temperature"),
+      field<&environmental_parameters::humidity_pct>("humidity_pct", "Humidity"),
+      field<&environmental_parameters::atmospheric_pressure_pa>("atmospheric_pressure_pa",
+                                                                "Atmospheric Pressure"));
+  [[nodiscard]] constexpr bool operator==(const environmental_parameters&) const noexcept = default;
+};
+
+/// PGN 130578 Vessel Speed Components: 12 bytes, fast packet, priority 2, 4 Hz. Longitudinal
+/// positive = ahead, transverse positive = starboard; at most +-32.764 m/s.
+struct vessel_speed_components {
+  signed_number<16, res::thousandth> longitudinal_water_mps;
+  signed_number<16, res::thousandth> transverse_water_mps;
+  signed_number<16, res::thousandth> longitudinal_ground_mps;
+  signed_number<16, res::thousandth> transverse_ground_mps;
+  signed_number<16, res::thousandth> stern_water_mps;  ///< transverse speed at the stern
+  signed_number<16, res::thousandth> stern_ground_mps;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{130578, "vessel_speed_components", "Vessel Speed Components", 2,
+                            framing::fast_packet, 250},
+                   field<&vessel_speed_components::longitudinal_water_mps>(
+                       "longitudinal_water_mps", "Longitudinal Speed, Water-referenced"),
+                   field<&vessel_speed_components::transverse_water_mps>(
+                       "transverse_water_mps", "Transverse Speed, Water-referenced"),
+                   field<&vessel_speed_components::longitudinal_ground_mps>(
+                       "longitudinal_ground_mps", "Longitudinal Speed, Ground-referenced"),
+                   field<&vessel_speed_components::transverse_ground_mps>(
+                       "transverse_ground_mps", "Transverse Speed, Ground-referenced"),
+                   field<&vessel_speed_components::stern_water_mps>(
+                       "stern_water_mps", "Stern Speed, Water-referenced"),
+                   field<&vessel_speed_components::stern_ground_mps>(
+                       "stern_ground_mps", "Stern Speed, Ground-referenced"));
+  [[nodiscard]] constexpr bool operator==(const vessel_speed_components&) const noexcept = default;
+};
+
+// ---------------------------------------------------------------------------------------------
+// sets of PGNs
+
+/// A set of PGN structs: what a receiver knows, looked up by PGN number.
+template <pgn_like... P>
+struct pgn_list {
+  static constexpr std::size_t size = sizeof...(P);
+
+  [[nodiscard]] static constexpr bool knows(std::uint32_t pgn) noexcept {
+    return ((P::n2k.info.pgn == pgn) || ...);
+  }
+  /// The description's facts for `pgn`, or nullopt for a PGN of no struct here.
+  [[nodiscard]] static constexpr std::optional<pgn_info> info(std::uint32_t pgn) noexcept {
+    std::optional<pgn_info> out;
+    (void)((P::n2k.info.pgn == pgn ? (out = P::n2k.info, true) : false) || ...);
+    return out;
+  }
+  /// The payload length of `pgn` in bytes; 0 when unknown.
+  [[nodiscard]] static constexpr std::size_t length(std::uint32_t pgn) noexcept {
+    std::size_t out = 0;
+    (void)((P::n2k.info.pgn == pgn ? (out = description_of<P>::length, true) : false) || ...);
+    return out;
+  }
+  /// Decodes `payload` as the struct for `pgn` and calls fn with it; false (fn not called) when
+  /// no struct here has that PGN.
+  template <class Fn>
+  static constexpr bool visit(std::uint32_t pgn, std::span<const std::uint8_t> payload, Fn&& fn) {
+    return ((P::n2k.info.pgn == pgn ? (fn(decode<P>(payload)), true) : false) || ...);
+  }
+  /// fn(tag) for every struct, tag being a default-constructed P.
+  template <class Fn>
+  static constexpr void for_each_type(Fn&& fn) {
+    (fn(P{}), ...);
+  }
+};
+
+/// The six PGNs the ANELLO Maritime INS accepts as input.
+using ins_input_pgns =
+    pgn_list<engine_parameters_rapid, engine_parameters_dynamic, speed_water_referenced,
+             distance_log, environmental_parameters, vessel_speed_components>;
+
+}  // namespace seawire::nmea2000
