@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
-// seawire-decode: NMEA-style sentences (and ANELLO 0xAB00 binary frames mixed in) on stdin ->
-// one JSON object per message (or re-encoded messages, CSV tables, a GeoJSON or SVG track, or
-// nothing but a verdict). A thin program over the library: anello::stream_reader cuts the stream
-// into sentences and frames, message_set::visit decodes each sentence by its address,
-// nmea/json.hpp, nmea/csv.hpp and anello/frame_json.hpp write them; track.hpp gathers positions.
-// See --help, and docs/seawire-decode.md for the manual.
+// seawire-decode: NMEA-style sentences (and ANELLO 0xAB00 binary frames mixed in), or a CAN log
+// of NMEA 2000 frames, on stdin -> one JSON object per message (or re-encoded messages, CSV tables,
+// a GeoJSON or SVG track, or nothing but a verdict). A thin program over the library:
+// anello::stream_reader cuts the stream into sentences and frames, message_set::visit decodes each
+// sentence by its address, nmea/json.hpp, nmea/csv.hpp and anello/frame_json.hpp write them;
+// track.hpp gathers positions. A CAN log goes through nmea2000::log_reader (lines, fast packets)
+// and nmea2000/json.hpp. See --help, and docs/seawire-decode.md for the manual.
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -41,6 +42,10 @@
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/writer.hpp"
+#include "seawire/nmea2000/json.hpp"
+#include "seawire/nmea2000/log.hpp"
+#include "seawire/nmea2000/pgns.hpp"
+#include "seawire/nmea2000/reader.hpp"
 #include "seawire/version.hpp"
 #include "track.hpp"
 
@@ -50,13 +55,31 @@ using namespace seawire;
 using seawire::tools::all_messages;
 
 enum class format { json, nmea, none, csv, geojson, svg };
+// What stdin holds: sentences and ANELLO frames, or a CAN log (NMEA 2000); auto: the first line
+// that is not blank decides.
+enum class input { automatic, nmea, n2k };
+
+// The PGNs seawire-decode decodes by name; others come out as their bytes.
+using n2k_pgns = nmea2000::ins_input_pgns;
+// A CAN log line longer than this is no line of any log format (a canboat FAST line of 223
+// bytes has about 700 characters).
+constexpr std::size_t max_log_line = 4096;
+
+// Whether `line` is a CAN log line of a format seawire reads (and not a sentence).
+bool is_can_log_line(std::string_view line) {
+  const std::size_t at = line.find_first_not_of(" \t");
+  if (at == std::string_view::npos || line[at] == '$' || line[at] == '!') return false;
+  return static_cast<bool>(nmea2000::parse_log_line(line));
+}
 
 struct options {
   format fmt = format::json;
+  input in = input::automatic;
   nmea::parse_policy policy;
   bool stats = false;
   bool line_buffered = false;
   bool quiet = false;
+  std::optional<nmea2000::log_format> log_format;  // CAN logs: every line in this format
   std::vector<std::string> types;  // only these types (the JSON "type"); empty: every type
   std::string output_dir;          // --format csv: one <TYPE>.csv per type here
 };
@@ -93,9 +116,20 @@ struct csv_headers<nmea::message_set<Ms...>> {
       anello::write_csv_header(out);
       return true;
     }
+    if (const auto pgn = nmea2000::pgn_of_type(type)) {
+      bool found = false;
+      n2k_pgns::for_each_type([&](const auto& tag) {
+        using P = std::remove_cvref_t<decltype(tag)>;
+        if (P::n2k.info.pgn != *pgn) return;
+        nmea2000::write_csv_header<P>(out);
+        found = true;
+      });
+      return found;
+    }
     return ((Ms::nmea.matches(type) ? (nmea::write_csv_header<Ms>(out), true) : false) || ...);
   }
   static bool knows(std::string_view type) {
+    if (const auto pgn = nmea2000::pgn_of_type(type)) return n2k_pgns::knows(*pgn);
     return type == anello::frame_json_type || (Ms::nmea.matches(type) || ...);
   }
 };
@@ -182,7 +216,7 @@ class progress {
 class decoder {
  public:
   decoder(const options& o, progress& shown)
-      : opt_(o), policy_(o.policy), out_(stdout), progress_(shown) {
+      : opt_(o), policy_(o.policy), out_(stdout), progress_(shown), in_(o.in) {
     // The reader has taken the line ending off: it is checked here, from what the reader saw.
     policy_.require_crlf = false;
     // What the reader drops comes as items of its own, in order with the messages.
@@ -195,11 +229,25 @@ class decoder {
   }
 
   void feed(std::string_view chunk) {
+    if (in_ == input::automatic) {
+      decide(chunk, false);
+      return;
+    }
+    if (in_ == input::n2k) {
+      can_log(chunk);
+      return;
+    }
     reader_.feed(chunk);
     while (const std::optional<anello::stream_item> item = reader_.next()) handle(*item);
   }
 
   void finish() {
+    if (in_ == input::automatic) decide({}, true);
+    if (in_ == input::n2k) {
+      if (!carry_.empty() && !skipping_) can_log_line(carry_);
+      carry_.clear();
+      n2k_.flush();
+    }
     while (const std::optional<anello::stream_item> item = reader_.finish()) handle(*item);
     switch (opt_.fmt) {
       case format::geojson: tracks_.write_geojson(out_); break;
@@ -239,6 +287,8 @@ class decoder {
   [[nodiscard]] bool all_good() const {
     return rejected_ == 0 && !out_.failed() && table_failures_ == 0;
   }
+  // The input cannot be written in the format asked for (a CAN log with --format nmea).
+  [[nodiscard]] bool unusable() const { return unusable_; }
   // stdout failed (the tables' failures are reported as they are found).
   [[nodiscard]] bool stdout_failed() const { return out_.failed(); }
   [[nodiscard]] int stdout_error() const { return out_.error(); }
@@ -276,9 +326,155 @@ class decoder {
         static_cast<unsigned long long>(f.bad_crc_frames),
         static_cast<unsigned long long>(f.bad_length_frames),
         static_cast<unsigned long long>(f.truncated_frames));
+    if (in_ != input::n2k) return;
+    const auto& a = n2k_.assembler();
+    std::fprintf(stderr,
+                 "  CAN log: %llu lines; fast packets: %llu frames, %llu assembled into %llu "
+                 "messages, %llu dropped",
+                 static_cast<unsigned long long>(log_lines_),
+                 static_cast<unsigned long long>(a.frames_in()),
+                 static_cast<unsigned long long>(a.frames_assembled()),
+                 static_cast<unsigned long long>(a.packets()),
+                 static_cast<unsigned long long>(a.frames_dropped()));
+    for (std::size_t i = 0; i < nmea2000::fast_packet_drop_count; ++i) {
+      const auto why = static_cast<nmea2000::fast_packet_drop>(i);
+      if (a.drops(why) == 0) continue;
+      const std::string_view n = name(why);
+      std::fprintf(stderr, "; %.*s %llu", static_cast<int>(n.size()), n.data(),
+                   static_cast<unsigned long long>(a.drops(why)));
+    }
+    std::fputc('\n', stderr);
   }
 
  private:
+  // ---- which input ----
+
+  // Keeps what came until the first line that is not blank, and reads it as that line says:
+  // a CAN log line, or anything else (sentences, binary frames).
+  void decide(std::string_view chunk, bool at_end) {
+    pending_.append(chunk);
+    std::string_view rest = pending_;
+    std::optional<std::string_view> first;
+    while (!rest.empty()) {
+      const std::size_t nl = rest.find('\n');
+      if (nl == std::string_view::npos) {
+        if (at_end || rest.size() > max_log_line) first = rest;
+        break;
+      }
+      const std::string_view line = rest.substr(0, nl);
+      rest.remove_prefix(nl + 1);
+      if (line.find_first_not_of(" \t\r") != std::string_view::npos) {
+        first = line;
+        break;
+      }
+    }
+    if (!first && !at_end) return;
+    in_ = first && is_can_log_line(*first) ? input::n2k : input::nmea;
+    if (in_ == input::n2k && opt_.fmt == format::nmea) {
+      std::fprintf(stderr,
+                   "seawire-decode: the input is a CAN log (NMEA 2000), which has no sentences "
+                   "to re-encode: use --format json (and seawire-encode --output FORMAT to write "
+                   "a log again)\n");
+      unusable_ = true;
+      in_ = input::nmea;
+      pending_.clear();
+      return;
+    }
+    std::string all = std::move(pending_);
+    pending_.clear();
+    if (!all.empty()) feed(all);
+  }
+
+  // ---- a CAN log ----
+
+  void can_log(std::string_view chunk) {
+    while (!chunk.empty()) {
+      const std::size_t nl = chunk.find('\n');
+      const std::string_view piece = chunk.substr(0, nl);
+      if (!skipping_) {
+        if (carry_.size() + piece.size() > max_log_line) {
+          ++log_lines_;
+          reject(log_lines_, errc::too_long, 0,
+                 "a line longer than " + std::to_string(max_log_line) +
+                     " characters is no CAN log line",
+                 carry_.empty() ? piece : std::string_view(carry_));
+          skipping_ = true;
+          carry_.clear();
+        } else if (nl != std::string_view::npos && carry_.empty()) {
+          can_log_line(piece);
+        } else {
+          carry_.append(piece);
+          if (nl != std::string_view::npos) {
+            can_log_line(carry_);
+            carry_.clear();
+          }
+        }
+      }
+      if (nl == std::string_view::npos) break;
+      skipping_ = false;
+      chunk.remove_prefix(nl + 1);
+    }
+  }
+
+  void can_log_line(std::string_view text) {
+    ++log_lines_;
+    const auto r = n2k_.read_line(
+        text,
+        [&](const nmea2000::message_header& h, std::span<const std::uint8_t> payload) {
+          can_message(h, payload);
+        },
+        opt_.log_format);
+    if (r.ec == errc::empty_input || r.ok()) return;
+    std::string detail = std::string(name(r.value));
+    if (r.field != 0) {
+      detail += " ";
+      detail += nmea2000::log_field_name(r.value, r.field);
+      detail += " at column " + std::to_string(r.column + 1);
+    }
+    detail += ": ";
+    detail += r.ec == errc::bad_log_line && r.field == 0 ? "not a line of candump -L, candump, "
+                                                           "canboat or Yacht Devices RAW"
+                                                         : message(r.ec);
+    reject(log_lines_, r.ec, r.field, detail, text);
+  }
+
+  void can_message(const nmea2000::message_header& h, std::span<const std::uint8_t> payload) {
+    char type_buf[16];
+    const int n =
+        std::snprintf(type_buf, sizeof type_buf, "PGN%u", static_cast<unsigned>(h.id.pgn));
+    const std::string_view type(type_buf, static_cast<std::size_t>(n));
+    if (!wanted(type)) return;
+    const bool known = n2k_pgns::visit(h.id.pgn, payload, [&](const auto& msg) {
+      using P = std::remove_cvref_t<decltype(msg)>;
+      switch (opt_.fmt) {
+        case format::json:
+          nmea2000::write_json(out_, h, msg);
+          out_.put('\n');
+          break;
+        case format::csv:
+          if (csv_table* t = table(type)) {
+            if (!t->header) nmea2000::write_csv_header<P>(*t->out);
+            t->header = true;
+            nmea2000::write_csv(*t->out, h, msg);
+            if (opt_.line_buffered) t->out->flush();
+          }
+          break;
+        default: break;  // none; no PGN here has a position for geojson or svg
+      }
+    });
+    if (!known) {
+      if (opt_.fmt == format::json) {
+        nmea2000::write_json_raw(out_, h, payload);
+        out_.put('\n');
+      } else if (opt_.fmt == format::csv) {
+        ++not_tabled_[std::string(type)];
+      }
+    }
+    ++decoded_;
+    if (opt_.stats) ++by_type_[std::string(type)];
+    if (opt_.line_buffered) out_.flush();
+  }
+
   void handle(const anello::stream_item& item) {
     switch (item.kind) {
       case anello::stream_item_kind::sentence: sentence(item.sentence); break;
@@ -597,6 +793,13 @@ class decoder {
   progress& progress_;
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
+  input in_;
+  std::string pending_;  // input kept until the first line says what it is
+  bool unusable_ = false;
+  nmea2000::log_reader<n2k_pgns> n2k_;
+  std::string carry_;      // a CAN log line cut by the chunk boundary
+  bool skipping_ = false;  // inside an overlong line, until its end
+  std::uint64_t log_lines_ = 0;
   std::uint64_t decoded_ = 0;
   std::uint64_t rejected_ = 0;
   std::uint64_t reencode_failures_ = 0;
@@ -634,6 +837,7 @@ int run(const options& o) {
   }
   shown.done();
   d.finish();
+  if (d.unusable()) return 2;
   if (o.stats) d.print_stats();
   if (in.failed()) {
     std::perror("seawire-decode: reading stdin");
@@ -652,7 +856,9 @@ int main(int argc, char** argv) {
   CLI::App app{
       "seawire-decode: decode NMEA-style sentences (Kingfisher CP*/PY*, Sandshark BF*/BP*, "
       "RobotX RX*, ANELLO inputs, standard RMC/GGA/RPM/RSA/VHW/VBW/VWR) and ANELLO 0xAB00 "
-      "binary frames (\"type\":\"AB00\") read from stdin.\n"
+      "binary frames (\"type\":\"AB00\") read from stdin, or a CAN log of NMEA 2000 frames "
+      "(\"type\":\"PGN128259\"; candump -L, candump, canboat, Yacht Devices RAW; fast "
+      "packets assembled).\n"
       "Writes one JSON object per message, one per line, in input order; a rejected line gives\n"
       "{\"line\":N,\"error\":\"<errc>\",\"field\":K,\"detail\":\"...\",\"input\":\"...\"}.\n\n"
       "Examples:\n"
@@ -662,6 +868,7 @@ int main(int argc, char** argv) {
       "  seawire-decode --format svg < mission.nmea > track.svg           # open in a browser\n"
       "  seawire-decode --format none --stats < mission.nmea      # check a log\n"
       "  seawire-decode --format nmea < raw.nmea > clean.nmea     # canonical sentences only\n"
+      "  candump -L can0 | seawire-decode --line-buffered         # NMEA 2000 from a CAN bus\n"
       "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error.",
       "seawire-decode"};
   std::string fmt = "json";
@@ -684,6 +891,18 @@ int main(int argc, char** argv) {
       "-o,--output-dir", o.output_dir,
       "with --format csv: write each type's table to DIR/<TYPE>.csv (created, or replaced), "
       "stdout unused (e.g. --format csv --output-dir tables)");
+  std::string in = "auto";
+  std::string log_format;
+  app.add_option("-i,--input", in,
+                 "what stdin holds: nmea (sentences and ANELLO binary frames), n2k (a CAN log of "
+                 "NMEA 2000 frames: candump -L, candump, canboat PLAIN/FAST or Yacht Devices RAW, "
+                 "told apart line by line), or auto (default: the first line that is not blank "
+                 "decides; e.g. --input n2k)")
+      ->check(CLI::IsMember({"auto", "nmea", "n2k"}));
+  app.add_option("--log-format", log_format,
+                 "read every line of the CAN log in this format rather than telling them apart: "
+                 "candump_log, candump, canboat or yd_raw (implies --input n2k)")
+      ->check(CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw"}));
   app.add_flag("-q,--quiet", o.quiet,
                "no progress line (shown on stderr when it is a terminal and stdin a file)");
   CLI::Option* checksum_opt =
@@ -724,6 +943,17 @@ int main(int argc, char** argv) {
           : fmt == "geojson" ? format::geojson
           : fmt == "svg"     ? format::svg
                              : format::json;
+  o.in = in == "nmea" ? input::nmea : in == "n2k" ? input::n2k : input::automatic;
+  if (!log_format.empty()) {
+    o.log_format = nmea2000::log_format_named(log_format);
+    if (o.in == input::automatic) o.in = input::n2k;
+  }
+  if (o.in == input::n2k && o.fmt == format::nmea) {
+    std::fprintf(stderr,
+                 "seawire-decode: --format nmea re-encodes sentences; a CAN log has none (use "
+                 "seawire-encode --output FORMAT to write a log again)\n");
+    return 2;
+  }
   if (dir_opt->count() > 0 && o.output_dir.empty()) {
     std::fprintf(stderr, "seawire-decode: --output-dir needs a directory (e.g. --output-dir .)\n");
     return 2;

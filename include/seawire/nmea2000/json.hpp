@@ -63,14 +63,14 @@ struct message_header {
 
 namespace detail {
 
-template <json_sink Sink>
+template <nmea::json_style Style, json_sink Sink>
 constexpr void json_state(Sink& s, field_state st) noexcept {
   if (st == field_state::not_available) {
     s.put("null");
   } else {
-    s.put('"');
+    if constexpr (Style == nmea::json_style::json) s.put('"');
     s.put(name(st));
-    s.put('"');
+    if constexpr (Style == nmea::json_style::json) s.put('"');
   }
 }
 
@@ -103,6 +103,20 @@ constexpr void json_int(Sink& s, std::int64_t v) noexcept {
   if (v < 0) s.put('-');
   nmea::detail::json_uint(
       s, v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v));
+}
+
+/// Microseconds as seconds: 3 fraction digits, or 6 when the time has microseconds.
+template <json_sink Sink>
+constexpr void json_seconds(Sink& s, std::int64_t t) noexcept {
+  if (t < 0) s.put('-');
+  const std::uint64_t m = t < 0 ? 0 - static_cast<std::uint64_t>(t) : static_cast<std::uint64_t>(t);
+  nmea::detail::json_uint(s, m / 1'000'000);
+  s.put('.');
+  if (m % 1000 == 0) {
+    nmea::detail::json_uint(s, m % 1'000'000 / 1000, 3);
+  } else {
+    nmea::detail::json_uint(s, m % 1'000'000, 6);
+  }
 }
 
 template <nmea::json_style Style, json_sink Sink>
@@ -138,7 +152,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
     return;
   } else {
     if (!v.has_value()) {
-      detail::json_state(s, v.state());
+      detail::json_state<Style>(s, v.state());
       return;
     }
     if constexpr (detail::is_number<T>::value) {
@@ -184,17 +198,7 @@ constexpr void write_json_header(Sink& s, const message_header& h) noexcept {
   s.put('"');
   if (h.time_us) {
     s.put(",\"time_s\":");
-    const std::int64_t t = *h.time_us;
-    if (t < 0) s.put('-');
-    const std::uint64_t m =
-        t < 0 ? 0 - static_cast<std::uint64_t>(t) : static_cast<std::uint64_t>(t);
-    json_uint(s, m / 1'000'000);
-    s.put('.');
-    if (m % 1000 == 0) {
-      json_uint(s, m % 1'000'000 / 1000, 3);
-    } else {
-      json_uint(s, m % 1'000'000, 6);
-    }
+    detail::json_seconds(s, *h.time_us);
   }
   if (h.interface.size() != 0) {
     s.put(",\"interface\":");
@@ -466,6 +470,53 @@ template <class Lookup>
   if (!is_addressed(pgn) && r.value.id.destination != broadcast_address)
     return fail(errc::bad_can_id, 6);
   return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// CSV: one table per PGN, columns time_s, prio, src, dst, then the fields; cells as in JSON
+// without quotes, empty for not available and no time, flags joined by ';'.
+
+/// The header row of P's table, ending in LF.
+template <pgn_like P, json_sink Sink>
+constexpr void write_csv_header(Sink& s) noexcept {
+  s.put("time_s,prio,src,dst");
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    if constexpr (!std::remove_cvref_t<decltype(f)>::is_reserved) {
+      s.put(',');
+      s.put(f.name);
+    }
+  });
+  s.put('\n');
+}
+
+/// One row of P's table, ending in LF.
+template <json_sink Sink, pgn_like P>
+constexpr void write_csv(Sink& s, const message_header& h, const P& msg) noexcept {
+  using nmea::detail::json_uint;
+  if (h.time_us) detail::json_seconds(s, *h.time_us);
+  s.put(',');
+  json_uint(s, h.id.priority);
+  s.put(',');
+  json_uint(s, h.id.source);
+  s.put(',');
+  json_uint(s, h.id.destination);
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      s.put(',');
+      const auto& v = msg.*F::member;
+      if constexpr (detail::is_flags<typename F::value_type>::value) {
+        nmea::json_buffer<512> cell;
+        write_json_value<nmea::json_style::plain>(cell, v);
+        std::string_view c = cell.view();  // [a,b]
+        c = c.substr(1, c.size() - 2);
+        for (const char ch : c) s.put(ch == ',' ? ';' : ch);
+      } else if (v.state() != field_state::not_available) {
+        write_json_value<nmea::json_style::plain>(s, v);
+      }
+    }
+  });
+  s.put('\n');
 }
 
 }  // namespace seawire::nmea2000
