@@ -1,0 +1,732 @@
+# SPDX-License-Identifier: BSL-1.0
+"""seawire-decode on CAN logs of NMEA 2000 traffic, checked against independent decoders.
+
+    n2k_test.py <seawire-decode> <tests/data/n2k> <case>
+
+canboat  every NN_*.in decoded, each message compared with canboat's analyzer output for the
+         same input (NN_*.out.json, analyzer -json -si -camel -empty): header, time, and every
+         field through the mapping table below.
+layout   a decoder written here from the bit layouts of docs N2K.md (sections 1-7 and 10-11),
+         not from the library: it parses the log lines, reassembles fast packets and decodes
+         the six PGNs itself, and must agree with seawire-decode value for value.
+errors   malformed lines among good ones: one error object per bad line, the good lines still
+         decoded, exit status 1, fast-packet drops counted by --stats; --input and --log-format.
+"""
+
+import calendar
+import datetime
+import glob
+import json
+import os
+import re
+import subprocess
+import sys
+from decimal import Decimal
+
+DECODE, DATA, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+failures = []
+compared = 0  # values compared, reported at the end
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAIL:", what, file=sys.stderr)
+    return ok
+
+
+def run(args, data, want_rc=None):
+    p = subprocess.run([DECODE] + args, input=data, capture_output=True, timeout=60)
+    if want_rc is not None:
+        check(p.returncode == want_rc,
+              f"{args}: exit status {p.returncode}, expected {want_rc}: {p.stderr[:300]!r}")
+    return p
+
+
+def exact(text):
+    """JSON with every fractional number as a Decimal, so values compare digit for digit."""
+    return json.loads(text, parse_float=Decimal)
+
+
+def vectors():
+    names = sorted(glob.glob(os.path.join(DATA, "[0-9][0-9]_*.in")))
+    check(len(names) >= 10, f"only {len(names)} test vectors in {DATA}")
+    return names
+
+
+def decode_file(path, args=()):
+    with open(path, "rb") as f:
+        p = run(list(args), f.read())
+    check(p.returncode == 0, f"{os.path.basename(path)}: exit status {p.returncode}: "
+          f"{p.stdout[:300]!r} {p.stderr[:300]!r}")
+    return [exact(line) for line in p.stdout.decode().splitlines()]
+
+
+def is_number(v):
+    return isinstance(v, (int, Decimal)) and not isinstance(v, bool)
+
+
+NULLS = (None, "out_of_range", "reserved")  # all shown as null by canboat -empty
+META = {"type", "time_s", "interface", "direction", "prio", "src", "dst"}
+FAST_PACKET = {127489, 128275, 130578}
+
+
+# ---------------------------------------------------------------------------------------------
+# Lookup and flag names: ours (snake_case) -> canboat's display names. Written here, not taken
+# from the library, so a renamed value shows up as a failure.
+
+ENGINE_INSTANCE = {0: "Single Engine or Dual Engine Port", 1: "Dual Engine Starboard"}
+WATER_REFERENCE = {"paddle_wheel": "Paddle wheel", "pitot_tube": "Pitot tube",
+                   "doppler": "Doppler", "correlation": "Correlation (ultra sound)",
+                   "electro_magnetic": "Electro Magnetic"}
+TEMPERATURE_SOURCE = {
+    "sea": "Sea Temperature", "outside": "Outside Temperature",
+    "inside": "Inside Temperature", "engine_room": "Engine Room Temperature",
+    "main_cabin": "Main Cabin Temperature", "live_well": "Live Well Temperature",
+    "bait_well": "Bait Well Temperature", "refrigeration": "Refrigeration Temperature",
+    "heating_system": "Heating System Temperature", "dew_point": "Dew Point Temperature",
+    "apparent_wind_chill": "Apparent Wind Chill Temperature",
+    "theoretical_wind_chill": "Theoretical Wind Chill Temperature",
+    "heat_index": "Heat Index Temperature", "freezer": "Freezer Temperature",
+    "exhaust_gas": "Exhaust Gas Temperature", "shaft_seal": "Shaft Seal Temperature"}
+HUMIDITY_SOURCE = {"inside": "Inside", "outside": "Outside"}
+ENGINE_STATUS_1 = {
+    "check_engine": "Check Engine", "over_temperature": "Over Temperature",
+    "low_oil_pressure": "Low Oil Pressure", "low_oil_level": "Low Oil Level",
+    "low_fuel_pressure": "Low Fuel Pressure", "low_system_voltage": "Low System Voltage",
+    "low_coolant_level": "Low Coolant Level", "water_flow": "Water Flow",
+    "water_in_fuel": "Water In Fuel", "charge_indicator": "Charge Indicator",
+    "preheat_indicator": "Preheat Indicator", "high_boost_pressure": "High Boost Pressure",
+    "rev_limit_exceeded": "Rev Limit Exceeded", "egr_system": "EGR System",
+    "throttle_position_sensor": "Throttle Position Sensor", "emergency_stop": "Emergency Stop"}
+ENGINE_STATUS_2 = {
+    "warning_level_1": "Warning Level 1", "warning_level_2": "Warning Level 2",
+    "power_reduction": "Power Reduction", "maintenance_needed": "Maintenance Needed",
+    "engine_comm_error": "Engine Comm Error",
+    "sub_or_secondary_throttle": "Sub or Secondary Throttle",
+    "neutral_start_protect": "Neutral Start Protect",
+    "engine_shutting_down": "Engine Shutting Down"}
+
+
+# ---------------------------------------------------------------------------------------------
+# canboat: converters. Each takes (ours, canboat's) and returns None when they agree, else why
+# not.
+
+def null_rule(ours, theirs):
+    """canboat -empty prints null for not available, out of range and reserved alike."""
+    if theirs is None:
+        return None if ours in NULLS or ours == [] else "canboat null, ours a value"
+    if ours in NULLS:
+        return "ours null/sentinel, canboat a value"
+    return "continue"
+
+
+def num(resolution):
+    half = Decimal(resolution) / 2
+
+    def cmp(ours, theirs):
+        r = null_rule(ours, theirs)
+        if r != "continue":
+            return r
+        if not is_number(ours) or not is_number(theirs):
+            return "not both numbers"
+        if abs(Decimal(ours) - Decimal(theirs)) > half:
+            return f"differ by more than half the resolution {resolution}"
+        return None
+    return cmp
+
+
+def lookup(names):
+    """ours: a snake_case name, or the number when unnamed; canboat: its display name."""
+    def cmp(ours, theirs):
+        r = null_rule(ours, theirs)
+        if r != "continue":
+            return r
+        want = names.get(ours, ours if is_number(ours) else f"<no canboat name for {ours!r}>")
+        return None if want == theirs else f"expected canboat {want!r}"
+    return cmp
+
+
+def flag_set(names):
+    """ours: array of names (bit_N when unnamed); canboat: array of display names, null when no
+    bit is set. No vector sets an unnamed bit; such a bit is expected as its number."""
+    def cmp(ours, theirs):
+        if not isinstance(ours, list):
+            return "ours not an array"
+        if theirs is None:
+            return None if ours == [] else "canboat null (no bit set), ours has bits"
+        want = []
+        for n in ours:
+            m = re.fullmatch(r"bit_(\d+)", n)
+            want.append(int(m.group(1)) if m else names.get(n, f"<no canboat name for {n!r}>"))
+        return None if want == theirs else f"expected canboat {want!r}"
+    return cmp
+
+
+def hms_seconds(text):
+    h, m, s = text.split(":")
+    return int(h) * 3600 + int(m) * 60 + Decimal(s)
+
+
+def hours(ours, theirs):
+    """totalEngineHours: canboat "hhhh:mm:ss" text; ours seconds (resolution 1 s)."""
+    r = null_rule(ours, theirs)
+    if r != "continue":
+        return r
+    if not is_number(ours):
+        return "ours not a number"
+    return None if hms_seconds(theirs) == ours else f"canboat {hms_seconds(theirs)} s"
+
+
+def date(ours, theirs):
+    """canboat "2024.07.03"; ours "2024-07-03"."""
+    r = null_rule(ours, theirs)
+    if r != "continue":
+        return r
+    return None if theirs.replace(".", "-") == ours else "dates differ"
+
+
+def time_of_day(ours, theirs):
+    """Both "hh:mm:ss.ffff"; equal within half of the 0.0001 s resolution."""
+    r = null_rule(ours, theirs)
+    if r != "continue":
+        return r
+    if abs(hms_seconds(ours) - hms_seconds(theirs)) > Decimal("0.00005"):
+        return "times differ"
+    return None
+
+
+def same(ours, theirs):
+    r = null_rule(ours, theirs)
+    return r if r != "continue" else (None if ours == theirs else "differ")
+
+
+# Per PGN: our field -> (canboat field, converter). Resolutions are N2K.md's (sections 2-7).
+CANBOAT_FIELDS = {
+    127488: {
+        "instance": ("instance", lookup(ENGINE_INSTANCE)),
+        "speed_rpm": ("speed", num("0.25")),
+        "boost_pressure_pa": ("boostPressure", num("100")),
+        "tilt_trim_pct": ("tiltTrim", num("1")),
+    },
+    127489: {
+        "instance": ("instance", lookup(ENGINE_INSTANCE)),
+        "oil_pressure_pa": ("oilPressure", num("100")),
+        "oil_temperature_k": ("oilTemperature", num("0.1")),
+        "temperature_k": ("temperature", num("0.01")),
+        "alternator_potential_v": ("alternatorPotential", num("0.01")),
+        "fuel_rate_lph": ("fuelRate", num("0.1")),
+        "total_engine_hours_s": ("totalEngineHours", hours),
+        "coolant_pressure_pa": ("coolantPressure", num("100")),
+        "fuel_pressure_pa": ("fuelPressure", num("1000")),
+        "discrete_status_1": ("discreteStatus1", flag_set(ENGINE_STATUS_1)),
+        "discrete_status_2": ("discreteStatus2", flag_set(ENGINE_STATUS_2)),
+        "engine_load_pct": ("engineLoad", num("1")),
+        "engine_torque_pct": ("engineTorque", num("1")),
+    },
+    128259: {
+        "sid": ("sid", num("1")),
+        "speed_water_mps": ("speedWaterReferenced", num("0.01")),
+        "speed_ground_mps": ("speedGroundReferenced", num("0.01")),
+        "speed_type": ("speedWaterReferencedType", lookup(WATER_REFERENCE)),
+        "speed_direction": ("speedDirection", num("1")),
+    },
+    128275: {
+        "date": ("date", date),
+        "time": ("time", time_of_day),
+        "log_m": ("log", num("1")),
+        "trip_log_m": ("tripLog", num("1")),
+    },
+    130311: {
+        "sid": ("sid", num("1")),
+        "temperature_source": ("temperatureSource", lookup(TEMPERATURE_SOURCE)),
+        "humidity_source": ("humiditySource", lookup(HUMIDITY_SOURCE)),
+        "temperature_k": ("temperature", num("0.01")),
+        "humidity_pct": ("humidity", num("0.004")),
+        "atmospheric_pressure_pa": ("atmosphericPressure", num("100")),
+    },
+    130578: {
+        "longitudinal_water_mps": ("longitudinalSpeedWaterReferenced", num("0.001")),
+        "transverse_water_mps": ("transverseSpeedWaterReferenced", num("0.001")),
+        "longitudinal_ground_mps": ("longitudinalSpeedGroundReferenced", num("0.001")),
+        "transverse_ground_mps": ("transverseSpeedGroundReferenced", num("0.001")),
+        "stern_water_mps": ("sternSpeedWaterReferenced", num("0.001")),
+        "stern_ground_mps": ("sternSpeedGroundReferenced", num("0.001")),
+    },
+}
+# canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones;
+# seawire ignores reserved bits on receive (N2K.md section 1), so it has no such field.
+CANBOAT_IGNORED = {"reserved"}
+
+
+# ---------------------------------------------------------------------------------------------
+# Log lines, parsed here (N2K.md section 11).
+
+CANDUMP_LOG = re.compile(r"\((\d+\.\d+)\)\s+(\S+)\s+([0-9A-Fa-f]{8})#([0-9A-Fa-f]*)")
+CANDUMP = re.compile(r"\s*(\S+)\s+([0-9A-Fa-f]{8})\s+\[(\d)\]((?:\s+[0-9A-Fa-f]{2})*)\s*")
+YD_RAW = re.compile(r"(\d\d):(\d\d):(\d\d(?:\.\d+)?)\s+([RT])\s+([0-9A-Fa-f]{8})"
+                    r"((?:\s+[0-9A-Fa-f]{2}){1,8})\s*")
+ISO = re.compile(r"(\d{4})-(\d\d)-(\d\d)[T-](\d\d):(\d\d):(\d\d)(\.\d+)?(Z|[+-]\d\d:?\d\d)?")
+
+
+def line_format(line):
+    if CANDUMP_LOG.fullmatch(line):
+        return "candump_log"
+    if YD_RAW.fullmatch(line):
+        return "yd_raw"
+    if CANDUMP.fullmatch(line):
+        return "candump"
+    return "canboat"
+
+
+def iso_seconds(text):
+    """A canboat timestamp as Unix seconds (Decimal) and whether it named its zone offset
+    other than Z; None when it is not of a known ISO form. No zone means UTC."""
+    m = ISO.fullmatch(text)
+    if not m:
+        return None, False
+    y, mo, d, h, mi, s, frac, zone = m.groups()
+    t = Decimal(calendar.timegm((int(y), int(mo), int(d), int(h), int(mi), int(s))))
+    if frac:
+        t += Decimal("0" + frac)
+    offset = bool(zone and zone != "Z")
+    if offset:
+        sign = -1 if zone[0] == "-" else 1
+        hh, mm = int(zone[1:3]), int(zone[-2:])
+        t -= sign * (hh * 3600 + mm * 60)
+    return t, offset
+
+
+def split_id(can_id):
+    """prio, pgn, src, dst of a 29-bit identifier (N2K.md section 9)."""
+    prio = (can_id >> 26) & 7
+    dp = (can_id >> 24) & 3
+    pf = (can_id >> 16) & 0xFF
+    ps = (can_id >> 8) & 0xFF
+    src = can_id & 0xFF
+    if pf < 240:
+        return prio, (dp << 16) | (pf << 8), src, ps
+    return prio, (dp << 16) | (pf << 8) | ps, src, 255
+
+
+def parse_line(line):
+    """One log line as a frame dict: prio, pgn, src, dst, data (bytes), time (Decimal or None),
+    plus interface/direction, and whether it is already a whole message (canboat FAST)."""
+    m = CANDUMP_LOG.fullmatch(line)
+    if m:
+        prio, pgn, src, dst = split_id(int(m.group(3), 16))
+        return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(4)),
+                    time=Decimal(m.group(1)), extra={"interface": m.group(2)}, whole=False)
+    m = YD_RAW.fullmatch(line)
+    if m:
+        prio, pgn, src, dst = split_id(int(m.group(5), 16))
+        t = int(m.group(1)) * 3600 + int(m.group(2)) * 60 + Decimal(m.group(3))
+        return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(6)),
+                    time=t, extra={"direction": m.group(4)}, whole=False)
+    m = CANDUMP.fullmatch(line)
+    if m:
+        prio, pgn, src, dst = split_id(int(m.group(2), 16))
+        return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(4)),
+                    time=None, extra={"interface": m.group(1)}, whole=False)
+    parts = line.split(",")
+    ts, prio, pgn, src, dst, n = parts[:6]
+    data = bytes(int(x, 16) for x in parts[6:])
+    assert len(data) == int(n), line
+    return dict(prio=int(prio), pgn=int(pgn), src=int(src), dst=int(dst), data=data,
+                time=iso_seconds(ts)[0], extra={}, whole=len(data) > 8)
+
+
+def messages(lines):
+    """Whole messages from log lines: single frames as they are, fast packets reassembled
+    (N2K.md section 10: byte 0 = sequence << 5 | frame, frame 0 byte 1 = length), each with
+    the time of the frame that completed it."""
+    out = []
+    partial = {}  # (src, pgn) -> [sequence, length, next frame, payload]
+    for line in lines:
+        f = parse_line(line)
+        if f["pgn"] not in FAST_PACKET or f["whole"]:
+            out.append(f)
+            continue
+        d = f["data"]
+        seq, frame = d[0] >> 5, d[0] & 0x1F
+        key = (f["src"], f["pgn"])
+        if frame == 0:
+            partial[key] = [seq, d[1], 1, bytearray(d[2:])]
+        else:
+            p = partial.get(key)
+            if p is None or p[0] != seq or p[2] != frame:
+                partial.pop(key, None)
+                continue
+            p[2] += 1
+            p[3] += d[1:]
+        p = partial[key]
+        if len(p[3]) >= p[1]:
+            del partial[key]
+            out.append(dict(f, data=bytes(p[3][:p[1]])))
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# The bit layouts, by hand from N2K.md sections 2-7: (our name, bit offset, bits, kind, arg).
+# Kinds: u/s = unsigned/signed number with resolution arg; lookup = names by value (arg);
+# flags = bit names (arg, by bit number); date = days since 1970; time = 0.0001 s since
+# midnight. Reserved bits are left out (ignored on receive).
+
+U, S = "u", "s"
+L_WATER = ["paddle_wheel", "pitot_tube", "doppler", "correlation", "electro_magnetic"]
+L_TEMP = ["sea", "outside", "inside", "engine_room", "main_cabin", "live_well", "bait_well",
+          "refrigeration", "heating_system", "dew_point", "apparent_wind_chill",
+          "theoretical_wind_chill", "heat_index", "freezer", "exhaust_gas", "shaft_seal"]
+L_HUM = ["inside", "outside"]
+F_STATUS_1 = ["check_engine", "over_temperature", "low_oil_pressure", "low_oil_level",
+              "low_fuel_pressure", "low_system_voltage", "low_coolant_level", "water_flow",
+              "water_in_fuel", "charge_indicator", "preheat_indicator", "high_boost_pressure",
+              "rev_limit_exceeded", "egr_system", "throttle_position_sensor", "emergency_stop"]
+F_STATUS_2 = ["warning_level_1", "warning_level_2", "power_reduction", "maintenance_needed",
+              "engine_comm_error", "sub_or_secondary_throttle", "neutral_start_protect",
+              "engine_shutting_down"]  # bits 8-15 unnamed: bit_8 ... bit_15
+
+LAYOUT = {
+    127488: [("instance", 0, 8, U, "1"),
+             ("speed_rpm", 8, 16, U, "0.25"),
+             ("boost_pressure_pa", 24, 16, U, "100"),
+             ("tilt_trim_pct", 40, 8, S, "1")],
+    127489: [("instance", 0, 8, U, "1"),
+             ("oil_pressure_pa", 8, 16, U, "100"),
+             ("oil_temperature_k", 24, 16, U, "0.1"),
+             ("temperature_k", 40, 16, U, "0.01"),
+             ("alternator_potential_v", 56, 16, S, "0.01"),
+             ("fuel_rate_lph", 72, 16, S, "0.1"),
+             ("total_engine_hours_s", 88, 32, U, "1"),
+             ("coolant_pressure_pa", 120, 16, U, "100"),
+             ("fuel_pressure_pa", 136, 16, U, "1000"),
+             ("discrete_status_1", 160, 16, "flags", F_STATUS_1),
+             ("discrete_status_2", 176, 16, "flags", F_STATUS_2),
+             ("engine_load_pct", 192, 8, S, "1"),
+             ("engine_torque_pct", 200, 8, S, "1")],
+    128259: [("sid", 0, 8, U, "1"),
+             ("speed_water_mps", 8, 16, U, "0.01"),
+             ("speed_ground_mps", 24, 16, U, "0.01"),
+             ("speed_type", 40, 8, "lookup", L_WATER),
+             ("speed_direction", 48, 4, U, "1")],
+    128275: [("date", 0, 16, "date", None),
+             ("time", 16, 32, "time", None),
+             ("log_m", 48, 32, U, "1"),
+             ("trip_log_m", 80, 32, U, "1")],
+    130311: [("sid", 0, 8, U, "1"),
+             ("temperature_source", 8, 6, "lookup", L_TEMP),
+             ("humidity_source", 14, 2, "lookup", L_HUM),
+             ("temperature_k", 16, 16, U, "0.01"),
+             ("humidity_pct", 32, 16, S, "0.004"),
+             ("atmospheric_pressure_pa", 48, 16, U, "100")],
+    130578: [("longitudinal_water_mps", 0, 16, S, "0.001"),
+             ("transverse_water_mps", 16, 16, S, "0.001"),
+             ("longitudinal_ground_mps", 32, 16, S, "0.001"),
+             ("transverse_ground_mps", 48, 16, S, "0.001"),
+             ("stern_water_mps", 64, 16, S, "0.001"),
+             ("stern_ground_mps", 80, 16, S, "0.001")],
+}
+
+
+def bits(data, offset, width):
+    """Bit `offset` is bit offset % 8 of byte offset / 8, LSB first; fields little-endian."""
+    return (int.from_bytes(data, "little") >> offset) & ((1 << width) - 1)
+
+
+def sentinel(raw, width, signed):
+    """N2K.md section 1: the top of the range. Unsigned: all ones = n/a, -1 = out of range
+    (4 bits and more), -2 = reserved (8 bits and more). Signed (all 8 bits or more here): the
+    largest positive value = n/a, -1 out of range, -2 reserved. Else None (a plain value)."""
+    top = (1 << (width - 1)) - 1 if signed else (1 << width) - 1
+    if raw == top:
+        return "n/a"
+    if raw == top - 1 and (signed or width >= 4):
+        return "out_of_range"
+    if raw == top - 2 and (signed or width >= 8):
+        return "reserved"
+    return None
+
+
+def field_value(data, offset, width, kind, arg):
+    if offset + width > len(data) * 8:
+        return None  # not sent (a short payload)
+    raw = bits(data, offset, width)
+    if kind == "flags":  # no sentinel: every bit is a flag
+        return [arg[b] if b < len(arg) else f"bit_{b}" for b in range(width) if raw >> b & 1]
+    signed = kind == S
+    if signed and raw >> (width - 1):
+        raw -= 1 << width
+    special = sentinel(raw, width, signed)
+    if special:
+        return None if special == "n/a" else special
+    if kind in (U, S):
+        return raw * Decimal(arg)
+    if kind == "lookup":
+        return arg[raw] if raw < len(arg) else raw
+    if kind == "date":
+        return (datetime.date(1970, 1, 1) + datetime.timedelta(days=raw)).isoformat()
+    if kind == "time":
+        s, frac = divmod(raw, 10000)
+        return f"{s // 3600:02d}:{s // 60 % 60:02d}:{s % 60:02d}.{frac:04d}"
+    raise ValueError(kind)
+
+
+# Edge values not in the vectors, run through both decoders in the layout case: every sentinel
+# of every field width, the largest plain values, unnamed lookup values and flag bits.
+LAYOUT_EXTRA = b"""\
+2024-07-03T15:42:58.000Z,2,128259,35,255,8,fd,fd,ff,fc,ff,fd,fd,ff
+2024-07-03T15:42:58.000Z,2,128259,35,255,8,fc,fc,ff,00,80,07,0d,ff
+2024-07-03T15:42:58.000Z,2,128259,35,255,8,fe,fc,ff,fe,ff,04,0e,ff
+2024-07-03T15:42:58.000Z,2,127488,35,255,8,fd,fd,ff,fc,ff,7d,ff,ff
+2024-07-03T15:42:58.000Z,2,127488,35,255,8,fe,fd,ff,fc,ff,81,ff,ff
+2024-07-03T15:42:58.000Z,5,130311,35,255,8,fe,be,fd,ff,fd,7f,fd,ff
+2024-07-03T15:42:58.000Z,5,130311,35,255,8,fd,bd,00,00,00,80,00,00
+2024-07-03T15:42:58.000Z,5,130311,35,255,8,fc,50,fc,ff,fc,7f,fc,ff
+2024-07-03T15:42:58.000Z,5,130311,35,255,8,00,0f,01,00,01,00,01,00
+2024-07-03T15:42:58.000Z,2,127489,35,255,26,fd,fd,ff,fd,ff,fd,ff,fd,7f,fd,7f,fd,ff,ff,ff,fd,ff,fd,ff,00,ff,ff,ff,ff,7d,80
+2024-07-03T15:42:58.000Z,2,127489,35,255,26,fe,fe,ff,fe,ff,fe,ff,fe,7f,fe,7f,fe,ff,ff,ff,fe,ff,fe,ff,ff,00,00,00,ff,7e,7e
+2024-07-03T15:42:58.000Z,2,127489,35,255,26,fc,fc,ff,fc,ff,fc,ff,01,80,fc,7f,fc,ff,ff,ff,fc,ff,fc,ff,ff,01,80,81,00,7c,81
+2024-07-03T15:42:58.000Z,6,128275,35,255,14,fd,ff,fd,ff,ff,ff,00,00,00,00,fc,ff,ff,ff
+2024-07-03T15:42:58.000Z,6,128275,35,255,14,fc,ff,10,5c,26,05,01,00,00,00,fc,ff,ff,ff
+2024-07-03T15:42:58.000Z,6,128275,35,255,14,00,00,00,00,00,00,fe,ff,ff,ff,00,00,00,00
+2024-07-03T15:42:58.000Z,2,130578,35,255,12,fd,7f,fc,7f,00,80,01,80,fe,7f,00,00
+"""
+
+
+def compare_layout(where, ours, want):
+    """ours: seawire-decode's JSON object; want: a message decoded here."""
+    global compared
+    pgn = want["pgn"]
+    check(ours.get("type") == f"PGN{pgn}", f"{where}: type {ours.get('type')!r}, PGN {pgn}")
+    for k in ("prio", "src", "dst"):
+        compared += 1
+        check(ours.get(k) == want[k], f"{where}: {k} {ours.get(k)!r}, expected {want[k]!r}")
+    for k, v in want["extra"].items():
+        compared += 1
+        check(ours.get(k) == v, f"{where}: {k} {ours.get(k)!r}, expected {v!r}")
+    if want["time"] is None:
+        check("time_s" not in ours, f"{where}: time_s {ours.get('time_s')} without a log time")
+    else:
+        compared += 1
+        # The log's time to the microsecond (seawire keeps microseconds; canboat lines may
+        # carry nanoseconds).
+        got = ours.get("time_s")
+        check(is_number(got) and abs(Decimal(got) - want["time"]) < Decimal("0.000001"),
+              f"{where}: time_s {got}, expected {want['time']}")
+    layout = LAYOUT[pgn]
+    names = {f[0] for f in layout}
+    check(set(ours) - META == names, f"{where}: fields {sorted(set(ours) - META)}, "
+          f"expected {sorted(names)}")
+    for name, offset, width, kind, arg in layout:
+        compared += 1
+        expected = field_value(want["data"], offset, width, kind, arg)
+        got = ours.get(name, "<missing>")
+        if is_number(expected):
+            ok = is_number(got) and Decimal(got) == expected
+        else:
+            ok = got == expected
+        check(ok, f"{where}: {name} = {got!r}, expected {expected!r} "
+              f"(bits {offset}+{width} of {want['data'].hex()})")
+
+
+def case_layout():
+    inputs = [(os.path.basename(p), open(p, "rb").read()) for p in vectors()]
+    inputs.append(("edge values", LAYOUT_EXTRA))
+    for name, data in inputs:
+        lines = [l for l in data.decode().splitlines() if l.strip()]
+        want = [m for m in messages(lines) if m["pgn"] in LAYOUT]
+        p = run([], data, 0)
+        ours = [exact(l) for l in p.stdout.decode().splitlines()]
+        check(len(ours) == len(want),
+              f"{name}: {len(ours)} messages from seawire-decode, {len(want)} from the layout")
+        for i, (o, w) in enumerate(zip(ours, want)):
+            compare_layout(f"{name} message {i + 1}", o, w)
+
+
+# ---------------------------------------------------------------------------------------------
+
+def canboat_time(where, fmt, ours, stamp, offsets):
+    """Compares our time_s with canboat's "timestamp"; False when they cannot be related."""
+    global compared
+    got = ours.get("time_s")
+    theirs, _ = iso_seconds(stamp)
+    if fmt == "yd_raw":
+        # YD RAW has the time of day only: seawire gives seconds since midnight; canboat
+        # prefixes the date it ran on (2026-11-21 in these files), so only the time of day
+        # relates.
+        theirs %= 86400
+    elif fmt == "canboat" and offsets.get(stamp[:23]):
+        # The input named a zone offset (…-07:00): canboat printed the local clock digits with
+        # a "Z" and dropped the offset, so its timestamp is not the instant the line names.
+        # The layout case checks time_s against the input's own timestamp instead.
+        return False
+    elif fmt not in ("canboat", "candump_log"):
+        return False  # candump's default format carries no time
+    # Otherwise canboat's timestamp is the log's instant (canboat lines as written; candump -L
+    # seconds converted to UTC) rounded to the millisecond.
+    compared += 1
+    check(is_number(got) and abs(Decimal(got) - theirs) <= Decimal("0.0005"),
+          f"{where}: time_s {got} vs canboat {stamp}: not the same instant to the millisecond")
+    return True
+
+
+def case_canboat():
+    global compared
+    skipped_times = 0
+    for path in vectors():
+        name = os.path.basename(path)
+        with open(path) as f:
+            lines = [l.rstrip("\r\n") for l in f if l.strip()]
+        formats = {line_format(l) for l in lines}
+        check(len(formats) == 1, f"{name}: mixed log formats {formats}")
+        fmt = formats.pop()
+        # canboat lines by timestamp (to the millisecond, "T" separator): named a zone offset?
+        offsets = {}
+        if fmt == "canboat":
+            for l in lines:
+                ts = l.split(",")[0]
+                key = ts[:10] + "T" + ts[11:23]
+                offsets[key] = iso_seconds(ts)[1]
+        ours = decode_file(path)
+        with open(path[:-3] + ".out.json") as f:
+            theirs = [next(iter(exact(l).values())) for l in f if l.strip()]
+        check(len(ours) == len(theirs),
+              f"{name}: {len(ours)} messages, canboat {len(theirs)}")
+        for i, (o, t) in enumerate(zip(ours, theirs)):
+            where = f"{name} message {i + 1} (PGN {t['pgn']})"
+            compared += 1
+            check(o.get("type") == f"PGN{t['pgn']}", f"{where}: type {o.get('type')!r}")
+            for k in ("src", "dst", "prio"):
+                compared += 1
+                check(o.get(k) == t[k], f"{where}: {k} {o.get(k)!r}, canboat {t[k]!r}")
+            if not canboat_time(where, fmt, o, t["timestamp"], offsets):
+                skipped_times += 1
+            table = CANBOAT_FIELDS.get(t["pgn"])
+            if not check(table is not None, f"{where}: no mapping for this PGN"):
+                continue
+            check(set(o) - META == set(table),
+                  f"{where}: our fields {sorted(set(o) - META)} vs mapping {sorted(table)}")
+            fields = t["fields"]
+            unmapped = set(fields) - CANBOAT_IGNORED - {c for c, _ in table.values()}
+            check(not unmapped, f"{where}: canboat fields not in the mapping: {sorted(unmapped)}")
+            for ours_name, (their_name, cmp) in table.items():
+                compared += 1
+                if not check(their_name in fields, f"{where}: canboat has no {their_name}"):
+                    continue
+                a, b = o.get(ours_name, "<missing>"), fields[their_name]
+                why = cmp(a, b)
+                check(why is None, f"{where}: {ours_name} = {json.dumps(a, default=str)} vs "
+                      f"canboat {their_name} = {json.dumps(b, default=str)}: {why}")
+    print(f"canboat: time comparison skipped for {skipped_times} message(s) whose input named "
+          f"a zone offset (canboat drops it)")
+
+
+# ---------------------------------------------------------------------------------------------
+
+def case_errors():
+    good_128259 = "(1502984866.953084) slcan0 09F50374#001200FFFF00FFFF"
+    lines = [
+        good_128259,                                                            # 1
+        "(1502984866.960000) slcan0 09F50374#0012ZZFFFF00FFFF",                 # 2 bad hex
+        "(1502984866.970000) slcan0 09F50374#001200FFFF00FFFF00",               # 3 9 bytes
+        "(1502984866.980000) slcan0 123#001200FFFF00FFFF",                      # 4 11-bit id
+        "this is no CAN log line",                                              # 5
+        "2016-04-09T16:41:40.049Z,2,127488,16,255,8,00,7a,0c,ff,ff,7f,ff,ff",   # 6
+        "(1502984867.285145) slcan0 19F51374#C00EFFFFFFFFFFFF",                 # 7 frame 0
+        "(1502984867.285163) slcan0 19F51374#C200FFFFFFFFFFFF",                 # 8 frame 2
+        "21:55:35.425 R 15FD0723 FF C0 D9 6F FF 7F FF FF",                      # 9
+        "(15029848x7.895302) slcan0 09F50374#001200FFFF00FFFF",                 # 10 bad time
+        "2016-04-09T16:41:40.049Z,2,127488,16,255,8,00,7a,0c,ff,ff,7f,ff",      # 11 7 of 8
+        "(1720021378.000000) can0 19F51323#000EC34D201EB921",                   # 12
+        "(1720021378.000000) can0 19F51323#0140E20100D21E00",                   # 13
+        "(1720021378.000000) can0 19F51323#0200FFFFFFFFFFFF",                   # 14
+        "(1502984868.000000) slcan0 09F50374#001500FFFF01FFFF",                 # 15
+    ]
+    bad = {2: "bad_number", 3: "bad_length", 4: "bad_can_id", 5: "bad_log_line",
+           10: "bad_time", 11: "bad_length"}
+    good = [(1, "PGN128259", {"src": 116, "speed_water_mps": Decimal("0.18"),
+                              "speed_type": "paddle_wheel"}),
+            (6, "PGN127488", {"src": 16, "speed_rpm": Decimal("798.5")}),
+            (9, "PGN130311", {"src": 35, "temperature_k": Decimal("286.33"),
+                              "temperature_source": "sea"}),
+            (14, "PGN128275", {"src": 35, "log_m": 123456, "trip_log_m": 7890,
+                               "date": "2024-07-03", "time": "15:42:58.0000"}),
+            (15, "PGN128259", {"src": 116, "speed_water_mps": Decimal("0.21"),
+                               "speed_type": "pitot_tube"})]
+    data = "\n".join(lines).encode() + b"\n"
+
+    for args in ([], ["--input", "n2k"]):
+        p = run(args, data, 1)
+        out = [exact(l) for l in p.stdout.decode().splitlines()]
+        # In input order: an error object for each bad line, a message for each good one (the
+        # fast packet of lines 7-8 lacks frame 1 and gives nothing).
+        want = sorted([(n, "error") for n in bad] + [(n, "message") for n, _, _ in good])
+        got = [("error" if "error" in o else "message") for o in out]
+        check(got == [k for _, k in want], f"{args}: output sequence {got}, expected {want}")
+        errors = [o for o in out if "error" in o]
+        for o, n in zip(errors, sorted(bad)):
+            check(o.get("line") == n and o.get("error") == bad[n],
+                  f"{args}: error {o}, expected line {n} {bad[n]}")
+            check(isinstance(o.get("field"), int) and o["field"] >= 0,
+                  f"{args}: error for line {n} without a field number: {o}")
+            check(o.get("input") == lines[n - 1], f"{args}: line {n} input {o.get('input')!r}")
+        msgs = [o for o in out if "error" not in o]
+        for o, (n, t, values) in zip(msgs, good):
+            check(o.get("type") == t, f"{args}: line {n}: {o}, expected {t}")
+            for k, v in values.items():
+                check(o.get(k) == v, f"{args}: line {n}: {k} = {o.get(k)!r}, expected {v!r}")
+
+    # --stats: counts by error, and the fast packet dropped for its missing frame.
+    p = run(["--format", "none", "--stats"], data, 1)
+    err = p.stderr.decode()
+    for name, n in (("bad_length", 2), ("bad_number", 1), ("bad_can_id", 1),
+                    ("bad_log_line", 1), ("bad_time", 1), ("missing_frame", 1)):
+        check(re.search(rf"\b{name}\s+{n}\b", err), f"--stats: no '{name} {n}' in {err!r}")
+    check(p.stdout == b"", f"--format none wrote {p.stdout[:200]!r}")
+    # A fast packet still unfinished at the end of the log is a missing_frame drop too.
+    p = run(["--stats"], (good_128259 + "\n" + lines[6] + "\n").encode())
+    check(re.search(r"\bmissing_frame\s+1\b", p.stderr.decode()),
+          f"unfinished fast packet at the end: {p.stderr.decode()!r}")
+    check(len(p.stdout.decode().splitlines()) == 1, f"unfinished fast packet: {p.stdout!r}")
+
+    def one(args, text, want_rc):
+        p = run(args, text.encode(), want_rc)
+        return [exact(l) for l in p.stdout.decode().splitlines()]
+
+    canboat = lines[5]
+    yd = lines[8]
+    candump = "can0  09F50323  [8]  FF 00 00 FF FF 00 FF FF"
+    # --input n2k: a CAN log even when its first line is no CAN log line.
+    out = one(["--input", "n2k"], f"{lines[4]}\n{good_128259}\n", 1)
+    check([o.get("error") or o.get("type") for o in out] == ["bad_log_line", "PGN128259"]
+          and out[0].get("line") == 1, f"--input n2k, garbage first: {out}")
+    # --input nmea: the same CAN log is no NMEA, nothing decoded as a PGN.
+    out = one(["--input", "nmea"], f"{good_128259}\n{canboat}\n", 1)
+    check(not any(str(o.get("type", "")).startswith("PGN") for o in out),
+          f"--input nmea decoded PGNs: {out}")
+    # --log-format: every line in that format, the others errors. A line of another format is
+    # reported as the first thing that does not fit: no "(" or no comma-separated fields is
+    # bad_log_line; a YD RAW reader sees a bad time, a candump reader a bad identifier.
+    for fmt, fits, other, names in (("candump_log", good_128259, canboat, {"bad_log_line"}),
+                                    ("canboat", canboat, good_128259, {"bad_log_line"}),
+                                    ("yd_raw", yd, canboat, {"bad_log_line", "bad_time"}),
+                                    ("candump", candump, yd, {"bad_log_line", "bad_can_id"})):
+        out = one(["--log-format", fmt], f"{other}\n{fits}\n{other}\n", 1)
+        kinds = [o.get("error") or o.get("type") for o in out]
+        check(len(out) == 3 and kinds[0] in names and kinds[2] in names
+              and kinds[1].startswith("PGN") and [out[0].get("line"), out[2].get("line")] == [1, 3],
+              f"--log-format {fmt}: {out}")
+        out = one(["--log-format", fmt], f"{fits}\n", 0)
+        check(len(out) == 1 and out[0].get("type", "").startswith("PGN"),
+              f"--log-format {fmt}, its own line: {out}")
+        # The same lines without --log-format: told apart line by line, all decoded.
+        one(["--input", "n2k"], f"{other}\n{fits}\n{other}\n", 0)
+    run(["--log-format", "actisense"], b"", 2)
+    run(["--input", "can"], b"", 2)
+
+
+{"canboat": case_canboat, "layout": case_layout, "errors": case_errors}[CASE]()
+if failures:
+    print(f"{len(failures)} failure(s)", file=sys.stderr)
+    sys.exit(1)
+print(f"{CASE}: ok" + (f", {compared} values compared" if compared else ""))
