@@ -59,8 +59,7 @@ enum class format { json, nmea, none, csv, geojson, svg };
 // that is not blank decides.
 enum class input { automatic, nmea, n2k };
 
-// The PGNs seawire-decode decodes by name; others come out as their bytes.
-using n2k_pgns = nmea2000::ins_input_pgns;
+using seawire::tools::n2k_pgns;
 // A CAN log line longer than this is no line of any log format (a canboat FAST line of 223
 // bytes has about 700 characters).
 constexpr std::size_t max_log_line = 4096;
@@ -349,27 +348,36 @@ class decoder {
  private:
   // ---- which input ----
 
-  // Keeps what came until the first line that is not blank, and reads it as that line says:
-  // a CAN log line, or anything else (sentences, binary frames).
+  // Keeps what came until a line says what the input is: a CAN log line, or a sentence (or
+  // anything else once 16 lines or 64 KiB have said nothing either way), and reads it so.
   void decide(std::string_view chunk, bool at_end) {
     pending_.append(chunk);
     std::string_view rest = pending_;
-    std::optional<std::string_view> first;
-    while (!rest.empty()) {
+    std::optional<bool> can;
+    // A sentence or a binary frame needs no whole line to be recognised (a live binary stream
+    // may have no newline for a long time).
+    if (const std::size_t at = rest.find_first_not_of(" \t\r\n"); at != std::string_view::npos) {
+      const auto c = static_cast<unsigned char>(rest[at]);
+      if (c == '$' || c == '!' || c == 0xAB) can = false;
+    }
+    int lines = 0;
+    while (!rest.empty() && !can) {
       const std::size_t nl = rest.find('\n');
-      if (nl == std::string_view::npos) {
-        if (at_end || rest.size() > max_log_line) first = rest;
-        break;
-      }
+      if (nl == std::string_view::npos && !at_end && rest.size() <= max_log_line) break;
       const std::string_view line = rest.substr(0, nl);
-      rest.remove_prefix(nl + 1);
-      if (line.find_first_not_of(" \t\r") != std::string_view::npos) {
-        first = line;
-        break;
+      rest.remove_prefix(nl == std::string_view::npos ? rest.size() : nl + 1);
+      const std::size_t at = line.find_first_not_of(" \t\r");
+      if (at == std::string_view::npos) continue;
+      if (line[at] == '$' || line[at] == '!') {
+        can = false;
+      } else if (is_can_log_line(line)) {
+        can = true;
+      } else if (++lines >= 16) {
+        can = false;
       }
     }
-    if (!first && !at_end) return;
-    in_ = first && is_can_log_line(*first) ? input::n2k : input::nmea;
+    if (!can && !at_end) return;
+    in_ = can.value_or(false) ? input::n2k : input::nmea;
     if (in_ == input::n2k && opt_.fmt == format::nmea) {
       std::fprintf(stderr,
                    "seawire-decode: the input is a CAN log (NMEA 2000), which has no sentences "
@@ -425,16 +433,15 @@ class decoder {
         },
         opt_.log_format);
     if (r.ec == errc::empty_input || r.ok()) return;
-    std::string detail = std::string(name(r.value));
+    std::string detail;
     if (r.field != 0) {
-      detail += " ";
-      detail += nmea2000::log_field_name(r.value, r.field);
-      detail += " at column " + std::to_string(r.column + 1);
+      detail = std::string(name(r.value)) + " " +
+               std::string(nmea2000::log_field_name(r.value, r.field)) + " at column " +
+               std::to_string(r.column + 1) + ": ";
     }
-    detail += ": ";
-    detail += r.ec == errc::bad_log_line && r.field == 0 ? "not a line of candump -L, candump, "
-                                                           "canboat or Yacht Devices RAW"
-                                                         : message(r.ec);
+    detail += r.ec == errc::bad_log_line && r.field == 0
+                  ? "not a line of candump -L, candump, canboat or Yacht Devices RAW"
+                  : std::string(message(r.ec));
     reject(log_lines_, r.ec, r.field, detail, text);
   }
 
@@ -896,8 +903,8 @@ int main(int argc, char** argv) {
   app.add_option("-i,--input", in,
                  "what stdin holds: nmea (sentences and ANELLO binary frames), n2k (a CAN log of "
                  "NMEA 2000 frames: candump -L, candump, canboat PLAIN/FAST or Yacht Devices RAW, "
-                 "told apart line by line), or auto (default: the first line that is not blank "
-                 "decides; e.g. --input n2k)")
+                 "told apart line by line), or auto (default: the first sentence or CAN log "
+                 "line decides; e.g. --input n2k)")
       ->check(CLI::IsMember({"auto", "nmea", "n2k"}));
   app.add_option("--log-format", log_format,
                  "read every line of the CAN log in this format rather than telling them apart: "

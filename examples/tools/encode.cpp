@@ -31,6 +31,9 @@
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/writer.hpp"
+#include "seawire/nmea2000/fast_packet.hpp"
+#include "seawire/nmea2000/json.hpp"
+#include "seawire/nmea2000/log.hpp"
 #include "seawire/version.hpp"
 
 namespace {
@@ -39,6 +42,7 @@ using namespace seawire;
 using nmea::json_kind;
 using nmea::json_value;
 using seawire::tools::all_messages;
+using seawire::tools::n2k_pgns;
 
 // Exponent forms are written out only this far: 1e-40 .. 1e40, at most 48 digits in all.
 constexpr int max_exponent = 40;
@@ -115,6 +119,7 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     texts_.clear();
     members_.clear();
     precision_.clear();
+    arrays_.clear();
     fields_.clear();
     has_fields_ = false;
     depth_ = 0;
@@ -125,8 +130,14 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   }
   [[nodiscard]] const std::string& error() const { return error_; }
 
-  /// The lookup nmea::read_json asks: member `key` of the object ("") or of "precision".
+  /// The lookup nmea::read_json and nmea2000::read_json ask: member `key` of the object (""),
+  /// of "precision", or element `key` ("0", "1", ...) of the array member `object`.
   json_value operator()(std::string_view object, std::string_view key) const {
+    if (!object.empty() && object != "precision") {
+      for (auto it = arrays_.rbegin(); it != arrays_.rend(); ++it)
+        if (it->array == object && it->index == key) return it->value;
+      return {};
+    }
     const auto& list = object.empty() ? members_ : precision_;
     for (auto it = list.rbegin(); it != list.rend(); ++it)  // the last of repeated keys wins
       if (it->first == key) return it->second;
@@ -187,7 +198,12 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   }
 
  private:
-  enum class mode { top, precision, fields, skip };
+  enum class mode { top, precision, fields, array, skip };
+  struct element {
+    std::string_view array;
+    std::string_view index;
+    json_value value;
+  };
 
   std::string_view keep(std::string_view s) { return texts_.emplace_back(s); }
 
@@ -208,6 +224,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     } else if (depth_ == 2 && mode_ == mode::fields) {
       if (kind != json_kind::string) return fail("\"fields\" must be an array of strings");
       fields_.push_back(keep(text));
+    } else if (depth_ == 2 && mode_ == mode::array) {
+      arrays_.push_back({key_, keep(std::to_string(index_++)), json_value{kind, keep(text)}});
     }
     return true;
   }
@@ -223,9 +241,14 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
       } else if (array && key_ == "fields") {
         mode_ = mode::fields;
         has_fields_ = true;
+      } else if (array) {
+        mode_ = mode::array;  // e.g. a flag set of a PGN
+        index_ = 0;
       } else {
         mode_ = mode::skip;
       }
+    } else if (depth_ == 2 && mode_ == mode::array) {
+      mode_ = mode::skip;  // arrays of containers: not read
     } else if (depth_ == 2 && mode_ != mode::skip) {
       return fail("\"precision\" and \"fields\" hold plain values only");
     }
@@ -241,6 +264,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   std::deque<std::string> texts_;
   std::vector<std::pair<std::string_view, json_value>> members_;
   std::vector<std::pair<std::string_view, json_value>> precision_;
+  std::vector<element> arrays_;
+  std::size_t index_ = 0;
   std::vector<std::string_view> fields_;
   bool has_fields_ = false;
   std::string_view key_;
@@ -304,6 +329,7 @@ std::string position_names() {
 
 struct options {
   bool line_buffered = false;
+  nmea2000::log_format log = nmea2000::log_format::candump_log;  // NMEA 2000 messages
 };
 
 class encoder {
@@ -327,7 +353,9 @@ class encoder {
       return;
     }
     const json_value start = obj_({}, "start");
-    if (type.text == anello::frame_json_type) {
+    if (const auto pgn = nmea2000::pgn_of_type(type.text)) {
+      can(*pgn, type.text);
+    } else if (type.text == anello::frame_json_type) {
       frame();
     } else if (start.kind == json_kind::string && start.text == "!") {
       unknown(type.text);  // a '!' sentence is no message, whatever its type: sent as given
@@ -364,6 +392,94 @@ class encoder {
       return;
     }
     out_.put(std::string_view(buf.data(), r.value));
+  }
+
+  // An NMEA 2000 message: its CAN frames (a fast packet's several), as lines of the log format.
+  void can(std::uint32_t pgn, std::string_view type) {
+    const std::optional<nmea2000::pgn_info> info = n2k_pgns::info(pgn);
+    constexpr std::string_view header_keys[] = {"time_s", "interface", "direction",
+                                                "prio",   "src",       "dst"};
+    const auto known = [&](std::string_view k) {
+      for (const std::string_view h : header_keys)
+        if (k == h) return true;
+      if (!info) return k == "data";
+      bool found = false;
+      n2k_pgns::for_each_type([&](const auto& tag) {
+        using P = std::remove_cvref_t<decltype(tag)>;
+        if (P::n2k.info.pgn == pgn) found = nmea2000::has_field<P>(k);
+      });
+      return found;
+    };
+    if (!known_keys(type, known, false)) return;
+    const result<nmea2000::message_header> h =
+        nmea2000::read_json_header(pgn, info ? info->priority : 6, obj_);
+    if (!h) {
+      field_error(type, h.ec, 0, {},
+                  std::string(" (in \"") + std::string(header_keys[h.field - 1]) + "\")");
+      return;
+    }
+    nmea2000::log_record rec;
+    rec.id = h.value.id;
+    rec.time_us = h.value.time_us;
+    rec.interface = h.value.interface;
+    rec.direction = h.value.direction == 0 ? 'R' : h.value.direction;
+    std::vector<std::uint8_t> payload;
+    if (info) {
+      bool ok = true;
+      n2k_pgns::for_each_type([&](const auto& tag) {
+        using P = std::remove_cvref_t<decltype(tag)>;
+        if (P::n2k.info.pgn != pgn) return;
+        const result<P> m = nmea2000::read_json<P>(obj_);
+        if (!m) {
+          field_error(type, m.ec, m.field, nmea2000::field_name<P>(m.field));
+          ok = false;
+          return;
+        }
+        const auto bytes = nmea2000::encode(m.value);
+        if (!bytes) {
+          field_error(type, bytes.ec, bytes.field, nmea2000::field_name<P>(bytes.field));
+          ok = false;
+          return;
+        }
+        payload.assign(bytes.value.begin(), bytes.value.end());
+      });
+      if (!ok) return;
+    } else {
+      const json_value d = obj_({}, "data");
+      const bool hex = d.kind == json_kind::string && d.text.size() % 2 == 0 &&
+                       d.text.size() <= 2 * nmea2000::max_fast_packet_length &&
+                       d.text.find_first_not_of("0123456789abcdefABCDEF") == std::string_view::npos;
+      if (!hex) {
+        reject(std::string(type) + ": \"data\" must be the payload's bytes in hex, at most " +
+               std::to_string(nmea2000::max_fast_packet_length) +
+               " bytes (a PGN seawire does not describe is sent as given)");
+        return;
+      }
+      for (std::size_t i = 0; i < d.text.size(); i += 2)
+        payload.push_back(
+            static_cast<std::uint8_t>(std::stoi(std::string(d.text.substr(i, 2)), nullptr, 16)));
+    }
+    const bool fast = info ? info->transport == nmea2000::framing::fast_packet : payload.size() > 8;
+    if (!fast || opt_.log == nmea2000::log_format::canboat) {
+      // One frame, or canboat's FAST line holding the whole payload.
+      (void)rec.assign(payload);
+      put_record(type, rec);
+      return;
+    }
+    const auto frames = nmea2000::split_fast_packet(payload, sequence_.next(pgn, rec.id.source));
+    for (const nmea2000::frame_data& f : frames.value.view()) {
+      (void)rec.assign(f.view());
+      if (!put_record(type, rec)) return;
+    }
+  }
+
+  bool put_record(std::string_view type, const nmea2000::log_record& rec) {
+    const errc e = nmea2000::write_log_line(out_, rec, opt_.log);
+    if (e != errc::ok) {
+      field_error(type, e, 0, {});
+      return false;
+    }
+    return true;
   }
 
   void frame() {
@@ -521,6 +637,7 @@ class encoder {
   const options& opt_;
   tools::output out_;
   json_object obj_;
+  nmea2000::fast_packet_sequencer<> sequence_;
   std::uint64_t line_ = 0;
   std::uint64_t rejected_ = 0;
 };
@@ -574,17 +691,28 @@ int main(int argc, char** argv) {
       "decimal-degree fields). Blank or absent fields: null or left out; unknown keys are\n"
       "refused. {\"type\":\"XXABC\",\"fields\":[\"1\",\"2\"]} sends any other\n"
       "sentence as given. Error objects from seawire-decode are passed over. A line that cannot\n"
-      "be sent is reported on stderr (line number, field, reason) and the next line is read.\n\n"
+      "be sent is reported on stderr (line number, field, reason) and the next line is read.\n"
+      "NMEA 2000 messages (\"type\":\"PGN128259\", as seawire-decode writes them from a CAN\n"
+      "log) become CAN log lines (--output), fast packets split into their frames.\n\n"
       "Examples:\n"
       "  echo '{\"type\":\"PYDIR\",\"thrust_left\":45,\"thrust_right\":55}' | seawire-encode\n"
       "  seawire-encode --line-buffered < cmds.jsonl | nc vehicle 29500\n"
       "  seawire-decode < log.nmea | jq -c 'select(.type==\"CPNVG\")' | seawire-encode\n"
+      "  seawire-encode < speed.jsonl | canplayer -I - vcan0=can0     # NMEA 2000 to a bus\n"
       "Exit status: 0 every line sent, 1 some line rejected, 2 usage error.",
       "seawire-encode"};
   options o;
   app.add_flag("--line-buffered", o.line_buffered,
                "flush stdout after each sentence, for live links (e.g. ... | seawire-encode "
                "--line-buffered | nc vehicle 29500); default: large buffers, for speed");
+  std::string log = "candump_log";
+  app.add_option("-o,--output", log,
+                 "how NMEA 2000 messages (\"type\":\"PGN128259\") are written: candump_log "
+                 "(default: candump -L lines, what canplayer reads), candump, canboat (PLAIN, or "
+                 "FAST for a whole fast packet) or yd_raw; fast packets are split into frames "
+                 "with a sequence counter per PGN and source (e.g. seawire-encode < speed.jsonl | "
+                 "canplayer -I - vcan0=can0)")
+      ->check(CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw"}));
   app.set_version_flag("--version", "seawire-encode (seawire " SEAWIRE_VERSION_STRING ")");
   try {
     app.parse(argc, argv);
@@ -596,5 +724,6 @@ int main(int argc, char** argv) {
     (void)app.exit(e);
     return 2;
   }
+  o.log = *nmea2000::log_format_named(log);
   return run(o);
 }

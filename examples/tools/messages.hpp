@@ -7,6 +7,7 @@
 #include "seawire/anello/inputs.hpp"
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea2000/pgns.hpp"
 #include "seawire/robotx/messages.hpp"
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/standard/gga.hpp"
@@ -28,5 +29,8 @@ using all_messages = nmea::merge_sets<standard_messages,                        
                                       sandshark::from_vehicle, sandshark::to_vehicle,    //
                                       robotx::reports,                                   //
                                       anello::nmea_inputs, anello::nmea_outputs>::type;
+
+// The NMEA 2000 PGNs decoded and encoded by name ("type":"PGN128259"); others go as their bytes.
+using n2k_pgns = nmea2000::ins_input_pgns;
 
 }  // namespace seawire::tools

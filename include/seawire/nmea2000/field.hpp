@@ -404,6 +404,7 @@ class date {
   static constexpr unsigned bits = 16;
   static constexpr bool is_signed = false;
   using number_type = number<16, false>;
+  static constexpr std::int64_t top_raw = number_type::top_raw;
 
   constexpr date() noexcept = default;
   [[nodiscard]] static constexpr date from_raw(std::int64_t raw) noexcept {
@@ -439,6 +440,7 @@ class time_of_day {
   static constexpr bool is_signed = false;
   using ticks = std::chrono::duration<std::int64_t, std::ratio<1, 10000>>;
   using number_type = number<32, false, resolution{1, -4}>;
+  static constexpr std::int64_t top_raw = number_type::top_raw;
   static constexpr std::int64_t max_ticks = 864'010'000;  // 24 h and one leap second
 
   constexpr time_of_day() noexcept = default;

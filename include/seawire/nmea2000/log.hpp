@@ -502,7 +502,8 @@ constexpr void put_clock(Sink& s, std::int64_t us_of_day, unsigned places) noexc
 /// Writes `r` as one line of format `f`, ending in LF. A record holding more than 8 bytes (a
 /// whole fast packet) can only be written as canboat (FAST); bad_length for the other formats:
 /// split it into frames first (split_fast_packet). bad_can_id when r.id cannot be an identifier.
-/// A missing time is written as 0 (candump formats, yd_raw) or 1970-01-01 (canboat); yd_raw
+/// candump writes the time first, as `candump -t a` does, when there is one. A missing time is
+/// written as 0 (candump_log, yd_raw) or 1970-01-01 (canboat); yd_raw
 /// keeps the time of day of a Unix time and canboat writes a time of day as a time on
 /// 1970-01-01. Milliseconds are written, or microseconds when the time has them, except by
 /// yd_raw (milliseconds, as the gateways write).
@@ -529,6 +530,13 @@ constexpr errc write_log_line(Sink& s, const log_record& r, log_format f) noexce
       for (const std::uint8_t b : r.data()) detail::put_hex_byte(s, b, true);
       break;
     case log_format::candump:
+      if (r.time_us) {  // as candump -t a prints it
+        s.put('(');
+        detail::put_uint(s, static_cast<std::uint64_t>(time / 1'000'000));
+        s.put('.');
+        detail::put_uint(s, static_cast<std::uint64_t>(time % 1'000'000), 6);
+        s.put(')');
+      }
       s.put("  ");
       s.put(iface);
       s.put("  ");

@@ -1,0 +1,111 @@
+# SPDX-License-Identifier: BSL-1.0
+"""NMEA 2000 through both programs: seawire-decode | seawire-encode | seawire-decode.
+
+    n2k_roundtrip.py <seawire-decode> <seawire-encode> <tests/data/n2k>
+
+For every vector and every log format seawire-encode writes, the second decode gives the same
+messages as the first: the same values, and the same time to what the format keeps (yd_raw keeps
+milliseconds of the day). Then seawire-encode's refusals: each names the line, the field and why,
+and the good lines around them are still written.
+"""
+
+import glob
+import json
+import os
+import subprocess
+import sys
+
+DECODE, ENCODE, DATA = sys.argv[1], sys.argv[2], sys.argv[3]
+FORMATS = ["candump_log", "candump", "canboat", "yd_raw"]
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAIL:", what, file=sys.stderr)
+
+
+def run(prog, args, data):
+    return subprocess.run([prog] + args, input=data, capture_output=True, timeout=60)
+
+
+def comparable(obj, fmt):
+    o = dict(obj)
+    # Where the log keeps them: the interface (candump formats, "can0" when none was given) and
+    # the direction (yd_raw, "R" when none was given).
+    o.pop("interface", None)
+    o.pop("direction", None)
+    t = o.pop("time_s", None)
+    if t is not None and fmt == "yd_raw":
+        t = int(round(t * 1e6)) // 1000 % 86400000 / 1000  # milliseconds of the day, cut
+    return o, t
+
+
+for path in sorted(glob.glob(os.path.join(DATA, "*.in"))):
+    name = os.path.basename(path)
+    first = run(DECODE, [], open(path, "rb").read())
+    check(first.returncode == 0, f"{name}: decode exit {first.returncode}: {first.stderr[:300]}")
+    msgs = [json.loads(l) for l in first.stdout.decode().splitlines()]
+    check(len(msgs) > 0, f"{name}: no messages")
+    for fmt in FORMATS:
+        enc = run(ENCODE, ["--output", fmt], first.stdout)
+        check(enc.returncode == 0, f"{name} -> {fmt}: encode exit {enc.returncode}: {enc.stderr[:300]}")
+        second = run(DECODE, [], enc.stdout)
+        check(second.returncode == 0, f"{name} -> {fmt}: decode again exit {second.returncode}")
+        again = [json.loads(l) for l in second.stdout.decode().splitlines()]
+        check(len(again) == len(msgs), f"{name} -> {fmt}: {len(again)} messages, not {len(msgs)}")
+        for i, (a, b) in enumerate(zip(msgs, again)):
+            (va, ta), (vb, tb) = comparable(a, fmt), comparable(b, "")
+            check(va == vb, f"{name} -> {fmt} message {i + 1}: {va} != {vb}")
+            if ta is not None:
+                check(tb is not None and abs(ta - tb) < 5e-4,
+                      f"{name} -> {fmt} message {i + 1}: time {ta} != {tb}")
+    # Same format in and out: every message, interface and time included, is identical.
+    fmt = {"01": "canboat", "02": "candump_log", "03": "candump_log", "04": "yd_raw",
+           "08": "canboat", "09": "candump_log", "10": "yd_raw"}.get(name[:2])
+    if fmt:
+        enc = run(ENCODE, ["--output", fmt], first.stdout)
+        second = run(DECODE, [], enc.stdout)
+        again = [json.loads(l) for l in second.stdout.decode().splitlines()]
+        check(again == msgs, f"{name} -> {fmt} -> decode: not identical")
+
+# A fast packet becomes its frames, with a sequence counter per PGN and source.
+speed = b'{"type":"PGN130578","src":35,"longitudinal_water_mps":2.5,"transverse_water_mps":-0.12}\n'
+out = run(ENCODE, [], speed + speed)
+lines = out.stdout.decode().splitlines()
+check(len(lines) == 4, f"two 130578 messages are 4 frames: {lines}")
+check([l.split("#")[1][:2] for l in lines] == ["00", "01", "20", "21"],
+      f"frame and sequence counters: {lines}")
+# No time given: 0; priority 2, 130578's default; n/a fields as 0x7FFF.
+check(lines[0] == "(0.000000) can0 09FE1223#000CC40988FFFF7F", f"first frame: {lines[0]}")
+
+# Refusals: each names the line and the field, and the rest is still written.
+bad = (b'{"type":"PGN128259","speed_water_mps":700}\n'
+       b'{"type":"PGN128259","speed_water_mps":1.5,"speed_type":"sonar"}\n'
+       b'{"type":"PGN128259","speed_water_mps":1.5,"spede":1}\n'
+       b'{"type":"PGN128259","speed_water_mps":1.5,"prio":9}\n'
+       b'{"type":"PGN60928","data":"12345"}\n'
+       b'{"type":"PGN128259","speed_water_mps":1.5}\n'
+       b'{"type":"PGN127489","discrete_status_2":["warning_level_1","bit_9"]}\n'
+       b'{"type":"PGN127489","discrete_status_1":["low_oil_levels"]}\n')
+out = run(ENCODE, [], bad)
+err = out.stderr.decode()
+check(out.returncode == 1, f"refusals: exit {out.returncode}")
+for line, words in [(1, ["speed_water_mps", "out_of_range"]), (2, ["speed_type", "bad_enum"]),
+                    (3, ['"spede"']), (4, ["prio", "out_of_range"]), (5, ['"data"']),
+                    (8, ["discrete_status_1", "bad_flag"])]:
+    found = [l for l in err.splitlines() if l.startswith(f"seawire-encode: line {line}:")]
+    check(len(found) == 1 and all(w in found[0] for w in words),
+          f"line {line} refused naming {words}: {found}")
+good = run(DECODE, [], out.stdout)
+got = [json.loads(l) for l in good.stdout.decode().splitlines()]
+check([g["type"] for g in got] == ["PGN128259", "PGN127489"], f"good lines written: {got}")
+if len(got) == 2:
+    check(got[0]["speed_water_mps"] == 1.5, f"1.5 m/s: {got[0]}")
+    check(got[1]["discrete_status_2"] == ["warning_level_1", "bit_9"], f"flags: {got[1]}")
+
+if failures:
+    print(f"{len(failures)} failure(s)", file=sys.stderr)
+    sys.exit(1)
+print("ok")
