@@ -232,14 +232,17 @@ class log_cursor {
       const int oh = two_digits(t, i + 1);
       const std::size_t mi = i + 3 < t.size() && t[i + 3] == ':' ? i + 4 : i + 3;
       const int om = two_digits(t, mi);
-      if (oh < 0 || om < 0 || mi + 2 != t.size()) return std::nullopt;
+      if (oh < 0 || om < 0 || oh > 23 || om > 59 || mi + 2 != t.size()) return std::nullopt;
       offset_us = sign * (std::int64_t{oh} * 60 + om) * 60 * 1'000'000;
       i = t.size();
     }
     if (i != t.size()) return std::nullopt;
   }
   const std::int64_t days = std::chrono::sys_days(ymd).time_since_epoch().count();
-  return days * 86'400'000'000 + clock - offset_us;
+  const std::int64_t us = days * 86'400'000'000 + clock - offset_us;
+  // Unix time from 1970 to the end of year 9999: what the writers can write back.
+  if (us < 0 || us >= 253'402'300'800'000'000) return std::nullopt;
+  return us;
 }
 
 /// Up to `max` hex byte tokens separated by `sep` (' ' or ','); false on a bad token.
@@ -486,11 +489,16 @@ constexpr void put_can_id(Sink& s, std::uint32_t id) noexcept {
 template <class Sink>
 constexpr void put_clock(Sink& s, std::int64_t us_of_day, unsigned places) noexcept {
   const auto us = static_cast<std::uint64_t>(us_of_day);
-  put_uint(s, us / 3'600'000'000, 2);
-  s.put(':');
-  put_uint(s, us / 60'000'000 % 60, 2);
-  s.put(':');
-  put_uint(s, us / 1'000'000 % 60, 2);
+  if (us >= 86'400'000'000) {  // a leap second: 23:59:60.xxx
+    s.put("23:59:");
+    put_uint(s, 60 + (us - 86'400'000'000) / 1'000'000 % 60, 2);
+  } else {
+    put_uint(s, us / 3'600'000'000, 2);
+    s.put(':');
+    put_uint(s, us / 60'000'000 % 60, 2);
+    s.put(':');
+    put_uint(s, us / 1'000'000 % 60, 2);
+  }
   if (places > 0) {
     s.put('.');
     put_uint(s, us % 1'000'000 / seawire::detail::pow10_table[6 - places], places);
@@ -576,7 +584,8 @@ constexpr errc write_log_line(Sink& s, const log_record& r, log_format f) noexce
       break;
     }
     case log_format::yd_raw:
-      detail::put_clock(s, time % 86'400'000'000, 3);
+      // A time of day (below 86 401 s, a leap second included) as it is; a Unix time's of day.
+      detail::put_clock(s, time < 86'401'000'000 ? time : time % 86'400'000'000, 3);
       s.put(' ');
       s.put(r.direction == 'T' ? 'T' : 'R');
       s.put(' ');
