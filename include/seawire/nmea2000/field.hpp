@@ -329,11 +329,9 @@ class lookup {
 
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
   [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
+  /// The same sentinels as an unsigned number of the width.
   [[nodiscard]] constexpr field_state state() const noexcept {
-    if (raw_ <= max_valid_raw) return field_state::value;
-    if (raw_ == top_raw) return field_state::not_available;
-    if (raw_ == top_raw - 1) return field_state::out_of_range;
-    return field_state::reserved;
+    return number<Bits, false>::from_raw(raw_).state();
   }
   [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
   /// The value, named or not; nullopt unless state() is value.

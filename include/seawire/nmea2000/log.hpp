@@ -288,17 +288,24 @@ constexpr std::string_view trim_line_end(std::string_view line) noexcept {
   return {r, e, field, static_cast<std::uint16_t>(column > 0xFFFF ? 0xFFFF : column)};
 }
 
+/// "(sec.usec)" at the cursor into r.time_us; false when it is not that.
+[[nodiscard]] constexpr bool parse_paren_time(log_cursor& c, log_record& r) noexcept {
+  if (!c.eat('(')) return false;
+  const std::string_view ts = c.until(")");
+  std::int64_t us = 0;
+  if (!c.eat(')') || !parse_seconds(ts, us)) return false;
+  r.time_us = us;
+  return true;
+}
+
 constexpr result<log_record> parse_candump_log(std::string_view line) noexcept {
   log_record r;
   r.format = log_format::candump_log;
   log_cursor c(line);
   c.skip_spaces();
   std::size_t at = c.pos();
-  if (!c.eat('(')) return log_fail(r, errc::bad_log_line, 1, at);
-  const std::string_view ts = c.until(")");
-  std::int64_t us = 0;
-  if (!c.eat(')') || !parse_seconds(ts, us)) return log_fail(r, errc::bad_time, 1, at);
-  r.time_us = us;
+  if (c.peek() != '(') return log_fail(r, errc::bad_log_line, 1, at);
+  if (!parse_paren_time(c, r)) return log_fail(r, errc::bad_time, 1, at);
   c.skip_spaces();
   at = c.pos();
   const std::string_view iface = c.until(" \t");
@@ -335,11 +342,8 @@ constexpr result<log_record> parse_candump(std::string_view line) noexcept {
   log_cursor c(line);
   c.skip_spaces();
   std::size_t at = c.pos();
-  if (c.eat('(')) {  // candump -t a: (1700000000.123456)
-    const std::string_view ts = c.until(")");
-    std::int64_t us = 0;
-    if (!c.eat(')') || !parse_seconds(ts, us)) return log_fail(r, errc::bad_time, 1, at);
-    r.time_us = us;
+  if (c.peek() == '(') {  // candump -t a: (1700000000.123456)
+    if (!parse_paren_time(c, r)) return log_fail(r, errc::bad_time, 1, at);
     c.skip_spaces();
     at = c.pos();
   }
@@ -480,6 +484,16 @@ constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexc
   while (n > 0) s.put(buf[--n]);
 }
 
+/// "(sec.usec)", as candump writes its times.
+template <class Sink>
+constexpr void put_paren_time(Sink& s, std::int64_t us) noexcept {
+  s.put('(');
+  put_uint(s, static_cast<std::uint64_t>(us / 1'000'000));
+  s.put('.');
+  put_uint(s, static_cast<std::uint64_t>(us % 1'000'000), 6);
+  s.put(')');
+}
+
 template <class Sink>
 constexpr void put_can_id(Sink& s, std::uint32_t id) noexcept {
   for (int shift = 24; shift >= 0; shift -= 8)
@@ -526,11 +540,8 @@ constexpr errc write_log_line(Sink& s, const log_record& r, log_format f) noexce
       r.interface.size() == 0 ? std::string_view("can0") : r.interface.view();
   switch (f) {
     case log_format::candump_log:
-      s.put('(');
-      detail::put_uint(s, static_cast<std::uint64_t>(time / 1'000'000));
-      s.put('.');
-      detail::put_uint(s, static_cast<std::uint64_t>(time % 1'000'000), 6);
-      s.put(") ");
+      detail::put_paren_time(s, time);
+      s.put(' ');
       s.put(iface);
       s.put(' ');
       detail::put_can_id(s, id.value);
@@ -538,13 +549,7 @@ constexpr errc write_log_line(Sink& s, const log_record& r, log_format f) noexce
       for (const std::uint8_t b : r.data()) detail::put_hex_byte(s, b, true);
       break;
     case log_format::candump:
-      if (r.time_us) {  // as candump -t a prints it
-        s.put('(');
-        detail::put_uint(s, static_cast<std::uint64_t>(time / 1'000'000));
-        s.put('.');
-        detail::put_uint(s, static_cast<std::uint64_t>(time % 1'000'000), 6);
-        s.put(')');
-      }
+      if (r.time_us) detail::put_paren_time(s, time);  // as candump -t a prints it
       s.put("  ");
       s.put(iface);
       s.put("  ");
