@@ -13,6 +13,8 @@
 #include "seawire/fmt.hpp"
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/json.hpp"
+#include "seawire/nmea2000/json.hpp"
+#include "seawire/nmea2000/pgns.hpp"
 #include "seawire/robotx/messages.hpp"
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/standard/rmc.hpp"
@@ -89,6 +91,38 @@ TEST_CASE("unknown sentences: the line, or its fields as JSON") {
   CHECK(fmt::format("{}", u) == "$GPGSV,1,1,01,12,45,180,40*47");
   CHECK(fmt::format("{:j}", u) ==
         R"({"type":"GPGSV","fields":["1","1","01","12","45","180","40"]})");
+}
+
+TEST_CASE("NMEA 2000 messages and field values") {
+  namespace n2k = seawire::nmea2000;
+  const std::array<std::uint8_t, 8> frame{0x00, 0x12, 0x00, 0xFF, 0xFF, 0x00, 0xFF, 0xFF};
+  const auto speed = n2k::decode<n2k::speed_water_referenced>(frame);
+  CHECK(fmt::format("{}", speed) ==
+        "PGN128259{sid=0, speed_water_mps=0.18, speed_ground_mps=null, speed_type=paddle_wheel, "
+        "speed_direction=null}");
+  // {:j} is write_json without a frame header, byte for byte.
+  string_sink k;
+  n2k::write_json(k, speed);
+  CHECK(k.s == R"({"type":"PGN128259","sid":0,"speed_water_mps":0.18,"speed_ground_mps":null,)"
+               R"("speed_type":"paddle_wheel","speed_direction":null})");
+  CHECK(fmt::format("{:j}", speed) == k.s);
+
+  CHECK(fmt::format("{}", speed.speed_water_mps) == "0.18");
+  CHECK(fmt::format("{}", speed.speed_ground_mps) == "null");
+  CHECK(fmt::format("{:j}", speed.speed_type) == R"("paddle_wheel")");
+
+  n2k::engine_parameters_dynamic engine{};
+  engine.discrete_status_1 = n2k::flags<n2k::engine_status_1, 16>::from_raw(0x0003);
+  engine.temperature_k = n2k::unsigned_number<16, n2k::res::hundredth>::from_raw(0xFFFE);
+  CHECK(fmt::format("{}", engine.discrete_status_1) == "[check_engine,over_temperature]");
+  CHECK(fmt::format("{:j}", engine.discrete_status_1) == R"(["check_engine","over_temperature"])");
+  CHECK(fmt::format("{}", engine.temperature_k) == "out_of_range");
+  CHECK(fmt::format("{:j}", engine.temperature_k) == R"("out_of_range")");
+
+  n2k::distance_log log{};
+  log.date = n2k::date::from_raw(17'000);
+  log.time = n2k::time_of_day::from_raw(453'251'234);
+  CHECK(fmt::format("{} {}", log.date, log.time) == "2016-07-18 12:35:25.1234");
 }
 
 #else

@@ -12,6 +12,15 @@
 // Value types format on their own too: fmt::format("{}", msg.lat) is "42.36185237", a
 // time_of_day "08:10:25.987", a text<N> its characters, an enum its wire spelling.
 // An unknown_sentence formats as its line ({}) or as {"type":...,"fields":[...]} ({:j}).
+//
+// NMEA 2000 messages and field values likewise, as nmea2000/json.hpp writes them:
+//
+//   fmt::print("{}\n", speed);    // PGN128259{sid=0, speed_water_mps=0.18, ...}
+//   fmt::print("{:j}\n", speed);  // {"type":"PGN128259","sid":0,"speed_water_mps":0.18,...}
+//   fmt::print("{}", speed.speed_ground_mps);  // null when not available
+//
+// The JSON form of a message has no frame header (priority, source, time): it is
+// nmea2000::write_json(sink, msg). Flag sets are arrays of names: [check_engine,over_temperature].
 
 #include <fmt/format.h>
 
@@ -22,6 +31,8 @@
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
+#include "seawire/nmea2000/field.hpp"
+#include "seawire/nmea2000/json.hpp"
 
 namespace seawire::detail {
 
@@ -67,6 +78,26 @@ constexpr void write_plain(Sink& s, const T& msg) {
     s.put(name);
     s.put('=');
     nmea::write_json_value<nmea::json_style::plain>(s, value);
+  });
+  s.put('}');
+}
+
+/// PGN<n>{name=value, ...} with plain values, reserved bits left out.
+template <class Sink, nmea2000::pgn_like P>
+constexpr void write_plain(Sink& s, const P& msg) {
+  s.put("PGN");
+  nmea::detail::json_uint(s, P::n2k.info.pgn);
+  s.put('{');
+  bool first = true;
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      if (!first) s.put(", ");
+      first = false;
+      s.put(f.name);
+      s.put('=');
+      nmea2000::write_json_value<nmea::json_style::plain>(s, msg.*F::member);
+    }
   });
   s.put('}');
 }
@@ -135,6 +166,38 @@ struct fmt::formatter<seawire::nmea::text<N>> : seawire::detail::fmt_spec {
       seawire::nmea::write_json_value(s, v);
     } else {
       s.put(v.view());
+    }
+    return s.out;
+  }
+};
+
+/// NMEA 2000 messages: "{}" is PGN<n>{field=value, ...}; "{:j}" one JSON object without the
+/// frame's header (nmea2000::write_json(sink, msg)).
+template <seawire::nmea2000::pgn_like P>
+struct fmt::formatter<P> : seawire::detail::fmt_spec {
+  template <class FormatContext>
+  auto format(const P& msg, FormatContext& ctx) const {
+    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
+    if (json) {
+      seawire::nmea2000::write_json(s, msg);
+    } else {
+      seawire::detail::write_plain(s, msg);
+    }
+    return s.out;
+  }
+};
+
+/// NMEA 2000 field values: numbers with the resolution's digits, lookups and flags by name,
+/// dates and times; null when not available, the state's name when out of range or reserved.
+template <seawire::nmea2000::field_value T>
+struct fmt::formatter<T> : seawire::detail::fmt_spec {
+  template <class FormatContext>
+  auto format(const T& v, FormatContext& ctx) const {
+    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
+    if (json) {
+      seawire::nmea2000::write_json_value(s, v);
+    } else {
+      seawire::nmea2000::write_json_value<seawire::nmea::json_style::plain>(s, v);
     }
     return s.out;
   }

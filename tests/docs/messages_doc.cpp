@@ -218,6 +218,113 @@ void frame() {
   std::printf("\n");
 }
 
+// ---------------------------------------------------------------------------------------------
+// NMEA 2000, from the PGN tables
+
+template <class T>
+struct n2k_kind {
+  static constexpr int value = 0;
+};
+template <unsigned B, bool S, nmea2000::resolution R>
+struct n2k_kind<nmea2000::number<B, S, R>> {
+  static constexpr int value = 1;
+};
+template <class E, unsigned B>
+struct n2k_kind<nmea2000::lookup<E, B>> {
+  static constexpr int value = 2;
+  using enum_type = E;
+};
+template <class E, unsigned B>
+struct n2k_kind<nmea2000::flags<E, B>> {
+  static constexpr int value = 3;
+  using enum_type = E;
+};
+
+template <class V>
+std::string exact_text(std::int64_t raw) {
+  return number(*V::from_raw(raw).exact());
+}
+
+// "0 `sea`, 1 `outside`, ..." for a lookup, "bit 0 `check_engine`, ..." for flags.
+template <class E>
+std::string names_of(bool bits) {
+  std::string s;
+  const auto names = lookup_names(E{});
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i].empty()) continue;
+    s += (s.empty() ? "" : ", ") + std::string(bits ? "bit " : "") + std::to_string(i) + " " +
+         quoted(names[i]);
+  }
+  return s;
+}
+
+template <class V>
+std::string n2k_form(std::string& step, std::string& range) {
+  constexpr int kind = n2k_kind<V>::value;
+  const std::string width = std::to_string(V::bits) + " bits";
+  if constexpr (kind == 1) {
+    step = exact_text<V>(1);
+    range = exact_text<V>(V::min_raw) + " to " + exact_text<V>(V::max_valid_raw);
+    return std::string(V::is_signed ? "signed" : "unsigned") + " number";
+  } else if constexpr (kind == 2) {
+    range = names_of<typename n2k_kind<V>::enum_type>(false);
+    return "lookup";
+  } else if constexpr (kind == 3) {
+    range = names_of<typename n2k_kind<V>::enum_type>(true);
+    return "flag set (`[]` when none is set)";
+  } else if constexpr (std::is_same_v<V, nmea2000::date>) {
+    step = "1 day";
+    range = "1970-01-01 to 2149-06-03";
+    return "date, days since 1970-01-01, JSON `\"YYYY-MM-DD\"`";
+  } else if constexpr (std::is_same_v<V, nmea2000::time_of_day>) {
+    step = "0.0001 s";
+    range = "00:00:00.0000 to 24:00:01.0000";
+    return "UTC time of day, JSON `\"hh:mm:ss.ffff\"`";
+  } else {
+    static_assert(!sizeof(V), "messages_doc: say what this PGN field holds");
+  }
+}
+
+template <class P>
+void pgn() {
+  constexpr auto& d = P::n2k;
+  const auto& info = d.info;
+  std::printf("### PGN %u %s\n\n", unsigned{info.pgn}, std::string(info.title).c_str());
+  std::printf("`%s`: %zu bytes, %s, default priority %u", std::string(info.name).c_str(), d.length,
+              info.transport == nmea2000::framing::fast_packet ? "fast packet" : "single frame",
+              unsigned{info.priority});
+  if (info.interval_ms != 0) std::printf(", sent every %u ms", unsigned{info.interval_ms});
+  std::printf(". JSON `\"type\":\"PGN%u\"`.\n\n", unsigned{info.pgn});
+  std::printf(
+      "| Field | Name (JSON key) | Standard name | Bit offset | Bits | Holds | Step | Values |\n"
+      "|---|---|---|---|---|---|---|---|\n");
+  d.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    std::string holds = "reserved: sent as ones, ignored when received";
+    std::string step;
+    std::string values;
+    if constexpr (!F::is_reserved) holds = n2k_form<typename F::value_type>(step, values);
+    std::printf("| %u | %s | %s | %u | %u | %s | %s | %s |\n", unsigned{n},
+                F::is_reserved ? "" : quoted(f.name).c_str(), std::string(f.title).c_str(), offset,
+                F::bits, holds.c_str(), step.c_str(), values.c_str());
+  });
+  std::printf("\n");
+}
+
+template <class... P>
+void pgns(nmea2000::pgn_list<P...>*) {
+  std::printf(
+      "## NMEA 2000: inputs to the INS\n\n"
+      "Fields are little-endian and packed least significant bit first from the bit offset. A\n"
+      "number's physical value is its raw value times the step, in the unit its name ends with.\n"
+      "The highest raw values of a field are not values: in a field of 8 bits or more the top\n"
+      "one means \"not available\" (JSON `null`, an empty optional), the next \"out of range\"\n"
+      "and the third \"reserved\" (JSON `\"out_of_range\"`, `\"reserved\"`); a field of 4 to 7\n"
+      "bits has the first two, of 2 or 3 bits only \"not available\". The Values column gives\n"
+      "the range left for values. A lookup value without a name is written as its number.\n\n");
+  (pgn<P>(), ...);
+}
+
 }  // namespace
 
 int main() {
@@ -246,5 +353,6 @@ int main() {
   set("ANELLO: inputs to the INS", "ANELLO Maritime INS input.", of<anello::nmea_inputs>());
   set("ANELLO: output of the INS", "ANELLO Maritime INS output.", of<anello::nmea_outputs>());
   frame();
+  pgns(static_cast<nmea2000::ins_input_pgns*>(nullptr));
   return 0;
 }

@@ -217,10 +217,10 @@ constexpr void write_json_header(Sink& s, const message_header& h) noexcept {
   json_uint(s, h.id.destination);
 }
 
-/// A message of a described PGN as one JSON object (no newline).
+namespace detail {
+/// `,"name":value` for every field of msg's table, reserved bits left out.
 template <json_sink Sink, pgn_like P>
-constexpr void write_json(Sink& s, const message_header& h, const P& msg) noexcept {
-  write_json_header(s, h);
+constexpr void json_fields(Sink& s, const P& msg) noexcept {
   P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (!F::is_reserved) {
@@ -230,6 +230,25 @@ constexpr void write_json(Sink& s, const message_header& h, const P& msg) noexce
       write_json_value(s, msg.*F::member);
     }
   });
+}
+}  // namespace detail
+
+/// A message of a described PGN as one JSON object (no newline).
+template <json_sink Sink, pgn_like P>
+constexpr void write_json(Sink& s, const message_header& h, const P& msg) noexcept {
+  write_json_header(s, h);
+  detail::json_fields(s, msg);
+  s.put('}');
+}
+
+/// A message without the header of its frame: `{"type":"PGN<n>"` and the fields, nothing of
+/// priority, source or time (for a message built in code rather than read from a bus).
+template <json_sink Sink, pgn_like P>
+constexpr void write_json(Sink& s, const P& msg) noexcept {
+  s.put("{\"type\":\"PGN");
+  nmea::detail::json_uint(s, P::n2k.info.pgn);
+  s.put('"');
+  detail::json_fields(s, msg);
   s.put('}');
 }
 
