@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The TCP side of the simulators and servers: one thread, one asio event loop.
+//
+// line_server accepts any number of clients. Each client's bytes go through the library's stream
+// reader (sentences only, fixed memory), so an overlong or garbled line from one client never
+// corrupts the next sentence, and each sentence is handed to the program. What the program sends
+// goes into each client's queue, bounded in lines: when a client does not read, its oldest
+// unsent lines are dropped and counted, and once more than `max_drops` lines have been dropped
+// it is disconnected. One line per connection event is logged to stderr.
+
+#include <asio.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <seawire/nmea/stream.hpp>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace seawire::tools::net {
+
+/// "ADDR:PORT", "[v6addr]:PORT" or ":PORT" (all interfaces). nullopt when malformed.
+struct endpoint_text {
+  std::string host;
+  std::uint16_t port = 0;
+};
+inline std::optional<endpoint_text> parse_endpoint(std::string_view s) {
+  const auto colon = s.rfind(':');
+  if (colon == std::string_view::npos) return std::nullopt;
+  std::string_view host = s.substr(0, colon);
+  const std::string_view port = s.substr(colon + 1);
+  if (host.size() >= 2 && host.front() == '[' && host.back() == ']')
+    host = host.substr(1, host.size() - 2);
+  unsigned value = 0;
+  if (port.empty() || port.size() > 5) return std::nullopt;
+  for (const char c : port) {
+    if (c < '0' || c > '9') return std::nullopt;
+    value = value * 10 + static_cast<unsigned>(c - '0');
+  }
+  if (value > 65535) return std::nullopt;
+  return endpoint_text{host.empty() ? std::string("0.0.0.0") : std::string(host),
+                       static_cast<std::uint16_t>(value)};
+}
+
+inline std::string to_string(const asio::ip::tcp::endpoint& e) {
+  const auto a = e.address();
+  return (a.is_v6() ? "[" + a.to_string() + "]" : a.to_string()) + ":" + std::to_string(e.port());
+}
+
+/// Lines shared by every client they are sent to: one allocation per batch, not per client.
+struct batch {
+  std::string bytes;
+  std::uint32_t lines = 0;
+};
+using batch_ptr = std::shared_ptr<const batch>;
+
+struct server_limits {
+  std::size_t max_queue_lines = 2000;  ///< unsent lines kept per client
+  std::uint64_t max_drops = 10000;     ///< dropped lines after which a client is disconnected
+  int send_buffer = 0;                 ///< SO_SNDBUF for clients' sockets; 0 = the system's
+  std::size_t max_clients = 1000;      ///< further connections are refused (closed at once)
+};
+
+class line_server;
+
+/// One connected client.
+class client : public std::enable_shared_from_this<client> {
+ public:
+  client(line_server& server, asio::ip::tcp::socket socket, std::uint64_t id);
+
+  [[nodiscard]] std::uint64_t id() const { return id_; }
+  [[nodiscard]] const std::string& peer() const { return peer_; }
+  [[nodiscard]] const asio::ip::address& address() const { return address_; }
+  /// Queues `b` for sending (dropping the oldest unsent lines when over the limit).
+  void send(const batch_ptr& b);
+  /// Closes the connection; `why` is logged once.
+  void close(std::string_view why);
+
+  std::uint64_t lines_sent = 0;
+  std::uint64_t lines_dropped = 0;
+  std::uint64_t sentences_in = 0;
+  std::uint64_t rejected_in = 0;  ///< counted by the program (bad commands)
+  std::uint64_t bytes_in = 0;
+
+ private:
+  friend class line_server;
+  void start();
+  void read();
+  void write();
+
+  line_server& server_;
+  asio::ip::tcp::socket socket_;
+  std::uint64_t id_;
+  std::string peer_;
+  asio::ip::address address_;
+  nmea::stream_reader<512> reader_;
+  std::array<char, 4096> in_{};
+  std::deque<batch_ptr> queue_;
+  std::size_t queued_lines_ = 0;
+  bool writing_ = false;
+  bool closed_ = false;
+};
+
+/// Accepts clients on one endpoint and keeps them until they or the program close.
+class line_server {
+ public:
+  using sentence_handler = std::function<void(client&, std::string_view sentence)>;
+  using client_handler = std::function<void(client&)>;
+
+  line_server(asio::io_context& io, const asio::ip::tcp::endpoint& where, server_limits limits)
+      : acceptor_(io), limits_(limits) {
+    acceptor_.open(where.protocol());
+    acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
+    acceptor_.bind(where);
+    acceptor_.listen(asio::socket_base::max_listen_connections);
+  }
+
+  [[nodiscard]] asio::ip::tcp::endpoint local_endpoint() const {
+    return acceptor_.local_endpoint();
+  }
+  [[nodiscard]] const server_limits& limits() const { return limits_; }
+
+  void on_sentence(sentence_handler h) { on_sentence_ = std::move(h); }
+  void on_connect(client_handler h) { on_connect_ = std::move(h); }
+
+  void start() { accept(); }
+
+  /// Stops accepting and closes every client.
+  void stop(std::string_view why) {
+    asio::error_code ignored;
+    acceptor_.close(ignored);
+    auto all = clients_;
+    for (auto& [id, c] : all) c->close(why);
+  }
+
+  /// Sends `b` to every client.
+  void broadcast(const batch_ptr& b) {
+    for (auto& [id, c] : clients_) c->send(b);
+  }
+
+  [[nodiscard]] std::size_t client_count() const { return clients_.size(); }
+  [[nodiscard]] std::uint64_t connections() const { return next_id_ - 1; }
+
+  /// A line on stderr, flushed: the programs' log.
+  template <class... A>
+  static void log(const char* format, A... args) {
+    std::fprintf(stderr, format, args...);
+    std::fputc('\n', stderr);
+    std::fflush(stderr);
+  }
+
+ private:
+  friend class client;
+
+  void accept() {
+    acceptor_.async_accept([this](const asio::error_code& ec, asio::ip::tcp::socket socket) {
+      if (ec == asio::error::operation_aborted || !acceptor_.is_open()) return;
+      if (ec) {
+        log("accept failed: %s", ec.message().c_str());
+      } else if (clients_.size() >= limits_.max_clients) {
+        asio::error_code e;
+        const auto peer = socket.remote_endpoint(e);
+        log("refused %s: %zu clients already", e ? "?" : to_string(peer).c_str(), clients_.size());
+        socket.close(e);
+      } else {
+        auto c = std::make_shared<client>(*this, std::move(socket), next_id_++);
+        clients_.emplace(c->id(), c);
+        log("client %llu %s connected (%zu connected)", static_cast<unsigned long long>(c->id()),
+            c->peer().c_str(), clients_.size());
+        c->start();
+        if (on_connect_) on_connect_(*c);
+      }
+      accept();
+    });
+  }
+
+  void closed(client& c, std::string_view why) {
+    log("client %llu %s disconnected: %.*s; %llu lines sent, %llu dropped, %llu sentences in, "
+        "%llu rejected",
+        static_cast<unsigned long long>(c.id()), c.peer().c_str(), static_cast<int>(why.size()),
+        why.data(), static_cast<unsigned long long>(c.lines_sent),
+        static_cast<unsigned long long>(c.lines_dropped),
+        static_cast<unsigned long long>(c.sentences_in),
+        static_cast<unsigned long long>(c.rejected_in));
+    clients_.erase(c.id());
+  }
+
+  asio::ip::tcp::acceptor acceptor_;
+  server_limits limits_;
+  std::map<std::uint64_t, std::shared_ptr<client>> clients_;
+  std::uint64_t next_id_ = 1;
+  sentence_handler on_sentence_;
+  client_handler on_connect_;
+};
+
+inline client::client(line_server& server, asio::ip::tcp::socket socket, std::uint64_t id)
+    : server_(server), socket_(std::move(socket)), id_(id) {
+  asio::error_code ec;
+  const auto peer = socket_.remote_endpoint(ec);
+  peer_ = ec ? std::string("?") : to_string(peer);
+  if (!ec) address_ = peer.address();
+  socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+  if (server_.limits_.send_buffer > 0)
+    socket_.set_option(asio::socket_base::send_buffer_size(server_.limits_.send_buffer), ec);
+}
+
+inline void client::start() { read(); }
+
+inline void client::read() {
+  socket_.async_read_some(
+      asio::buffer(in_), [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
+        if (self->closed_) return;
+        if (ec) {
+          self->close(ec == asio::error::eof ? "end of stream" : ec.message());
+          return;
+        }
+        self->bytes_in += n;
+        self->reader_.feed(std::string_view(self->in_.data(), n), [&](const auto& item) {
+          if (!item.is_sentence()) return;
+          ++self->sentences_in;
+          if (self->server_.on_sentence_) self->server_.on_sentence_(*self, item.sentence.text);
+        });
+        if (!self->closed_) self->read();
+      });
+}
+
+inline void client::send(const batch_ptr& b) {
+  if (closed_) return;
+  queue_.push_back(b);
+  queued_lines_ += b->lines;
+  // Drop the oldest batches that are not being written until the queue fits again.
+  while (queued_lines_ > server_.limits_.max_queue_lines && queue_.size() > (writing_ ? 2U : 1U)) {
+    auto victim = queue_.begin() + (writing_ ? 1 : 0);
+    queued_lines_ -= (*victim)->lines;
+    lines_dropped += (*victim)->lines;
+    queue_.erase(victim);
+  }
+  if (lines_dropped > server_.limits_.max_drops) {
+    close("not reading: " + std::to_string(lines_dropped) + " lines dropped");
+    return;
+  }
+  if (!writing_) write();
+}
+
+inline void client::write() {
+  if (queue_.empty() || closed_) return;
+  writing_ = true;
+  const batch_ptr front = queue_.front();
+  asio::async_write(socket_, asio::buffer(front->bytes),
+                    [self = shared_from_this(), front](const asio::error_code& ec, std::size_t) {
+                      self->writing_ = false;
+                      if (self->closed_) return;
+                      if (ec) {
+                        self->close(ec.message());
+                        return;
+                      }
+                      self->lines_sent += front->lines;
+                      self->queued_lines_ -= front->lines;
+                      self->queue_.pop_front();
+                      self->write();
+                    });
+}
+
+inline void client::close(std::string_view why) {
+  if (closed_) return;
+  closed_ = true;
+  asio::error_code ignored;
+  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+  socket_.close(ignored);
+  queue_.clear();
+  auto keep = shared_from_this();  // closed() erases the server's reference
+  server_.closed(*this, why);
+}
+
+/// Stops `io` on SIGINT or SIGTERM after calling `on_stop` (which may post more work first).
+class stop_signals {
+ public:
+  stop_signals(asio::io_context& io, std::function<void(int)> on_stop)
+      : signals_(io, SIGINT, SIGTERM), on_stop_(std::move(on_stop)) {
+    signals_.async_wait([this](const asio::error_code& ec, int signo) {
+      if (!ec) on_stop_(signo);
+    });
+  }
+  /// Stops waiting (the program ends for another reason).
+  void cancel() {
+    asio::error_code ignored;
+    signals_.cancel(ignored);
+  }
+
+ private:
+  asio::signal_set signals_;
+  std::function<void(int)> on_stop_;
+};
+
+}  // namespace seawire::tools::net

@@ -1,0 +1,305 @@
+// SPDX-License-Identifier: BSL-1.0
+// seawire-tcp: a line-framed TCP client for the shell. Sentences from stdin go to the server,
+// sentences from the server go to stdout, each cut out by seawire's stream reader (a garbled or
+// overlong line from either side is dropped, never glued to the next), each ended with CR LF.
+// Manual: docs/seawire-tcp.md.
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <asio.hpp>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <seawire/nmea/stream.hpp>
+#include <string>
+
+#include "net.hpp"
+
+namespace {
+
+using namespace seawire;
+namespace net = seawire::tools::net;
+using std::chrono::milliseconds;
+
+struct options {
+  std::string server;
+  bool reconnect = false;
+  double min_backoff = 0.1;
+  double max_backoff = 5;
+  bool lf = false;
+  bool quiet = false;
+  bool close_on_eof = false;
+};
+
+template <class... A>
+void note(const options& o, const char* format, A... args) {
+  if (o.quiet) return;
+  std::fprintf(stderr, "seawire-tcp: ");
+  std::fprintf(stderr, format, args...);
+  std::fputc('\n', stderr);
+}
+
+class client {
+ public:
+  client(asio::io_context& io, const options& o, std::string host, std::string port)
+      : io_(io),
+        o_(o),
+        host_(std::move(host)),
+        port_(std::move(port)),
+        resolver_(io),
+        socket_(io),
+        timer_(io),
+        signals_(io, SIGINT, SIGTERM),
+        backoff_(o.min_backoff) {
+    struct stat st {};
+    stdin_is_file_ = ::fstat(0, &st) == 0 && !S_ISFIFO(st.st_mode) && !S_ISSOCK(st.st_mode) &&
+                     !S_ISCHR(st.st_mode);
+    if (!stdin_is_file_) {
+      asio::error_code ec;
+      stdin_.assign(::dup(0), ec);
+      if (ec) stdin_is_file_ = true;  // not pollable: read it as a file
+    }
+    signals_.async_wait([this](const asio::error_code& ec, int) {
+      if (!ec) finish(0);
+    });
+  }
+
+  void start() { connect(); }
+  [[nodiscard]] int status() const { return status_; }
+
+ private:
+  void connect() {
+    resolver_.async_resolve(
+        host_, port_,
+        [this](const asio::error_code& ec, const asio::ip::tcp::resolver::results_type& r) {
+          if (done_) return;
+          if (ec) {
+            lost("cannot resolve " + host_ + ": " + ec.message());
+            return;
+          }
+          asio::async_connect(
+              socket_, r, [this](const asio::error_code& e, const asio::ip::tcp::endpoint& to) {
+                if (done_) return;
+                if (e) {
+                  lost("cannot connect to " + host_ + ":" + port_ + ": " + e.message());
+                  return;
+                }
+                connected(to);
+              });
+        });
+  }
+
+  void connected(const asio::ip::tcp::endpoint& to) {
+    asio::error_code ignored;
+    socket_.set_option(asio::ip::tcp::no_delay(true), ignored);
+    note(o_, "connected to %s", net::to_string(to).c_str());
+    connected_ = true;
+    backoff_ = o_.min_backoff;
+    from_server_.reset();
+    read_socket();
+    if (!pending_.empty()) {
+      send_pending();
+    } else if (!stdin_done_ && !stdin_reading_) {
+      read_stdin();
+    }
+  }
+
+  // The connection failed or ended: retry, or end.
+  void lost(const std::string& why) {
+    const bool was = connected_;
+    connected_ = false;
+    asio::error_code ignored;
+    socket_.close(ignored);
+    if (!o_.reconnect || (o_.close_on_eof && stdin_done_ && pending_.empty() && was)) {
+      if (!was || why != "closed by the server") note(o_, "%s", why.c_str());
+      finish(was ? 0 : 1);
+      return;
+    }
+    note(o_, "%s; reconnecting in %.1f s", why.c_str(), backoff_);
+    timer_.expires_after(milliseconds(static_cast<long>(backoff_ * 1000)));
+    timer_.async_wait([this](const asio::error_code& ec) {
+      if (!ec && !done_) connect();
+    });
+    backoff_ = std::min(backoff_ * 2, o_.max_backoff);
+  }
+
+  void read_socket() {
+    socket_.async_read_some(asio::buffer(in_), [this](const asio::error_code& ec, std::size_t n) {
+      if (done_ || !connected_) return;
+      if (ec) {
+        // What the server sent last without a line ending is still a sentence.
+        while (const auto item = from_server_.finish()) emit(*item);
+        flush_stdout();
+        lost(ec == asio::error::eof ? "closed by the server" : ec.message());
+        return;
+      }
+      from_server_.feed(std::string_view(in_.data(), n), [this](const auto& item) { emit(item); });
+      while (const auto item = from_server_.flush()) emit(*item);
+      flush_stdout();
+      read_socket();
+    });
+  }
+
+  template <class Item>
+  void emit(const Item& item) {
+    if (!item.is_sentence()) return;
+    out_ += item.sentence.text;
+    out_ += o_.lf ? "\n" : "\r\n";
+  }
+
+  void flush_stdout() {
+    if (out_.empty()) return;
+    if (std::fwrite(out_.data(), 1, out_.size(), stdout) != out_.size() ||
+        std::fflush(stdout) != 0) {
+      finish(0);  // the reader went away (a closed pipe): nothing left to do
+      return;
+    }
+    out_.clear();
+  }
+
+  // stdin -> pending_ (framed sentences with CR LF) -> the socket.
+  void read_stdin() {
+    if (stdin_done_ || done_) return;
+    stdin_reading_ = true;
+    if (stdin_is_file_) {
+      asio::post(io_, [this] {
+        const ssize_t n = ::read(0, stdin_buf_.data(), stdin_buf_.size());
+        got_stdin(n > 0 ? asio::error_code{} : asio::error::eof,
+                  n > 0 ? static_cast<std::size_t>(n) : 0);
+      });
+      return;
+    }
+    stdin_.async_read_some(asio::buffer(stdin_buf_),
+                           [this](const asio::error_code& ec, std::size_t n) { got_stdin(ec, n); });
+  }
+
+  void got_stdin(const asio::error_code& ec, std::size_t n) {
+    stdin_reading_ = false;
+    if (done_) return;
+    const auto take = [this](const auto& item) {
+      if (!item.is_sentence()) return;
+      pending_ += item.sentence.text;
+      pending_ += "\r\n";
+    };
+    if (ec) {
+      stdin_done_ = true;
+      while (const auto item = from_stdin_.finish()) take(*item);
+    } else {
+      from_stdin_.feed(std::string_view(stdin_buf_.data(), n), take);
+      while (const auto item = from_stdin_.flush()) take(*item);
+    }
+    if (connected_) send_pending();
+  }
+
+  void send_pending() {
+    if (pending_.empty()) {
+      after_send();
+      return;
+    }
+    sending_.swap(pending_);
+    pending_.clear();
+    asio::async_write(socket_, asio::buffer(sending_),
+                      [this](const asio::error_code& ec, std::size_t) {
+                        if (done_) return;
+                        if (ec) {
+                          pending_.insert(0, sending_);  // sent again after a reconnect
+                          sending_.clear();
+                          if (connected_) lost(ec.message());
+                          return;
+                        }
+                        sending_.clear();
+                        after_send();
+                      });
+  }
+
+  void after_send() {
+    if (!stdin_done_) {
+      if (!stdin_reading_) read_stdin();
+      return;
+    }
+    // All of stdin is sent. With --close-on-eof, tell the server (half close) and read until it
+    // closes; otherwise go on reading what it sends.
+    if (!o_.close_on_eof) return;
+    asio::error_code ignored;
+    socket_.shutdown(asio::ip::tcp::socket::shutdown_send, ignored);
+  }
+
+  void finish(int status) {
+    if (done_) return;
+    done_ = true;
+    status_ = status;
+    asio::error_code ignored;
+    signals_.cancel(ignored);
+    timer_.cancel();
+    resolver_.cancel();
+    socket_.close(ignored);
+    if (stdin_.is_open()) stdin_.close(ignored);
+  }
+
+  asio::io_context& io_;
+  const options& o_;
+  std::string host_, port_;
+  asio::ip::tcp::resolver resolver_;
+  asio::ip::tcp::socket socket_;
+  asio::steady_timer timer_;
+  asio::signal_set signals_;
+  asio::posix::stream_descriptor stdin_{io_};
+  bool stdin_is_file_ = false;
+  double backoff_;
+  bool connected_ = false;
+  bool stdin_reading_ = false;
+  bool stdin_done_ = false;
+  bool done_ = false;
+  int status_ = 0;
+  std::array<char, 64 * 1024> in_{};
+  std::array<char, 64 * 1024> stdin_buf_{};
+  nmea::stream_reader<1024> from_server_;
+  nmea::stream_reader<1024> from_stdin_;
+  std::string out_, pending_, sending_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  options o;
+  CLI::App app{
+      "A line-framed TCP client: NMEA sentences from stdin to HOST:PORT, and from HOST:PORT to\n"
+      "stdout, each cut out by seawire's stream reader and ended with CR LF. Output is flushed\n"
+      "after every read from the server.",
+      "seawire-tcp"};
+  app.add_option("server", o.server, "HOST:PORT of the server (a vehicle: port 29500)")->required();
+  app.add_flag("--reconnect", o.reconnect,
+               "when the connection fails or ends, connect again (backoff doubling from "
+               "--min-backoff to --max-backoff)");
+  app.add_option("--min-backoff", o.min_backoff, "first wait before reconnecting, seconds")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--max-backoff", o.max_backoff, "longest wait before reconnecting, seconds")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_flag("--lf", o.lf, "end lines written to stdout with LF alone");
+  app.add_flag("-N,--close-on-eof", o.close_on_eof,
+               "once stdin has ended and been sent, shut down the sending side and exit when the "
+               "server closes (default: keep printing what the server sends)");
+  app.add_flag("-q,--quiet", o.quiet, "no connection messages on stderr");
+  CLI11_PARSE(app, argc, argv);
+  const auto where = net::parse_endpoint(o.server);
+  if (!where || where->port == 0 || o.server.front() == ':') {
+    std::fprintf(stderr, "seawire-tcp: %s: expected HOST:PORT\n", o.server.c_str());
+    return 2;
+  }
+  std::signal(SIGPIPE, SIG_IGN);
+  try {
+    asio::io_context io;
+    client c(io, o, where->host, std::to_string(where->port));
+    c.start();
+    io.run();
+    return c.status();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "seawire-tcp: %s\n", e.what());
+    return 1;
+  }
+}
