@@ -56,7 +56,7 @@ class simulator {
         model_(o.vehicle, lat, lon, o.seed),
         timer_(io),
         start_time_(start_time) {
-    server_.on_sentence([this](net::client& c, std::string_view s) { command(c, s); });
+    server_.on_sentence([this](net::client& c, const nmea::framed_line& s) { command(c, s.text); });
   }
 
   [[nodiscard]] asio::ip::tcp::endpoint local_endpoint() const { return server_.local_endpoint(); }

@@ -78,6 +78,13 @@ class client : public std::enable_shared_from_this<client> {
   [[nodiscard]] std::uint64_t id() const { return id_; }
   [[nodiscard]] const std::string& peer() const { return peer_; }
   [[nodiscard]] const asio::ip::address& address() const { return address_; }
+  /// Queues `bytes` (whole lines) for this client alone.
+  void send(std::string bytes, std::uint32_t lines) {
+    auto b = std::make_shared<batch>();
+    b->bytes = std::move(bytes);
+    b->lines = lines;
+    send(b);
+  }
   /// Queues `b` for sending (dropping the oldest unsent lines when over the limit).
   void send(const batch_ptr& b);
   /// Closes the connection; `why` is logged once.
@@ -111,8 +118,10 @@ class client : public std::enable_shared_from_this<client> {
 /// Accepts clients on one endpoint and keeps them until they or the program close.
 class line_server {
  public:
-  using sentence_handler = std::function<void(client&, std::string_view sentence)>;
+  /// A sentence as received: its text (without the line ending) and how it ended.
+  using sentence_handler = std::function<void(client&, const nmea::framed_line& sentence)>;
   using client_handler = std::function<void(client&)>;
+  using closed_handler = std::function<void(client&, std::string_view why)>;
 
   line_server(asio::io_context& io, const asio::ip::tcp::endpoint& where, server_limits limits)
       : acceptor_(io), limits_(limits) {
@@ -129,6 +138,7 @@ class line_server {
 
   void on_sentence(sentence_handler h) { on_sentence_ = std::move(h); }
   void on_connect(client_handler h) { on_connect_ = std::move(h); }
+  void on_close(closed_handler h) { on_close_ = std::move(h); }
 
   void start() { accept(); }
 
@@ -182,6 +192,7 @@ class line_server {
   }
 
   void closed(client& c, std::string_view why) {
+    if (on_close_) on_close_(c, why);
     log("client %llu %s disconnected: %.*s; %llu lines sent, %llu dropped, %llu sentences in, "
         "%llu rejected",
         static_cast<unsigned long long>(c.id()), c.peer().c_str(), static_cast<int>(why.size()),
@@ -198,6 +209,7 @@ class line_server {
   std::uint64_t next_id_ = 1;
   sentence_handler on_sentence_;
   client_handler on_connect_;
+  closed_handler on_close_;
 };
 
 inline client::client(line_server& server, asio::ip::tcp::socket socket, std::uint64_t id)
@@ -225,7 +237,7 @@ inline void client::read() {
         self->reader_.feed(std::string_view(self->in_.data(), n), [&](const auto& item) {
           if (!item.is_sentence()) return;
           ++self->sentences_in;
-          if (self->server_.on_sentence_) self->server_.on_sentence_(*self, item.sentence.text);
+          if (self->server_.on_sentence_) self->server_.on_sentence_(*self, item.sentence);
         });
         if (!self->closed_) self->read();
       });

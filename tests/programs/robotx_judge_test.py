@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSL-1.0
+"""seawire-robotx-judge over loopback: teams written here connect and report.
+
+    robotx_judge_test.py JUDGE CASE      CASE: live, text, usage
+"""
+
+import functools
+import json
+import re
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+JUDGE, CASE = sys.argv[1], sys.argv[2]
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+        print("FAIL:", what, flush=True)
+
+
+def sentence(body, lower=False, ending="\r\n"):
+    x = functools.reduce(lambda a, c: a ^ ord(c), body, 0)
+    return ("$%s*%02" + ("x" if lower else "X") + "%s") % (body, x, ending)
+
+
+def hst_now():
+    t = time.gmtime(time.time() - 10 * 3600)
+    return time.strftime("%d%m%y", t), time.strftime("%H%M%S", t)
+
+
+def hrb(team="AUVSI"):
+    d, t = hst_now()
+    return sentence("RXHRB,%s,%s,21.31198,N,157.88972,W,%s,2,1" % (d, t, team))
+
+
+class Judge:
+    def __init__(self, *args):
+        self.proc = subprocess.Popen([JUDGE, "--listen", "127.0.0.1:0", *args],
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        first = self.proc.stderr.readline().decode()
+        m = re.fullmatch(r"listening on 127\.0\.0\.1:(\d+)\n", first)
+        if not m:
+            raise SystemExit("judge did not say where it listens: %r" % first)
+        self.port = int(m.group(1))
+        self.out = []  # (arrival time, line)
+        self.err = []
+        threading.Thread(target=self._read, args=(self.proc.stdout, self.out), daemon=True).start()
+        threading.Thread(target=self._read, args=(self.proc.stderr, self.err), daemon=True).start()
+
+    @staticmethod
+    def _read(stream, into):
+        for line in stream:
+            into.append((time.monotonic(), line.decode().rstrip("\n")))
+
+    def stop(self, sig=signal.SIGTERM):
+        self.proc.send_signal(sig)
+        rc = self.proc.wait(timeout=20)
+        time.sleep(0.2)
+        return rc
+
+    def findings(self):
+        objs = [json.loads(l) for _, l in self.out]
+        return [o for o in objs if o["type"] == "finding"]
+
+
+def team_socket(port):
+    s = socket.create_connection(("127.0.0.1", port), timeout=10)
+    return s
+
+
+def case_live():
+    j = Judge("--team", "AUVSI", "--report", "json", "--gap-limit", "1.5")
+    a = team_socket(j.port)
+    a.sendall(hrb().encode())
+    time.sleep(1.0)
+    a.sendall(hrb().encode())
+    d, t = hst_now()
+    cod = sentence("RXCOD,%s,%s,AUVSI,RGB" % (d, t))
+    a.sendall(cod.encode())
+    a.settimeout(10)
+    echo = a.recv(200).decode()
+    check(echo == cod, "RXCOD echoed back as sent: %r, sent %r" % (echo, cod))
+    gat = sentence("RXGAT,%s,%s,AUVSI,1,2,Y,RGB" % (d, t))
+    # A lower-case checksum shows only with a hex letter in it: pick an RXDOK that has one.
+    dok = next(x for x in (sentence("RXDOK,%s,%s,AUVSI,%s,%s" % (d, t, c, shape), lower=True,
+                                    ending="\n")
+                           for c in "RGB" for shape in ("CRUCI", "TRIAN", "CIRCL"))
+               if re.search(r"[a-f]", x[-3:-1]))
+    a.sendall((gat + gat + dok).encode())  # the same report twice within a second
+    time.sleep(1.0)
+    a.sendall(hrb("ROBOT").encode())  # another team's id on this link
+    a.sendall(b"$RXHRB,garbage*00\r\n" + bytes(range(128, 256)) + b"\r\n")
+    sent_last = time.monotonic()
+    time.sleep(2.6)  # no heartbeat: the gap is reported while it is open
+    gap = [(at, l) for at, l in j.out if '"rule":"heartbeat_gap"' in l]
+    check(gap and gap[0][0] - sent_last < 2.4,
+          "heartbeat gap reported live: %r" % [l for _, l in j.out][-5:])
+    b = team_socket(j.port)
+    b.sendall(hrb("ROBOT").encode() + b"$RXHRB,1112")  # ... and gone mid-sentence
+    b.close()
+    time.sleep(0.3)
+    a.close()
+    time.sleep(0.3)
+    check(j.stop() == 0, "exit 0 on SIGTERM")
+    rules = [f["rule"] for f in j.findings()]
+    print("findings:", rules)
+    for rule in ("rate", "checksum_lowercase", "line_ending", "team_mismatch", "heartbeat_gap",
+                 "checksum"):
+        check(rule in rules, "finding %s reported: %r" % (rule, rules))
+    mismatch = [f for f in j.findings() if f["rule"] == "team_mismatch"][0]
+    check(mismatch["address"] == "RXHRB" and mismatch["field_name"] == "team_id" and
+          mismatch["input"].startswith("$RXHRB"), "the finding names field and line: %r" % mismatch)
+    summary = json.loads(j.out[-1][1])
+    check(summary["type"] == "summary", "a summary last")
+    teams = {t["team"]: t for t in summary["teams"]}
+    check(set(teams) == {"AUVSI", "ROBOT"}, "a summary per team: %r" % list(teams))
+    auvsi = teams.get("AUVSI", {})
+    check(auvsi.get("reports", {}).get("RXHRB") == 3 and auvsi.get("reports", {}).get("RXCOD") == 1,
+          "AUVSI's accepted reports counted: %r" % auvsi)
+    check(auvsi.get("findings", {}).get("rate", 0) >= 1, "AUVSI's rate finding summed")
+    log = "\n".join(l for _, l in j.err)
+    check(log.count(" connected (") == 2 and log.count("disconnected:") == 2,
+          "connection events logged:\n" + log)
+
+
+def case_text():
+    j = Judge("--duration", "1.5")
+    a = team_socket(j.port)
+    a.sendall(hrb().encode() + sentence("RXHRB,111221,161229,21.31198,N,157.88972,W,AUVSI,7,1").encode())
+    rc = j.proc.wait(timeout=20)
+    time.sleep(0.2)
+    a.close()
+    text = [l for _, l in j.out]
+    check(rc == 0, "--duration ends the run with 0")
+    check(any(re.search(r"client 1 127\.0\.0\.1:\d+ team AUVSI: field RXHRB field 8 \(system_mode\)", l)
+              for l in text), "text finding names the field:\n" + "\n".join(text))
+    check(text[-2].startswith("summary: 1 team(s)") and text[-1].startswith("  AUVSI: 1 connection(s), 2 lines, 1 accepted (RXHRB 1)"),
+          "text summary:\n" + "\n".join(text))
+
+
+def case_usage():
+    r = subprocess.run([JUDGE, "--help"], capture_output=True, timeout=20)
+    check(r.returncode == 0 and b"--team" in r.stdout, "--help")
+    for args, why in ((["--listen", "nowhere"], b"expected ADDR:PORT"),
+                      (["--team", "AB", "--listen", "127.0.0.1:0"], b"5 characters"),
+                      (["--report", "xml", "--listen", "127.0.0.1:0"], b"report")):
+        r = subprocess.run([JUDGE, *args], capture_output=True, timeout=20)
+        check(r.returncode != 0 and why in r.stderr, "%r refused: %r" % (args, r.stderr[-200:]))
+
+
+{"live": case_live, "text": case_text, "usage": case_usage}[CASE]()
+if failures:
+    print("%d failure(s)" % len(failures))
+    sys.exit(1)
+print("ok")
