@@ -31,6 +31,7 @@ struct options {
   std::string team;
   double clock_tolerance = 0;
   double gap_limit = 1.5;
+  double jitter = 0.05;
   std::string report = "text";
   double duration = 0;
   net::server_limits limits;
@@ -76,6 +77,10 @@ class judge {
     config_.heartbeat_gap_limit = std::chrono::duration_cast<std::chrono::nanoseconds>(
         std::chrono::duration<double>(o.gap_limit));
     if (!o.team.empty()) config_.expected_team = rx::team(o.team);
+    // Arrival times carry the network's jitter: reports sent exactly 1 s apart may arrive a
+    // little less than 1 s apart, which is not the sender's fault.
+    config_.min_interval = std::chrono::duration_cast<std::chrono::nanoseconds>(
+        std::chrono::duration<double>(1.0 - o.jitter));
     if (o.clock_tolerance > 0)
       config_.clock_tolerance = std::chrono::duration_cast<std::chrono::nanoseconds>(
           std::chrono::duration<double>(o.clock_tolerance));
@@ -299,6 +304,11 @@ int main(int argc, char** argv) {
   app.add_option("--gap-limit", o.gap_limit,
                  "seconds without an accepted heartbeat that count as a gap")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--jitter", o.jitter,
+                 "seconds by which two reports of a type may arrive closer than 1 s apart without "
+                 "breaking the rate rule (network jitter)")
+      ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
   app.add_option("--clock-tolerance", o.clock_tolerance,
                  "flag reports whose HST time is further than this many seconds from their "

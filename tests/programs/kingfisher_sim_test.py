@@ -23,6 +23,7 @@ import tempfile
 import time
 
 SIM, DECODE, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+PAYLOAD = sys.argv[4] if len(sys.argv) > 4 else None  # the payload example, for case payload
 failures = []
 LOGS = []  # the simulators' stderr files, kept when a case fails
 
@@ -422,6 +423,24 @@ def case_signals():
     check(sim_d.returncode == 0 and b"--duration reached" in sim_d.stderr, "--duration ends the run")
 
 
+def case_payload():
+    # The payload example (examples/kingfisher_payload.cpp) steers the simulator to 90 degrees.
+    sim = Sim("--seed", "3", "--time", "2026-11-25T12:00:00Z")
+    watcher = Client(sim.port)
+    payload = subprocess.Popen([PAYLOAD, "--connect", "127.0.0.1:%d" % sim.port],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    pump_all([watcher], 8)
+    headings = [float(f[9]) for f in watcher.of("CPNVG")]
+    check(abs(headings[-1] - 90) < 2 and abs(headings[0] - 90) > 5,
+          "the payload turned the vehicle to 90: %.2f -> %.2f" % (headings[0], headings[-1]))
+    check(sim.stop() == 0, "exit 0")
+    out, err = payload.communicate(timeout=20)
+    check(payload.returncode == 0, "the payload ends when the vehicle closes: %r" % err)
+    log = sim.log()
+    check("0 rejected" in log and re.search(r"[1-9]\d* commands applied", log) is not None,
+          "its commands were applied:\n" + log)
+
+
 def case_usage():
     r = subprocess.run([SIM, "--help"], capture_output=True, timeout=20)
     check(r.returncode == 0 and b"--listen" in r.stdout and b"--watchdog" in r.stdout, "--help")
@@ -444,7 +463,7 @@ def case_usage():
 
 
 CASES = {"stream": case_stream, "commands": case_commands, "load": case_load, "churn": case_churn,
-         "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage}
+         "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload}
 CASES[CASE]()
 if failures:
     print("%d failure(s); the simulator's logs: %s" % (len(failures), " ".join(LOGS)))

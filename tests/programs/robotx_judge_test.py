@@ -16,6 +16,7 @@ import threading
 import time
 
 JUDGE, CASE = sys.argv[1], sys.argv[2]
+HEARTBEAT = sys.argv[3] if len(sys.argv) > 3 else None  # the heartbeat example, for its case
 failures = []
 
 
@@ -41,8 +42,8 @@ def hrb(team="AUVSI"):
 
 
 class Judge:
-    def __init__(self, *args):
-        self.proc = subprocess.Popen([JUDGE, "--listen", "127.0.0.1:0", *args],
+    def __init__(self, *args, listen="127.0.0.1:0"):
+        self.proc = subprocess.Popen([JUDGE, "--listen", listen, *args],
                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         first = self.proc.stderr.readline().decode()
         m = re.fullmatch(r"listening on 127\.0\.0\.1:(\d+)\n", first)
@@ -145,6 +146,28 @@ def case_text():
           "text summary:\n" + "\n".join(text))
 
 
+def case_heartbeat():
+    # The heartbeat example reports at 1 Hz, and reconnects when the judge goes away and back.
+    j1 = Judge("--team", "AUVSI", "--report", "json")
+    hb = subprocess.Popen([HEARTBEAT, "--connect", "127.0.0.1:%d" % j1.port, "5"],
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    time.sleep(2.5)
+    check(j1.stop() == 0, "first judge: exit 0")
+    time.sleep(0.7)
+    j2 = Judge("--team", "AUVSI", "--report", "json", listen="127.0.0.1:%d" % j1.port)
+    out, err = hb.communicate(timeout=30)
+    time.sleep(0.3)
+    check(j2.stop() == 0, "second judge: exit 0")
+    check(hb.returncode == 0, "the example ends after 5 heartbeats: %r" % err)
+    check(err.decode().count("connected to") == 2, "it reconnected:\n" + err.decode())
+    for n, j in (("first", j1), ("second", j2)):
+        summary = json.loads(j.out[-1][1])
+        hrb_count = summary["teams"][0]["reports"].get("RXHRB", 0) if summary["teams"] else 0
+        check(hrb_count >= 1, "%s judge got heartbeats: %r" % (n, summary))
+        bad = [f for f in j.findings() if f["rule"] not in ("heartbeat_gap",)]
+        check(not bad, "%s judge: the heartbeats are clean: %r" % (n, bad))
+
+
 def case_usage():
     r = subprocess.run([JUDGE, "--help"], capture_output=True, timeout=20)
     check(r.returncode == 0 and b"--team" in r.stdout, "--help")
@@ -155,7 +178,7 @@ def case_usage():
         check(r.returncode != 0 and why in r.stderr, "%r refused: %r" % (args, r.stderr[-200:]))
 
 
-{"live": case_live, "text": case_text, "usage": case_usage}[CASE]()
+{"live": case_live, "text": case_text, "usage": case_usage, "heartbeat": case_heartbeat}[CASE]()
 if failures:
     print("%d failure(s)" % len(failures))
     sys.exit(1)
