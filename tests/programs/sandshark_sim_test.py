@@ -1,0 +1,240 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSL-1.0
+"""seawire-sandshark-sim over loopback: a payload written here against the simulated BAM.
+
+    sandshark_sim_test.py SIM CASE      CASE: session, shutdown, usage
+
+Every step is checked from both sides: what the payload receives and what the simulator logs.
+"""
+
+import functools
+import os
+import re
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+
+SIM, CASE = sys.argv[1], sys.argv[2]
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+        print("FAIL:", what, flush=True)
+
+
+def sentence(body):
+    x = functools.reduce(lambda a, c: a ^ ord(c), body, 0)
+    return "$%s*%02X\r\n" % (body, x)
+
+
+def stamp():
+    t = time.gmtime()
+    return time.strftime("%H%M%S.00", t)
+
+
+def checksum_ok(line):
+    m = re.fullmatch(r"\$([^*]*)\*([0-9A-F]{2})", line)
+    return bool(m) and functools.reduce(lambda a, c: a ^ ord(c), m.group(1), 0) == int(m.group(2), 16)
+
+
+class Sim:
+    def __init__(self, *args):
+        fd, self.log_path = tempfile.mkstemp(prefix="seawire-sandshark-", suffix=".log")
+        os.close(fd)
+        self.proc = subprocess.Popen([SIM, "--listen", "127.0.0.1:0", *args],
+                                     stderr=open(self.log_path, "ab"))
+        deadline = time.monotonic() + 20
+        self.port = None
+        while self.port is None and time.monotonic() < deadline:
+            m = re.match(r"listening on 127\.0\.0\.1:(\d+)\n", self.log())
+            if m:
+                self.port = int(m.group(1))
+            elif self.proc.poll() is not None:
+                break
+            time.sleep(0.02)
+        if self.port is None:
+            raise SystemExit("no 'listening on': %r" % self.log())
+
+    def log(self):
+        with open(self.log_path) as f:
+            return f.read()
+
+    def wait_log(self, pattern, timeout=10):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if re.search(pattern, self.log()):
+                return True
+            time.sleep(0.05)
+        return False
+
+
+class Payload:
+    def __init__(self, port):
+        self.sock = socket.create_connection(("127.0.0.1", port), timeout=10)
+        self.sock.settimeout(0.05)
+        self.buf = b""
+        self.lines = []  # (arrival, line)
+        self.closed = False
+
+    def pump(self, seconds):
+        end = time.monotonic() + seconds
+        while time.monotonic() < end and not self.closed:
+            try:
+                data = self.sock.recv(65536)
+            except socket.timeout:
+                continue
+            except ConnectionError:
+                self.closed = True
+                break
+            if not data:
+                self.closed = True
+                break
+            self.buf += data
+            *done, self.buf = self.buf.split(b"\r\n")
+            now = time.monotonic()
+            self.lines += [(now, l.decode()) for l in done]
+
+    def wait_for(self, pattern, timeout=10, start=None):
+        """The first line matching `pattern` (a regex), from now on or from line `start`."""
+        start = len(self.lines) if start is None else start
+        end = time.monotonic() + timeout
+        while time.monotonic() < end:
+            for at, l in self.lines[start:]:
+                if re.search(pattern, l):
+                    return l
+            start = len(self.lines)
+            self.pump(0.05)
+            if self.closed:
+                break
+        return None
+
+    def send(self, body):
+        self.sock.sendall(sentence(body).encode())
+
+    def of(self, address):
+        return [l.split("*")[0].split(",") for _, l in self.lines if l[1:6] == address]
+
+    def close(self):
+        self.sock.close()
+
+
+TIMELINE = """# a short mission
+0    mission Waiting
+0.5  mission Ready dive1.xml
+1.0  mission Running dive1.xml
+1.5  control on
+60   mission Completed dive1.xml
+"""
+
+
+def case_session():
+    fd, mission = tempfile.mkstemp(suffix=".mission")
+    os.write(fd, TIMELINE.encode())
+    os.close(fd)
+    sim = Sim("--mission", mission, "--nav-rate", "10", "--client", "backseat=127.0.0.1",
+              "--shutdown-wait", "1")
+    p = Payload(sim.port)
+    # Handshake: BFVER at once; nothing else before BPLOG.
+    ver = p.wait_for(r"^\$BFVER,")
+    check(ver is not None and ver.split(",")[2].startswith("1.0"), "BFVER on connect: %r" % ver)
+    p.send("BPVER,%s,1.0" % stamp())
+    p.pump(1.2)
+    check([l for _, l in p.lines if not l.startswith("$BFVER")] == [],
+          "no status messages before BPLOG: %r" % [l for _, l in p.lines][:5])
+    check(sim.wait_log(r"client 1 \(backseat\): BPVER 1.0"), "BPVER logged with the client's name")
+    check("client 1: named backseat (127.0.0.1)" in sim.log(), "the named client recognised")
+    # Subscriptions: ACK must be asked for explicitly; ALL then brings the status messages.
+    p.send("BPLOG,ALL,ON")
+    p.pump(0.5)
+    check(p.of("BFACK") == [], "no BFACK before BPLOG,ACK,ON")
+    check(p.of("BFNVG") != [], "BPLOG,ALL,ON: BFNVG flows")
+    p.send("BPLOG,ACK,ON")
+    ack = p.wait_for(r"^\$BFACK,[^,]*,LOG,")
+    check(ack is not None and ack.split(",")[5] == "2", "BPLOG,ACK,ON acknowledged ok: %r" % ack)
+    check(all(checksum_ok(l) for _, l in p.lines), "every line has a good checksum")
+    # The mission runs and hands control over.
+    ctl = p.wait_for(r"^\$BFCTL,[^,]*,1\*", start=0)
+    check(ctl is not None, "BFCTL 1 once the mission runs")
+    check(any(f[3].startswith("Running") for f in p.of("BFMIS")) or
+          sim.wait_log("BFMIS Running dive1.xml"), "BFMIS Running")
+    # Dynamic requests, kept alive every second: heading 90, 5 m, 1.5 m/s.
+    for _ in range(8):
+        p.send("BPRMB,%s,90.0,5.0,0,1.5,1,0" % stamp())
+        p.pump(1.0)
+    acks = [f for f in p.of("BFACK") if f[2] == "RMB"]
+    check(len(acks) == 8 and all(f[5] == "2" for f in acks), "each BPRMB acked ok: %r" % acks)
+    check(re.search(r"client 1 \(backseat\): BPRMB request started", sim.log()), "the request logged")
+    heading = float(p.of("BFNVG")[-1][9])
+    check(abs(heading - 90) < 20, "the vehicle turns to the requested heading: %.1f" % heading)
+    depth = float(p.of("BFNVG")[-1][8])
+    check(depth > 1.0, "and dives toward 5 m: %.2f" % depth)
+    check(not any(f[2] == "0" for f in p.of("BFCTL")[1:]), "control kept while BPRMB comes")
+    # The keep-alive lapses: control goes back to the vehicle after 5 s.
+    lapse_start = time.monotonic()
+    back = p.wait_for(r"^\$BFCTL,[^,]*,0\*", timeout=10)
+    elapsed = time.monotonic() - lapse_start
+    check(back is not None and 3.5 < elapsed < 7, "BFCTL 0 about 5 s after the last BPRMB: %.2f s" % elapsed)
+    check(sim.wait_log(r"no BPRMB for 5 s: the vehicle takes control back"), "the lapse logged")
+    p.send("BPRMB,%s,180.0,,,,,0" % stamp())
+    late = p.wait_for(r"^\$BFACK,[^,]*,RMB,")
+    check(late is not None and late.split(",")[5] == "1", "a BPRMB without control fails: %r" % late)
+    # Abort: pending first, the final ack within 2 s, the mission shows it.
+    p.send("BPABT,%s,test abort,1" % stamp())
+    mark = len(p.lines)
+    first = p.wait_for(r"^\$BFACK,[^,]*,ABT,")
+    t_first = time.monotonic()
+    final = p.wait_for(r"^\$BFACK,[^,]*,ABT,[^,]*,[^,]*,[^3]", start=mark)
+    check(first is not None and first.split(",")[5] == "3", "BPABT: pending ack first: %r" % first)
+    check(final is not None and final.split(",")[5] == "2" and time.monotonic() - t_first < 2.0,
+          "BPABT: final ack within 2 s: %r" % final)
+    aborted = p.wait_for(r"^\$BFMIS,[^,]*,[^,]*,Aborted", timeout=5, start=mark)
+    statuses = [f[3] for f in p.of("BFMIS")]
+    check("Aborting" in statuses and aborted is not None, "BFMIS Aborting then Aborted: %r" % statuses)
+    # Reconnect: a new session, BFVER again, no subscriptions kept.
+    p.close()
+    check(sim.wait_log(r"client 1 127\.0\.0\.1:\d+ disconnected"), "disconnect logged")
+    q = Payload(sim.port)
+    check(q.wait_for(r"^\$BFVER,") is not None, "BFVER again after reconnecting")
+    q.pump(0.6)
+    check([l for _, l in q.lines if not l.startswith("$BFVER")] == [], "subscriptions start empty")
+    # Shutdown: BFSHT at once, the connection kept for --shutdown-wait, then closed.
+    q.send("BPLOG,ALL,ON")
+    q.pump(0.3)
+    sim.proc.send_signal(signal.SIGTERM)
+    sht = q.wait_for(r"^\$BFSHT,")
+    t_sht = time.monotonic()
+    check(sht is not None, "BFSHT on SIGTERM")
+    q.pump(5)
+    check(q.closed and time.monotonic() - t_sht >= 0.8, "closed after the shutdown wait")
+    check(sim.proc.wait(timeout=10) == 0, "exit 0")
+    log = sim.log()
+    check("BFSHT sent to 1 client(s), closing in 1 s" in log, "shutdown logged:\n" + log)
+    os.remove(mission)
+
+
+def case_usage():
+    r = subprocess.run([SIM, "--help"], capture_output=True, timeout=20)
+    check(r.returncode == 0 and b"--mission" in r.stdout, "--help")
+    fd, bad = tempfile.mkstemp(suffix=".mission")
+    os.write(fd, b"0 mission Waiting\n2 launch now\n")
+    os.close(fd)
+    for args, why in ((["--listen", "x"], b"expected ADDR:PORT"),
+                      (["--client", "backseat=nowhere"], b"not an IP address"),
+                      (["--mission", bad], b":2: expected"),
+                      (["--mission", "/nonexistent"], b"cannot be read"),
+                      (["--pending", "ABT,XYZ"], b"XYZ is none of")):
+        r = subprocess.run([SIM, *args], capture_output=True, timeout=20)
+        check(r.returncode == 2 and why in r.stderr, "%r refused: %r" % (args, r.stderr))
+    os.remove(bad)
+
+
+{"session": case_session, "usage": case_usage}[CASE]()
+if failures:
+    print("%d failure(s)" % len(failures))
+    sys.exit(1)
+print("ok")
