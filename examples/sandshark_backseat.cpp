@@ -8,15 +8,25 @@
 //
 //   printf '@0.5\n$BFACK,000000.500,LOG,,,2,0,,*10\n$BFCTL,000001.000,1*71\n@9\n' |
 //     ./seawire_sandshark_backseat
+//
+//   ./seawire_sandshark_backseat --connect 127.0.0.1:29500 [SECONDS]
+//     the same session on a real clock against a vehicle (or seawire-sandshark-sim) over TCP,
+//     for SECONDS (default: until the vehicle closes the connection)
 
+#if SEAWIRE_EXAMPLE_HAS_ASIO
+#include <asio.hpp>
+#endif
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <string_view>
 #include <variant>
 
+#include "seawire/nmea/stream.hpp"
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/sandshark/session.hpp"
 
@@ -25,9 +35,12 @@ using namespace std::chrono_literals;
 
 namespace {
 
-template <class Session>
-void flush(Session& s) {
-  while (auto line = s.poll_send()) std::cout << "send: " << line->view();
+template <class Session, class Write>
+void flush(Session& s, Write write) {
+  while (auto line = s.poll_send()) {
+    std::cout << "send: " << line->view();
+    write(line->view());
+  }
   while (auto e = s.poll_event()) {
     std::cout << "event: " << ss::name(e->kind);
     if (!e->command.empty()) std::cout << ' ' << e->command.view();
@@ -46,9 +59,99 @@ ss::bprmb heading_and_speed() {
   return r;
 }
 
+const auto no_write = [](std::string_view) {};
+
+#if SEAWIRE_EXAMPLE_HAS_ASIO
+// The session on the steady clock over TCP: lines from the socket through the stream reader,
+// timers at the session's next deadline, what it sends written at once.
+int live(const std::string& host, const std::string& port, double seconds) {
+  asio::io_context io;
+  asio::ip::tcp::socket vehicle(io);
+  asio::error_code ec;
+  asio::connect(vehicle, asio::ip::tcp::resolver(io).resolve(host, port, ec), ec);
+  if (ec) {
+    std::cerr << "cannot connect to " << host << ':' << port << ": " << ec.message() << '\n';
+    return 1;
+  }
+  const auto write = [&](std::string_view bytes) {
+    asio::error_code e;
+    asio::write(vehicle, asio::buffer(bytes.data(), bytes.size()), e);
+  };
+  const auto now = [] { return ss::time_point(std::chrono::steady_clock::now()); };
+  ss::payload_config config;
+  ss::payload_session<> session(config);
+  session.start(now());
+  for (std::string_view code : {"NVG", "MIS", "CTL"}) {
+    if (!session.subscribe(code, now())) return 1;
+  }
+  flush(session, write);
+
+  asio::steady_timer timer(io);
+  std::function<void()> arm = [&] {
+    const auto due = session.next_deadline();
+    timer.expires_at(due ? *due : now() + 1s);
+    timer.async_wait([&](const asio::error_code& e) {
+      if (e) return;
+      session.tick(now());
+      flush(session, write);
+      arm();
+    });
+  };
+  seawire::nmea::stream_reader<> reader;
+  std::array<char, 4096> buf{};
+  std::function<void()> read = [&] {
+    vehicle.async_read_some(asio::buffer(buf), [&](const asio::error_code& e, std::size_t n) {
+      if (e) {
+        std::cout << "vehicle closed the connection\n";
+        io.stop();
+        return;
+      }
+      reader.feed(std::string_view(buf.data(), n), [&](const auto& item) {
+        if (!item.is_sentence()) return;
+        const auto r = session.receive(item.sentence.text, now());
+        if (r && std::holds_alternative<ss::bfctl>(r.value) && session.has_control() &&
+            !session.current_request()) {
+          if (!session.set_request(heading_and_speed(), now())) io.stop();
+        }
+      });
+      flush(session, write);
+      arm();  // a reply may have moved the next deadline
+      read();
+    });
+  };
+  asio::steady_timer end(io);
+  if (seconds > 0) {
+    end.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(seconds)));
+    end.async_wait([&](const asio::error_code& e) {
+      if (!e) io.stop();
+    });
+  }
+  arm();
+  read();
+  io.run();
+  return 0;
+}
+#endif
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc >= 3 && std::string_view(argv[1]) == "--connect") {
+    const std::string where = argv[2];
+    const auto colon = where.rfind(':');
+    if (colon == std::string::npos) {
+      std::cerr << "--connect HOST:PORT [SECONDS]\n";
+      return 2;
+    }
+#if SEAWIRE_EXAMPLE_HAS_ASIO
+    return live(where.substr(0, colon), where.substr(colon + 1),
+                argc > 3 ? std::strtod(argv[3], nullptr) : 0.0);
+#else
+    std::cerr << "built without asio (libasio-dev): --connect is not available\n";
+    return 2;
+#endif
+  }
   ss::payload_config config;
   config.heartbeat_period = 1s;
   ss::payload_session<> session(config);
@@ -58,7 +161,7 @@ int main() {
   for (std::string_view code : {"NVG", "MIS", "CTL"}) {
     if (!session.subscribe(code, now)) return 1;
   }
-  flush(session);
+  flush(session, no_write);
 
   std::string line;
   while (std::getline(std::cin, line)) {
@@ -79,11 +182,11 @@ int main() {
         if (!due || *due > t) break;
         now = *due > now ? *due : now;
         session.tick(now);
-        flush(session);
+        flush(session, no_write);
       }
       now = t > now ? t : now;
       session.tick(now);
-      flush(session);
+      flush(session, no_write);
       continue;
     }
     const auto r = session.receive(line, now);
@@ -93,7 +196,7 @@ int main() {
                !session.current_request()) {
       if (!session.set_request(heading_and_speed(), now)) return 1;
     }
-    flush(session);
+    flush(session, no_write);
   }
   return 0;
 }

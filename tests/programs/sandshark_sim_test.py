@@ -18,6 +18,7 @@ import tempfile
 import time
 
 SIM, CASE = sys.argv[1], sys.argv[2]
+BACKSEAT = sys.argv[3] if len(sys.argv) > 3 else None  # the backseat example, for its case
 failures = []
 
 
@@ -217,6 +218,34 @@ def case_session():
     os.remove(mission)
 
 
+def case_backseat():
+    # The backseat example takes control when the mission hands it over and keeps its request
+    # alive; when it stops, the request lapses and the vehicle takes control back.
+    fd, mission = tempfile.mkstemp(suffix=".mission")
+    os.write(fd, b"0 mission Running dive1.xml\n0.5 control on\n")
+    os.close(fd)
+    sim = Sim("--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
+    watcher = Payload(sim.port)
+    watcher.send("BPLOG,NVG,ON")
+    backseat = subprocess.run([BACKSEAT, "--connect", "127.0.0.1:%d" % sim.port, "12"],
+                              capture_output=True, timeout=60)
+    out = backseat.stdout.decode()
+    watcher.pump(0.2)
+    check(backseat.returncode == 0, "the example ran: %r" % backseat.stderr)
+    check(out.count("send: $BPRMB") >= 2, "it kept its request alive:\n" + out[-1500:])
+    heading = float(watcher.of("BFNVG")[-1][9])
+    check(abs(heading - 90) < 5, "the vehicle follows the backseat to 90: %.1f" % heading)
+    log = sim.log()
+    check("BPRMB request started" in log, "the request started:\n" + log)
+    check("takes control back" not in log, "no lapse while the backseat runs:\n" + log)
+    check(sim.wait_log("no BPRMB for 5 s: the vehicle takes control back", timeout=10),
+          "the lapse once it is gone")
+    watcher.close()
+    sim.proc.send_signal(signal.SIGTERM)
+    check(sim.proc.wait(timeout=10) == 0, "exit 0")
+    os.remove(mission)
+
+
 def case_usage():
     r = subprocess.run([SIM, "--help"], capture_output=True, timeout=20)
     check(r.returncode == 0 and b"--mission" in r.stdout, "--help")
@@ -233,7 +262,7 @@ def case_usage():
     os.remove(bad)
 
 
-{"session": case_session, "usage": case_usage}[CASE]()
+{"session": case_session, "usage": case_usage, "backseat": case_backseat}[CASE]()
 if failures:
     print("%d failure(s)" % len(failures))
     sys.exit(1)
