@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSL-1.0
+"""seawire-anello-feed through a socat pseudo-terminal pair, over UDP on loopback, and from a file.
+
+    anello_feed_test.py FEED DECODE CASE      CASE: pty, udp, input, usage
+"""
+
+import json
+import os
+import select
+import shutil
+import socket
+import subprocess
+import sys
+import tempfile
+import termios
+import time
+import tty
+
+FEED, DECODE, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+        print("FAIL:", what, flush=True)
+
+
+def decode(data):
+    r = subprocess.run([DECODE, "--format", "json"], input=data, capture_output=True, timeout=60)
+    return [json.loads(l) for l in r.stdout.decode().splitlines()]
+
+
+def in_order(objs):
+    frames = [o for o in objs if o["type"] == "AB00"]
+    times = [o["gps_time"] for o in frames]
+    return frames, all(a < b for a, b in zip(times, times[1:]))
+
+
+def case_pty():
+    socat = shutil.which("socat")
+    if not socat:
+        raise SystemExit("socat is needed (apt-get install socat)")
+    d = tempfile.mkdtemp()
+    ins, feed = os.path.join(d, "ins"), os.path.join(d, "feed")
+    s = subprocess.Popen([socat, "PTY,raw,echo=0,link=" + ins, "PTY,raw,echo=0,link=" + feed],
+                         stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 10
+        while not (os.path.exists(ins) and os.path.exists(feed)) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        fd = os.open(ins, os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(fd)
+        p = subprocess.Popen([FEED, "--device", feed, "--baud", "115200", "--rate", "10",
+                              "--seconds", "3", "--read-rmc"],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        got = b""
+        sent_rmc = False
+        end = time.monotonic() + 10
+        while p.poll() is None and time.monotonic() < end:
+            r, _, _ = select.select([fd], [], [], 0.05)
+            if r:
+                got += os.read(fd, 65536)
+            if not sent_rmc and len(got) > 200:
+                # The INS answers: an RMC, a GGA (not RMC: counted, not printed), a bad checksum.
+                os.write(fd, b"$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214"
+                             b",,,A*70\r\n$GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,"
+                             b"46.6,M,-33.2,M,,*5C\r\n$GPRMC,164959.00,A,4221.71114,N*00\r\n")
+                sent_rmc = True
+        while True:
+            r, _, _ = select.select([fd], [], [], 0.3)
+            if not r:
+                break
+            got += os.read(fd, 65536)
+        out, err = p.communicate(timeout=10)
+        os.close(fd)
+    finally:
+        s.terminate()
+        s.wait(timeout=10)
+    check(p.returncode == 0, "exit 0: %r" % err)
+    objs = decode(got)
+    frames, ordered = in_order(objs)
+    vbw = [o for o in objs if o["type"] == "VWVBW"]
+    check(len(frames) == 30 and len(vbw) == 3, "30 frames and 3 VBW in 3 s at 10 Hz: %d, %d"
+          % (len(frames), len(vbw)))
+    check(ordered, "frames in order")
+    check(all("error" not in o for o in objs), "everything decodes: %r" % [o for o in objs if "error" in o][:2])
+    check(objs and objs[0]["type"] == "VWVBW", "a VBW leads each second")
+    check(out == b"$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70\n",
+          "--read-rmc prints the INS's RMC and nothing else: %r" % out)
+    check(b"30 frames, 3 sentences sent" in err and b"1 RMC read, 2 other lines" in err,
+          "summary: %r" % err)
+
+
+def case_udp():
+    u = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    u.bind(("127.0.0.1", 0))
+    u.settimeout(3)
+    p = subprocess.Popen([FEED, "--udp", "127.0.0.1:%d" % u.getsockname()[1], "--rate", "10",
+                          "--seconds", "1"], stderr=subprocess.PIPE)
+    grams = []
+    try:
+        while len(grams) < 11:
+            grams.append(u.recv(65536))
+    except socket.timeout:
+        pass
+    p.wait(timeout=10)
+    check(p.returncode == 0, "exit 0")
+    frames = [g for g in grams if g[:2] == b"\xab\x00"]
+    sentences = [g for g in grams if g[:1] == b"$"]
+    check(len(frames) == 10 and all(len(g) == 56 for g in frames), "one frame per datagram")
+    check(len(sentences) == 1 and sentences[0].endswith(b"\r\n") and
+          sentences[0].count(b"\r\n") == 1, "one sentence per datagram: %r" % sentences)
+    objs = decode(b"".join(grams))
+    check(len([o for o in objs if o["type"] == "AB00"]) == 10 and all("error" not in o for o in objs),
+          "the datagrams decode")
+
+
+def case_input():
+    # A recorded stream (here: what the feed itself writes to stdout) is sent back unchanged,
+    # paced: 20 frames at 10 Hz take about two seconds.
+    rec = subprocess.run([FEED, "--rate", "10", "--seconds", "2", "-q"], capture_output=True,
+                         timeout=30).stdout
+    with tempfile.NamedTemporaryFile(delete=False) as f:
+        f.write(b"noise before\r\n" + rec)
+        path = f.name
+    t = time.monotonic()
+    r = subprocess.run([FEED, "--input", path, "--rate", "10"], capture_output=True, timeout=30)
+    elapsed = time.monotonic() - t
+    os.remove(path)
+    check(r.returncode == 0 and r.stdout == rec, "the recorded stream comes out unchanged")
+    check(1.6 < elapsed < 4, "paced at the frame rate: %.2f s" % elapsed)
+    check(b"bytes outside frames and sentences skipped" in r.stderr, "noise reported: %r" % r.stderr)
+    check(b"20 frames, 2 sentences sent" in r.stderr, "summary: %r" % r.stderr)
+
+
+def case_usage():
+    r = subprocess.run([FEED, "--help"], capture_output=True, timeout=20)
+    check(r.returncode == 0 and b"--device" in r.stdout, "--help")
+    for args, why, rc in ((["--baud", "12345"], b"not a serial speed", None),
+                          (["--device", "/nonexistent/tty"], b"No such file", 1),
+                          (["--device", "/dev/null"], b"not a terminal", 1),
+                          (["--device", "x", "--udp", "127.0.0.1:9"], b"excludes", None),
+                          (["--read-rmc"], b"requires", None),
+                          (["--udp", "127.0.0.1"], b"expected HOST:PORT", 1),
+                          (["--input", "/nonexistent"], b"cannot be read", 2)):
+        r = subprocess.run([FEED, *args, "--seconds", "0.1"], capture_output=True, timeout=20)
+        check(r.returncode != 0 and (rc is None or r.returncode == rc) and why in r.stderr,
+              "%r refused: %d %r" % (args, r.returncode, r.stderr[-200:]))
+
+
+{"pty": case_pty, "udp": case_udp, "input": case_input, "usage": case_usage}[CASE]()
+if failures:
+    print("%d failure(s)" % len(failures))
+    sys.exit(1)
+print("ok")
