@@ -105,8 +105,10 @@ int main(int argc, char** argv) {
       return 2;
     }
 #if SEAWIRE_EXAMPLE_HAS_ASIO
-    asio::ip::tcp::iostream vehicle(std::string(where.substr(0, colon)),
-                                    std::string(where.substr(colon + 1)));
+    std::string_view host = where.substr(0, colon);  // "[::1]" -> "::1"
+    if (host.size() > 2 && host.front() == '[' && host.back() == ']')
+      host = host.substr(1, host.size() - 2);
+    asio::ip::tcp::iostream vehicle(std::string(host), std::string(where.substr(colon + 1)));
     if (!vehicle) {
       std::fprintf(stderr, "cannot connect to %s: %s\n", argv[2],
                    vehicle.error().message().c_str());

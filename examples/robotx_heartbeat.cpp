@@ -63,7 +63,7 @@ int live(const std::string& host, const std::string& port, long count) {
       continue;
     }
     std::fprintf(stderr, "connected to %s:%s\n", host.c_str(), port.c_str());
-    backoff = 500ms;
+    const auto connected_at = steady_clock::now();
     while (sent < count && judge) {
       while (const auto out = scheduler.poll(rx::instant(system_clock::now()))) {
         if (!out->sentence) return 1;
@@ -77,6 +77,9 @@ int live(const std::string& host, const std::string& port, long count) {
           duration_cast<system_clock::duration>(scheduler.next_due().time_since_epoch())));
     }
     if (sent < count) std::fprintf(stderr, "connection lost; reconnecting\n");
+    // The wait starts again from the shortest only after a connection that lasted: a server
+    // that accepts and closes at once is not hammered.
+    if (steady_clock::now() - connected_at >= 2s) backoff = 500ms;
   }
   return 0;
 #else
@@ -99,7 +102,10 @@ int main(int argc, char** argv) {
       return 2;
     }
     const long count = argc > 3 ? std::strtol(argv[3], nullptr, 10) : 1L << 62;
-    return live(where.substr(0, colon), where.substr(colon + 1), count);
+    std::string host = where.substr(0, colon);
+    if (host.size() > 2 && host.front() == '[' && host.back() == ']')
+      host = host.substr(1, host.size() - 2);
+    return live(host, where.substr(colon + 1), count);
   }
 
   const bool now = argc > 1 && std::string_view(argv[1]) == "--now";

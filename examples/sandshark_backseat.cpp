@@ -145,8 +145,10 @@ int main(int argc, char** argv) {
       return 2;
     }
 #if SEAWIRE_EXAMPLE_HAS_ASIO
-    return live(where.substr(0, colon), where.substr(colon + 1),
-                argc > 3 ? std::strtod(argv[3], nullptr) : 0.0);
+    std::string host = where.substr(0, colon);  // "[::1]" -> "::1"
+    if (host.size() > 2 && host.front() == '[' && host.back() == ']')
+      host = host.substr(1, host.size() - 2);
+    return live(host, where.substr(colon + 1), argc > 3 ? std::strtod(argv[3], nullptr) : 0.0);
 #else
     std::cerr << "built without asio (libasio-dev): --connect is not available\n";
     return 2;

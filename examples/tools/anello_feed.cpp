@@ -68,11 +68,13 @@ std::optional<speed_t> speed_of(int baud) {
 
 // Opens a serial device raw at `baud`, 8N1, no flow control. -1 and `error` on failure.
 int open_serial(const std::string& path, int baud, std::string& error) {
-  const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+  // O_NONBLOCK only for the open itself (it would wait for carrier detect); writes block.
+  const int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) {
     error = path + ": " + std::strerror(errno);
     return -1;
   }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   termios t{};
   if (::tcgetattr(fd, &t) != 0) {
     error = path + ": not a terminal (" + std::string(std::strerror(errno)) + ")";
@@ -195,15 +197,23 @@ std::vector<period> read_stream(std::istream& in, std::uint64_t& dropped) {
 
 class feeder {
  public:
-  feeder(asio::io_context& io, const options& o) : io_(io), o_(o), timer_(io), device_in_(io) {}
+  feeder(asio::io_context& io, const options& o)
+      : io_(io), o_(o), timer_(io), device_in_(io), signals_(io, SIGINT, SIGTERM) {}
 
   bool open(std::string& error) {
     if (!o_.device.empty()) {
       fd_ = open_serial(o_.device, o_.baud, error);
       if (fd_ < 0) return false;
       if (o_.read_rmc) {
+        // A descriptor of its own for reading: asio makes it non-blocking, and a dup() would
+        // share that flag with the blocking writes.
+        const int in = ::open(o_.device.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+        if (in < 0) {
+          error = o_.device + ": " + std::strerror(errno);
+          return false;
+        }
         asio::error_code ec;
-        device_in_.assign(::dup(fd_), ec);
+        device_in_.assign(in, ec);
         if (ec) {
           error = o_.device + ": " + ec.message();
           return false;
@@ -237,6 +247,9 @@ class feeder {
   void run(std::function<std::optional<period>(std::string&)> next) {
     next_ = std::move(next);
     t0_ = steady::now();
+    signals_.async_wait([this](const asio::error_code& ec, int) {
+      if (!ec) finish();  // drain the line, print the summary, exit 0
+    });
     if (o_.read_rmc) read();
     step();
     io_.run();
@@ -331,6 +344,7 @@ class feeder {
     if (fd_ >= 0) ::tcdrain(fd_);
     timer_.cancel();
     asio::error_code ignored;
+    signals_.cancel(ignored);
     if (device_in_.is_open()) device_in_.close(ignored);
     if (!o_.quiet)
       std::fprintf(stderr, "seawire-anello-feed: %llu frames, %llu sentences sent in %.2f s%s\n",
@@ -347,6 +361,7 @@ class feeder {
   const options& o_;
   asio::steady_timer timer_;
   asio::posix::stream_descriptor device_in_;
+  asio::signal_set signals_;
   std::optional<asio::ip::udp::socket> udp_;
   asio::ip::udp::endpoint udp_to_;
   int fd_ = -1;

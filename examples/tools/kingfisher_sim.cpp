@@ -27,10 +27,11 @@ namespace kf = seawire::kingfisher;
 namespace net = seawire::tools::net;
 using sys_ns = std::chrono::sys_time<std::chrono::nanoseconds>;
 
-// A heading rounded to `places` digits, kept below 360 (359.996 at two places is 0.00).
+// A heading in [0, 360) rounded to `places` digits: -0.3 is 359.7, and 359.996 at two places
+// is 0.00, not 360.00 (which the field refuses).
 double wrap_heading(double h, int places) {
   const double scale = std::pow(10.0, places);
-  const double r = std::round(h * scale) / scale;
+  const double r = std::round(std::fmod(std::fmod(h, 360.0) + 360.0, 360.0) * scale) / scale;
   return r >= 360 ? 0 : r;
 }
 
@@ -89,10 +90,6 @@ class simulator {
   [[nodiscard]] double dt() const { return 1.0 / o_.nav_rate; }
   [[nodiscard]] std::int64_t period_ns() const {
     return static_cast<std::int64_t>(std::llround(1e9 / o_.nav_rate));
-  }
-  // Seconds since start by the steady clock (for commands arriving between ticks).
-  [[nodiscard]] double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
   }
 
   void schedule() {
@@ -255,7 +252,9 @@ class simulator {
       }
       return;
     }
-    const double now = elapsed();
+    // Applied at once, stamped with the current tick's time: the model's clock (so runs with
+    // the same --seed and --time given the same commands at the same ticks are the same).
+    const double now = static_cast<double>(tick_) * dt();
     std::visit(
         [&](const auto& m) {
           using T = std::decay_t<decltype(m)>;
@@ -361,6 +360,13 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   o.vehicle.pydep_radians = o.pydep_units == "rad";
+  if (o.status_rate > o.nav_rate) {
+    std::fprintf(stderr,
+                 "seawire-kingfisher-sim: --status-rate %g is above --nav-rate %g: status "
+                 "sentences go out on navigation ticks\n",
+                 o.status_rate, o.nav_rate);
+    return 2;
+  }
 
   const auto where = net::parse_endpoint(o.listen);
   if (!where) {

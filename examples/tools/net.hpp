@@ -7,7 +7,13 @@
 // corrupts the next sentence, and each sentence is handed to the program. What the program sends
 // goes into each client's queue, bounded in lines: when a client does not read, its oldest
 // unsent lines are dropped and counted, and once more than `max_drops` lines have been dropped
-// it is disconnected. One line per connection event is logged to stderr.
+// it is disconnected. A client that ends its sending side (half close) gets what is already
+// queued for it, then the connection is closed. One line per connection event is logged to
+// stderr.
+//
+// Closing a client never removes it inside the call that closed it: the removal (and the
+// program's on_close) runs as a posted handler, so code that is iterating clients or holding a
+// reference to a client's state while it sends can never see it freed under its feet.
 
 #include <asio.hpp>
 
@@ -101,6 +107,8 @@ class client : public std::enable_shared_from_this<client> {
   void start();
   void read();
   void write();
+  template <class Item>
+  void deliver(const Item& item);
 
   line_server& server_;
   asio::ip::tcp::socket socket_;
@@ -113,6 +121,7 @@ class client : public std::enable_shared_from_this<client> {
   std::size_t queued_lines_ = 0;
   bool writing_ = false;
   bool closed_ = false;
+  bool read_ended_ = false;  ///< the peer half-closed: flush the queue, then close
 };
 
 /// Accepts clients on one endpoint and keeps them until they or the program close.
@@ -124,7 +133,7 @@ class line_server {
   using closed_handler = std::function<void(client&, std::string_view why)>;
 
   line_server(asio::io_context& io, const asio::ip::tcp::endpoint& where, server_limits limits)
-      : acceptor_(io), limits_(limits) {
+      : acceptor_(io), retry_(io), limits_(limits) {
     acceptor_.open(where.protocol());
     acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true));
     acceptor_.bind(where);
@@ -146,6 +155,7 @@ class line_server {
   void stop(std::string_view why) {
     asio::error_code ignored;
     acceptor_.close(ignored);
+    retry_.cancel();
     auto all = clients_;
     for (auto& [id, c] : all) c->close(why);
   }
@@ -173,8 +183,16 @@ class line_server {
     acceptor_.async_accept([this](const asio::error_code& ec, asio::ip::tcp::socket socket) {
       if (ec == asio::error::operation_aborted || !acceptor_.is_open()) return;
       if (ec) {
-        log("accept failed: %s", ec.message().c_str());
-      } else if (clients_.size() >= limits_.max_clients) {
+        // Out of descriptors (EMFILE) and the like: the connection stays in the backlog, so
+        // accepting again at once would spin. Wait a little first.
+        log("accept failed: %s; accepting again in 100 ms", ec.message().c_str());
+        retry_.expires_after(std::chrono::milliseconds(100));
+        retry_.async_wait([this](const asio::error_code& e) {
+          if (!e && acceptor_.is_open()) accept();
+        });
+        return;
+      }
+      if (clients_.size() >= limits_.max_clients) {
         asio::error_code e;
         const auto peer = socket.remote_endpoint(e);
         log("refused %s: %zu clients already", e ? "?" : to_string(peer).c_str(), clients_.size());
@@ -204,6 +222,7 @@ class line_server {
   }
 
   asio::ip::tcp::acceptor acceptor_;
+  asio::steady_timer retry_;
   server_limits limits_;
   std::map<std::uint64_t, std::shared_ptr<client>> clients_;
   std::uint64_t next_id_ = 1;
@@ -225,26 +244,42 @@ inline client::client(line_server& server, asio::ip::tcp::socket socket, std::ui
 
 inline void client::start() { read(); }
 
+template <class Item>
+void client::deliver(const Item& item) {
+  if (!item.is_sentence() || closed_) return;
+  ++sentences_in;
+  if (server_.on_sentence_) server_.on_sentence_(*this, item.sentence);
+}
+
 inline void client::read() {
-  socket_.async_read_some(
-      asio::buffer(in_), [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
-        if (self->closed_) return;
-        if (ec) {
-          self->close(ec == asio::error::eof ? "end of stream" : ec.message());
-          return;
-        }
-        self->bytes_in += n;
-        self->reader_.feed(std::string_view(self->in_.data(), n), [&](const auto& item) {
-          if (!item.is_sentence()) return;
-          ++self->sentences_in;
-          if (self->server_.on_sentence_) self->server_.on_sentence_(*self, item.sentence);
-        });
-        if (!self->closed_) self->read();
-      });
+  socket_.async_read_some(asio::buffer(in_),
+                          [self = shared_from_this()](const asio::error_code& ec, std::size_t n) {
+                            if (self->closed_) return;
+                            if (ec) {
+                              if (ec != asio::error::eof) {
+                                self->close(ec.message());
+                                return;
+                              }
+                              // The peer is done sending: what it sent last without a line ending
+                              // still counts.
+                              while (const auto item = self->reader_.finish()) self->deliver(*item);
+                              if (self->closed_) return;
+                              self->read_ended_ = true;
+                              if (self->queue_.empty()) self->close("end of stream");
+                              return;
+                            }
+                            self->bytes_in += n;
+                            self->reader_.feed(std::string_view(self->in_.data(), n),
+                                               [&](const auto& item) { self->deliver(item); });
+                            // A sentence ended by a lone CR is held back to tell CR from CR LF: the
+                            // read is over, so it is complete.
+                            while (const auto item = self->reader_.flush()) self->deliver(*item);
+                            if (!self->closed_) self->read();
+                          });
 }
 
 inline void client::send(const batch_ptr& b) {
-  if (closed_) return;
+  if (closed_ || read_ended_) return;  // a half-closed client gets what was queued, no more
   queue_.push_back(b);
   queued_lines_ += b->lines;
   // Drop the oldest batches that are not being written until the queue fits again.
@@ -262,7 +297,11 @@ inline void client::send(const batch_ptr& b) {
 }
 
 inline void client::write() {
-  if (queue_.empty() || closed_) return;
+  if (closed_) return;
+  if (queue_.empty()) {
+    if (read_ended_) close("end of stream");
+    return;
+  }
   writing_ = true;
   const batch_ptr front = queue_.front();
   asio::async_write(socket_, asio::buffer(front->bytes),
@@ -287,8 +326,10 @@ inline void client::close(std::string_view why) {
   socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
   socket_.close(ignored);
   queue_.clear();
-  auto keep = shared_from_this();  // closed() erases the server's reference
-  server_.closed(*this, why);
+  // Removed later, never inside the caller's loop or handler (see the top of this file).
+  asio::post(socket_.get_executor(), [self = shared_from_this(), reason = std::string(why)] {
+    self->server_.closed(*self, reason);
+  });
 }
 
 /// Stops `io` on SIGINT or SIGTERM after calling `on_stop` (which may post more work first).

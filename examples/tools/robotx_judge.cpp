@@ -114,7 +114,14 @@ class judge {
     if (stopped_) return;
     stopped_ = true;
     timer_.cancel();
-    server_.stop(why);  // closes every link: their open gaps are reported and summed
+    // Every link ends now: an open heartbeat gap is reported, and its totals summed.
+    const auto t = now();
+    for (auto& [id, link] : links_) {
+      print(*link, link->validator.finish(t));
+      add_to_summary(*link);
+    }
+    links_.clear();
+    server_.stop(why);
     net::line_server::log("stopped (%.*s): %llu connections", static_cast<int>(why.size()),
                           why.data(), static_cast<unsigned long long>(server_.connections()));
     summary();
@@ -207,12 +214,13 @@ class judge {
           if (!field.empty()) text += " (" + std::string(field) + ")";
         }
         if (!why.empty()) text += ": " + why;
-        if (f.broken == rx::rule::rate)
-          text += ": " + std::to_string(seconds(f.elapsed)) + " s after the last";
+        char secs[32];
+        std::snprintf(secs, sizeof secs, "%.3f", seconds(f.elapsed));
+        if (f.broken == rx::rule::rate) text += ": " + std::string(secs) + " s after the last";
         if (f.broken == rx::rule::heartbeat_gap)
-          text += ": no heartbeat for " + std::to_string(seconds(f.elapsed)) + " s";
+          text += ": no heartbeat for " + std::string(secs) + " s";
         if (f.broken == rx::rule::clock_skew)
-          text += ": report time " + std::to_string(seconds(f.elapsed)) + " s from arrival";
+          text += ": report time " + std::string(secs) + " s from arrival";
         std::printf("%s\n", text.c_str());
       }
     }

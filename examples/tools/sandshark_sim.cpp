@@ -15,6 +15,7 @@
 #include <map>
 #include <seawire/nmea/build.hpp>
 #include <seawire/nmea/time.hpp>
+#include <seawire/nmea/writer.hpp>
 #include <seawire/sandshark/messages.hpp>
 #include <seawire/sandshark/vehicle_session.hpp>
 #include <sstream>
@@ -275,11 +276,22 @@ class simulator {
         case ss::vehicle_event_kind::request_started:
           net::line_server::log("%s: BPRMB request started: the backseat steers", name.c_str());
           break;
-        case ss::vehicle_event_kind::abort_requested:
-          net::line_server::log("%s: abort requested; Aborted in %.3g s", name.c_str(),
-                                o_.abort_time);
-          abort_at_ = seconds() + o_.abort_time;
+        case ss::vehicle_event_kind::abort_requested: {
+          // The session has moved a mission it could abort to Aborting (and published it); a
+          // BPABT with nothing to abort, or a second one, changes nothing here.
+          const auto& m = session_.mission();
+          const bool aborting = m && m->status.view().starts_with("Aborting");
+          if (aborting && !abort_at_ && !aborted_) {
+            net::line_server::log("%s: abort requested; Aborted in %.3g s", name.c_str(),
+                                  o_.abort_time);
+            abort_at_ = seconds() + o_.abort_time;
+            running_ = false;           // no longer Running: the mission wraps up
+            take_control_back_ = true;  // and backseat control ends with it
+          } else {
+            net::line_server::log("%s: abort requested with no mission to abort", name.c_str());
+          }
           break;
+        }
         case ss::vehicle_event_kind::invalid_command:
           net::line_server::log("%s: invalid %s: %s (field %u)", name.c_str(),
                                 std::string(e->command.view()).c_str(),
@@ -508,6 +520,9 @@ int main(int argc, char** argv) {
     if (!t) return fail("--mission " + error);
     timeline = std::move(*t);
   }
+  if (o.version.size() > 32 || !nmea::is_field_text(o.version))
+    return fail("--version-text " + o.version +
+                ": at most 32 printable characters, none of $ , * ! \\ ^ ~");
   {
     std::istringstream list(o.pending);
     std::string code;

@@ -4,12 +4,15 @@
 // overlong line from either side is dropped, never glued to the next), each ended with CR LF.
 // Manual: docs/seawire-tcp.md.
 
+#include <fcntl.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <asio.hpp>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -58,9 +61,13 @@ class client {
     stdin_is_file_ = ::fstat(0, &st) == 0 && !S_ISFIFO(st.st_mode) && !S_ISSOCK(st.st_mode) &&
                      !S_ISCHR(st.st_mode);
     if (!stdin_is_file_) {
+      // asio makes the descriptor non-blocking. A terminal's stdin is usually the same open
+      // file as stdout, and a dup() would share that flag with it (and leave the terminal
+      // non-blocking afterwards): open the terminal anew instead.
+      const int fd = ::isatty(0) != 0 ? ::open("/proc/self/fd/0", O_RDONLY | O_CLOEXEC) : ::dup(0);
       asio::error_code ec;
-      stdin_.assign(::dup(0), ec);
-      if (ec) stdin_is_file_ = true;  // not pollable: read it as a file
+      if (fd >= 0) stdin_.assign(fd, ec);
+      if (fd < 0 || ec) stdin_is_file_ = true;  // not pollable: read it as a file
     }
     signals_.async_wait([this](const asio::error_code& ec, int) {
       if (!ec) finish(0);
@@ -97,7 +104,7 @@ class client {
     socket_.set_option(asio::ip::tcp::no_delay(true), ignored);
     note(o_, "connected to %s", net::to_string(to).c_str());
     connected_ = true;
-    backoff_ = o_.min_backoff;
+    connected_at_ = std::chrono::steady_clock::now();
     from_server_.reset();
     read_socket();
     if (!pending_.empty()) {
@@ -111,6 +118,10 @@ class client {
   void lost(const std::string& why) {
     const bool was = connected_;
     connected_ = false;
+    // A server that accepts and closes at once (full, or refusing us) must not be hammered:
+    // the wait starts again from the shortest only after a connection that lasted.
+    if (was && std::chrono::steady_clock::now() - connected_at_ >= std::chrono::seconds(2))
+      backoff_ = o_.min_backoff;
     asio::error_code ignored;
     socket_.close(ignored);
     if (!o_.reconnect || (o_.close_on_eof && stdin_done_ && pending_.empty() && was)) {
@@ -151,11 +162,20 @@ class client {
   }
 
   void flush_stdout() {
-    if (out_.empty()) return;
-    if (std::fwrite(out_.data(), 1, out_.size(), stdout) != out_.size() ||
-        std::fflush(stdout) != 0) {
-      finish(0);  // the reader went away (a closed pipe): nothing left to do
-      return;
+    std::size_t done = 0;
+    while (done < out_.size()) {
+      const ssize_t n = ::write(1, out_.data() + done, out_.size() - done);
+      if (n > 0) {
+        done += static_cast<std::size_t>(n);
+      } else if (n < 0 && errno == EINTR) {
+        continue;
+      } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+        pollfd p{1, POLLOUT, 0};  // stdout is non-blocking (someone else set it): wait
+        (void)::poll(&p, 1, 1000);
+      } else {
+        finish(0);  // the reader went away (a closed pipe): nothing left to do
+        return;
+      }
     }
     out_.clear();
   }
@@ -201,18 +221,23 @@ class client {
     }
     sending_.swap(pending_);
     pending_.clear();
-    asio::async_write(socket_, asio::buffer(sending_),
-                      [this](const asio::error_code& ec, std::size_t) {
-                        if (done_) return;
-                        if (ec) {
-                          pending_.insert(0, sending_);  // sent again after a reconnect
-                          sending_.clear();
-                          if (connected_) lost(ec.message());
-                          return;
-                        }
-                        sending_.clear();
-                        after_send();
-                      });
+    asio::async_write(
+        socket_, asio::buffer(sending_), [this](const asio::error_code& ec, std::size_t n) {
+          if (done_) return;
+          if (ec) {
+            // Sent again after a reconnect, from the first line not wholly
+            // written: a line the kernel took in full is not repeated.
+            const std::size_t written = std::min(n, sending_.size());
+            const std::size_t cut =
+                written == 0 ? std::string::npos : sending_.rfind('\n', written - 1);
+            pending_.insert(0, cut == std::string::npos ? sending_ : sending_.substr(cut + 1));
+            sending_.clear();
+            if (connected_) lost(ec.message());
+            return;
+          }
+          sending_.clear();
+          after_send();
+        });
   }
 
   void after_send() {
@@ -249,6 +274,7 @@ class client {
   asio::posix::stream_descriptor stdin_{io_};
   bool stdin_is_file_ = false;
   double backoff_;
+  std::chrono::steady_clock::time_point connected_at_{};
   bool connected_ = false;
   bool stdin_reading_ = false;
   bool stdin_done_ = false;

@@ -135,6 +135,18 @@ def case_input():
     check(b"20 frames, 2 sentences sent" in r.stderr, "summary: %r" % r.stderr)
 
 
+def case_signal():
+    # SIGINT ends a run without --seconds cleanly: summary, exit 0.
+    p = subprocess.Popen([FEED, "--rate", "10"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    time.sleep(1.0)
+    p.send_signal(2)
+    out, err = p.communicate(timeout=10)
+    check(p.returncode == 0 and b"frames," in err, "SIGINT: exit 0 with the summary: %r %r"
+          % (p.returncode, err))
+    frames = [o for o in decode(out) if o["type"] == "AB00"]
+    check(8 <= len(frames) <= 12, "about a second of frames: %d" % len(frames))
+
+
 def case_usage():
     r = subprocess.run([FEED, "--help"], capture_output=True, timeout=20)
     check(r.returncode == 0 and b"--device" in r.stdout, "--help")
@@ -150,7 +162,8 @@ def case_usage():
               "%r refused: %d %r" % (args, r.returncode, r.stderr[-200:]))
 
 
-{"pty": case_pty, "udp": case_udp, "input": case_input, "usage": case_usage}[CASE]()
+{"pty": case_pty, "udp": case_udp, "input": case_input, "usage": case_usage,
+ "signal": case_signal}[CASE]()
 if failures:
     print("%d failure(s)" % len(failures))
     sys.exit(1)

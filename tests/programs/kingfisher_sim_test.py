@@ -441,6 +441,29 @@ def case_payload():
           "its commands were applied:\n" + log)
 
 
+def case_north():
+    # Heading north, the heading's noise straddles 0/360: every CPNVG and CPRCM still goes out
+    # (wrapped into [0, 360)), none is refused for a negative heading.
+    sim = Sim("--nav-rate", "20", "--time", "2026-11-25T12:00:00Z", "--seed", "5")
+    c = Client(sim.port)
+    for _ in range(30):
+        c.send(with_checksum("PYDEV,0,0.5"))
+        pump_all([c], 0.2)
+    # Half close: the lines already queued still arrive, then the simulator closes.
+    c.sock.shutdown(socket.SHUT_WR)
+    pump_all([c], 2)
+    check(c.closed, "closed after the half close")
+    check(sim.stop() == 0, "exit 0")
+    late = [float(f[9]) for f in c.of("CPNVG")][-40:]
+    check(any(h > 359 for h in late) and any(h < 1 for h in late),
+          "the heading straddles north: %r" % late[-10:])
+    for address in ("CPNVG", "CPRCM"):
+        ok, gaps = in_order(c, address, 0.05)
+        check(ok, "%s: none missing around 0/360: %r" % (address, [g for g in gaps if g != 0.05][:5]))
+    check("not sent" not in sim.log(), "no sentence refused:\n" + sim.log()[-1000:])
+    check(re.search(r"disconnected: end of stream", sim.log()) is not None, "half close logged")
+
+
 def case_usage():
     r = subprocess.run([SIM, "--help"], capture_output=True, timeout=20)
     check(r.returncode == 0 and b"--listen" in r.stdout and b"--watchdog" in r.stdout, "--help")
@@ -449,7 +472,8 @@ def case_usage():
                       (["--listen", "not-an-address:0"], b"--listen"),
                       (["--start", "95,0", "--listen", "127.0.0.1:0"], b"--start"),
                       (["--time", "yesterday", "--listen", "127.0.0.1:0"], b"--time"),
-                      (["--nav-rate", "0", "--listen", "127.0.0.1:0"], b"nav-rate")):
+                      (["--nav-rate", "0", "--listen", "127.0.0.1:0"], b"nav-rate"),
+                      (["--status-rate", "20", "--listen", "127.0.0.1:0"], b"above --nav-rate")):
         r = subprocess.run([SIM, *args], capture_output=True, timeout=20)
         check(r.returncode != 0 and why in r.stderr, "%r refused: %r" % (args, r.stderr[-200:]))
     # A port in use is an error, not a hang.
@@ -463,7 +487,7 @@ def case_usage():
 
 
 CASES = {"stream": case_stream, "commands": case_commands, "load": case_load, "churn": case_churn,
-         "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload}
+         "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload, "north": case_north}
 CASES[CASE]()
 if failures:
     print("%d failure(s); the simulator's logs: %s" % (len(failures), " ".join(LOGS)))

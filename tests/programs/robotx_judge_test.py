@@ -135,6 +135,11 @@ def case_text():
     j = Judge("--duration", "1.5")
     a = team_socket(j.port)
     a.sendall(hrb().encode() + sentence("RXHRB,111221,161229,21.31198,N,157.88972,W,AUVSI,7,1").encode())
+    # A report ended by a lone CR is judged as it arrives, not when the next bytes come.
+    a.sendall(hrb().encode().replace(b"\r\n", b"\r"))
+    time.sleep(0.5)
+    check(any("line_ending" in l for _, l in j.out), "a CR-ended report judged at once: %r"
+          % [l for _, l in j.out])
     rc = j.proc.wait(timeout=20)
     time.sleep(0.2)
     a.close()
@@ -142,7 +147,7 @@ def case_text():
     check(rc == 0, "--duration ends the run with 0")
     check(any(re.search(r"client 1 127\.0\.0\.1:\d+ team AUVSI: field RXHRB field 8 \(system_mode\)", l)
               for l in text), "text finding names the field:\n" + "\n".join(text))
-    check(text[-2].startswith("summary: 1 team(s)") and text[-1].startswith("  AUVSI: 1 connection(s), 2 lines, 1 accepted (RXHRB 1)"),
+    check(text[-2].startswith("summary: 1 team(s)") and text[-1].startswith("  AUVSI: 1 connection(s), 3 lines, 2 accepted (RXHRB 2)"),
           "text summary:\n" + "\n".join(text))
 
 

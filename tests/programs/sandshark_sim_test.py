@@ -196,6 +196,11 @@ def case_session():
     aborted = p.wait_for(r"^\$BFMIS,[^,]*,[^,]*,Aborted", timeout=5, start=mark)
     statuses = [f[3] for f in p.of("BFMIS")]
     check("Aborting" in statuses and aborted is not None, "BFMIS Aborting then Aborted: %r" % statuses)
+    # Nothing left to abort: acknowledged, but no second Aborted.
+    p.send("BPABT,%s,again,1" % stamp())
+    p.pump(3)
+    check([f[3] for f in p.of("BFMIS")].count("Aborted") == 1, "one Aborted only")
+    check(sim.wait_log("abort requested with no mission to abort"), "the second abort logged")
     # Reconnect: a new session, BFVER again, no subscriptions kept.
     p.close()
     check(sim.wait_log(r"client 1 127\.0\.0\.1:\d+ disconnected"), "disconnect logged")
@@ -256,7 +261,8 @@ def case_usage():
                       (["--client", "backseat=nowhere"], b"not an IP address"),
                       (["--mission", bad], b":2: expected"),
                       (["--mission", "/nonexistent"], b"cannot be read"),
-                      (["--pending", "ABT,XYZ"], b"XYZ is none of")):
+                      (["--pending", "ABT,XYZ"], b"XYZ is none of"),
+                      (["--version-text", "1,0"], b"at most 32 printable")):
         r = subprocess.run([SIM, *args], capture_output=True, timeout=20)
         check(r.returncode == 2 and why in r.stderr, "%r refused: %r" % (args, r.stderr))
     os.remove(bad)
