@@ -8,8 +8,8 @@
 // goes into each client's queue, bounded in lines: when a client does not read, its oldest
 // unsent lines are dropped and counted, and once more than `max_drops` lines have been dropped
 // it is disconnected. A client that ends its sending side (half close) gets what is already
-// queued for it, then the connection is closed. One line per connection event is logged to
-// stderr.
+// queued for it (within 10 s), then the connection is closed. One line per connection event is
+// logged to stderr.
 //
 // Closing a client never removes it inside the call that closed it: the removal (and the
 // program's on_close) runs as a posted handler, so code that is iterating clients or holding a
@@ -112,6 +112,7 @@ class client : public std::enable_shared_from_this<client> {
 
   line_server& server_;
   asio::ip::tcp::socket socket_;
+  asio::steady_timer linger_;  ///< after a half close: how long queued lines may take
   std::uint64_t id_;
   std::string peer_;
   asio::ip::address address_;
@@ -232,7 +233,7 @@ class line_server {
 };
 
 inline client::client(line_server& server, asio::ip::tcp::socket socket, std::uint64_t id)
-    : server_(server), socket_(std::move(socket)), id_(id) {
+    : server_(server), socket_(std::move(socket)), linger_(socket_.get_executor()), id_(id) {
   asio::error_code ec;
   const auto peer = socket_.remote_endpoint(ec);
   peer_ = ec ? std::string("?") : to_string(peer);
@@ -265,7 +266,16 @@ inline void client::read() {
                               while (const auto item = self->reader_.finish()) self->deliver(*item);
                               if (self->closed_) return;
                               self->read_ended_ = true;
-                              if (self->queue_.empty()) self->close("end of stream");
+                              if (self->queue_.empty()) {
+                                self->close("end of stream");
+                                return;
+                              }
+                              // What is queued has a while to leave; a peer that half-closed
+                              // and does not read either is not kept for ever.
+                              self->linger_.expires_after(std::chrono::seconds(10));
+                              self->linger_.async_wait([self](const asio::error_code& e) {
+                                if (!e) self->close("end of stream; queued lines not read in 10 s");
+                              });
                               return;
                             }
                             self->bytes_in += n;
@@ -325,6 +335,7 @@ inline void client::close(std::string_view why) {
   asio::error_code ignored;
   socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
   socket_.close(ignored);
+  linger_.cancel();
   queue_.clear();
   // Removed later, never inside the caller's loop or handler (see the top of this file).
   asio::post(socket_.get_executor(), [self = shared_from_this(), reason = std::string(why)] {

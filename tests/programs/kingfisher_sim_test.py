@@ -95,6 +95,14 @@ class Sim:
         with open(self.err_path, encoding="ascii", errors="replace") as f:
             return f.read()
 
+    def wait_log(self, pattern, timeout=10):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if re.search(pattern, self.log()):
+                return True
+            time.sleep(0.05)
+        return False
+
     def rss_kib(self):
         with open("/proc/%d/status" % self.proc.pid) as f:
             for line in f:
@@ -464,6 +472,21 @@ def case_north():
     check(re.search(r"disconnected: end of stream", sim.log()) is not None, "half close logged")
 
 
+def case_linger():
+    # A client that half-closes and does not read either is closed once its queued lines have
+    # had 10 s to leave, not kept for ever.
+    sim = Sim("--nav-rate", "20", "--send-buffer", "4096")
+    c = Client(sim.port, rcvbuf=4096)
+    time.sleep(3)  # the socket buffers fill; lines queue up in the simulator
+    c.sock.shutdown(socket.SHUT_WR)
+    t = time.monotonic()
+    check(sim.wait_log(r"end of stream; queued lines not read in 10 s", timeout=20),
+          "closed after the linger:\n" + sim.log()[-800:])
+    check(9 < time.monotonic() - t < 15, "after about 10 s: %.1f" % (time.monotonic() - t))
+    c.close()
+    check(sim.stop() == 0, "exit 0")
+
+
 def case_usage():
     r = subprocess.run([SIM, "--help"], capture_output=True, timeout=20)
     check(r.returncode == 0 and b"--listen" in r.stdout and b"--watchdog" in r.stdout, "--help")
@@ -487,7 +510,8 @@ def case_usage():
 
 
 CASES = {"stream": case_stream, "commands": case_commands, "load": case_load, "churn": case_churn,
-         "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload, "north": case_north}
+         "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload, "north": case_north,
+         "linger": case_linger}
 CASES[CASE]()
 if failures:
     print("%d failure(s); the simulator's logs: %s" % (len(failures), " ".join(LOGS)))
