@@ -95,4 +95,18 @@ inline constexpr std::uint64_t scale_limit[20] = {
   return t + (w >= pow10_table[t] ? 1U : 0U);
 }
 
+/// The decimal digits of `v` into any sink with put(char), at least `min_digits` of them
+/// (zero-padded on the left).
+template <class Sink>
+constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
+  char tmp[24];
+  unsigned n = 0;
+  do {
+    tmp[n++] = static_cast<char>('0' + v % 10);
+    v /= 10;
+  } while (v != 0);
+  while (n < min_digits && n < sizeof tmp) tmp[n++] = '0';
+  while (n > 0) s.put(tmp[--n]);
+}
+
 }  // namespace seawire::detail

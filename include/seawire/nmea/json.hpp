@@ -109,14 +109,7 @@ namespace detail {
 
 template <json_sink Sink>
 constexpr void json_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
-  char tmp[24];
-  unsigned n = 0;
-  do {
-    tmp[n++] = static_cast<char>('0' + v % 10);
-    v /= 10;
-  } while (v != 0);
-  while (n < min_digits && n < sizeof tmp) tmp[n++] = '0';
-  while (n > 0) s.put(tmp[--n]);
+  seawire::detail::put_uint(s, v, min_digits);
 }
 
 /// A JSON string's content: '"' and '\' escaped, every byte outside printable ASCII as

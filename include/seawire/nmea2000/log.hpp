@@ -472,17 +472,7 @@ constexpr void put_hex_byte(Sink& s, std::uint8_t b, bool upper) noexcept {
   s.put(digits[b & 0xF]);
 }
 
-template <class Sink>
-constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
-  char buf[20];
-  unsigned n = 0;
-  do {
-    buf[n++] = static_cast<char>('0' + v % 10);
-    v /= 10;
-  } while (v != 0 && n < 20);
-  while (n < min_digits && n < 20) buf[n++] = '0';
-  while (n > 0) s.put(buf[--n]);
-}
+using seawire::detail::put_uint;
 
 /// "(sec.usec)", as candump writes its times.
 template <class Sink>
