@@ -25,6 +25,9 @@ import zlib
 DECODE, DATA, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 RSVG = sys.argv[4] if len(sys.argv) > 4 else None
 FAMILIES = ["kingfisher", "sandshark", "robotx", "anello", "anello_mixed", "standard"]
+# NMEA 2000 CAN logs (candump, plain/fast, YD raw), beside the tests that use them.
+N2K = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "n2k")
+N2K_LOGS = sorted(f for f in os.listdir(N2K) if f.endswith(".in"))
 failures = []
 
 
@@ -104,6 +107,31 @@ def case_csv():
                 one = run(["--format", "csv", "--type", t], data, 0).stdout
                 with open(os.path.join(d, t + ".csv"), "rb") as f:
                     check(one == f.read(), f"{family} {t}: --type table differs from its file")
+
+        # NMEA 2000 logs: a table per PGN with the frame's time, priority, source and
+        # destination before the fields (the log's interface and direction are not columns).
+        for log in N2K_LOGS:
+            with open(os.path.join(N2K, log), "rb") as f:
+                data = f.read()
+            d = os.path.join(tmp, log)
+            run(["--format", "csv", "--output-dir", d], data, 0)
+            by_type = {}
+            for m in json_messages(data):
+                by_type.setdefault(m["type"], []).append(m)
+            check(by_type != {} and sorted(f[:-4] for f in os.listdir(d)) == sorted(by_type),
+                  f"{log}: one table per PGN: {sorted(os.listdir(d))} vs {sorted(by_type)}")
+            for t, rows in by_type.items():
+                with open(os.path.join(d, t + ".csv"), newline="") as f:
+                    table = list(csv.reader(f))
+                keys = ["time_s", "prio", "src", "dst"] + [
+                    k for k in rows[0]
+                    if k not in ("type", "time_s", "interface", "direction", "prio", "src", "dst")]
+                check(table[0] == keys, f"{log} {t}: header {table[0]} vs {keys}")
+                check(len(table) == len(rows) + 1, f"{log} {t}: {len(table) - 1} rows")
+                for row, m in zip(table[1:], rows):
+                    want = [";".join(m[k]) if isinstance(m.get(k), list) else cell(m.get(k))
+                            for k in keys]
+                    check(row == want, f"{log} {t}: row {row} vs JSON {want}")
 
         # A table that cannot be created is reported, the others still written, exit status 1.
         d = os.path.join(tmp, "blocked")
@@ -238,6 +266,14 @@ def case_geojson():
                 got = f["properties"].get(k)
                 want = [m[k] for m in msgs] if len(msgs) > 1 else msgs[0][k]
                 check(got == want, f"{family} {f['properties']['source']}: property {k}")
+    # NMEA 2000 logs: none of these PGNs carries a position, so the collection is empty and
+    # still valid, whatever the log's format.
+    for log in N2K_LOGS:
+        with open(os.path.join(N2K, log), "rb") as f:
+            p = run(["--format", "geojson"], f.read(), 0)
+        doc = json.loads(p.stdout)
+        rfc7946(doc, log)
+        check(doc == {"type": "FeatureCollection", "features": []}, f"{log}: {p.stdout[:200]!r}")
     # Events: a RobotX heartbeat whose mode changes is a Point where it changed.
     hb = [seal(f"RXHRB,101218,1612{s:02d},21.31{s:03d},N,157.88972,W,AUVSI,{mode},1")
           for s, mode in ((29, 2), (30, 2), (31, 1), (32, 1))]
