@@ -298,7 +298,7 @@ void fill(byte_source& src, nmea::text<N>& t) {
 template <class E>
 requires nmea::char_enum_like<E>
 void fill(byte_source& src, E& e) {
-  constexpr std::string_view chars = enum_chars(E{});
+  constexpr std::string_view chars = seawire::nmea::enum_letters<E>;
   // One choice past the letters: any byte at all.
   const std::size_t i = src.below(chars.size() + 1);
   e = static_cast<E>(i < chars.size() ? chars[i] : static_cast<char>(src.byte()));

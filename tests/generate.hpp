@@ -205,7 +205,7 @@ void fill(prng& g, V& v, const nm::field_options& o) {
   } else if constexpr (std::is_same_v<V, nm::magnetic_variation>) {
     v = any_variation(g);
   } else if constexpr (nm::char_enum_like<V>) {
-    constexpr std::string_view letters = enum_chars(V{});
+    constexpr std::string_view letters = seawire::nmea::enum_letters<V>;
     v = static_cast<V>(letters[g.below(letters.size())]);
   } else if constexpr (nm::word_enum_like<V>) {
     v = static_cast<V>(g.below(enum_words(V{}).size()));

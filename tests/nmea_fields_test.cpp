@@ -23,7 +23,6 @@ namespace {
 using namespace support;
 
 enum class status : char { valid = 'A', invalid = 'V' };
-constexpr std::string_view enum_chars(status) noexcept { return "AV"; }
 
 enum class switch_state : std::uint8_t { on, off };
 constexpr std::array<std::string_view, 2> enum_words(switch_state) noexcept {

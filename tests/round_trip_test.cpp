@@ -28,7 +28,7 @@ namespace rx = seawire::robotx;
 template <>
 struct support::values<rx::light_pattern> {
   static void fill(prng& g, rx::light_pattern& p, const nm::field_options&) {
-    constexpr std::string_view letters = enum_chars(rx::color{});
+    constexpr std::string_view letters = seawire::nmea::enum_letters<rx::color>;
     for (auto& c : p.colors) c = static_cast<rx::color>(letters[g.below(letters.size())]);
   }
 };

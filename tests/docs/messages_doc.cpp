@@ -67,7 +67,7 @@ std::string form_of(const nmea::field_options& o) {
     return s;
   } else if constexpr (nmea::char_enum_like<V>) {
     std::string s = "one of ";
-    const std::string_view letters = enum_chars(V{});
+    const std::string_view letters = nmea::enum_letters<V>;
     for (std::size_t i = 0; i < letters.size(); ++i) {
       if (i != 0) s += " ";
       s += quoted(letters.substr(i, 1));

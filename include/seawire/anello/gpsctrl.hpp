@@ -23,7 +23,6 @@ enum class gps_control : char {
   use = '1',               ///< use GPS (the INS's default)
   disable_internal = '2',  ///< switch the internal GPS off (ANELLO scripts; not in the spec)
 };
-constexpr std::string_view enum_chars(gps_control) noexcept { return "012"; }
 
 struct papgpsctrl {
   gps_control control = gps_control::use;  // 1 [GPS control] 1 use, 0 ignore, 2 internal off

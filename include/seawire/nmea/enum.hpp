@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Enumerated fields: a letter (an enum class E : char and its enum_chars) or a word (an enum and
-// its enum_words), and their codecs.
+// Enumerated fields: a letter (an enum class E : char, its enumerators the letters) or a word (an
+// enum and its enum_words), and their codecs.
 
 #include <array>
 #include <cstddef>
@@ -17,37 +17,188 @@
 
 namespace seawire::nmea {
 
-// A single-letter field is an `enum class E : char` whose enumerators are the letters, with a
-// function found by ADL listing them:   constexpr std::string_view enum_chars(E) { return "AV"; }
-// (C++20 cannot list an enum's enumerators without parsing compiler-specific text, which costs
-// every translation unit about 7 ms an enum with GCC and 18 ms with Clang; seawire's tests check
-// that each enum_chars lists exactly its enum's enumerators instead.)
+// A single-letter field is an `enum class E : char` whose enumerators are its letters:
+//   enum class rmc_status : char { active = 'A', warning = 'V' };
+// The letters a field accepts and writes are those enumerators, read from the enum itself
+// (enum_letters<E> below): an enumerator added is a letter accepted, and there is no second list
+// to keep in step. Letters are the digits and ASCII letters, the only ones NMEA sentences use for
+// such fields.
 // A word field is an enum whose values index an array of its spellings, with
 //   constexpr std::array<std::string_view, K> enum_words(E) { return {"ON", "OFF"}; }
 // and optionally other spellings accepted on receive:
 //   constexpr std::array<std::pair<std::string_view, E>, K> enum_aliases(E) { ... }
 
 template <class E>
-concept char_enum_like = std::is_enum_v<E> && requires(E e) {
-  { enum_chars(e) } -> std::convertible_to<std::string_view>;
-};
-template <class E>
 concept word_enum_like = std::is_enum_v<E> && requires(E e) {
   enum_words(e);
 };
 template <class E>
+concept char_enum_like = std::is_enum_v<E> && std::is_same_v < std::underlying_type_t<E>,
+char > &&!word_enum_like<E>;
+template <class E>
 concept has_enum_aliases = requires(E e) {
   enum_aliases(e);
 };
+
+namespace detail {
+
+// C++20 cannot list an enum's enumerators, but every compiler prints a template's arguments in
+// its function-name string, an enumerator by its name and any other value as a cast:
+//   GCC    "... [with auto ...V = {ns::e::a, (ns::e)66}; ...]"
+//   Clang  "... [V = <ns::e::a, (ns::e)66>]", "<(anonymous namespace)::e::a, ...>"
+//   MSVC   "... enum_listing<ns::e::a,(enum ns::e)0x42>(void)"
+// One instantiation with every candidate letter tells which are enumerators. It is made only
+// where a letter field is decoded, encoded or printed (about 7 ms of GCC's time, 18 of Clang's,
+// an enum), never where a header is merely included.
+template <auto... V>
+constexpr std::string_view enum_listing() noexcept {
+#if defined(_MSC_VER) && !defined(__clang__)
+  return __FUNCSIG__;
+#else
+  return __PRETTY_FUNCTION__;
+#endif
+}
+
+inline constexpr std::string_view letter_candidates =
+    "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
+
+struct letter_set {
+  std::array<char, 62> chars{};
+  std::size_t size = 0;
+  bool parsed = false;  ///< the listing had one element per candidate
+};
+
+// Whether one element of a listing is a cast ("(ns::e)66", "((anonymous namespace)::e)66") or a
+// bare number ("0x42"), which is no enumerator, rather than a name ("(anonymous namespace)::e::a").
+constexpr bool is_cast_or_number(std::string_view element) {
+  const auto digit = [](char c) { return c == '-' || (c >= '0' && c <= '9'); };
+  if (element.empty() || digit(element[0])) return true;
+  if (element[0] != '(') return false;
+  int depth = 0;
+  for (std::size_t i = 0; i < element.size(); ++i) {
+    if (element[i] == '(') ++depth;
+    if (element[i] == ')' && --depth == 0) return i + 1 < element.size() && digit(element[i + 1]);
+  }
+  return true;
+}
+
+// Which elements of `listing`'s argument list are names, in candidate order.
+constexpr letter_set enumerators_among_candidates(std::string_view listing) {
+  letter_set out;
+  std::size_t at = listing.find("V = ");
+  if (at != std::string_view::npos) {
+    at += 5;  // past "V = {" or "V = <"
+  } else if ((at = listing.find("enum_listing<")) != std::string_view::npos) {
+    at += 13;
+  } else {
+    return out;
+  }
+  std::size_t element = 0;
+  while (at < listing.size()) {
+    while (at < listing.size() && listing[at] == ' ') ++at;
+    if (element >= letter_candidates.size()) return out;
+    // To the ',' that ends this element, or the bracket that ends the list.
+    const std::size_t begin = at;
+    int depth = 0;
+    bool last = false;
+    for (; at < listing.size(); ++at) {
+      const char c = listing[at];
+      if (c == '(' || c == '<' || c == '[' || c == '{') {
+        ++depth;
+      } else if (c == ')' || c == '>' || c == ']' || c == '}') {
+        if (depth == 0) {
+          last = true;
+          break;
+        }
+        --depth;
+      } else if (c == ',' && depth == 0) {
+        break;
+      }
+    }
+    if (at >= listing.size()) return out;
+    if (!is_cast_or_number(listing.substr(begin, at - begin)))
+      out.chars[out.size++] = letter_candidates[element];
+    ++element;
+    if (last) {
+      out.parsed = element == letter_candidates.size();
+      return out;
+    }
+    ++at;
+  }
+  return out;
+}
+
+template <class E, std::size_t... I>
+consteval letter_set probe_letters(std::index_sequence<I...>) {
+  return enumerators_among_candidates(enum_listing<static_cast<E>(letter_candidates[I])...>());
+}
+
+#if defined(__clang__)
+// Clang prints every value of an enum declared in a class template as a cast, enumerators
+// included, until each enumerator is named somewhere: such an enum's letters cannot be read.
+template <class T>
+constexpr std::string_view type_listing() noexcept {
+  return __PRETTY_FUNCTION__;
+}
+template <class T>
+constexpr bool declared_in_class_template() noexcept {
+  const std::string_view s = type_listing<T>();
+  const std::size_t at = s.find("T = ");
+  return at != std::string_view::npos && s.find('<', at) != std::string_view::npos;
+}
+#endif
+
+template <class E>
+struct letters_of {
+#if defined(__clang__)
+  static_assert(!declared_in_class_template<E>(),
+                "with Clang, a letter field's enum cannot be declared in a class template (Clang "
+                "does not list its enumerators): declare it at namespace scope or in a class");
+#endif
+  static constexpr letter_set set =
+      probe_letters<E>(std::make_index_sequence<letter_candidates.size()>{});
+  static_assert(set.parsed,
+                "seawire cannot read this compiler's listing of an enum's enumerators; please "
+                "report the compiler and its version");
+  static_assert(set.size > 0,
+                "a letter field's enum (enum class E : char) needs at least one enumerator whose "
+                "value is a digit or an ASCII letter");
+  // The letters alone, in an array of their exact size.
+  static constexpr std::array<char, set.size> chars = [] {
+    std::array<char, set.size> a{};
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] = set.chars[i];
+    return a;
+  }();
+};
+
+}  // namespace detail
+
+/// The letters of a letter field's enum E, in increasing order: "AV" for
+/// `enum class rmc_status : char { active = 'A', warning = 'V' }`.
+template <char_enum_like E>
+inline constexpr std::string_view enum_letters{detail::letters_of<E>::chars.data(),
+                                               detail::letters_of<E>::chars.size()};
+
+/// Whether `c` is one of E's letters. (A loop, not string_view::find: GCC 12 cannot evaluate
+/// that search over these letters in a constant expression.)
+template <char_enum_like E>
+[[nodiscard]] constexpr bool is_enum_letter(char c) noexcept {
+  for (const char letter : enum_letters<E>) {
+    if (letter == c) return true;
+  }
+  return false;
+}
 
 /// The wire spelling of an enum value ("A", "ON"); empty if the value is not one of its own.
 template <class E>
 requires char_enum_like<E> || word_enum_like<E>
 [[nodiscard]] constexpr std::string_view to_string(const E& e) noexcept {
   if constexpr (char_enum_like<E>) {
-    constexpr std::string_view chars = enum_chars(E{});
-    const std::size_t pos = chars.find(static_cast<char>(e));
-    return pos == std::string_view::npos ? std::string_view{} : chars.substr(pos, 1);
+    constexpr std::string_view chars = enum_letters<E>;
+    for (std::size_t i = 0; i < chars.size(); ++i) {
+      if (chars[i] == static_cast<char>(e)) return chars.substr(i, 1);
+    }
+    return {};
   } else {
     constexpr auto words = enum_words(E{});
     const auto i = static_cast<std::size_t>(e);
@@ -60,10 +211,10 @@ struct codec<E> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 1;
   static constexpr bool allows_blank = false;
-  // Which bytes are letters of E: one lookup instead of a search through enum_chars.
+  // Which bytes are letters of E: one lookup instead of a search through enum_letters.
   static constexpr std::array<bool, 256> letters = [] {
     std::array<bool, 256> t{};
-    for (const char c : std::string_view(enum_chars(E{}))) t[static_cast<unsigned char>(c)] = true;
+    for (const char c : enum_letters<E>) t[static_cast<unsigned char>(c)] = true;
     return t;
   }();
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {

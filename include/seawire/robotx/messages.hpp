@@ -41,7 +41,6 @@ inline constexpr nmea::parse_policy judge_policy{
 
 /// RXHRB field 8. (The 2022 and 2024 editions add 3 = killed; 2018 has only these two.)
 enum class system_mode : char { remote = '1', autonomous = '2' };
-constexpr std::string_view enum_chars(system_mode) noexcept { return "12"; }
 
 /// RXHRB field 9.
 enum class auv_status : char {
@@ -51,19 +50,15 @@ enum class auv_status : char {
   fault = '4',      ///< faulted while neither recovered nor stowed
   killed = '5',     ///< propulsion killed, safe to approach
 };
-constexpr std::string_view enum_chars(auv_status) noexcept { return "12345"; }
 
 /// RXGAT fields 4 and 5: the gate holding an active beacon.
 enum class gate : char { one = '1', two = '2', three = '3' };
-constexpr std::string_view enum_chars(gate) noexcept { return "123"; }
 
 /// RXGAT field 6: Y = the light buoy is on (circle it), N = off (circle the black buoy).
 enum class light_buoy : char { on = 'Y', off = 'N' };
-constexpr std::string_view enum_chars(light_buoy) noexcept { return "YN"; }
 
 /// Light and shape colours.
 enum class color : char { red = 'R', blue = 'B', green = 'G' };
-constexpr std::string_view enum_chars(color) noexcept { return "RBG"; }
 
 /// RXDOK field 5. Writes CRUC; reads CRUC or CRUCI.
 enum class dock_shape : std::uint8_t { cruciform, triangle, circle };
@@ -104,7 +99,7 @@ struct light_pattern {
       return r;
     }
     for (std::size_t i = 0; i < 3; ++i) {
-      if (enum_chars(color{}).find(s[i]) == std::string_view::npos) {
+      if (!nmea::is_enum_letter<color>(s[i])) {
         r.ec = errc::bad_enum;
         return r;
       }

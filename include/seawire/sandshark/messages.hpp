@@ -139,7 +139,6 @@ enum class ack_status : char {
   ok = '2',       ///< processed successfully
   pending = '3',  ///< processing started; the final ack follows within 2 s
 };
-constexpr std::string_view enum_chars(ack_status) noexcept { return "0123"; }
 
 /// BFACK: acknowledgement of a payload message (only after BPLOG,ACK,ON).
 ///
@@ -241,13 +240,10 @@ struct bpsts {
 
 /// BPRMB field 4: what field 3 holds.
 enum class depth_mode : char { depth = '0', altitude = '1', pitch = '2', elevator = '3' };
-constexpr std::string_view enum_chars(depth_mode) noexcept { return "0123"; }
 /// BPRMB field 6: what field 5 holds.
 enum class speed_mode : char { rpm = '0', meters_per_second = '1' };
-constexpr std::string_view enum_chars(speed_mode) noexcept { return "01"; }
 /// BPRMB field 7: what field 2 holds.
 enum class horizontal_mode : char { heading = '0', rudder = '1' };
-constexpr std::string_view enum_chars(horizontal_mode) noexcept { return "01"; }
 
 /// BPRMB: modify the current behaviour. Blank fields leave that aspect as the mission has it.
 /// Must be repeated at least every 5 s, or the vehicle takes control back. The meaning (and unit)
@@ -317,7 +313,6 @@ struct bprmb {
 
 /// BPABT field 3.
 enum class abort_reason : char { success = '0', with_errors = '1' };
-constexpr std::string_view enum_chars(abort_reason) noexcept { return "01"; }
 
 /// BPABT: end the mission and run its wrap-up (e.g. a powered ascent).
 ///

@@ -27,7 +27,6 @@ enum class gps_quality : char {
   manual = '7',
   simulation = '8',
 };
-constexpr std::string_view enum_chars(gps_quality) noexcept { return "012345678"; }
 
 struct gga {
   nmea::talker_id talker = "GP";

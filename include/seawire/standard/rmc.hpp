@@ -24,7 +24,6 @@ namespace seawire::standard {
 
 /// RMC field 2.
 enum class rmc_status : char { active = 'A', warning = 'V' };
-constexpr std::string_view enum_chars(rmc_status) noexcept { return "AV"; }
 
 /// Positioning mode (RMC 12, GNS, VTG): NMEA 2.3 and later.
 enum class mode_indicator : char {
@@ -38,11 +37,9 @@ enum class mode_indicator : char {
   rtk = 'R',
   simulator = 'S',
 };
-constexpr std::string_view enum_chars(mode_indicator) noexcept { return "ADEFMNPRS"; }
 
 /// Navigational status (RMC 13): NMEA 4.1 and later.
 enum class nav_status : char { safe = 'S', caution = 'C', unsafe = 'U', not_valid = 'V' };
-constexpr std::string_view enum_chars(nav_status) noexcept { return "SCUV"; }
 
 struct rmc {
   nmea::talker_id talker = "GP";

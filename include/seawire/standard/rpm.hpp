@@ -22,11 +22,9 @@ namespace seawire::standard {
 
 /// RPM field 1.
 enum class rpm_source : char { shaft = 'S', engine = 'E' };
-constexpr std::string_view enum_chars(rpm_source) noexcept { return "SE"; }
 
 /// RPM field 5.
 enum class rpm_status : char { valid = 'A', invalid = 'V' };
-constexpr std::string_view enum_chars(rpm_status) noexcept { return "AV"; }
 
 struct rpm {
   nmea::talker_id talker = "II";

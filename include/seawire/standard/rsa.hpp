@@ -20,7 +20,6 @@ namespace seawire::standard {
 
 /// RSA fields 2 and 4.
 enum class rsa_status : char { valid = 'A', invalid = 'V' };
-constexpr std::string_view enum_chars(rsa_status) noexcept { return "AV"; }
 
 struct rsa {
   nmea::talker_id talker = "II";

@@ -27,7 +27,6 @@ namespace seawire::standard {
 
 /// VBW fields 3, 6, 8 and 10.
 enum class vbw_status : char { valid = 'A', invalid = 'V' };
-constexpr std::string_view enum_chars(vbw_status) noexcept { return "AV"; }
 
 struct vbw {
   nmea::talker_id talker = "VW";

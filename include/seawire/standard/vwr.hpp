@@ -20,7 +20,6 @@ namespace seawire::standard {
 
 /// VWR field 2: which side of the bow the wind comes from.
 enum class bow_side : char { left = 'L', right = 'R' };
-constexpr std::string_view enum_chars(bow_side) noexcept { return "LR"; }
 
 struct vwr {
   nmea::talker_id talker = "WI";
