@@ -53,14 +53,15 @@ void check_payload(std::span<const std::uint8_t> payload) {
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t row) {
     using F = std::remove_cvref_t<decltype(f)>;
     const std::uint64_t ones = (std::uint64_t{1} << F::bits) - 1;
-    const std::uint64_t written = n2k::detail::get_bits(out, offset, F::bits);
+    const std::uint64_t written =
+        seawire::detail::get_bits<n2k::payload_order>(out, offset, F::bits);
     if constexpr (F::is_reserved) {
       SEAWIRE_FUZZ_CHECK(written == ones, "a reserved bit was written as zero", pgn,
                          hex_of(payload), hex_of(out), number(row));
     } else if (offset + F::bits <= payload.size() * 8) {
-      SEAWIRE_FUZZ_CHECK(written == n2k::detail::get_bits(payload, offset, F::bits),
-                         "a field's bits changed on the way through", pgn, hex_of(payload),
-                         hex_of(out), f.name);
+      SEAWIRE_FUZZ_CHECK(
+          written == seawire::detail::get_bits<n2k::payload_order>(payload, offset, F::bits),
+          "a field's bits changed on the way through", pgn, hex_of(payload), hex_of(out), f.name);
     }
   });
 }

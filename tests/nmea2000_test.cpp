@@ -678,7 +678,8 @@ TEST_CASE("every captured and synthetic vector reads, and encodes back to its pa
           std::vector<std::uint8_t> expected(payload.begin(), payload.end());
           P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
             if (std::remove_cvref_t<decltype(f)>::is_reserved)
-              n2k::detail::put_bits(expected, offset, f.bits, ~std::uint64_t{0});
+              seawire::detail::put_bits<n2k::payload_order>(expected, offset, f.bits,
+                                                            ~std::uint64_t{0});
           });
           CHECK(std::vector<std::uint8_t>(e.value.begin(), e.value.end()) == expected);
         });

@@ -12,7 +12,10 @@
 // letting decode_frame judge: `truncated` always means "a valid beginning, send more bytes".
 //
 // The payload is described once, in `sensor_fields` below: name, JSON key, wire type, scale and
-// allowed range of each field, in wire order (offsets follow from the wire types). decode_frame,
+// allowed range of each field, in wire order. The table is a binary layout of the same kind as
+// the NMEA 2000 PGN tables (detail/bit_layout.hpp): each row's width comes from its wire type,
+// offsets follow from the widths, and fields are read and written by the same functions, here
+// most significant bit first (big-endian). decode_frame,
 // encode_frame, build_frame, validate, to_values, for_each_field and the accessors of
 // sensor_frame_raw are all loops over that table, so a field cannot be decoded from one offset and
 // encoded at another.
@@ -42,6 +45,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "seawire/detail/bit_layout.hpp"
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
 #include "seawire/error.hpp"
@@ -187,6 +191,8 @@ template <auto RawMember, auto ValueMember>
 struct sensor_field {
   using raw_type = detail::member_type_t<RawMember>;
   using value_type = typename detail::member_type_t<ValueMember>::value_type;
+  /// The field's width on the wire: its wire type's.
+  static constexpr unsigned bits = 8 * sizeof(raw_type);
   static constexpr auto raw_member = RawMember;
   static constexpr auto value_member = ValueMember;
 
@@ -198,8 +204,8 @@ struct sensor_field {
   std::optional<value_range> allowed = std::nullopt;
   /// A value read as "not available" besides the type's maximum.
   std::optional<raw_type> also_not_available = std::nullopt;
-  /// Of the field's first byte, counted from the frame's first byte: the table computes it from
-  /// the wire types of the fields before.
+  /// Of the field's first byte, counted from the frame's first byte: the table's layout computes
+  /// it from the widths of the fields before.
   std::size_t offset = 0;
 
   [[nodiscard]] constexpr bool not_available(raw_type raw) const noexcept {
@@ -323,14 +329,10 @@ consteval auto make_sensor_fields() {
       sensor_field<&r::pressure, &v::pressure_hpa>{.name = "pressure_hpa"},
   };
   // Each field starts where the one before ends; the JSON key is the name unless a row says.
-  std::apply(
-      [](auto&... field) {
-        std::size_t at = header_size;
-        ((field.offset = at, at += sizeof(typename std::remove_cvref_t<decltype(field)>::raw_type),
-          field.json_key = field.json_key.empty() ? field.name : field.json_key),
-         ...);
-      },
-      fields);
+  seawire::detail::for_each_row(fields, 8 * header_size, [](auto& field, unsigned bit, auto) {
+    field.offset = bit / 8;
+    if (field.json_key.empty()) field.json_key = field.name;
+  });
   return fields;
 }
 
@@ -346,11 +348,12 @@ namespace detail {
 // Returns whether every call returned true.
 template <class Fn>
 constexpr bool visit_sensor_fields(Fn&& fn) {
-  return [&]<std::size_t... I>(std::index_sequence<I...>) {
-    return (fn(static_cast<std::uint16_t>(I + 1), std::get<I>(sensor_fields)) && ...);
-  }
-  (std::make_index_sequence<std::tuple_size_v<std::remove_cv_t<decltype(sensor_fields)>>>{});
+  return seawire::detail::for_each_row(
+      sensor_fields, 8 * header_size,
+      [&](const auto& field, unsigned, std::uint16_t number) { return fn(number, field); });
 }
+
+inline constexpr auto frame_order = seawire::detail::bit_order::msb_first;
 
 // The table against the spec: 19 fields filling bytes 8 to 56, named, and no sender range
 // reaching past its wire type.
@@ -366,6 +369,7 @@ consteval bool sensor_fields_match_spec() {
     return true;
   });
   return ok && end == frame_size &&
+         seawire::detail::layout_bits<decltype(sensor_fields)> == 8 * payload_size &&
          std::tuple_size_v<std::remove_cv_t<decltype(sensor_fields)>> == sensor_field_count;
 }
 static_assert(sensor_fields_match_spec(), "sensor_fields disagrees with the spec's layout");
@@ -419,8 +423,10 @@ template <auto ValueMember>
   }
   detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
     using field_type = std::remove_cvref_t<decltype(field)>;
+    // The conversion to a signed type is two's complement (modular since C++20).
     out.value.*field_type::raw_member =
-        seawire::detail::load_be<typename field_type::raw_type>(bytes, field.offset);
+        static_cast<typename field_type::raw_type>(seawire::detail::get_bits<detail::frame_order>(
+            bytes, 8 * static_cast<unsigned>(field.offset), field_type::bits));
     return true;
   });
   return out;
@@ -436,7 +442,10 @@ template <auto ValueMember>
   seawire::detail::store_be(out, 2, static_cast<std::uint16_t>(payload_size));
   detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
     using field_type = std::remove_cvref_t<decltype(field)>;
-    seawire::detail::store_be(out, field.offset, frame.*field_type::raw_member);
+    using unsigned_type = std::make_unsigned_t<typename field_type::raw_type>;
+    seawire::detail::put_bits<detail::frame_order>(
+        out, 8 * static_cast<unsigned>(field.offset), field_type::bits,
+        static_cast<unsigned_type>(frame.*field_type::raw_member));
     return true;
   });
   seawire::detail::store_be(out, 4, crc32(out.subspan(header_size, payload_size)));

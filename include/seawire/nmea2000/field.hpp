@@ -42,6 +42,7 @@
 #include <type_traits>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/bit_layout.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/decimal.hpp"
 
@@ -539,12 +540,17 @@ struct pgn_info {
   std::uint16_t interval_ms = 0;  ///< default transmit interval; 0 = on demand
 };
 
+/// How PGN payloads lay out their bits (see the top of this file).
+inline constexpr auto payload_order = seawire::detail::bit_order::lsb_first;
+
+/// A PGN's table: its rows are a binary layout (detail/bit_layout.hpp), each where the one before
+/// ends, the first at bit 0.
 template <class... F>
 struct pgn_description {
   pgn_info info;
   std::tuple<F...> fields;
 
-  static constexpr unsigned bit_length = (F::bits + ... + 0);
+  static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
   static_assert(bit_length % 8 == 0, "a PGN's fields must fill whole bytes");
   /// The payload's length in bytes.
   static constexpr std::size_t length = bit_length / 8;
@@ -554,13 +560,7 @@ struct pgn_description {
   /// counts from 1 as the table does.
   template <class Fn>
   constexpr void for_each(Fn&& fn) const {
-    unsigned offset = 0;
-    std::uint16_t n = 0;
-    std::apply(
-        [&](const auto&... f) {
-          ((fn(f, offset, ++n), offset += std::remove_cvref_t<decltype(f)>::bits), ...);
-        },
-        fields);
+    seawire::detail::for_each_row(fields, 0, fn);
   }
 };
 
@@ -585,38 +585,6 @@ using payload_of = std::array<std::uint8_t, description_of<P>::length>;
 // ---------------------------------------------------------------------------------------------
 // decode and encode
 
-namespace detail {
-
-[[nodiscard]] constexpr std::uint64_t get_bits(std::span<const std::uint8_t> p, unsigned offset,
-                                               unsigned width) noexcept {
-  std::uint64_t v = 0;
-  for (unsigned i = 0; i < width;) {
-    const unsigned bit = offset + i;
-    const unsigned in_byte = bit % 8;
-    const unsigned take = std::min(8 - in_byte, width - i);
-    const std::uint64_t chunk =
-        (static_cast<std::uint64_t>(p[bit / 8]) >> in_byte) & ((std::uint64_t{1} << take) - 1);
-    v |= chunk << i;
-    i += take;
-  }
-  return v;
-}
-
-constexpr void put_bits(std::span<std::uint8_t> p, unsigned offset, unsigned width,
-                        std::uint64_t v) noexcept {
-  for (unsigned i = 0; i < width;) {
-    const unsigned bit = offset + i;
-    const unsigned in_byte = bit % 8;
-    const unsigned take = std::min(8 - in_byte, width - i);
-    const auto mask = static_cast<std::uint8_t>(((1U << take) - 1) << in_byte);
-    const auto chunk = static_cast<std::uint8_t>(((v >> i) << in_byte) & mask);
-    p[bit / 8] = static_cast<std::uint8_t>((p[bit / 8] & ~mask) | chunk);
-    i += take;
-  }
-}
-
-}  // namespace detail
-
 /// P from a payload. Fields the payload is too short to hold in full read as not available (a
 /// sender may leave trailing fields out); bytes past P's length are ignored (a later version of
 /// the standard may add fields). Reserved bits are not looked at. Never fails.
@@ -628,7 +596,7 @@ template <pgn_like P>
     if constexpr (!F::is_reserved) {
       using V = typename F::value_type;
       if (offset + F::bits > payload.size() * 8) return;
-      const std::uint64_t u = detail::get_bits(payload, offset, F::bits);
+      const std::uint64_t u = seawire::detail::get_bits<payload_order>(payload, offset, F::bits);
       std::int64_t raw = static_cast<std::int64_t>(u);
       if constexpr (V::is_signed) {
         if (F::bits < 64 && ((u >> (F::bits - 1)) & 1) != 0)
@@ -660,7 +628,8 @@ template <pgn_like P>
       }
       const std::uint64_t mask =
           F::bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << F::bits) - 1;
-      detail::put_bits(r.value, offset, F::bits, static_cast<std::uint64_t>(v.raw()) & mask);
+      seawire::detail::put_bits<payload_order>(r.value, offset, F::bits,
+                                               static_cast<std::uint64_t>(v.raw()) & mask);
     }
   });
   return r;
