@@ -245,6 +245,12 @@ void fill(byte_source& src, I& v) {
   }
 }
 
+// Any whole number at all, in range or not: encode must refuse what its type cannot carry.
+template <class T>
+void fill(byte_source& src, nmea::integer<T>& v) {
+  v = src.coin() ? src.integer<std::int64_t>() : std::int64_t{src.integer<T>()};
+}
+
 template <class Axis>
 void fill(byte_source& src, nmea::nmea_coordinate<Axis>& c) {
   c.whole_degrees = src.coin() ? src.byte() : src.integer<std::uint16_t>();

@@ -192,6 +192,8 @@ void fill(prng& g, V& v, const nm::field_options& o) {
     v = g.coin();
   } else if constexpr (std::is_integral_v<V>) {
     v = bounded_integer<V>(g, o);
+  } else if constexpr (nm::is_integer_wrapper<V>) {
+    v = bounded_integer<typename V::value_type>(g, o);
   } else if constexpr (std::is_same_v<V, nm::decimal>) {
     v = bounded_decimal(g, o);
   } else if constexpr (std::is_same_v<V, nm::time_of_day>) {

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "seawire/seawire.hpp"
+#include "support.hpp"
 
 // ---------------------------------------------------------------------------------------------
 // The family namespaces hold their own names only: `using namespace seawire::kingfisher` does not
@@ -76,6 +77,8 @@ static_assert(refuses_floating<nmea::decimal_longitude>());
 static_assert(refuses_floating<nmea::time_of_day>());
 static_assert(refuses_floating<nmea::date>());
 static_assert(refuses_floating<nmea::magnetic_variation>());
+static_assert(refuses_floating<nmea::integer<std::uint8_t>>());
+static_assert(refuses_floating<nmea::integer<std::int32_t>>());
 
 // Integers stay implicit where that reads well; bool is not a number.
 static_assert(made_from<decimal, int> && assignable_from<decimal, int>);
@@ -114,6 +117,17 @@ static_assert(member_refuses_floating<&sandshark::bprmb::speed>());
 static_assert(member_refuses_floating<&standard::rmc::speed_knots>());
 static_assert(member_refuses_floating<&standard::gga::altitude_m>());
 static_assert(member_refuses_floating<&standard::vhw::speed_knots>());
+// Whole-number members: any integer, never a floating-point value.
+static_assert(member_refuses_floating<&standard::gga::satellites>());
+static_assert(member_refuses_floating<&standard::gga::dgps_station>());
+static_assert(member_refuses_floating<&standard::rpm::number>());
+static_assert(member_refuses_floating<&kingfisher::cprcm::compass_id>());
+static_assert(member_refuses_floating<&kingfisher::cprbs::battery_id>());
+static_assert(member_refuses_floating<&sandshark::bfack::behavior_id>());
+static_assert(member_refuses_floating<&sandshark::bfack::future_use>());
+static_assert(member_takes<&standard::gga::satellites, std::int64_t> &&
+              member_takes<&standard::rpm::number, unsigned long long>);
+static_assert(!member_takes<&standard::rpm::number, bool>);
 static_assert(!member_takes<&standard::rmc::lat, double>);
 static_assert(!member_takes<&standard::rmc::time, double>);
 static_assert(!member_takes<&standard::rmc::magnetic_variation, double>);
@@ -134,7 +148,73 @@ static_assert(decimal::parse("12345678901234567890").ec == errc::number_too_long
 static_assert(decimal::from_double(1.5, 1).value == 1.5_dec);
 static_assert(decimal::from_double(203.1, 2).value == decimal::scaled(20310, 2));
 
+// No message has a plain integer field (it would take a double and cut it): each one is an
+// nmea::integer, so the checks above hold for every field, not only the ones listed.
+template <class M>
+consteval bool no_plain_integer_fields() {
+  bool ok = true;
+  M::nmea.fields.apply([&](const auto&... d) {
+    ((ok = ok && !(std::is_integral_v<typename std::remove_cvref_t<decltype(d)>::value_type> &&
+                   !std::is_same_v<typename std::remove_cvref_t<decltype(d)>::value_type, bool>)),
+     ...);
+  });
+  return ok;
+}
+template <class... Ms>
+consteval bool no_plain_integer_fields(nmea::message_set<Ms...>*) {
+  return (no_plain_integer_fields<Ms>() && ...);
+}
+using every_message =
+    nmea::merge_sets<kingfisher::from_vehicle, kingfisher::to_vehicle, sandshark::from_vehicle,
+                     sandshark::to_vehicle, robotx::reports, anello::nmea_inputs,
+                     anello::nmea_outputs>::type;
+static_assert(no_plain_integer_fields(static_cast<every_message*>(nullptr)));
+
+// A whole number compares as the number it is, not as its type's wrapped value.
+static_assert(nmea::integer<std::uint8_t>{300} != 44 && nmea::integer<std::uint8_t>{300} == 300);
+static_assert(nmea::integer<std::uint8_t>{7} < 8 && 8 > nmea::integer<std::uint8_t>{7});
+static_assert(!nmea::integer<std::uint8_t>{-1}.fits() && nmea::integer<std::int8_t>{-1}.fits());
+
 }  // namespace
+
+TEST_CASE("whole numbers: kept whole, checked against their type when encoded") {
+  const auto start = nmea::decode<standard::gga>(
+      support::sealed("GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,"));
+  REQUIRE(start);
+  standard::gga g = start.value;
+  g.satellites = 8;
+  std::uint8_t n = *g.satellites;  // reads back as its type
+  CHECK(n == 8);
+  auto ok = nmea::encode(g);
+  REQUIRE(ok);
+  CHECK(ok.view().find(",08,") != std::string_view::npos);  // two digits, as GGA has them
+
+  // 300 does not go out as 44: the field is refused, by number.
+  g.satellites = 300;
+  CHECK(*g.satellites == 300);
+  const auto bad = nmea::encode(g);
+  CHECK(bad.ec == errc::out_of_range);
+  CHECK(nmea::field_name<standard::gga>(bad.field) == "satellites");
+  g.satellites = -1;
+  CHECK(nmea::encode(g).ec == errc::out_of_range);
+
+  // Decoded values are within the type; a sender's 300 is refused at decode.
+  const auto d = nmea::decode<standard::gga>(
+      support::sealed("GPGGA,123519,4807.038,N,01131.000,E,1,300,0.9,545.4,M,46.9,M,,"));
+  CHECK(d.ec == errc::out_of_range);
+  CHECK(d.field == 7);
+
+  const auto ack = nmea::decode<sandshark::bfack>("$BFACK,081025.990,RMB,081025.950,,2,0,*32\r\n");
+  REQUIRE(ack);
+  sandshark::bfack a = ack.value;
+  a.behavior_id = -7;
+  CHECK(nmea::encode(a).view() == "$BFACK,081025.990,RMB,081025.950,-7,2,0,*28\r\n");
+  CHECK(a.behavior_id == -7);
+  a.behavior_id = std::int64_t{1} << 40;
+  const auto too_big = nmea::encode(a);
+  CHECK(too_big.ec == errc::out_of_range);
+  CHECK(nmea::field_name<sandshark::bfack>(too_big.field) == "behavior_id");
+}
 
 TEST_CASE("decimal: integers convert, the scaled form is named, text and literals are exact") {
   decimal d = 45;

@@ -106,7 +106,7 @@ constexpr void write_plain(Sink& s, const P& msg) {
 template <class T>
 concept fmt_value = std::is_same_v<T, nmea::decimal> || std::is_same_v<T, nmea::time_of_day> ||
     std::is_same_v<T, nmea::date> || nmea::char_enum_like<T> || nmea::word_enum_like<T> ||
-    nmea::is_ddmm_position<T> || nmea::is_degrees_position<T>;
+    nmea::is_integer_wrapper<T> || nmea::is_ddmm_position<T> || nmea::is_degrees_position<T>;
 
 }  // namespace seawire::detail
 

@@ -37,7 +37,7 @@ std::string form_of(const nmea::field_options& o) {
     return "number";
   } else if constexpr (std::is_same_v<V, bool>) {
     return "flag, `0` or `1`";
-  } else if constexpr (std::is_integral_v<V>) {
+  } else if constexpr (std::is_integral_v<V> || nmea::is_integer_wrapper<V>) {
     std::string s = "whole number";
     if (o.zero_pad > 1) s += ", at least " + std::to_string(o.zero_pad) + " digits";
     return s;

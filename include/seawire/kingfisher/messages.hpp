@@ -67,8 +67,8 @@ using cpnvr = bluefin::velocity_update<"CPNVR">;
 ///   $CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,164959.060*62
 ///          1          2 3          4         5         6
 struct cprcm {
-  nmea::time_of_day timestamp;                  // 1 [Timestamp] when the sentence was made
-  std::optional<std::uint16_t> compass_id = 0;  // 2 [ID_Compass] which compass
+  nmea::time_of_day timestamp;  // 1 [Timestamp] when the sentence was made
+  std::optional<nmea::integer<std::uint16_t>> compass_id = 0;  // 2 [ID_Compass] which compass
   // 3 [Heading] degrees clockwise from true north
   std::optional<nmea::decimal> heading_deg;
   std::optional<nmea::decimal> pitch_deg;  // 4 [Pitch] degrees, positive bow up
@@ -103,10 +103,10 @@ struct cprcm {
 ///   $CPRBS,172909.322,15.121597,15.121597,15.121597,0*76   real vehicle, 5 fields (no id)
 ///          1          2         3         4         5
 struct cprbs {
-  nmea::time_of_day timestamp;              // 1 [Timestamp] when the sentence was made
-  std::optional<std::uint16_t> battery_id;  // 2 [ID_Battery] banks numbered from 1; only in the
-                                            //   six-field form, nullopt writes the five-field
-                                            //   one unless wire_fields says six
+  nmea::time_of_day timestamp;  // 1 [Timestamp] when the sentence was made
+  // 2 [ID_Battery] banks numbered from 1; only in the six-field form, nullopt writes the
+  // five-field one unless wire_fields says six
+  std::optional<nmea::integer<std::uint16_t>> battery_id;
   std::optional<nmea::decimal> stack_voltage_v;     // 3 [V_Batt_Stack] volts, the whole bank
   std::optional<nmea::decimal> min_cell_voltage_v;  // 4 [V_Batt_Min] volts, lowest cell of the bank
   // 5 [V_Batt_Max] volts, highest cell of the bank

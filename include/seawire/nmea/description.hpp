@@ -213,7 +213,8 @@ inline constexpr bool fills_from_double =
     std::is_same_v<V, magnetic_variation>;
 
 template <class V>
-inline constexpr bool is_integer_field = std::is_integral_v<V> && !std::is_same_v<V, bool>;
+inline constexpr bool is_integer_field =
+    (std::is_integral_v<V> && !std::is_same_v<V, bool>) || is_integer_wrapper<V>;
 
 template <class V>
 inline constexpr bool is_text_field = requires(const V& v) {

@@ -11,6 +11,7 @@
 #include "seawire/nmea/codec.hpp"     // codec<T>, has_codec
 #include "seawire/nmea/decimal.hpp"   // decimal, integers, 0/1 flags
 #include "seawire/nmea/enum.hpp"      // letter and word enums
+#include "seawire/nmea/integer.hpp"   // integer<T>: whole numbers
 #include "seawire/nmea/position.hpp"  // latitude, longitude, decimal_latitude, decimal_longitude
 #include "seawire/nmea/text.hpp"      // text<N>, talker_id
 #include "seawire/nmea/time.hpp"      // time_of_day, date

@@ -195,6 +195,10 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
       }
     }
     detail::json_uint(s, static_cast<std::uint64_t>(v));
+  } else if constexpr (is_integer_wrapper<T>) {
+    if (v.value() < 0) s.put('-');
+    detail::json_uint(s, v.value() < 0 ? 0 - static_cast<std::uint64_t>(v.value())
+                                       : static_cast<std::uint64_t>(v.value()));
   } else if constexpr (is_ddmm_position<T> || is_degrees_position<T>) {
     detail::json_decimal(s, to_decimal_degrees(v));
   } else if constexpr (std::is_same_v<T, magnetic_variation>) {
@@ -424,7 +428,8 @@ template <class T>
       return errc::ok;
     }
     return errc::bad_flag;
-  } else if constexpr (std::is_integral_v<T> && !std::is_same_v<T, char>) {
+  } else if constexpr ((std::is_integral_v<T> && !std::is_same_v<T, char>) ||
+                       is_integer_wrapper<T>) {
     if (!detail::is_scalar_text(v)) return errc::bad_number;
     sentence_view s;
     s.body = v.text;

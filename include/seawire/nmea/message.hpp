@@ -48,6 +48,8 @@ template <class T>
                                                                  const field_options& o) noexcept {
   if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
     return check_options(decimal(static_cast<std::int64_t>(v)), o);
+  } else if constexpr (is_integer_wrapper<T>) {
+    return check_options(decimal(v.value()), o);
   } else if constexpr (std::is_same_v<T, time_of_day>) {
     return o.max_places >= 0 && v.places > o.max_places ? errc::bad_time : errc::ok;
   } else if constexpr (requires {
@@ -347,6 +349,13 @@ template <class F, class T>
   if (has) {
     if constexpr (std::is_integral_v<V> && std::is_unsigned_v<V> && !std::is_same_v<V, bool>) {
       w.put_uint(*v, o.zero_pad);
+    } else if constexpr (is_integer_wrapper<V>) {
+      // check() has refused a value outside the type: an unsigned one is not negative here.
+      if constexpr (std::is_unsigned_v<typename V::value_type>) {
+        w.put_uint(static_cast<std::uint64_t>(v->value()), o.zero_pad);
+      } else {
+        codec<V>::write(w, *v);
+      }
     } else {
       codec<V>::write(w, *v);
     }
@@ -429,7 +438,7 @@ template <class T>
     using V = typename std::remove_cvref_t<decltype(f)>::value_type;
     if constexpr (requires { codec<V>::max_chars; }) {
       std::size_t chars = codec<V>::max_chars;
-      if constexpr (std::is_integral_v<V>) {
+      if constexpr (is_integer_field<V>) {
         const std::size_t pad = f.opts.zero_pad < 20 ? f.opts.zero_pad : 20;
         if (pad > chars) chars = pad;
       }

@@ -154,9 +154,10 @@ struct bfack {
   nmea::text<16> command;       // 2 [c-c] command acknowledged, by 3-letter id ("RMB") or address
   std::optional<nmea::time_of_day> command_timestamp;  // 3 [hhmmss.ss] the command's own field 1;
                                                        //   blank for commands without one (BPLOG)
-  std::optional<std::int32_t> behavior_id;     // 4 [iiii] payload-assigned id of a new behaviour
-  ack_status status = ack_status::ok;          // 5 [s] Acknowledgement Status Code
-  std::optional<std::int32_t> future_use = 0;  // 6 [c] always 0 in this revision
+  // 4 [iiii] payload-assigned id of a new behaviour
+  std::optional<nmea::integer<std::int32_t>> behavior_id;
+  ack_status status = ack_status::ok;                         // 5 [s] Acknowledgement Status Code
+  std::optional<nmea::integer<std::int32_t>> future_use = 0;  // 6 [c] always 0 in this revision
   std::optional<nmea::text<256>> description =
       nmea::text<256>{};  // 7 [m-m] details, for people only
   std::optional<nmea::text<128>> trailing =

@@ -30,16 +30,16 @@ enum class gps_quality : char {
 
 struct gga {
   nmea::talker_id talker = "GP";
-  std::optional<nmea::time_of_day> time;            // 1  UTC time of the fix
-  std::optional<nmea::latitude> lat;                // 2,3
-  std::optional<nmea::longitude> lon;               // 4,5
-  std::optional<gps_quality> quality;               // 6  blank: not available (the fix is kept)
-  std::optional<std::uint8_t> satellites;           // 7  in use, written with two digits
-  std::optional<nmea::decimal> hdop;                // 8  horizontal dilution of precision
+  std::optional<nmea::time_of_day> time;  // 1  UTC time of the fix
+  std::optional<nmea::latitude> lat;      // 2,3
+  std::optional<nmea::longitude> lon;     // 4,5
+  std::optional<gps_quality> quality;     // 6  blank: not available (the fix is kept)
+  std::optional<nmea::integer<std::uint8_t>> satellites;  // 7  in use, written with two digits
+  std::optional<nmea::decimal> hdop;                      // 8  horizontal dilution of precision
   std::optional<nmea::decimal> altitude_m;          // 9,10  antenna altitude above MSL, metres
   std::optional<nmea::decimal> geoid_separation_m;  // 11,12 geoid above the WGS84 ellipsoid, metres
   std::optional<nmea::decimal> dgps_age_s;          // 13 seconds since the last DGPS update
-  std::optional<std::uint16_t> dgps_station;        // 14 station id 0000-1023
+  std::optional<nmea::integer<std::uint16_t>> dgps_station;  // 14 station id 0000-1023
 
   friend constexpr bool operator==(const gga&, const gga&) noexcept = default;
 

@@ -29,7 +29,7 @@ enum class rpm_status : char { valid = 'A', invalid = 'V' };
 struct rpm {
   nmea::talker_id talker = "II";
   rpm_source source = rpm_source::shaft;   // 1 [Source] S shaft, E engine
-  std::uint8_t number = 0;                 // 2 [Engine or shaft number] 0 single or on the
+  nmea::integer<std::uint8_t> number = 0;  // 2 [Engine or shaft number] 0 single or on the
                                            //   centreline, odd starboard, even port
   std::optional<nmea::decimal> speed_rpm;  // 3 [Speed] rev/min; negative = counter-clockwise
   // 4 [Propeller pitch] % of maximum, negative = astern

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// Whole-number fields (a satellite count, an engine number, a battery id) and their codec.
+//
+// A message's whole-number member is an nmea::integer<T>, not a plain T, so that what is assigned
+// to it cannot silently become another number: a plain `std::uint8_t satellites` takes 7.9 as 7
+// and 300 as 44 without a word from the compiler, and the sentence then says something the code
+// did not mean. integer<T>:
+//   - takes any integer, implicitly (`gga.satellites = 7;`, `= count;`), and keeps it whole;
+//   - refuses a floating-point value at compile time (round it first, as the code means it:
+//     `= static_cast<int>(std::lround(x))`);
+//   - reads back as T (`std::uint8_t n = *gga.satellites;`), or exactly as value();
+//   - is checked against T's range when the message is encoded: 300 in a std::uint8_t field is
+//     out_of_range, naming the field, instead of going out as 44.
+// Decoded values are always within T's range.
+
+#include <compare>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/detail/inline.hpp"
+#include "seawire/error.hpp"
+#include "seawire/nmea/codec.hpp"
+#include "seawire/nmea/decimal.hpp"
+
+namespace seawire::nmea {
+
+/// A whole-number field of type T (an integer type of at most 32 bits).
+template <class T>
+class integer {
+  static_assert(std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char> &&
+                    sizeof(T) <= 4,
+                "nmea::integer<T>: T is an integer type of at most 32 bits");
+
+ public:
+  using value_type = T;
+  static constexpr std::int64_t min = std::numeric_limits<T>::min();
+  static constexpr std::int64_t max = std::numeric_limits<T>::max();
+
+  constexpr integer() noexcept = default;
+  /// Any integer, kept whole; one outside T's range is refused when the message is encoded.
+  template <std::integral I>
+  requires(!std::is_same_v<I, bool>) constexpr integer(I v) noexcept  // NOLINT: implicit
+      : v_(std::cmp_greater(v, std::numeric_limits<std::int64_t>::max())
+               ? std::numeric_limits<std::int64_t>::max()
+               : static_cast<std::int64_t>(v)) {}
+  /// A floating-point value would be cut to a whole number without a word: round it as the code
+  /// means it (std::lround) and assign the integer.
+  template <std::floating_point F>
+  integer(F) = delete;
+
+  /// The value as assigned or decoded.
+  [[nodiscard]] constexpr std::int64_t value() const noexcept { return v_; }
+  /// Whether the value is one of T's (always, for a decoded value).
+  [[nodiscard]] constexpr bool fits() const noexcept { return v_ >= min && v_ <= max; }
+  /// The value as T (exact whenever fits()).
+  constexpr operator T() const noexcept { return static_cast<T>(v_); }  // NOLINT: implicit
+
+  [[nodiscard]] friend constexpr bool operator==(const integer&, const integer&) noexcept = default;
+  [[nodiscard]] friend constexpr std::strong_ordering operator<=>(
+      const integer&, const integer&) noexcept = default;
+  // Against a plain integer, compared as numbers (not through T, which could wrap).
+  template <std::integral I>
+  [[nodiscard]] friend constexpr bool operator==(const integer& a, I b) noexcept {
+    return std::cmp_equal(a.v_, b);
+  }
+  template <std::integral I>
+  [[nodiscard]] friend constexpr std::strong_ordering operator<=>(const integer& a, I b) noexcept {
+    return std::cmp_less(a.v_, b)    ? std::strong_ordering::less
+           : std::cmp_equal(a.v_, b) ? std::strong_ordering::equal
+                                     : std::strong_ordering::greater;
+  }
+
+ private:
+  std::int64_t v_ = 0;
+};
+
+template <class V>
+inline constexpr bool is_integer_wrapper = false;
+template <class T>
+inline constexpr bool is_integer_wrapper<integer<T>> = true;
+
+template <class T>
+struct codec<integer<T>> {
+  static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = codec<T>::max_chars;
+  static constexpr bool allows_blank = false;
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, integer<T>& v) noexcept {
+    T t{};
+    const errc e = codec<T>::read(r, t);
+    if (e == errc::ok) v = t;
+    return e;
+  }
+  static constexpr errc check(const integer<T>& v) noexcept {
+    return v.fits() ? errc::ok : errc::out_of_range;
+  }
+  static constexpr void write(writer& w, const integer<T>& v) noexcept {
+    codec<T>::write(w, static_cast<T>(v));
+  }
+};
+
+}  // namespace seawire::nmea
