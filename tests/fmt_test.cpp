@@ -78,6 +78,9 @@ TEST_CASE("value types on their own") {
   CHECK(fmt::format("{}", text<16>("BWSI")) == "BWSI");
   CHECK(fmt::format("{:j}", text<16>("a\"b")) == R"("a\"b")");
   CHECK(fmt::format("{}", sandshark::log_state::on) == "ON");
+  // A whole number as the number it is (a std::uint8_t one not as a character).
+  CHECK(fmt::format("{}", nmea::integer<std::uint8_t>{65}) == "65");
+  CHECK(fmt::format("{:j}", nmea::integer<std::int32_t>{-7}) == "-7");
   CHECK(fmt::format("{:j}", standard::rmc_status::warning) == R"("V")");
   const auto hrb =
       must_decode<robotx::rxhrb>("$RXHRB,111221,161229,21.31198,N,157.88972,W,ROBOT,2,1*11");
