@@ -109,6 +109,8 @@ inline void read_value(sink& s, const V& v) noexcept {
     s.bits += v.size() + (v.empty() ? 0U : static_cast<unsigned char>(v.view()[0]));
   } else if constexpr (std::is_enum_v<V> || std::is_integral_v<V>) {
     s.bits += static_cast<std::uint64_t>(v);
+  } else if constexpr (nmea::is_integer_wrapper<V>) {
+    s.bits += static_cast<std::uint64_t>(v.value());
   } else if constexpr (requires { v.colors; }) {
     s.bits += static_cast<unsigned char>(v.colors[0]);
   } else {
