@@ -128,6 +128,10 @@ static_assert(member_refuses_floating<&sandshark::bfack::future_use>());
 static_assert(member_takes<&standard::gga::satellites, std::int64_t> &&
               member_takes<&standard::rpm::number, unsigned long long>);
 static_assert(!member_takes<&standard::rpm::number, bool>);
+static_assert(!member_takes<&standard::rpm::number, char>);  // '7' would be 55
+// Read back as T only on request: a value assigned outside T would come back wrapped.
+static_assert(!std::is_convertible_v<nmea::integer<std::uint8_t>, std::uint8_t> &&
+              std::is_constructible_v<std::uint8_t, nmea::integer<std::uint8_t>>);
 static_assert(!member_takes<&standard::rmc::lat, double>);
 static_assert(!member_takes<&standard::rmc::time, double>);
 static_assert(!member_takes<&standard::rmc::magnetic_variation, double>);
@@ -183,7 +187,7 @@ TEST_CASE("whole numbers: kept whole, checked against their type when encoded") 
   REQUIRE(start);
   standard::gga g = start.value;
   g.satellites = 8;
-  std::uint8_t n = *g.satellites;  // reads back as its type
+  const auto n = static_cast<std::uint8_t>(*g.satellites);  // as its type, on request
   CHECK(n == 8);
   auto ok = nmea::encode(g);
   REQUIRE(ok);

@@ -9,7 +9,8 @@
 //   - takes any integer, implicitly (`gga.satellites = 7;`, `= count;`), and keeps it whole;
 //   - refuses a floating-point value at compile time (round it first, as the code means it:
 //     `= static_cast<int>(std::lround(x))`);
-//   - reads back as T (`std::uint8_t n = *gga.satellites;`), or exactly as value();
+//   - reads back exactly as value(), or as T by an explicit conversion (never implicitly: a
+//     value assigned outside T would read back wrapped);
 //   - is checked against T's range when the message is encoded: 300 in a std::uint8_t field is
 //     out_of_range, naming the field, instead of going out as 44.
 // Decoded values are always within T's range.
@@ -43,8 +44,10 @@ class integer {
 
   constexpr integer() noexcept = default;
   /// Any integer, kept whole; one outside T's range is refused when the message is encoded.
+  /// (Not bool or char: `= '7'` would be 55.)
   template <std::integral I>
-  requires(!std::is_same_v<I, bool>) constexpr integer(I v) noexcept  // NOLINT: implicit
+  requires(!std::is_same_v<I, bool> &&
+           !std::is_same_v<I, char>) constexpr integer(I v) noexcept  // NOLINT: implicit
       : v_(std::cmp_greater(v, std::numeric_limits<std::int64_t>::max())
                ? std::numeric_limits<std::int64_t>::max()
                : static_cast<std::int64_t>(v)) {}
@@ -57,8 +60,8 @@ class integer {
   [[nodiscard]] constexpr std::int64_t value() const noexcept { return v_; }
   /// Whether the value is one of T's (always, for a decoded value).
   [[nodiscard]] constexpr bool fits() const noexcept { return v_ >= min && v_ <= max; }
-  /// The value as T (exact whenever fits()).
-  constexpr operator T() const noexcept { return static_cast<T>(v_); }  // NOLINT: implicit
+  /// The value as T: exact whenever fits(), wrapped otherwise, so only on request.
+  constexpr explicit operator T() const noexcept { return static_cast<T>(v_); }
 
   [[nodiscard]] friend constexpr bool operator==(const integer&, const integer&) noexcept = default;
   [[nodiscard]] friend constexpr std::strong_ordering operator<=>(

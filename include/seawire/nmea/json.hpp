@@ -196,9 +196,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
     }
     detail::json_uint(s, static_cast<std::uint64_t>(v));
   } else if constexpr (is_integer_wrapper<T>) {
-    if (v.value() < 0) s.put('-');
-    detail::json_uint(s, v.value() < 0 ? 0 - static_cast<std::uint64_t>(v.value())
-                                       : static_cast<std::uint64_t>(v.value()));
+    write_json_value<Style>(s, v.value());
   } else if constexpr (is_ddmm_position<T> || is_degrees_position<T>) {
     detail::json_decimal(s, to_decimal_degrees(v));
   } else if constexpr (std::is_same_v<T, magnetic_variation>) {

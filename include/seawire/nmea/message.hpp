@@ -49,7 +49,7 @@ template <class T>
   if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
     return check_options(decimal(static_cast<std::int64_t>(v)), o);
   } else if constexpr (is_integer_wrapper<T>) {
-    return check_options(decimal(v.value()), o);
+    return check_options(v.value(), o);
   } else if constexpr (std::is_same_v<T, time_of_day>) {
     return o.max_places >= 0 && v.places > o.max_places ? errc::bad_time : errc::ok;
   } else if constexpr (requires {
