@@ -350,23 +350,24 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
   return p;
 }
 
-// The role decoders below are function templates of nothing (`template <int = 0>`): a file
-// that includes this header then compiles a role's decoders only if it calls them, which
-// keeps including seawire/seawire.hpp cheap. Call them as plain functions.
+// The role decoders below are function templates of nothing (`template <int N = 0>`, their
+// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
+// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
+// as plain functions.
 /// Payload side: one line from the vehicle. Addresses outside `from_vehicle` (PY*, other
 /// GPS sentences) give unknown_sentence, which views into `line`.
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
     std::string_view line, const nmea::parse_policy& policy = payload_policy()) noexcept {
-  return from_vehicle::decode(line, policy);
+  return nmea::lazy<from_vehicle, N>::decode(line, policy);
 }
 
 /// Vehicle side: one command line from a payload. Addresses outside `to_vehicle` give
 /// unknown_sentence, which views into `line`.
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
     std::string_view line, const nmea::parse_policy& policy = vehicle_policy()) noexcept {
-  return to_vehicle::decode(line, policy);
+  return nmea::lazy<to_vehicle, N>::decode(line, policy);
 }
 
 }  // namespace seawire::kingfisher

@@ -196,11 +196,12 @@ struct append_unique<message_set<A...>, M, Rest...> {
 };
 }  // namespace detail
 
-/// `lazy<Set, N>` is `Set`, named so that the name depends on `N`. A role decoder is a function
-/// template of nothing (`template <int N = 0>`) whose body calls `lazy<Set, N>::decode`: the
-/// set's decoder is then compiled only where the role decoder is called. (A call that does not
-/// depend on the template parameter would be compiled where the header is read: constexpr
-/// functions a template definition names are instantiated at once.)
+/// `lazy<T, N>` is `T` (a message set or a message), named so that the name depends on `N`. A
+/// role decoder is a function template of nothing (`template <int N = 0>`) whose body calls
+/// `lazy<Set, N>::decode`: the set's decoder is then compiled only where the role decoder is
+/// called. (A call that does not depend on a template parameter is compiled where the header is
+/// read: Clang instantiates the constexpr functions a template definition names at once.) The
+/// RobotX scheduler and validator and the Sandshark sessions name their messages the same way.
 template <class Set, int>
 struct lazy_set {
   using type = Set;

@@ -38,6 +38,7 @@
 #include <tuple>
 
 #include "seawire/error.hpp"
+#include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/writer.hpp"
 #include "seawire/robotx/hst.hpp"
@@ -101,9 +102,10 @@ class scheduler {
   /// Set what the heartbeat says (its date and time are overwritten when stamping). The first
   /// status() starts the heartbeat. A status that would not encode is refused: the error and
   /// field come back and the previous status stays.
+  template <int N = 0>
   [[nodiscard]] constexpr result<bool> status(const rxhrb& hb) noexcept {
     result<bool> r;
-    const auto check = trial_encode(hb);
+    const auto check = trial_encode<nmea::lazy<rxhrb, N>>(hb);
     r.ec = check.ec;
     r.field = check.field;
     if (r.ec != errc::ok) return r;
@@ -114,23 +116,30 @@ class scheduler {
   /// The heartbeat content, once status() has been given.
   [[nodiscard]] constexpr const std::optional<rxhrb>& status() const noexcept { return heartbeat_; }
 
+  // status(), submit() and poll() are function templates of nothing, like the role decoders:
+  // the encoders they run are compiled only where they are called. Call them as plain functions.
+  template <int N = 0>
   [[nodiscard]] constexpr submit_result submit(const rxgat& m, instant now) noexcept {
-    return submit_one(m, now);
+    return submit_one<nmea::lazy<rxgat, N>>(m, now);
   }
+  template <int N = 0>
   [[nodiscard]] constexpr submit_result submit(const rxcod& m, instant now) noexcept {
-    return submit_one(m, now);
+    return submit_one<nmea::lazy<rxcod, N>>(m, now);
   }
+  template <int N = 0>
   [[nodiscard]] constexpr submit_result submit(const rxdok& m, instant now) noexcept {
-    return submit_one(m, now);
+    return submit_one<nmea::lazy<rxdok, N>>(m, now);
   }
+  template <int N = 0>
   [[nodiscard]] constexpr submit_result submit(const rxdel& m, instant now) noexcept {
-    return submit_one(m, now);
+    return submit_one<nmea::lazy<rxdel, N>>(m, now);
   }
 
   /// The next sentence to send at `now`, or nullopt when nothing is due. Call until nullopt.
+  template <int N = 0>
   [[nodiscard]] constexpr std::optional<outgoing> poll(instant now) noexcept {
     if (heartbeat_ && heartbeat_due(now)) {
-      std::optional<outgoing> out = release(*heartbeat_, now);
+      std::optional<outgoing> out = release<nmea::lazy<rxhrb, N>>(*heartbeat_, now);
       next_heartbeat_ = detail::later_by(now, config_.heartbeat_period);
       return out;
     }
@@ -144,10 +153,10 @@ class scheduler {
     if (best == report_type_count) return std::nullopt;
     slot_[best].waiting = false;
     switch (static_cast<report_type>(best)) {
-      case report_type::gates: return release(*std::get<0>(held_), now);
-      case report_type::scan_code: return release(*std::get<1>(held_), now);
-      case report_type::dock: return release(*std::get<2>(held_), now);
-      case report_type::deliver: return release(*std::get<3>(held_), now);
+      case report_type::gates: return release<nmea::lazy<rxgat, N>>(*std::get<0>(held_), now);
+      case report_type::scan_code: return release<nmea::lazy<rxcod, N>>(*std::get<1>(held_), now);
+      case report_type::dock: return release<nmea::lazy<rxdok, N>>(*std::get<2>(held_), now);
+      case report_type::deliver: return release<nmea::lazy<rxdel, N>>(*std::get<3>(held_), now);
       case report_type::heartbeat: break;
     }
     return std::nullopt;

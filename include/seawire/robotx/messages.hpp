@@ -92,6 +92,9 @@ struct light_pattern {
   std::array<color, 3> colors{};
 
   /// From text such as "RGB": bad_length unless three letters, bad_enum for any other than R/B/G.
+  /// (A function template of nothing, so that color's letters are read only where it is used;
+  /// call it as a plain function.)
+  template <int N = 0>
   [[nodiscard]] static constexpr result<light_pattern> from(std::string_view s) noexcept {
     result<light_pattern> r;
     if (s.size() != 3) {
@@ -99,7 +102,7 @@ struct light_pattern {
       return r;
     }
     for (std::size_t i = 0; i < 3; ++i) {
-      if (!nmea::is_enum_letter<color>(s[i])) {
+      if (!nmea::is_enum_letter<nmea::lazy<color, N>>(s[i])) {
         r.ec = errc::bad_enum;
         return r;
       }
@@ -120,14 +123,18 @@ struct seawire::nmea::codec<seawire::robotx::light_pattern> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 3;
   static constexpr bool allows_blank = false;
+  // read() and check() are function templates of nothing, as light_pattern::from is.
+  template <int N = 0>
   static constexpr errc read(nmea::field_reader& r, value_type& v) noexcept {
-    const result<value_type> p = value_type::from(r.take().text);
+    const result<value_type> p = value_type::template from<N>(r.take().text);
     if (p) v = p.value;
     return p.ec;
   }
+  template <int N = 0>
   static constexpr errc check(const value_type& v) noexcept {
     for (const auto c : v.colors)
-      if (nmea::to_string(c).empty()) return errc::bad_enum;
+      if (nmea::to_string(static_cast<nmea::lazy<seawire::robotx::color, N>>(c)).empty())
+        return errc::bad_enum;
     return errc::ok;
   }
   static constexpr void write(nmea::writer& w, const value_type& v) noexcept {
@@ -297,15 +304,16 @@ inline constexpr report_type report_type_of = report_traits<M>::type;
   return std::nullopt;
 }
 
-// The role decoders below are function templates of nothing (`template <int = 0>`): a file
-// that includes this header then compiles a role's decoders only if it calls them, which
-// keeps including seawire/seawire.hpp cheap. Call them as plain functions.
+// The role decoders below are function templates of nothing (`template <int N = 0>`, their
+// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
+// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
+// as plain functions.
 /// Decode one line into whichever report it is, under the judges' policy by default. A
 /// well-formed sentence with another address gives unknown_sentence (not an error).
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<reports::variant> decode_report(
     std::string_view line, const nmea::parse_policy& policy = judge_policy) noexcept {
-  return reports::decode(line, policy);
+  return nmea::lazy<reports, N>::decode(line, policy);
 }
 
 /// Decode one line and call `on_report(const M&)` for it (or `(const unknown_sentence&)`).

@@ -263,12 +263,15 @@ class validator {
     if (!since_heartbeat_) since_heartbeat_ = t;
   }
 
-  /// Judge one received line (with or without its line ending) that arrived at `at`.
+  /// Judge one received line (with or without its line ending) that arrived at `at`. (A
+  /// function template of nothing, like the role decoders: the decoders it runs are compiled
+  /// only where it is called. Call it as a plain function.)
+  template <int N = 0>
   [[nodiscard]] constexpr verdict check(std::string_view line, instant at) noexcept {
     verdict v;
     ++totals_.lines;
     start(at);
-    judge(line, at, v);
+    judge<N>(line, at, v);
     for (const finding& f : v.findings) ++totals_.findings[static_cast<std::size_t>(f.broken)];
     if (v.accepted) ++totals_.accepted;
     return v;
@@ -422,6 +425,7 @@ class validator {
 
   // Defined after the helpers it calls: Clang 14 does not instantiate a member template
   // defined later in the class in time for a constant expression.
+  template <int N>
   constexpr void judge(std::string_view line, instant at, verdict& v) noexcept {
     finding base;
     base.at = at;
@@ -479,7 +483,7 @@ class validator {
         add(rule::checksum_lowercase, 0, errc::ok);
     }
 
-    const result<reports::variant> decoded = reports::decode(line, config_.policy);
+    const result<reports::variant> decoded = nmea::lazy<reports, N>::decode(line, config_.policy);
     v.accepted = type && decoded.ok() && decoded.value.index() != 0;
     if (decoded.ok()) v.message = decoded.value;
     if (!type) return;
@@ -496,11 +500,11 @@ class validator {
 
     // Each field on its own, so every bad one is reported.
     switch (*type) {
-      case report_type::heartbeat: fields<rxhrb>(sv, base, v); break;
-      case report_type::gates: fields<rxgat>(sv, base, v); break;
-      case report_type::scan_code: fields<rxcod>(sv, base, v); break;
-      case report_type::dock: fields<rxdok>(sv, base, v); break;
-      case report_type::deliver: fields<rxdel>(sv, base, v); break;
+      case report_type::heartbeat: fields<nmea::lazy<rxhrb, N>>(sv, base, v); break;
+      case report_type::gates: fields<nmea::lazy<rxgat, N>>(sv, base, v); break;
+      case report_type::scan_code: fields<nmea::lazy<rxcod, N>>(sv, base, v); break;
+      case report_type::dock: fields<nmea::lazy<rxdok, N>>(sv, base, v); break;
+      case report_type::deliver: fields<nmea::lazy<rxdel, N>>(sv, base, v); break;
     }
     if (v.accepted && *type == report_type::heartbeat)
       heartbeat(std::get<rxhrb>(v.message), at, base, v);

@@ -368,30 +368,31 @@ inline constexpr nmea::parse_policy from_vehicle_policy{.checksum = nmea::checks
 inline constexpr nmea::parse_policy to_vehicle_policy{
     .checksum = nmea::checksum_policy::verify_if_present, .spaced_numbers = true};
 
-// The role decoders below are function templates of nothing (`template <int = 0>`): a file
-// that includes this header then compiles a role's decoders only if it calls them, which
-// keeps including seawire/seawire.hpp cheap. Call them as plain functions.
+// The role decoders below are function templates of nothing (`template <int N = 0>`, their
+// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
+// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
+// as plain functions.
 /// Decode a line the vehicle sent; an address the set does not know is unknown_sentence.
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
     std::string_view line) noexcept {
-  return from_vehicle::decode(line, from_vehicle_policy);
+  return nmea::lazy<from_vehicle, N>::decode(line, from_vehicle_policy);
 }
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
     const nmea::sentence_view& s) noexcept {
-  return from_vehicle::decode(s, from_vehicle_policy);
+  return nmea::lazy<from_vehicle, N>::decode(s, from_vehicle_policy);
 }
 /// Decode a line the payload sent.
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
     std::string_view line) noexcept {
-  return to_vehicle::decode(line, to_vehicle_policy);
+  return nmea::lazy<to_vehicle, N>::decode(line, to_vehicle_policy);
 }
-template <int = 0>
+template <int N = 0>
 [[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
     const nmea::sentence_view& s) noexcept {
-  return to_vehicle::decode(s, to_vehicle_policy);
+  return nmea::lazy<to_vehicle, N>::decode(s, to_vehicle_policy);
 }
 
 /// The 3-letter id the SPI uses for a message in BPLOG and BFACK: "BFNVG" -> "NVG". Other

@@ -309,7 +309,10 @@ class payload_session {
   /// decoded message for the caller's own use (an unknown_sentence views into `line`).
   [[nodiscard]] constexpr result<from_vehicle::variant> receive(std::string_view line,
                                                                 time_point now) noexcept {
-    result<from_vehicle::variant> r = decode_from_vehicle(line);
+    // The decoder named through a template parameter: compiled where receive() is, not where
+    // this header is read.
+    result<from_vehicle::variant> r =
+        decode_from_vehicle<static_cast<int>(QueueCapacity * 0)>(line);
     if (r) {
       handle(r.value, now);
     } else {
