@@ -155,7 +155,7 @@ TEST_CASE("the 0xAB00 frame and the PGN tables are laid out by the same rows", "
   seawire::detail::for_each_row(anello::sensor_fields, 8 * anello::header_size,
                                 [&](const auto& f, unsigned at, std::uint16_t) {
                                   CHECK(f.offset == expected);
-                                  CHECK(at == 8 * f.offset);
+                                  CHECK(at == 8 * expected);
                                   expected += f.bits / 8;
                                 });
   CHECK(expected == anello::frame_size);

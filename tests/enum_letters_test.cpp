@@ -18,8 +18,10 @@ namespace nmea = seawire::nmea;
 using seawire::errc;
 
 enum class probe : char { a = 'A', seven = '7', z = 'z' };
-// Values that are no digit or letter are not letters; two names for one value are one letter.
-enum class odd : char { dash = '-', space = ' ', b = 'B', also_b = 'B', nul = '\0' };
+// Values outside printable ASCII (a '\0' sentinel) are not letters; two names for one value are
+// one letter. (A space or punctuation enumerator is a compile error:
+// tests/compile_fail/letter_enums.cpp.)
+enum class odd : char { b = 'B', also_b = 'B', nul = '\0', tab = '\t' };
 
 #if !defined(__clang__)  // with Clang, a compile error (tests/compile_fail/letter_enums.cpp)
 template <class T, int N>

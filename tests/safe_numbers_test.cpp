@@ -129,6 +129,19 @@ static_assert(member_takes<&standard::gga::satellites, std::int64_t> &&
               member_takes<&standard::rpm::number, unsigned long long>);
 static_assert(!member_takes<&standard::rpm::number, bool>);
 static_assert(!member_takes<&standard::rpm::number, char>);  // '7' would be 55
+static_assert(!member_takes<&standard::rpm::number, char8_t> &&
+              !member_takes<&standard::rpm::number, char16_t> &&
+              !member_takes<&standard::rpm::number, char32_t> &&
+              !member_takes<&standard::rpm::number, wchar_t>);
+// Compared with any whole number as numbers, never through a character type.
+template <class L, class R>
+concept comparable_with = requires(const L& l, const R& r) {
+  l == r;
+};
+static_assert(comparable_with<nmea::integer<std::uint8_t>, long> &&
+              !comparable_with<nmea::integer<std::uint8_t>, char8_t>);
+static_assert(nmea::integer<std::uint32_t>{~0ULL} != 5 &&
+              !nmea::integer<std::uint32_t>{~0ULL}.fits());  // kept outside T: refused
 // Read back as T only on request: a value assigned outside T would come back wrapped.
 static_assert(!std::is_convertible_v<nmea::integer<std::uint8_t>, std::uint8_t> &&
               std::is_constructible_v<std::uint8_t, nmea::integer<std::uint8_t>>);

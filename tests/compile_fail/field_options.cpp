@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "seawire/nmea/integer.hpp"
 #include "seawire/nmea/message.hpp"
 
 namespace n = seawire::nmea;
@@ -13,6 +14,7 @@ struct m {
   n::decimal speed;
   std::optional<n::decimal> heading;
   std::uint8_t count = 0;
+  n::integer<std::int16_t> offset;
   n::text<8> name;
   n::latitude lat;
   bool flag = false;
@@ -26,6 +28,8 @@ struct m {
       n::field<&m::lat>("lat", n::precision(5)), n::field<&m::flag>("flag"));
 #elif defined(CASE_zero_pad_on_decimal)
   static constexpr auto nmea = n::sentence<"XXMSG">(n::field<&m::speed>("speed", n::zero_pad(2)));
+#elif defined(CASE_zero_pad_on_signed)
+  static constexpr auto nmea = n::sentence<"XXMSG">(n::field<&m::offset>("offset", n::zero_pad(3)));
 #elif defined(CASE_may_be_absent_on_plain)
   static constexpr auto nmea = n::sentence<"XXMSG">(n::field<&m::speed>("speed", n::may_be_absent));
 #elif defined(CASE_field_count_on_plain)

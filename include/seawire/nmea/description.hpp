@@ -217,6 +217,15 @@ inline constexpr bool is_integer_field =
     (std::is_integral_v<V> && !std::is_same_v<V, bool>) || is_integer_wrapper<V>;
 
 template <class V>
+inline constexpr bool is_unsigned_integer_field = [] {
+  if constexpr (is_integer_wrapper<V>) {
+    return std::is_unsigned_v<typename V::value_type>;
+  } else {
+    return std::is_integral_v<V> && std::is_unsigned_v<V> && !std::is_same_v<V, bool>;
+  }
+}();
+
+template <class V>
 inline constexpr bool is_text_field = requires(const V& v) {
   v.view();
   V::capacity;
@@ -242,7 +251,9 @@ consteval bool option_applies() {
                   "may_be_absent applies to std::optional members only (a field left "
                   "out has no value)");
   } else if constexpr (std::is_same_v<Option, option::zero_pad>) {
-    static_assert(is_integer_field<V>, "zero_pad applies to integer fields only");
+    static_assert(is_unsigned_integer_field<V>,
+                  "zero_pad applies to unsigned integer fields only (a signed one is written "
+                  "unpadded)");
   } else if constexpr (std::is_same_v<Option, option::code_chars> ||
                        std::is_same_v<Option, option::length>) {
     static_assert(is_text_field<V>,

@@ -22,7 +22,7 @@ namespace seawire::nmea {
 // The letters a field accepts and writes are those enumerators, read from the enum itself
 // (enum_letters<E> below): an enumerator added is a letter accepted, and there is no second list
 // to keep in step. Letters are the digits and ASCII letters, the only ones NMEA sentences use for
-// such fields.
+// such fields: an enumerator that is a space or punctuation is a compile error.
 // A word field is an enum whose values index an array of its spellings, with
 //   constexpr std::array<std::string_view, K> enum_words(E) { return {"ON", "OFF"}; }
 // and optionally other spellings accepted on receive:
@@ -47,9 +47,10 @@ namespace detail {
 //   GCC    "... [with auto ...V = {ns::e::a, (ns::e)66}; ...]"
 //   Clang  "... [V = <ns::e::a, (ns::e)66>]", "<(anonymous namespace)::e::a, ...>"
 //   MSVC   "... enum_listing<ns::e::a,(enum ns::e)0x42>(void)"
-// One instantiation with every candidate letter tells which are enumerators. It is made only
-// where a letter field is decoded, encoded or printed (about 7 ms of GCC's time, 18 of Clang's,
-// an enum), never where a header is merely included.
+// One instantiation with every candidate letter tells which are enumerators, one with the other
+// printable bytes that none is. They are made only where a letter field is decoded, encoded or
+// printed (about 10 ms of GCC's time, 25 of Clang's, an enum), never where a header is merely
+// included.
 template <auto... V>
 constexpr std::string_view enum_listing() noexcept {
 #if defined(_MSC_VER) && !defined(__clang__)
@@ -61,6 +62,9 @@ constexpr std::string_view enum_listing() noexcept {
 
 inline constexpr std::string_view letter_candidates =
     "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
+// The other printable bytes: an enumerator that is one of them could be declared but never sent
+// or read (most are NMEA's own delimiters), so it is a compile error, not a letter dropped.
+inline constexpr std::string_view non_letter_candidates = " !\"#$%&'()*+,-./:;<=>?@[\\]^_`{|}~";
 
 struct letter_set {
   std::array<char, 62> chars{};
@@ -83,7 +87,8 @@ constexpr bool is_cast_or_number(std::string_view element) {
 }
 
 // Which elements of `listing`'s argument list are names, in candidate order.
-constexpr letter_set enumerators_among_candidates(std::string_view listing) {
+constexpr letter_set enumerators_among_candidates(std::string_view listing,
+                                                  std::string_view candidates = letter_candidates) {
   letter_set out;
   std::size_t at = listing.find("V = ");
   if (at != std::string_view::npos) {
@@ -96,7 +101,7 @@ constexpr letter_set enumerators_among_candidates(std::string_view listing) {
   std::size_t element = 0;
   while (at < listing.size()) {
     while (at < listing.size() && listing[at] == ' ') ++at;
-    if (element >= letter_candidates.size()) return out;
+    if (element >= candidates.size()) return out;
     // To the ',' that ends this element, or the bracket that ends the list.
     const std::size_t begin = at;
     int depth = 0;
@@ -117,10 +122,10 @@ constexpr letter_set enumerators_among_candidates(std::string_view listing) {
     }
     if (at >= listing.size()) return out;
     if (!is_cast_or_number(listing.substr(begin, at - begin)))
-      out.chars[out.size++] = letter_candidates[element];
+      out.chars[out.size++] = candidates[element];
     ++element;
     if (last) {
-      out.parsed = element == letter_candidates.size();
+      out.parsed = element == candidates.size();
       return out;
     }
     ++at;
@@ -132,10 +137,16 @@ template <class E, std::size_t... I>
 consteval letter_set probe_letters(std::index_sequence<I...>) {
   return enumerators_among_candidates(enum_listing<static_cast<E>(letter_candidates[I])...>());
 }
+template <class E, std::size_t... I>
+consteval letter_set probe_non_letters(std::index_sequence<I...>) {
+  return enumerators_among_candidates(enum_listing<static_cast<E>(non_letter_candidates[I])...>(),
+                                      non_letter_candidates);
+}
 
 #if defined(__clang__)
 // Clang prints every value of an enum declared in a class template as a cast, enumerators
-// included, until each enumerator is named somewhere: such an enum's letters cannot be read.
+// included, until one of them has been named in the translation unit: such an enum's letters
+// cannot be read reliably, so it is refused (an explicit specialization's enum too).
 template <class T>
 constexpr std::string_view type_listing() noexcept {
   return __PRETTY_FUNCTION__;
@@ -163,6 +174,11 @@ struct letters_of {
   static_assert(set.size > 0,
                 "a letter field's enum (enum class E : char) needs at least one enumerator whose "
                 "value is a digit or an ASCII letter");
+  static constexpr letter_set others =
+      probe_non_letters<E>(std::make_index_sequence<non_letter_candidates.size()>{});
+  static_assert(others.parsed && others.size == 0,
+                "a letter field's enumerators are digits and ASCII letters: one that is a space "
+                "or punctuation could never be sent or read");
   // The letters alone, in an array of their exact size.
   static constexpr std::array<char, set.size> chars = [] {
     std::array<char, set.size> a{};

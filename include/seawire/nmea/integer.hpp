@@ -30,11 +30,17 @@
 
 namespace seawire::nmea {
 
+/// The integer types that hold numbers: not bool, and none of the character types (`= '7'`
+/// would be 55, `= u8'7'` too).
+template <class I>
+concept whole_number = std::integral<I> && !std::is_same_v<I, bool> && !std::is_same_v<I, char> &&
+                       !std::is_same_v<I, wchar_t> && !std::is_same_v<I, char8_t> &&
+                       !std::is_same_v<I, char16_t> && !std::is_same_v<I, char32_t>;
+
 /// A whole-number field of type T (an integer type of at most 32 bits).
 template <class T>
 class integer {
-  static_assert(std::is_integral_v<T> && !std::is_same_v<T, bool> && !std::is_same_v<T, char> &&
-                    sizeof(T) <= 4,
+  static_assert(whole_number<T> && sizeof(T) <= 4,
                 "nmea::integer<T>: T is an integer type of at most 32 bits");
 
  public:
@@ -44,10 +50,11 @@ class integer {
 
   constexpr integer() noexcept = default;
   /// Any integer, kept whole; one outside T's range is refused when the message is encoded.
-  /// (Not bool or char: `= '7'` would be 55.)
-  template <std::integral I>
-  requires(!std::is_same_v<I, bool> &&
-           !std::is_same_v<I, char>) constexpr integer(I v) noexcept  // NOLINT: implicit
+  /// (Not bool or a character type: `= '7'` would be 55.) An unsigned value beyond the 64-bit
+  /// signed range (only a std::uint64_t can hold one) is kept as INT64_MAX: still outside T, so
+  /// still refused.
+  template <whole_number I>
+  constexpr integer(I v) noexcept  // NOLINT: implicit
       : v_(std::cmp_greater(v, std::numeric_limits<std::int64_t>::max())
                ? std::numeric_limits<std::int64_t>::max()
                : static_cast<std::int64_t>(v)) {}
@@ -67,11 +74,11 @@ class integer {
   [[nodiscard]] friend constexpr std::strong_ordering operator<=>(
       const integer&, const integer&) noexcept = default;
   // Against a plain integer, compared as numbers (not through T, which could wrap).
-  template <std::integral I>
+  template <whole_number I>
   [[nodiscard]] friend constexpr bool operator==(const integer& a, I b) noexcept {
     return std::cmp_equal(a.v_, b);
   }
-  template <std::integral I>
+  template <whole_number I>
   [[nodiscard]] friend constexpr std::strong_ordering operator<=>(const integer& a, I b) noexcept {
     return std::cmp_less(a.v_, b)    ? std::strong_ordering::less
            : std::cmp_equal(a.v_, b) ? std::strong_ordering::equal

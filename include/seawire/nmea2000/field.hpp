@@ -557,10 +557,13 @@ struct pgn_description {
   static constexpr std::size_t field_count = sizeof...(F);
 
   /// fn(entry, bit_offset, number) for every row, reserved ones too, in wire order; `number`
-  /// counts from 1 as the table does.
+  /// counts from 1 as the table does. What fn returns is ignored: every row is visited.
   template <class Fn>
   constexpr void for_each(Fn&& fn) const {
-    seawire::detail::for_each_row(fields, 0, fn);
+    seawire::detail::for_each_row(fields, 0, [&](const auto& entry, unsigned at, std::uint16_t n) {
+      (void)fn(entry, at, n);
+      return true;
+    });
   }
 };
 
