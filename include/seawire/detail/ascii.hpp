@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 
 namespace seawire::detail {
 
@@ -95,18 +96,54 @@ inline constexpr std::uint64_t scale_limit[20] = {
   return t + (w >= pow10_table[t] ? 1U : 0U);
 }
 
-/// The decimal digits of `v` into any sink with put(char), at least `min_digits` of them
-/// (zero-padded on the left).
+/// Writes the last `count` decimal digits of `v` (zero-padded) ending just before `end`, two at a
+/// time, dividing only by constants; returns what is left of v (v / 10^count).
+constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count) noexcept {
+  for (; count >= 2; count -= 2) {
+    const auto pair = static_cast<std::size_t>(v % 100) * 2;
+    v /= 100;
+    *--end = digit_pairs[pair + 1];
+    *--end = digit_pairs[pair];
+  }
+  if (count == 1) {
+    *--end = static_cast<char>('0' + v % 10);
+    v /= 10;
+  }
+  return v;
+}
+
+/// The decimal digits of `v` into any sink with put(std::string_view), at least `min_digits` of
+/// them (zero-padded on the left; at most 20).
 template <class Sink>
 constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
-  char tmp[24];
-  unsigned n = 0;
-  do {
-    tmp[n++] = static_cast<char>('0' + v % 10);
-    v /= 10;
-  } while (v != 0);
-  while (n < min_digits && n < sizeof tmp) tmp[n++] = '0';
-  while (n > 0) s.put(tmp[--n]);
+  char tmp[20];
+  unsigned n = digit_count(v);
+  if (n < min_digits) n = min_digits < 20 ? min_digits : 20;
+  (void)write_digits(tmp + n, v, n);
+  s.put(std::string_view(tmp, n));
+}
+
+/// scaled / 10^places as fixed-point text into any sink with put(std::string_view): all `places`
+/// fraction digits ("4.50" from 450 and 2, "0.05" from 5 and 2), no point when places is 0,
+/// `-` first when `negative`. places at most 19.
+template <class Sink>
+constexpr void put_fixed(Sink& s, std::uint64_t scaled, unsigned places, bool negative) noexcept {
+  char tmp[1 + 20 + 1 + 19];
+  const unsigned n = digit_count(scaled);
+  const unsigned int_digits = n > places ? n - places : 1;
+  std::size_t size = 0;
+  if (negative) tmp[size++] = '-';
+  char* const int_end = tmp + size + int_digits;
+  if (places == 0) {
+    (void)write_digits(int_end, scaled, int_digits);
+    size += int_digits;
+  } else {
+    const std::uint64_t whole = write_digits(int_end + 1 + places, scaled, places);
+    *int_end = '.';
+    (void)write_digits(int_end, whole, int_digits);
+    size += int_digits + 1 + places;
+  }
+  s.put(std::string_view(tmp, size));
 }
 
 }  // namespace seawire::detail

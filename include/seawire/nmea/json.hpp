@@ -35,6 +35,7 @@
 // wire precision of a position is taken from the number's digits (documented at
 // from_decimal_degrees) unless the object has "precision": {"<field>": n}.
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstddef>
@@ -80,7 +81,10 @@ class json_buffer {
     }
   }
   constexpr void put(std::string_view s) noexcept {
-    for (const char c : s) put(c);
+    const std::size_t n = s.size() < N - size_ ? s.size() : N - size_;
+    std::copy_n(s.data(), n, data_ + size_);
+    size_ += n;
+    if (n < s.size()) overflow_ = true;
   }
   constexpr void clear() noexcept {
     size_ = 0;
@@ -151,14 +155,76 @@ constexpr void json_string(Sink& s, std::string_view text) noexcept {
 /// A decimal as a JSON number: no padding, the wire's fraction digits.
 template <json_sink Sink>
 constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
-  if (d.negative) s.put('-');
-  if (d.places > 19) return;
-  const std::uint64_t p = seawire::detail::pow10_table[d.places];
-  json_uint(s, d.mantissa / p);
-  if (d.places > 0) {
-    s.put('.');
-    json_uint(s, d.mantissa % p, d.places);
+  if (d.places > 19) {
+    if (d.negative) s.put('-');
+    return;
   }
+  seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
+}
+
+/// "hh:mm:ss" or "hh:mm:ss.f..." (quoted when Quoted), written at once. A value no decoder
+/// makes (an hour past 99, more fraction digits than places) is written with all its digits.
+template <bool Quoted, json_sink Sink>
+constexpr void json_time(Sink& s, const time_of_day& v) noexcept {
+  if (v.hour > 99 || v.minute > 99 || v.second > 99 || v.places > 19 ||
+      v.fraction >= seawire::detail::pow10_table[v.places]) [[unlikely]] {
+    if constexpr (Quoted) s.put('"');
+    json_uint(s, v.hour, 2);
+    s.put(':');
+    json_uint(s, v.minute, 2);
+    s.put(':');
+    json_uint(s, v.second, 2);
+    if (v.places > 0) {
+      s.put('.');
+      json_uint(s, v.fraction, v.places);
+    }
+    if constexpr (Quoted) s.put('"');
+    return;
+  }
+  char tmp[2 + 8 + 1 + 19];
+  std::size_t n = 0;
+  if constexpr (Quoted) tmp[n++] = '"';
+  (void)seawire::detail::write_digits(tmp + n + 2, v.hour, 2);
+  tmp[n + 2] = ':';
+  (void)seawire::detail::write_digits(tmp + n + 5, v.minute, 2);
+  tmp[n + 5] = ':';
+  (void)seawire::detail::write_digits(tmp + n + 8, v.second, 2);
+  n += 8;
+  if (v.places > 0) {
+    const unsigned places = v.places;
+    tmp[n++] = '.';
+    (void)seawire::detail::write_digits(tmp + n + places, v.fraction, places);
+    n += places;
+  }
+  if constexpr (Quoted) tmp[n++] = '"';
+  s.put(std::string_view(tmp, n));
+}
+
+/// "yyyy-mm-dd" (quoted when Quoted), written at once; a year past 9999 or a month or day past
+/// 99 (no decoder makes one) with all its digits.
+template <bool Quoted, json_sink Sink>
+constexpr void json_date(Sink& s, const date& v) noexcept {
+  if (v.year > 9999 || v.month > 99 || v.day > 99) [[unlikely]] {
+    if constexpr (Quoted) s.put('"');
+    json_uint(s, v.year, 4);
+    s.put('-');
+    json_uint(s, v.month, 2);
+    s.put('-');
+    json_uint(s, v.day, 2);
+    if constexpr (Quoted) s.put('"');
+    return;
+  }
+  char tmp[2 + 10];
+  std::size_t n = 0;
+  if constexpr (Quoted) tmp[n++] = '"';
+  (void)seawire::detail::write_digits(tmp + n + 4, v.year, 4);
+  tmp[n + 4] = '-';
+  (void)seawire::detail::write_digits(tmp + n + 7, v.month, 2);
+  tmp[n + 7] = '-';
+  (void)seawire::detail::write_digits(tmp + n + 10, v.day, 2);
+  n += 10;
+  if constexpr (Quoted) tmp[n++] = '"';
+  s.put(std::string_view(tmp, n));
 }
 
 template <class T>
@@ -210,25 +276,9 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
     d.negative = v.direction == hemisphere::west;
     detail::json_decimal(s, d);
   } else if constexpr (std::is_same_v<T, time_of_day>) {
-    if constexpr (Style == json_style::json) s.put('"');
-    detail::json_uint(s, v.hour, 2);
-    s.put(':');
-    detail::json_uint(s, v.minute, 2);
-    s.put(':');
-    detail::json_uint(s, v.second, 2);
-    if (v.places > 0) {
-      s.put('.');
-      detail::json_uint(s, v.fraction, v.places);
-    }
-    if constexpr (Style == json_style::json) s.put('"');
+    detail::json_time<Style == json_style::json>(s, v);
   } else if constexpr (std::is_same_v<T, date>) {
-    if constexpr (Style == json_style::json) s.put('"');
-    detail::json_uint(s, v.year, 4);
-    s.put('-');
-    detail::json_uint(s, v.month, 2);
-    s.put('-');
-    detail::json_uint(s, v.day, 2);
-    if constexpr (Style == json_style::json) s.put('"');
+    detail::json_date<Style == json_style::json>(s, v);
   } else if constexpr (detail::is_text<T>::value) {
     detail::json_string<json_style::json>(s, v.view());
   } else if constexpr (char_enum_like<T> || word_enum_like<T>) {
@@ -257,7 +307,10 @@ class range_sink {
     }
   }
   constexpr void put(std::string_view v) noexcept {
-    for (const char c : v) put(c);
+    const auto room = static_cast<std::size_t>(last_ - at_);
+    const std::size_t n = v.size() < room ? v.size() : room;
+    at_ = std::copy_n(v.data(), n, at_);
+    if (n < v.size()) full_ = true;
   }
   [[nodiscard]] constexpr char* end() const noexcept { return at_; }
   [[nodiscard]] constexpr bool full() const noexcept { return full_; }
@@ -300,18 +353,79 @@ constexpr void write_type(Sink& s, const T& msg) noexcept {
   }
 }
 
+namespace detail {
+// Sinks for text made at compile time: one that counts, one that fills an array.
+struct counting_sink {
+  std::size_t size = 0;
+  constexpr void put(char) noexcept { ++size; }
+  constexpr void put(std::string_view v) noexcept { size += v.size(); }
+};
+template <std::size_t N>
+struct array_sink {
+  std::array<char, N> text{};
+  std::size_t size = 0;
+  constexpr void put(char c) noexcept { text[size++] = c; }
+  constexpr void put(std::string_view v) noexcept {
+    for (const char c : v) put(c);
+  }
+};
+
+// What goes before field I's value: `,"name":`, escaped, made once at compile time.
+template <class T, std::size_t I>
+constexpr void json_member_key(auto& s) noexcept {
+  s.put(",\"");
+  json_escape(s, field_at<I>(T::nmea.fields).name);
+  s.put("\":");
+}
+template <class T, std::size_t I>
+inline constexpr std::size_t json_key_size = [] {
+  counting_sink n;
+  json_member_key<T, I>(n);
+  return n.size;
+}();
+template <class T, std::size_t I>
+inline constexpr auto json_key = [] {
+  array_sink<json_key_size<T, I>> a;
+  json_member_key<T, I>(a);
+  return a.text;
+}();
+
+// `{"type":"ADDR"` for a message with a fixed address.
+template <class T>
+inline constexpr auto json_head = [] {
+  constexpr std::string_view open = "{\"type\":\"";
+  std::array<char, open.size() + T::nmea.address.size() + 1> a{};
+  std::size_t n = 0;
+  for (const char c : open) a[n++] = c;
+  for (const char c : T::nmea.address) a[n++] = c;
+  a[n] = '"';
+  return a;
+}();
+
+template <json_sink Sink, std::size_t N>
+constexpr void put_array(Sink& s, const std::array<char, N>& a) noexcept {
+  s.put(std::string_view(a.data(), N));
+}
+}  // namespace detail
+
 /// A message as one JSON object (no newline): "type", then each field in wire order.
 template <json_sink Sink, message_like T>
 constexpr void write_json(Sink& s, const T& msg) noexcept {
-  s.put("{\"type\":\"");
-  write_type(s, msg);
-  s.put('"');
-  for_each_field(msg, [&](std::string_view name, const auto& value) {
-    s.put(",\"");
-    detail::json_escape(s, name);
-    s.put("\":");
-    write_json_value(s, value);
-  });
+  if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
+    s.put("{\"type\":\"");
+    write_type(s, msg);
+    s.put('"');
+  } else {
+    detail::put_array(s, detail::json_head<T>);
+  }
+  constexpr std::size_t n = std::remove_cvref_t<decltype(T::nmea.fields)>::size;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    ((detail::put_array(s, detail::json_key<T, I>),
+      write_json_value(s,
+                       msg.*(std::remove_cvref_t<decltype(field_at<I>(T::nmea.fields))>::member))),
+     ...);
+  }
+  (std::make_index_sequence<n>{});
   s.put('}');
 }
 

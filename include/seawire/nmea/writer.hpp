@@ -124,18 +124,7 @@ class writer {
   // Writes the lowest `count` decimal digits of v to out_[at, at + count), two at a time, and
   // returns what is left of v. The caller has checked the room.
   constexpr std::uint64_t digits_at(std::size_t at, std::uint64_t v, unsigned count) noexcept {
-    std::size_t end = at + count;
-    for (; count >= 2; count -= 2) {
-      const auto pair = static_cast<std::size_t>(v % 100) * 2;
-      v /= 100;
-      out_[--end] = seawire::detail::digit_pairs[pair + 1];
-      out_[--end] = seawire::detail::digit_pairs[pair];
-    }
-    if (count == 1) {
-      out_[--end] = static_cast<char>('0' + v % 10);
-      v /= 10;
-    }
-    return v;
+    return seawire::detail::write_digits(out_.data() + at + count, v, count);
   }
 
   std::span<char> out_;
