@@ -281,7 +281,17 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
     detail::json_date<Style == json_style::json>(s, v);
   } else if constexpr (detail::is_text<T>::value) {
     detail::json_string<json_style::json>(s, v.view());
-  } else if constexpr (char_enum_like<T> || word_enum_like<T>) {
+  } else if constexpr (char_enum_like<T>) {
+    // A digit or an ASCII letter (enum.hpp refuses any other enumerator): nothing to escape.
+    // Empty for a value that is no enumerator.
+    const std::string_view letter = to_string(v);
+    if constexpr (Style == json_style::json) {
+      const char quoted[3] = {'"', letter.empty() ? '"' : letter[0], '"'};
+      s.put(std::string_view(quoted, letter.empty() ? 2 : 3));
+    } else {
+      s.put(letter);
+    }
+  } else if constexpr (word_enum_like<T>) {
     detail::json_string<Style>(s, to_string(v));
   } else if constexpr (has_codec<T>) {
     // Any other value with a codec: its wire text, e.g. a RobotX light pattern "RGB".
