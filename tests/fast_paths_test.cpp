@@ -25,6 +25,11 @@
 
 #include "support.hpp"
 
+// Built twice: as is (SSE2 on x86-64) and with SEAWIRE_NO_SIMD (the portable forms ARM runs).
+#if defined(SEAWIRE_NO_SIMD)
+static_assert(SEAWIRE_SSE2 == 0, "SEAWIRE_NO_SIMD leaves only the portable forms");
+#endif
+
 using namespace seawire;
 using namespace seawire::nmea;
 

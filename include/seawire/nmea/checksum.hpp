@@ -8,7 +8,9 @@
 #include <cstring>
 #include <string_view>
 #include <type_traits>
-#if defined(__SSE2__)
+
+#include "seawire/detail/simd.hpp"  // SEAWIRE_SSE2
+#if SEAWIRE_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -16,7 +18,7 @@ namespace seawire::nmea {
 
 namespace detail {
 
-#if defined(__SSE2__)
+#if SEAWIRE_SSE2
 // 16 bytes at a time, then 8, then the rest one by one.
 inline std::uint8_t xor_bytes_sse2(const char* p, std::size_t n) noexcept {
   __m128i acc = _mm_setzero_si128();
@@ -44,7 +46,7 @@ inline std::uint8_t xor_bytes_sse2(const char* p, std::size_t n) noexcept {
 
 /// XOR of all bytes of `between` (pass the text between '$' or '!' and '*', both excluded).
 [[nodiscard]] constexpr std::uint8_t checksum(std::string_view between) noexcept {
-#if defined(__SSE2__)
+#if SEAWIRE_SSE2
   if (!std::is_constant_evaluated()) return detail::xor_bytes_sse2(between.data(), between.size());
 #endif
   std::uint8_t x = 0;

@@ -6,7 +6,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
-#if defined(__SSE2__)
+
+#include "seawire/detail/simd.hpp"  // SEAWIRE_SSE2
+#if SEAWIRE_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -48,7 +50,7 @@ struct framer_scan {
     [[nodiscard]] static constexpr std::uint64_t word(std::uint64_t v) noexcept {
       return any_below(v, 0x20) | (v & highs) | any_equal(v, 0x7F) | any_equal(v, '$');
     }
-#if defined(__SSE2__)
+#if SEAWIRE_SSE2
     // Signed compare: "below 0x20" also catches 0x80..0xFF, which are negative.
     [[nodiscard]] static __m128i lanes(__m128i v) noexcept {
       return _mm_or_si128(_mm_cmplt_epi8(v, _mm_set1_epi8(0x20)),
@@ -62,7 +64,7 @@ struct framer_scan {
   [[nodiscard]] static constexpr std::size_t find_first(const char* s, std::size_t from,
                                                         std::size_t to) noexcept {
     std::size_t i = from;
-#if defined(__SSE2__)
+#if SEAWIRE_SSE2
     if (!std::is_constant_evaluated()) {
       for (; to - i >= 16; i += 16) {
         const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));

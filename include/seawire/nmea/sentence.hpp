@@ -17,7 +17,9 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>
-#if defined(__SSE2__)
+
+#include "seawire/detail/simd.hpp"  // SEAWIRE_SSE2
+#if SEAWIRE_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -132,7 +134,7 @@ constexpr void scan_body_bytes(std::string_view line, body_scan& b) noexcept {
   b.x = x;
 }
 
-#if defined(__SSE2__)
+#if SEAWIRE_SSE2
 /// Sixteen zero bytes then sixteen 0xFF: the 16 bytes at lane_keep + 16 - k keep lanes k..15.
 alignas(16) inline constexpr unsigned char lane_keep[32] = {
     0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,
@@ -219,7 +221,7 @@ inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
 /// One pass over `line` (no line ending; line[0] is the start character, '$' or '!').
 [[nodiscard]] constexpr body_scan scan_body(std::string_view line) noexcept {
   body_scan b;
-#if defined(__SSE2__)
+#if SEAWIRE_SSE2
   const std::size_t n = line.size();
   if (!std::is_constant_evaluated() && n >= 20) {
     // Nearly every sentence ends "*hh": scan up to that '*'; if there is none there, the whole
@@ -379,7 +381,7 @@ namespace detail {
   std::uint64_t m = 0;
   std::size_t i = 0;
   if (!std::is_constant_evaluated()) {
-#if defined(__SSE2__)
+#if SEAWIRE_SSE2
     const __m128i comma = _mm_set1_epi8(',');
     for (; n - i >= 16; i += 16) {
       const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + i));
