@@ -921,6 +921,34 @@ TEST_CASE("to_chars: every value type as people read it, as std::to_chars does")
   CHECK(r.ptr == small + sizeof small);
 }
 
+TEST_CASE("times, dates and numbers in JSON: padded as the wire has them, every digit kept") {
+  CHECK(value_json(nmea::time_of_day(8, 1, 2)) == "\"08:01:02\"");
+  CHECK(value_json(nmea::time_of_day(23, 59, 60, 5, 3)) == "\"23:59:60.005\"");
+  CHECK(value_json(nmea::date(2014, 2, 3)) == "\"2014-02-03\"");
+  CHECK(value_json(nmea::date(980, 12, 31)) == "\"0980-12-31\"");
+  // Values no decoder makes (a program may still hold one): no digit is lost.
+  nmea::time_of_day odd;
+  odd.hour = 255;
+  odd.minute = 7;
+  odd.second = 100;
+  odd.fraction = 12345;
+  odd.places = 2;
+  CHECK(value_json(odd) == "\"255:07:100.12345\"");
+  nmea::date far;
+  far.year = 12345;
+  far.month = 100;
+  far.day = 5;
+  CHECK(value_json(far) == "\"12345-100-05\"");
+  // Decimals: the wire's fraction digits, a zero before the point, the sign kept.
+  CHECK(value_json(decimal::scaled(5, 2)) == "0.05");
+  CHECK(value_json(decimal::scaled(-5, 3)) == "-0.005");
+  CHECK(value_json(decimal::scaled(1234500, 4)) == "123.4500");
+  CHECK(value_json(decimal{0}) == "0");
+  CHECK(value_json(decimal::scaled(std::numeric_limits<std::int64_t>::max(), 19)) ==
+        "0.9223372036854775807");
+  CHECK(value_json(std::uint64_t{18446744073709551615U}) == "18446744073709551615");
+}
+
 TEST_CASE("ANELLO frame: fields named by number, and errors told for people") {
   using namespace seawire::anello;
   const sensor_field_about heading = about_sensor_field(1);

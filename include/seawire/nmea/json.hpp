@@ -162,67 +162,45 @@ constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
   seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
 }
 
-/// "hh:mm:ss" or "hh:mm:ss.f..." (quoted when Quoted), written at once. A value no decoder
-/// makes (an hour past 99, more fraction digits than places) is written with all its digits.
+// v zero-padded to at least min_digits digits (at most 20) at out + n; returns the new end.
+constexpr std::size_t append_uint(char* out, std::size_t n, std::uint64_t v,
+                                  unsigned min_digits) noexcept {
+  unsigned d = seawire::detail::digit_count(v);
+  if (d < min_digits) d = min_digits < 20 ? min_digits : 20;
+  (void)seawire::detail::write_digits(out + n + d, v, d);
+  return n + d;
+}
+
+/// "hh:mm:ss" or "hh:mm:ss.f..." (quoted when Quoted), written at once.
 template <bool Quoted, json_sink Sink>
 constexpr void json_time(Sink& s, const time_of_day& v) noexcept {
-  if (v.hour > 99 || v.minute > 99 || v.second > 99 || v.places > 19 ||
-      v.fraction >= seawire::detail::pow10_table[v.places]) [[unlikely]] {
-    if constexpr (Quoted) s.put('"');
-    json_uint(s, v.hour, 2);
-    s.put(':');
-    json_uint(s, v.minute, 2);
-    s.put(':');
-    json_uint(s, v.second, 2);
-    if (v.places > 0) {
-      s.put('.');
-      json_uint(s, v.fraction, v.places);
-    }
-    if constexpr (Quoted) s.put('"');
-    return;
-  }
-  char tmp[2 + 8 + 1 + 19];
+  char tmp[1 + 3 + 1 + 3 + 1 + 3 + 1 + 20 + 1];
   std::size_t n = 0;
   if constexpr (Quoted) tmp[n++] = '"';
-  (void)seawire::detail::write_digits(tmp + n + 2, v.hour, 2);
-  tmp[n + 2] = ':';
-  (void)seawire::detail::write_digits(tmp + n + 5, v.minute, 2);
-  tmp[n + 5] = ':';
-  (void)seawire::detail::write_digits(tmp + n + 8, v.second, 2);
-  n += 8;
+  n = append_uint(tmp, n, v.hour, 2);
+  tmp[n++] = ':';
+  n = append_uint(tmp, n, v.minute, 2);
+  tmp[n++] = ':';
+  n = append_uint(tmp, n, v.second, 2);
   if (v.places > 0) {
-    const unsigned places = v.places;
     tmp[n++] = '.';
-    (void)seawire::detail::write_digits(tmp + n + places, v.fraction, places);
-    n += places;
+    n = append_uint(tmp, n, v.fraction, v.places);
   }
   if constexpr (Quoted) tmp[n++] = '"';
   s.put(std::string_view(tmp, n));
 }
 
-/// "yyyy-mm-dd" (quoted when Quoted), written at once; a year past 9999 or a month or day past
-/// 99 (no decoder makes one) with all its digits.
+/// "yyyy-mm-dd" (quoted when Quoted), written at once.
 template <bool Quoted, json_sink Sink>
 constexpr void json_date(Sink& s, const date& v) noexcept {
-  if (v.year > 9999 || v.month > 99 || v.day > 99) [[unlikely]] {
-    if constexpr (Quoted) s.put('"');
-    json_uint(s, v.year, 4);
-    s.put('-');
-    json_uint(s, v.month, 2);
-    s.put('-');
-    json_uint(s, v.day, 2);
-    if constexpr (Quoted) s.put('"');
-    return;
-  }
-  char tmp[2 + 10];
+  char tmp[1 + 5 + 1 + 3 + 1 + 3 + 1];
   std::size_t n = 0;
   if constexpr (Quoted) tmp[n++] = '"';
-  (void)seawire::detail::write_digits(tmp + n + 4, v.year, 4);
-  tmp[n + 4] = '-';
-  (void)seawire::detail::write_digits(tmp + n + 7, v.month, 2);
-  tmp[n + 7] = '-';
-  (void)seawire::detail::write_digits(tmp + n + 10, v.day, 2);
-  n += 10;
+  n = append_uint(tmp, n, v.year, 4);
+  tmp[n++] = '-';
+  n = append_uint(tmp, n, v.month, 2);
+  tmp[n++] = '-';
+  n = append_uint(tmp, n, v.day, 2);
   if constexpr (Quoted) tmp[n++] = '"';
   s.put(std::string_view(tmp, n));
 }
