@@ -934,6 +934,9 @@ TEST_CASE("times, dates and numbers in JSON: padded as the wire has them, every 
   odd.fraction = 12345;
   odd.places = 2;
   CHECK(value_json(odd) == "\"255:07:100.12345\"");
+  odd.fraction = 5;
+  odd.places = 30;  // padded to at most 24 digits
+  CHECK(value_json(odd) == "\"255:07:100.000000000000000000000005\"");
   nmea::date far;
   far.year = 12345;
   far.month = 100;

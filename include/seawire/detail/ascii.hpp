@@ -112,15 +112,24 @@ constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count)
   return v;
 }
 
-/// The decimal digits of `v` into any sink with put(std::string_view), at least `min_digits` of
-/// them (zero-padded on the left; at most 20).
+/// Most digits append_uint and put_uint write for a zero-padded number (a 64-bit one has 20).
+inline constexpr unsigned max_padded_digits = 24;
+
+/// The decimal digits of `v` at out + at, at least `min_digits` of them (zero-padded on the
+/// left; at most max_padded_digits); returns where they end.
+constexpr std::size_t append_uint(char* out, std::size_t at, std::uint64_t v,
+                                  unsigned min_digits = 1) noexcept {
+  unsigned n = digit_count(v);
+  if (n < min_digits) n = min_digits < max_padded_digits ? min_digits : max_padded_digits;
+  (void)write_digits(out + at + n, v, n);
+  return at + n;
+}
+
+/// The same into any sink with put(std::string_view).
 template <class Sink>
 constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
-  char tmp[20];
-  unsigned n = digit_count(v);
-  if (n < min_digits) n = min_digits < 20 ? min_digits : 20;
-  (void)write_digits(tmp + n, v, n);
-  s.put(std::string_view(tmp, n));
+  char tmp[max_padded_digits];
+  s.put(std::string_view(tmp, append_uint(tmp, 0, v, min_digits)));
 }
 
 /// scaled / 10^places as fixed-point text into any sink with put(std::string_view): all `places`

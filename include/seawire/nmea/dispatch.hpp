@@ -196,7 +196,7 @@ struct append_unique<message_set<A...>, M, Rest...> {
 };
 }  // namespace detail
 
-/// `lazy<T, N>` is `T` (a message set or a message), named so that the name depends on `N`. A
+/// `lazy<T, N>` is `T` (a message set, a message, an enum), named so that it depends on `N`. A
 /// role decoder is a function template of nothing (`template <int N = 0>`) whose body calls
 /// `lazy<Set, N>::decode`: the set's decoder is then compiled only where the role decoder is
 /// called. (A call that does not depend on a template parameter is compiled where the header is

@@ -162,19 +162,11 @@ constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
   seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
 }
 
-// v zero-padded to at least min_digits digits (at most 20) at out + n; returns the new end.
-constexpr std::size_t append_uint(char* out, std::size_t n, std::uint64_t v,
-                                  unsigned min_digits) noexcept {
-  unsigned d = seawire::detail::digit_count(v);
-  if (d < min_digits) d = min_digits < 20 ? min_digits : 20;
-  (void)seawire::detail::write_digits(out + n + d, v, d);
-  return n + d;
-}
-
 /// "hh:mm:ss" or "hh:mm:ss.f..." (quoted when Quoted), written at once.
 template <bool Quoted, json_sink Sink>
 constexpr void json_time(Sink& s, const time_of_day& v) noexcept {
-  char tmp[1 + 3 + 1 + 3 + 1 + 3 + 1 + 20 + 1];
+  using seawire::detail::append_uint;
+  char tmp[1 + 3 + 1 + 3 + 1 + 3 + 1 + seawire::detail::max_padded_digits + 1];
   std::size_t n = 0;
   if constexpr (Quoted) tmp[n++] = '"';
   n = append_uint(tmp, n, v.hour, 2);
@@ -193,6 +185,7 @@ constexpr void json_time(Sink& s, const time_of_day& v) noexcept {
 /// "yyyy-mm-dd" (quoted when Quoted), written at once.
 template <bool Quoted, json_sink Sink>
 constexpr void json_date(Sink& s, const date& v) noexcept {
+  using seawire::detail::append_uint;
   char tmp[1 + 5 + 1 + 3 + 1 + 3 + 1];
   std::size_t n = 0;
   if constexpr (Quoted) tmp[n++] = '"';
@@ -260,8 +253,8 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
   } else if constexpr (detail::is_text<T>::value) {
     detail::json_string<json_style::json>(s, v.view());
   } else if constexpr (char_enum_like<T>) {
-    // A digit or an ASCII letter (enum.hpp refuses any other enumerator): nothing to escape.
-    // Empty for a value that is no enumerator.
+    // A digit or an ASCII letter (enum.hpp refuses a printable enumerator that is neither):
+    // nothing to escape. Empty for a value that is no letter.
     const std::string_view letter = to_string(v);
     if constexpr (Style == json_style::json) {
       const char quoted[3] = {'"', letter.empty() ? '"' : letter[0], '"'};
