@@ -736,13 +736,15 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     return std::nullopt;
   }
 
-  constexpr item yield_sentence(std::string_view line_text, line_ending e) noexcept {
+  // Built in the optional that next() returns, not copied into it (an item with a frame's
+  // bytes and value is a few hundred bytes).
+  constexpr std::optional<item> yield_sentence(std::string_view line_text, line_ending e) noexcept {
     ++stats_.sentences;
-    item out;
-    out.kind = stream_item_kind::sentence;
-    out.offset = sentence_start_;
-    out.line = line_;
-    out.sentence = framed_line{line_text, e, line_};
+    std::optional<item> out(std::in_place);
+    out->kind = stream_item_kind::sentence;
+    out->offset = sentence_start_;
+    out->line = line_;
+    out->sentence = framed_line{line_text, e, line_};
     if (e != line_ending::none) ++line_;
     return out;
   }
