@@ -112,6 +112,36 @@ constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count)
   return v;
 }
 
+/// The integer digits scaled / 10^places is written with: its own (at least one), or
+/// `min_int_digits` when that is more, but at most `most` (zero padding has a limit).
+constexpr unsigned integer_digits(std::uint64_t scaled, unsigned places, unsigned min_int_digits,
+                                  unsigned most) noexcept {
+  const unsigned n = digit_count(scaled);
+  const unsigned own = n > places ? n - places : 1;
+  if (own >= min_int_digits) return own;
+  return min_int_digits < most ? min_int_digits : most;
+}
+
+/// The characters append_fixed writes: the integer digits, and a point and the fraction digits
+/// when there are any.
+constexpr std::size_t fixed_size(unsigned places, unsigned int_digits) noexcept {
+  return std::size_t{int_digits} + (places == 0 ? 0 : 1 + std::size_t{places});
+}
+
+/// scaled / 10^places at out + at, right to left and dividing only by constants: `int_digits`
+/// integer digits (zero-padded), then, when places is not 0, a point and all `places` fraction
+/// digits ("4.50" from 450 and 2). Returns where it ends.
+constexpr std::size_t append_fixed(char* out, std::size_t at, std::uint64_t scaled, unsigned places,
+                                   unsigned int_digits) noexcept {
+  char* const int_end = out + at + int_digits;
+  if (places != 0) {
+    scaled = write_digits(int_end + 1 + places, scaled, places);
+    *int_end = '.';
+  }
+  (void)write_digits(int_end, scaled, int_digits);
+  return at + fixed_size(places, int_digits);
+}
+
 /// Most digits append_uint and put_uint write for a zero-padded number (a 64-bit one has 20).
 inline constexpr unsigned max_padded_digits = 24;
 
@@ -119,10 +149,7 @@ inline constexpr unsigned max_padded_digits = 24;
 /// left; at most max_padded_digits); returns where they end.
 constexpr std::size_t append_uint(char* out, std::size_t at, std::uint64_t v,
                                   unsigned min_digits = 1) noexcept {
-  unsigned n = digit_count(v);
-  if (n < min_digits) n = min_digits < max_padded_digits ? min_digits : max_padded_digits;
-  (void)write_digits(out + at + n, v, n);
-  return at + n;
+  return append_fixed(out, at, v, 0, integer_digits(v, 0, min_digits, max_padded_digits));
 }
 
 /// The same into any sink with put(std::string_view).
@@ -132,27 +159,15 @@ constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexc
   s.put(std::string_view(tmp, append_uint(tmp, 0, v, min_digits)));
 }
 
-/// scaled / 10^places as fixed-point text into any sink with put(std::string_view): all `places`
-/// fraction digits ("4.50" from 450 and 2, "0.05" from 5 and 2), no point when places is 0,
-/// `-` first when `negative`. places at most 19.
+/// scaled / 10^places (places at most 19) into any sink with put(std::string_view), as
+/// append_fixed writes it with no padding, `-` first when `negative`.
 template <class Sink>
 constexpr void put_fixed(Sink& s, std::uint64_t scaled, unsigned places, bool negative) noexcept {
   char tmp[1 + 20 + 1 + 19];
-  const unsigned n = digit_count(scaled);
-  const unsigned int_digits = n > places ? n - places : 1;
-  std::size_t size = 0;
-  if (negative) tmp[size++] = '-';
-  char* const int_end = tmp + size + int_digits;
-  if (places == 0) {
-    (void)write_digits(int_end, scaled, int_digits);
-    size += int_digits;
-  } else {
-    const std::uint64_t whole = write_digits(int_end + 1 + places, scaled, places);
-    *int_end = '.';
-    (void)write_digits(int_end, whole, int_digits);
-    size += int_digits + 1 + places;
-  }
-  s.put(std::string_view(tmp, size));
+  std::size_t n = 0;
+  if (negative) tmp[n++] = '-';
+  n = append_fixed(tmp, n, scaled, places, integer_digits(scaled, places, 1, 20));
+  s.put(std::string_view(tmp, n));
 }
 
 }  // namespace seawire::detail

@@ -162,38 +162,29 @@ constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
   seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
 }
 
-/// "hh:mm:ss" or "hh:mm:ss.f..." (quoted when Quoted), written at once.
-template <bool Quoted, json_sink Sink>
-constexpr void json_time(Sink& s, const time_of_day& v) noexcept {
-  using seawire::detail::append_uint;
-  char tmp[1 + 3 + 1 + 3 + 1 + 3 + 1 + seawire::detail::max_padded_digits + 1];
-  std::size_t n = 0;
-  if constexpr (Quoted) tmp[n++] = '"';
-  n = append_uint(tmp, n, v.hour, 2);
-  tmp[n++] = ':';
-  n = append_uint(tmp, n, v.minute, 2);
-  tmp[n++] = ':';
-  n = append_uint(tmp, n, v.second, 2);
-  if (v.places > 0) {
-    tmp[n++] = '.';
-    n = append_uint(tmp, n, v.fraction, v.places);
-  }
-  if constexpr (Quoted) tmp[n++] = '"';
-  s.put(std::string_view(tmp, n));
-}
+// A number and the width it is zero-padded to.
+struct padded {
+  std::uint64_t value = 0;
+  unsigned width = 0;
+};
 
-/// "yyyy-mm-dd" (quoted when Quoted), written at once.
+// Three numbers joined by `sep`, then a point and `fraction` when its width is not 0, quoted when
+// Quoted, written at once: a date ("2014-12-31") or a time ("16:49:59.980").
 template <bool Quoted, json_sink Sink>
-constexpr void json_date(Sink& s, const date& v) noexcept {
-  using seawire::detail::append_uint;
-  char tmp[1 + 5 + 1 + 3 + 1 + 3 + 1];
+constexpr void json_joined(Sink& s, const std::array<padded, 3>& parts, char sep,
+                           padded fraction = {}) noexcept {
+  constexpr std::size_t most = seawire::detail::max_padded_digits;
+  char tmp[1 + 3 * (most + 1) + 1 + most + 1];
   std::size_t n = 0;
   if constexpr (Quoted) tmp[n++] = '"';
-  n = append_uint(tmp, n, v.year, 4);
-  tmp[n++] = '-';
-  n = append_uint(tmp, n, v.month, 2);
-  tmp[n++] = '-';
-  n = append_uint(tmp, n, v.day, 2);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (i != 0) tmp[n++] = sep;
+    n = seawire::detail::append_uint(tmp, n, parts[i].value, parts[i].width);
+  }
+  if (fraction.width != 0) {
+    tmp[n++] = '.';
+    n = seawire::detail::append_uint(tmp, n, fraction.value, fraction.width);
+  }
   if constexpr (Quoted) tmp[n++] = '"';
   s.put(std::string_view(tmp, n));
 }
@@ -247,9 +238,11 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
     d.negative = v.direction == hemisphere::west;
     detail::json_decimal(s, d);
   } else if constexpr (std::is_same_v<T, time_of_day>) {
-    detail::json_time<Style == json_style::json>(s, v);
+    detail::json_joined<Style == json_style::json>(s, {{{v.hour, 2}, {v.minute, 2}, {v.second, 2}}},
+                                                   ':', {v.fraction, v.places});
   } else if constexpr (std::is_same_v<T, date>) {
-    detail::json_date<Style == json_style::json>(s, v);
+    detail::json_joined<Style == json_style::json>(s, {{{v.year, 4}, {v.month, 2}, {v.day, 2}}},
+                                                   '-');
   } else if constexpr (detail::is_text<T>::value) {
     detail::json_string<json_style::json>(s, v.view());
   } else if constexpr (char_enum_like<T>) {

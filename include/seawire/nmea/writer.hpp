@@ -65,37 +65,19 @@ class writer {
   }
   /// Unsigned integer, zero-padded to at least `min_digits` digits (at most 20 are written).
   constexpr void put_uint(std::uint64_t v, unsigned min_digits = 1) noexcept {
-    unsigned n = seawire::detail::digit_count(v);
-    if (n < min_digits) n = min_digits < 20 ? min_digits : 20;
-    if (n > out_.size() - size_) {
-      failed_ = true;
-      return;
-    }
-    (void)digits_at(size_, v, n);
-    size_ += n;
+    put_fixed(v, 0, min_digits);
   }
   /// The fixed-point number scaled / 10^places, e.g. "4.50" from 450 and 2: all `places` fraction
   /// digits, and the integer part zero-padded to at least `min_int_digits` digits (at most 20).
   /// Nothing is written, and the writer fails, if it does not all fit.
   constexpr void put_fixed(std::uint64_t scaled, unsigned places,
                            unsigned min_int_digits = 1) noexcept {
-    if (places == 0) {
-      put_uint(scaled, min_int_digits);
-      return;
-    }
-    const unsigned n = seawire::detail::digit_count(scaled);
-    unsigned int_digits = n > places ? n - places : 1;
-    if (int_digits < min_int_digits) int_digits = min_int_digits < 20 ? min_int_digits : 20;
-    const std::size_t total = std::size_t{int_digits} + 1 + places;
-    if (total > out_.size() - size_) {
+    const unsigned int_digits = seawire::detail::integer_digits(scaled, places, min_int_digits, 20);
+    if (seawire::detail::fixed_size(places, int_digits) > out_.size() - size_) {
       failed_ = true;
       return;
     }
-    // Right to left, dividing only by constants: the fraction, the point, the integer part.
-    const std::uint64_t whole = digits_at(size_ + int_digits + 1, scaled, places);
-    out_[size_ + int_digits] = '.';
-    (void)digits_at(size_, whole, int_digits);
-    size_ += total;
+    size_ = seawire::detail::append_fixed(out_.data(), size_, scaled, places, int_digits);
   }
 
   /// Finish: '*', checksum, CR LF. Returns the sentence length or buffer_too_small.
@@ -121,12 +103,6 @@ class writer {
   [[nodiscard]] constexpr std::string_view view() const noexcept { return {out_.data(), size_}; }
 
  private:
-  // Writes the lowest `count` decimal digits of v to out_[at, at + count), two at a time, and
-  // returns what is left of v. The caller has checked the room.
-  constexpr std::uint64_t digits_at(std::size_t at, std::uint64_t v, unsigned count) noexcept {
-    return seawire::detail::write_digits(out_.data() + at + count, v, count);
-  }
-
   std::span<char> out_;
   std::size_t size_ = 0;
   bool failed_ = false;
