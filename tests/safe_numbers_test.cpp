@@ -129,6 +129,13 @@ static_assert(member_takes<&standard::gga::satellites, std::int64_t> &&
               member_takes<&standard::rpm::number, unsigned long long>);
 static_assert(!member_takes<&standard::rpm::number, bool>);
 static_assert(!member_takes<&standard::rpm::number, char>);  // '7' would be 55
+// Decimal members take whole numbers too, never a character ('A' would be 65).
+static_assert(!member_takes<&kingfisher::pydir::thrust_left, char> &&
+              !member_takes<&kingfisher::pydir::thrust_left, char8_t> &&
+              !member_takes<&kingfisher::pydir::thrust_left, bool> &&
+              member_takes<&kingfisher::pydir::thrust_left, short>);
+static_assert(!std::is_constructible_v<decimal, char> &&
+              !std::is_constructible_v<decimal, wchar_t>);
 static_assert(!member_takes<&standard::rpm::number, char8_t> &&
               !member_takes<&standard::rpm::number, char16_t> &&
               !member_takes<&standard::rpm::number, char32_t> &&

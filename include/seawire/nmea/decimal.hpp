@@ -20,6 +20,13 @@
 
 namespace seawire::nmea {
 
+/// The integer types that hold numbers: not bool, and none of the character types (`= '7'`
+/// would be 55, `= u8'7'` too). What seawire's numbers (decimal, integer<T>) take implicitly.
+template <class I>
+concept whole_number = std::integral<I> && !std::is_same_v<I, bool> && !std::is_same_v<I, char> &&
+                       !std::is_same_v<I, wchar_t> && !std::is_same_v<I, char8_t> &&
+                       !std::is_same_v<I, char16_t> && !std::is_same_v<I, char32_t>;
+
 namespace detail {
 /// The integer nearest x >= 0 (halves up), for x below 2^64. Not static_cast(x + 0.5): that sum
 /// is itself rounded, so 0.49999999999999994 gave 1 and 2^52 + 1 gave 2^52 + 2. The fraction
@@ -51,10 +58,9 @@ struct decimal {
 
   constexpr decimal() noexcept = default;
   /// An integer value: `decimal{45}` is "45", and `msg.thrust = 45;` reads as it should.
-  template <std::integral I>
-  requires(!std::same_as<I, bool>)
-      // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
-      constexpr decimal(I integer) noexcept
+  template <whole_number I>
+  // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
+  constexpr decimal(I integer) noexcept
       : mantissa(integer < 0 ? 0 - static_cast<std::uint64_t>(integer)
                              : static_cast<std::uint64_t>(integer)),
         negative(integer < 0) {}
@@ -66,9 +72,8 @@ struct decimal {
 
   /// `mantissa` / 10^places: decimal::scaled(450, 2) is "4.50". Both are integers (a double
   /// does not compile); places above 19 is refused when the value is written (value_too_large).
-  template <std::integral I, std::integral P>
-  requires(!std::same_as<I, bool> && !std::same_as<P, bool>) [[nodiscard]] static constexpr decimal
-      scaled(I mantissa, P places) noexcept {
+  template <whole_number I, whole_number P>
+  [[nodiscard]] static constexpr decimal scaled(I mantissa, P places) noexcept {
     decimal d(mantissa);
     d.places = places < 0 || places > 255 ? std::uint8_t{255} : static_cast<std::uint8_t>(places);
     return d;

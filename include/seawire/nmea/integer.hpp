@@ -30,13 +30,6 @@
 
 namespace seawire::nmea {
 
-/// The integer types that hold numbers: not bool, and none of the character types (`= '7'`
-/// would be 55, `= u8'7'` too).
-template <class I>
-concept whole_number = std::integral<I> && !std::is_same_v<I, bool> && !std::is_same_v<I, char> &&
-                       !std::is_same_v<I, wchar_t> && !std::is_same_v<I, char8_t> &&
-                       !std::is_same_v<I, char16_t> && !std::is_same_v<I, char32_t>;
-
 /// A whole-number field of type T (an integer type of at most 32 bits).
 template <class T>
 class integer {

@@ -222,9 +222,8 @@ class number {
     if (e != errc::ok) return {number{}, e};
     return from(d);
   }
-  template <std::integral I>
-  requires(!std::same_as<I, bool>)
-      [[nodiscard]] static constexpr result<number> from(I v) noexcept {
+  template <nmea::whole_number I>
+  [[nodiscard]] static constexpr result<number> from(I v) noexcept {
     return from(nmea::decimal(v));
   }
 
