@@ -4,7 +4,7 @@
 # Everything a build, test, benchmark or demo of seawire needs, from Debian 12.
 seawire_packages=(cmake g++ clang libclang-rt-14-dev clang-format clang-tidy catch2 libfmt-dev
   libbenchmark-dev libcli11-dev nlohmann-json3-dev libasio-dev ninja-build python3 librsvg2-bin
-  gpsd gpsd-clients socat)
+  gpsd gpsd-clients socat g++-aarch64-linux-gnu qemu-user)
 
 seawire_root=$(cd -- "$(dirname -- "${BASH_SOURCE[0]}")/.." && pwd)
 

@@ -5,7 +5,9 @@
 // gives, byte for byte and error for error, at run time (where the fast paths run) and at
 // compile time (where the simple ones do).
 
+#include <bit>
 #include <catch2/catch.hpp>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -25,9 +27,14 @@
 
 #include "support.hpp"
 
-// Built twice: as is (SSE2 on x86-64) and with SEAWIRE_NO_SIMD (the portable forms ARM runs).
+// Built twice: as is (SSE2 on x86-64, NEON on 64-bit ARM) and with SEAWIRE_NO_SIMD (the
+// portable forms, which constant evaluation also runs).
 #if defined(SEAWIRE_NO_SIMD)
-static_assert(SEAWIRE_SSE2 == 0, "SEAWIRE_NO_SIMD leaves only the portable forms");
+static_assert(SEAWIRE_SIMD == 0, "SEAWIRE_NO_SIMD leaves only the portable forms");
+#elif defined(__x86_64__)
+static_assert(SEAWIRE_SSE2 == 1 && SEAWIRE_NEON == 0, "x86-64 takes the SSE2 paths");
+#elif defined(__aarch64__)
+static_assert(SEAWIRE_NEON == 1 && SEAWIRE_SSE2 == 0, "64-bit ARM takes the NEON paths");
 #endif
 
 using namespace seawire;
@@ -260,6 +267,61 @@ TEST_CASE("writer::put_uint and put_fixed write what std::to_string would") {
     REQUIRE(tight.size() == 0);
   }
 }
+
+#if SEAWIRE_SIMD
+// The sixteen-lane operations the scans are written in, each against what it means for one
+// byte: every byte value in every lane, with other lanes around it.
+TEST_CASE("the vector operations give, lane by lane, what the byte rules give") {
+  namespace simd = seawire::detail::simd;
+  prng rng{0x5EA5EA5EA5EA5EA5ULL};
+  for (unsigned value = 0; value < 256; ++value) {
+    const auto b = static_cast<unsigned char>(value);
+    for (std::size_t lane = 0; lane < 16; ++lane) {
+      unsigned char bytes[16];
+      for (auto& x : bytes) x = static_cast<unsigned char>(rng.next());
+      bytes[lane] = b;
+      const simd::bytes16 v = simd::load(bytes);
+      unsigned not_printable = 0;
+      unsigned equal = 0;
+      unsigned char x = 0;
+      for (std::size_t i = 0; i < 16; ++i) {
+        if (bytes[i] < 0x20 || bytes[i] > 0x7E) not_printable |= 1U << i;
+        if (bytes[i] == b) equal |= 1U << i;
+        x = static_cast<unsigned char>(x ^ bytes[i]);
+      }
+      REQUIRE(simd::bits(simd::not_printable(v)) == not_printable);
+      REQUIRE(simd::bits(simd::equal(v, b)) == equal);
+      REQUIRE(simd::first(simd::equal(v, b)) == static_cast<std::size_t>(std::countr_zero(equal)));
+      REQUIRE(simd::any(simd::equal(v, b)));
+      REQUIRE(simd::xor_all(v) == x);
+      // A mask with only this lane set, and masks that keep lanes from here on.
+      unsigned char one[16] = {};
+      one[lane] = 0xFF;
+      REQUIRE(simd::first(simd::load(one)) == lane);
+      REQUIRE(simd::bits(simd::lanes_from(lane)) == (0xFFFFU << lane & 0xFFFFU));
+    }
+  }
+  unsigned char none[16] = {};
+  CHECK(simd::first(simd::load(none)) == 16);
+  CHECK_FALSE(simd::any(simd::load(none)));
+  CHECK(simd::bits(simd::lanes_from(16)) == 0);
+  // Counters up to 255 in each lane add up without loss.
+  for (int round = 0; round < 1000; ++round) {
+    simd::bytes16 counters = simd::zero();
+    std::size_t expected = 0;
+    const unsigned steps = static_cast<unsigned>(rng.next() % 256);
+    for (unsigned step = 0; step < steps; ++step) {
+      unsigned char mask[16];
+      for (auto& m : mask) {
+        m = (rng.next() & 1U) != 0 ? 0xFF : 0x00;
+        expected += m != 0 ? 1 : 0;
+      }
+      counters = simd::count(counters, simd::load(mask));
+    }
+    REQUIRE(simd::sum(counters) == expected);
+  }
+}
+#endif
 
 TEST_CASE("the checksum of any span matches the byte-by-byte XOR") {
   prng g{3};

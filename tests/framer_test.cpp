@@ -714,8 +714,9 @@ TEST_CASE("usable in constant expressions", "[framer]") {
 namespace {
 
 // Every position of a 40-byte run, every class of byte the scans must stop at. Run both in
-// constant evaluation (the 64-bit word path) and at run time (SSE2 where the target has it).
-// Constant evaluation tries three start offsets per position (Clang's step limit); run time, all.
+// constant evaluation (the 64-bit word path) and at run time (SSE2 or NEON where the target has
+// it). Constant evaluation tries three start offsets per position (Clang's step limit); run time,
+// all.
 constexpr bool scans_find_every_special(bool every_start) {
   using scan = seawire::nmea::detail::framer_scan;
   constexpr unsigned char specials[] = {0x00, 0x09, 0x0A, 0x0D, 0x1F, 0x21,

@@ -7,21 +7,17 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "seawire/detail/simd.hpp"  // SEAWIRE_SSE2
-#if SEAWIRE_SSE2
-#include <emmintrin.h>
-#endif
-
 #include "seawire/detail/byte_order.hpp"
+#include "seawire/detail/simd.hpp"
 
 namespace seawire::nmea {
 
 namespace detail {
 
 // The scan behind the hot path. A sentence byte needs one decision (plain text or not), so it is
-// made for 16 bytes at once with SSE2 where x86 guarantees it, else 8 at once in a 64-bit word
-// (also the constexpr path). Both only narrow the search; a byte loop names the exact byte.
-// Inside a sentence only '$' is special ('!' is text).
+// made for 16 bytes at once where the target has vector registers (SSE2, NEON), else 8 at once
+// in a 64-bit word (also the constexpr path). Both only narrow the search; a byte loop names the
+// exact byte. Inside a sentence only '$' is special ('!' is text).
 struct framer_scan {
   static constexpr std::uint64_t ones = 0x0101010101010101U;
   static constexpr std::uint64_t highs = 0x8080808080808080U;
@@ -44,18 +40,17 @@ struct framer_scan {
 
   // The bytes a search stops at, told for one byte, for eight in a word (nonzero when one of
   // them is such a byte; borrows may flag bytes above the first hit, never below), and for
-  // sixteen SSE2 lanes.
+  // sixteen vector lanes.
   struct special_bytes {  // not printable ASCII, or '$'
     [[nodiscard]] static constexpr bool byte(char c) noexcept { return !is_plain(c); }
     [[nodiscard]] static constexpr std::uint64_t word(std::uint64_t v) noexcept {
       return any_below(v, 0x20) | (v & highs) | any_equal(v, 0x7F) | any_equal(v, '$');
     }
-#if SEAWIRE_SSE2
-    // Signed compare: "below 0x20" also catches 0x80..0xFF, which are negative.
-    [[nodiscard]] static __m128i lanes(__m128i v) noexcept {
-      return _mm_or_si128(_mm_cmplt_epi8(v, _mm_set1_epi8(0x20)),
-                          _mm_or_si128(_mm_cmpeq_epi8(v, _mm_set1_epi8(0x7F)),
-                                       _mm_cmpeq_epi8(v, _mm_set1_epi8('$'))));
+#if SEAWIRE_SIMD
+    [[nodiscard]] static seawire::detail::simd::bytes16 lanes(
+        seawire::detail::simd::bytes16 v) noexcept {
+      namespace simd = seawire::detail::simd;
+      return simd::not_printable(v) | simd::equal(v, '$');
     }
 #endif
   };
@@ -64,12 +59,12 @@ struct framer_scan {
   [[nodiscard]] static constexpr std::size_t find_first(const char* s, std::size_t from,
                                                         std::size_t to) noexcept {
     std::size_t i = from;
-#if SEAWIRE_SSE2
+#if SEAWIRE_SIMD
     if (!std::is_constant_evaluated()) {
       for (; to - i >= 16; i += 16) {
-        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + i));
-        const auto mask = static_cast<unsigned>(_mm_movemask_epi8(Bytes::lanes(v)));
-        if (mask != 0) return i + static_cast<std::size_t>(std::countr_zero(mask));
+        const std::size_t k =
+            seawire::detail::simd::first(Bytes::lanes(seawire::detail::simd::load(s + i)));
+        if (k < 16) return i + k;
       }
     }
 #endif

@@ -18,14 +18,10 @@
 #include <type_traits>
 #include <utility>
 
-#include "seawire/detail/simd.hpp"  // SEAWIRE_SSE2
-#if SEAWIRE_SSE2
-#include <emmintrin.h>
-#endif
-
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/inline.hpp"
+#include "seawire/detail/simd.hpp"
 #include "seawire/error.hpp"
 
 namespace seawire::nmea {
@@ -134,66 +130,43 @@ constexpr void scan_body_bytes(std::string_view line, body_scan& b) noexcept {
   b.x = x;
 }
 
-#if SEAWIRE_SSE2
-/// Sixteen zero bytes then sixteen 0xFF: the 16 bytes at lane_keep + 16 - k keep lanes k..15.
-alignas(16) inline constexpr unsigned char lane_keep[32] = {
-    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,    0,
-    0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF};
-
+#if SEAWIRE_SIMD
 /// The scan of line[begin, end) when nothing in it is out of place: no '*', no '$', no byte
 /// outside 0x20..0x7E. Sixteen bytes per step with no branch but the loop's: the XOR, the comma
 /// count and an accumulated "something special" flag; the last step takes the 16 bytes that end
 /// at `end`, with the lanes already seen masked out, so nothing outside the range is read.
 /// False when something special is there: the byte loop then says what and where.
 /// Precondition: end - begin >= 16.
-inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
+inline bool scan_clean_simd(const char* p, std::size_t begin, std::size_t end,
                             body_scan& b) noexcept {
-  const __m128i comma_c = _mm_set1_epi8(',');
-  const __m128i star_c = _mm_set1_epi8('*');
-  const __m128i dollar_c = _mm_set1_epi8('$');
-  const __m128i one_c = _mm_set1_epi8(1);
-  const __m128i printable_c = _mm_set1_epi8(0x21);
-  // Outside 0x20..0x7E: plus one (wrapping), 0x7F..0xFE turn negative and 0xFF..0x1F become
-  // 0x00..0x20, so one signed compare below 0x21 finds them all.
-  const auto special = [&](__m128i v) {
-    return _mm_or_si128(_mm_cmplt_epi8(_mm_add_epi8(v, one_c), printable_c),
-                        _mm_or_si128(_mm_cmpeq_epi8(v, dollar_c), _mm_cmpeq_epi8(v, star_c)));
+  namespace simd = seawire::detail::simd;
+  const auto special = [](simd::bytes16 v) {
+    return simd::not_printable(v) | simd::equal(v, '$') | simd::equal(v, '*');
   };
-  const auto lane_sum = [](__m128i counts) {  // the sixteen byte counters added up
-    const __m128i sums = _mm_sad_epu8(counts, _mm_setzero_si128());
-    return static_cast<std::size_t>(_mm_cvtsi128_si32(sums)) +
-           static_cast<std::size_t>(_mm_extract_epi16(sums, 4));
-  };
-  __m128i x = _mm_setzero_si128();
-  __m128i odd = _mm_setzero_si128();
+  simd::bytes16 x = simd::zero();
+  simd::bytes16 odd = simd::zero();
   std::size_t commas = 0;
   std::size_t at = begin;
   while (end - at > 16) {
     // Byte counters hold 255 blocks; a line may have 4096.
     std::size_t blocks = (end - at - 1) / 16;
     if (blocks > 255) blocks = 255;
-    __m128i counts = _mm_setzero_si128();
+    simd::bytes16 counts = simd::zero();
     for (const std::size_t stop = at + blocks * 16; at != stop; at += 16) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + at));
-      odd = _mm_or_si128(odd, special(v));
-      counts = _mm_sub_epi8(counts, _mm_cmpeq_epi8(v, comma_c));  // a match is -1
-      x = _mm_xor_si128(x, v);
+      const simd::bytes16 v = simd::load(p + at);
+      odd = odd | special(v);
+      counts = simd::count(counts, simd::equal(v, ','));
+      x = x ^ v;
     }
-    commas += lane_sum(counts);
+    commas += simd::sum(counts);
   }
-  const __m128i keep =
-      _mm_loadu_si128(reinterpret_cast<const __m128i*>(lane_keep + 16 - (at - (end - 16))));
-  const __m128i last = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + end - 16));
-  const __m128i v = _mm_and_si128(last, keep);  // a masked lane is 0: no comma, XOR unchanged
-  odd = _mm_or_si128(odd, _mm_and_si128(keep, special(last)));
-  if (_mm_movemask_epi8(odd) != 0) return false;
-  commas += lane_sum(_mm_sub_epi8(_mm_setzero_si128(), _mm_cmpeq_epi8(v, comma_c)));
-  x = _mm_xor_si128(x, v);
-  x = _mm_xor_si128(x, _mm_srli_si128(x, 8));
-  x = _mm_xor_si128(x, _mm_srli_si128(x, 4));
-  x = _mm_xor_si128(x, _mm_srli_si128(x, 2));
-  x = _mm_xor_si128(x, _mm_srli_si128(x, 1));
-  b.x = static_cast<std::uint8_t>(_mm_cvtsi128_si32(x) & 0xFF);
+  const simd::bytes16 keep = simd::lanes_from(at - (end - 16));
+  const simd::bytes16 last = simd::load(p + end - 16);
+  const simd::bytes16 v = last & keep;  // a masked lane is 0: no comma, XOR unchanged
+  odd = odd | (keep & special(last));
+  if (simd::any(odd)) return false;
+  commas += simd::sum(simd::count(simd::zero(), simd::equal(v, ',')));
+  b.x = simd::xor_all(x ^ v);
   b.commas = commas;
   return true;
 }
@@ -221,13 +194,13 @@ inline bool scan_clean_sse2(const char* p, std::size_t begin, std::size_t end,
 /// One pass over `line` (no line ending; line[0] is the start character, '$' or '!').
 [[nodiscard]] constexpr body_scan scan_body(std::string_view line) noexcept {
   body_scan b;
-#if SEAWIRE_SSE2
+#if SEAWIRE_SIMD
   const std::size_t n = line.size();
   if (!std::is_constant_evaluated() && n >= 20) {
     // Nearly every sentence ends "*hh": scan up to that '*'; if there is none there, the whole
     // line, which then must hold no '*' at all.
     const std::size_t end = line[n - 3] == '*' ? n - 3 : n;
-    if (scan_clean_sse2(line.data(), 1, end, b)) {  // b untouched when it fails
+    if (scan_clean_simd(line.data(), 1, end, b)) {  // b untouched when it fails
       b.star = end == n ? 0 : end;
       return b;
     }
@@ -381,17 +354,13 @@ namespace detail {
   std::uint64_t m = 0;
   std::size_t i = 0;
   if (!std::is_constant_evaluated()) {
-#if SEAWIRE_SSE2
-    const __m128i comma = _mm_set1_epi8(',');
-    for (; n - i >= 16; i += 16) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + i));
-      m |= std::uint64_t{static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma)))} << i;
-    }
+#if SEAWIRE_SIMD
+    namespace simd = seawire::detail::simd;
+    for (; n - i >= 16; i += 16)
+      m |= std::uint64_t{simd::bits(simd::equal(simd::load(p + i), ','))} << i;
     if (i < n && n >= 16) {
       // The last bytes: the 16 that end at p[n - 1], overlapping some already seen.
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + n - 16));
-      m |= std::uint64_t{static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, comma)))}
-           << (n - 16);
+      m |= std::uint64_t{simd::bits(simd::equal(simd::load(p + n - 16), ','))} << (n - 16);
       return m;
     }
 #else
