@@ -14,6 +14,7 @@
 #include <random>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -673,6 +674,39 @@ TEST_CASE("ANELLO frame JSON: the spec's example frame, exact digits, null for n
   CHECK(anello::has_json_field("latitude"));
   CHECK(anello::has_json_field("pressure_hpa"));
   CHECK_FALSE(anello::has_json_field("latitude_deg"));
+}
+
+// Every field at the ends of its wire type (the largest value short of "not available", and
+// the smallest): the object is put together in a buffer sized at compile time, so these are the
+// longest it can be. Also in constant evaluation, where a frame with nothing available is all
+// nulls.
+TEST_CASE("ANELLO frame JSON: every field at its widest fits, and it is written at compile time") {
+  static_assert([] {
+    seawire::nmea::json_buffer<1024> b;
+    anello::write_json(b, anello::sensor_frame_raw{});
+    return b.view().starts_with(R"({"type":"AB00","heading_deg":null,"latitude":null,)") &&
+           b.view().ends_with(R"("air_temp_c":null,"pressure_hpa":null})");
+  }());
+  for (const bool high : {true, false}) {
+    anello::sensor_frame_raw f;
+    std::apply(
+        [&](const auto&... field) {
+          const auto set = [&](const auto& row) {
+            using row_type = std::remove_cvref_t<decltype(row)>;
+            using raw = typename row_type::raw_type;
+            f.*row_type::raw_member = high ? static_cast<raw>(std::numeric_limits<raw>::max() - 1)
+                                           : std::numeric_limits<raw>::min();
+          };
+          (set(field), ...);
+        },
+        anello::sensor_fields);
+    string_sink k;
+    anello::write_json(k, f);
+    INFO(k.s);
+    CHECK(valid_json(k.s));
+    CHECK(k.s.size() <= anello::detail::frame_json_max_size);
+    CHECK(k.s.find("null") == std::string::npos);
+  }
 }
 
 TEST_CASE("ANELLO frame JSON read back: exact, strict, errors by field number") {

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>  // std::char_traits
 #include <string_view>
 #include <tuple>
 #include <type_traits>
@@ -105,22 +106,27 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   const auto days = static_cast<std::int64_t>(ms / 86'400'000);
   const std::uint64_t in_day = ms % 86'400'000;
   const civil c = civil_from_days(days);
-  if constexpr (Style == nmea::json_style::json) s.put('"');
-  nmea::detail::json_uint(s, static_cast<std::uint64_t>(c.year), 4);
-  s.put('-');
-  nmea::detail::json_uint(s, c.month, 2);
-  s.put('-');
-  nmea::detail::json_uint(s, c.day, 2);
-  s.put('T');
-  nmea::detail::json_uint(s, in_day / 3'600'000, 2);
-  s.put(':');
-  nmea::detail::json_uint(s, in_day / 60'000 % 60, 2);
-  s.put(':');
-  nmea::detail::json_uint(s, in_day / 1000 % 60, 2);
-  s.put('.');
-  nmea::detail::json_uint(s, in_day % 1000, 3);
-  s.put('Z');
-  if constexpr (Style == nmea::json_style::json) s.put('"');
+  // Written into one buffer and handed to the sink at once: "2024-07-03T15:42:58.250Z".
+  char tmp[26];
+  std::size_t n = 0;
+  if constexpr (Style == nmea::json_style::json) tmp[n++] = '"';
+  using seawire::detail::append_uint;
+  n = append_uint(tmp, n, static_cast<std::uint64_t>(c.year), 4);
+  tmp[n++] = '-';
+  n = append_uint(tmp, n, c.month, 2);
+  tmp[n++] = '-';
+  n = append_uint(tmp, n, c.day, 2);
+  tmp[n++] = 'T';
+  n = append_uint(tmp, n, in_day / 3'600'000, 2);
+  tmp[n++] = ':';
+  n = append_uint(tmp, n, in_day / 60'000 % 60, 2);
+  tmp[n++] = ':';
+  n = append_uint(tmp, n, in_day / 1000 % 60, 2);
+  tmp[n++] = '.';
+  n = append_uint(tmp, n, in_day % 1000, 3);
+  tmp[n++] = 'Z';
+  if constexpr (Style == nmea::json_style::json) tmp[n++] = '"';
+  s.put(std::string_view(tmp, n));
 }
 
 /// "YYYY-MM-DDThh:mm:ss[.fff]Z" (0 to 3 fraction digits; "Z" or "+00:00" optional) or integer
@@ -241,25 +247,81 @@ constexpr std::string_view describe(std::span<char> out, const result<sensor_fra
   return t.put(": ").put(message(r.ec)).view();
 }
 
+namespace detail {
+// What goes before field I's value, `,"key":` (the first after `{"type":"AB00"`), made once at
+// compile time as the messages' keys are.
+template <std::size_t I>
+constexpr void frame_member_key(auto& s) noexcept {
+  if constexpr (I == 0) {
+    s.put("{\"type\":\"");
+    s.put(frame_json_type);
+    s.put('"');
+  }
+  s.put(",\"");
+  nmea::detail::json_escape(s, std::get<I>(sensor_fields).json_key);
+  s.put("\":");
+}
+template <std::size_t I>
+inline constexpr std::size_t frame_json_key_size = [] {
+  nmea::detail::counting_sink n;
+  frame_member_key<I>(n);
+  return n.size;
+}();
+template <std::size_t I>
+inline constexpr auto frame_json_key = [] {
+  nmea::detail::array_sink<frame_json_key_size<I>> a;
+  frame_member_key<I>(a);
+  return a.text;
+}();
+
+// The longest a frame's JSON can be: every key, each value at its longest (a number as
+// put_fixed writes it: sign, 20 integer digits, point, 19 fraction digits; a time, 26), the '}'.
+inline constexpr std::size_t frame_json_max_size = [] {
+  std::size_t n = 1;
+  [&]<std::size_t... I>(std::index_sequence<I...>) { ((n += frame_json_key_size<I> + 41), ...); }
+  (std::make_index_sequence<sensor_field_count>{});
+  return n;
+}();
+
+// Where write_json puts the object together before the caller's sink gets it in one piece.
+struct frame_text {
+  char* out;
+  std::size_t size = 0;
+  constexpr void put(char c) noexcept { out[size++] = c; }
+  constexpr void put(std::string_view v) noexcept {
+    std::char_traits<char>::copy(out + size, v.data(), v.size());
+    size += v.size();
+  }
+};
+}  // namespace detail
+
 /// A frame as one JSON object (no newline): "type":"AB00", then the 19 fields in table order.
 template <nmea::json_sink Sink>
-constexpr void write_json(Sink& s, const sensor_frame_raw& frame) noexcept {
-  s.put("{\"type\":\"");
-  s.put(frame_json_type);
-  s.put('"');
-  detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {
-    using field_type = std::remove_cvref_t<decltype(field)>;
-    s.put(",\"");
-    s.put(field.json_key);
-    s.put("\":");
-    if (field.not_available(frame.*field_type::raw_member)) {
-      s.put("null");
-    } else {
-      detail::write_field_value(s, field, frame);
-    }
-    return true;
-  });
+constexpr void write_json(Sink& sink, const sensor_frame_raw& frame) noexcept {
+  char text[detail::frame_json_max_size];
+  detail::frame_text s{text};
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (
+        [&] {
+          constexpr const auto& field = std::get<I>(sensor_fields);
+          using field_type = std::remove_cvref_t<decltype(field)>;
+          nmea::detail::put_array(s, detail::frame_json_key<I>);
+          const typename field_type::raw_type raw = frame.*field_type::raw_member;
+          if (field.not_available(raw)) {
+            s.put("null");
+          } else if constexpr (std::is_same_v<typename field_type::value_type, time_ms>) {
+            detail::write_time_ms(s, static_cast<std::uint64_t>(raw));
+          } else {
+            // The wire's integer with the field's fraction digits (a constant here).
+            const nmea::decimal d = detail::raw_decimal(field, raw);
+            seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
+          }
+        }(),
+        ...);
+  }
+  (std::make_index_sequence<sensor_field_count>{});
   s.put('}');
+  sink.put(std::string_view(text, s.size));
 }
 
 /// The header row of the frame's CSV table (with its LF): the 19 JSON keys in table order, as
