@@ -136,6 +136,17 @@ static_assert(!member_takes<&kingfisher::pydir::thrust_left, char> &&
               member_takes<&kingfisher::pydir::thrust_left, short>);
 static_assert(!std::is_constructible_v<decimal, char> &&
               !std::is_constructible_v<decimal, wchar_t>);
+// Nor an NMEA 2000 field's physical value, by from() or assign().
+template <class N, class V>
+concept n2k_takes = requires(N n, V v) {
+  N::from(v);
+  n.assign(v);
+};
+using n2k_speed = nmea2000::unsigned_number<16, nmea2000::resolution{1, -2}>;
+static_assert(n2k_takes<n2k_speed, int> && n2k_takes<n2k_speed, double> &&
+              n2k_takes<n2k_speed, decimal>);
+static_assert(!n2k_takes<n2k_speed, char> && !n2k_takes<n2k_speed, bool> &&
+              !n2k_takes<n2k_speed, char8_t> && !n2k_takes<n2k_speed, wchar_t>);
 static_assert(!member_takes<&standard::rpm::number, char8_t> &&
               !member_takes<&standard::rpm::number, char16_t> &&
               !member_takes<&standard::rpm::number, char32_t> &&

@@ -226,6 +226,10 @@ class number {
   [[nodiscard]] static constexpr result<number> from(I v) noexcept {
     return from(nmea::decimal(v));
   }
+  /// A character or a bool is not a physical value: without this it would convert to double
+  /// ('A' would be 65).
+  template <std::integral I>
+  requires(!nmea::whole_number<I>) static result<number> from(I) = delete;
 
   /// Sets the field to the physical value `v` (double, decimal or integer); on error the field is
   /// left as it was and the errc says why.
