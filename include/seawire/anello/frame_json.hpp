@@ -194,7 +194,9 @@ constexpr void write_field_value(Sink& s, const Field& field,
   if constexpr (std::is_same_v<typename Field::value_type, time_ms>) {
     write_time_ms<Style>(s, static_cast<std::uint64_t>(raw));
   } else {
-    nmea::write_json_value(s, raw_decimal(field, raw));
+    // The wire's integer with the row's fraction digits (a constant where the row is known).
+    const nmea::decimal d = raw_decimal(field, raw);
+    seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
   }
 }
 }  // namespace detail
@@ -306,15 +308,10 @@ constexpr void write_json(Sink& sink, const sensor_frame_raw& frame) noexcept {
           constexpr const auto& field = std::get<I>(sensor_fields);
           using field_type = std::remove_cvref_t<decltype(field)>;
           nmea::detail::put_array(s, detail::frame_json_key<I>);
-          const typename field_type::raw_type raw = frame.*field_type::raw_member;
-          if (field.not_available(raw)) {
+          if (field.not_available(frame.*field_type::raw_member)) {
             s.put("null");
-          } else if constexpr (std::is_same_v<typename field_type::value_type, time_ms>) {
-            detail::write_time_ms(s, static_cast<std::uint64_t>(raw));
           } else {
-            // The wire's integer with the field's fraction digits (a constant here).
-            const nmea::decimal d = detail::raw_decimal(field, raw);
-            seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
+            detail::write_field_value(s, field, frame);
           }
         }(),
         ...);

@@ -164,14 +164,16 @@ struct bytes16 {
 
 #endif
 
-/// The XOR of all sixteen bytes.
-[[nodiscard]] inline std::uint8_t xor_all(bytes16 a) noexcept {
-  std::uint64_t w = xor_halves(a);
+/// The XOR of the eight bytes of a word.
+[[nodiscard]] constexpr std::uint8_t xor_fold(std::uint64_t w) noexcept {
   w ^= w >> 32U;
   w ^= w >> 16U;
   w ^= w >> 8U;
   return static_cast<std::uint8_t>(w);
 }
+
+/// The XOR of all sixteen bytes.
+[[nodiscard]] inline std::uint8_t xor_all(bytes16 a) noexcept { return xor_fold(xor_halves(a)); }
 
 /// Sixteen zero bytes then sixteen 0xFF: the 16 bytes at keep_from_table + 16 - k keep lanes
 /// k..15.

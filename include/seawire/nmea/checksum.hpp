@@ -27,10 +27,7 @@ inline std::uint8_t xor_bytes_simd(const char* p, std::size_t n) noexcept {
     w ^= seawire::detail::load_le64(p + i);
     i += 8;
   }
-  w ^= w >> 32U;
-  w ^= w >> 16U;
-  w ^= w >> 8U;
-  auto x = static_cast<std::uint8_t>(w);
+  auto x = simd::xor_fold(w);
   for (; i < n; ++i) x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(p[i]));
   return x;
 }
