@@ -136,6 +136,15 @@ static_assert(!member_takes<&kingfisher::pydir::thrust_left, char> &&
               member_takes<&kingfisher::pydir::thrust_left, short>);
 static_assert(!std::is_constructible_v<decimal, char> &&
               !std::is_constructible_v<decimal, wchar_t>);
+// A member of a character type is no number field: no number codec, no range or zero_pad.
+template <class T>
+concept has_codec = requires {
+  nmea::codec<T>::width;
+};
+static_assert(!has_codec<char8_t> && !has_codec<wchar_t> && has_codec<short>);
+static_assert(!nmea::detail::is_integer_field<char> && !nmea::detail::is_integer_field<char16_t> &&
+              !nmea::detail::is_unsigned_integer_field<char8_t> &&
+              nmea::detail::is_unsigned_integer_field<unsigned char>);
 // Nor an NMEA 2000 field's physical value, by from() or assign().
 template <class N, class V>
 concept n2k_takes = requires(N n, V v) {

@@ -357,8 +357,8 @@ struct codec<decimal> {
   static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
 };
 
-template <std::integral I>
-requires(!std::same_as<I, bool> && !std::same_as<I, char>) struct codec<I> {
+template <whole_number I>
+struct codec<I> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars =
       std::numeric_limits<I>::digits10 + 1 + (std::is_signed_v<I> ? 1 : 0);

@@ -213,15 +213,14 @@ inline constexpr bool fills_from_double =
     std::is_same_v<V, magnetic_variation>;
 
 template <class V>
-inline constexpr bool is_integer_field =
-    (std::is_integral_v<V> && !std::is_same_v<V, bool>) || is_integer_wrapper<V>;
+inline constexpr bool is_integer_field = whole_number<V> || is_integer_wrapper<V>;
 
 template <class V>
 inline constexpr bool is_unsigned_integer_field = [] {
   if constexpr (is_integer_wrapper<V>) {
     return std::is_unsigned_v<typename V::value_type>;
   } else {
-    return std::is_integral_v<V> && std::is_unsigned_v<V> && !std::is_same_v<V, bool>;
+    return whole_number<V> && std::is_unsigned_v<V>;
   }
 }();
 

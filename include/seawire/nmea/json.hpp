@@ -214,7 +214,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
     detail::json_decimal(s, v);
   } else if constexpr (std::is_same_v<T, bool>) {
     s.put(v ? std::string_view("true") : std::string_view("false"));
-  } else if constexpr (std::is_integral_v<T> && !std::is_same_v<T, char>) {
+  } else if constexpr (whole_number<T>) {
     if constexpr (std::is_signed_v<T>) {
       if (v < 0) {
         s.put('-');
@@ -514,8 +514,7 @@ template <class T>
       return errc::ok;
     }
     return errc::bad_flag;
-  } else if constexpr ((std::is_integral_v<T> && !std::is_same_v<T, char>) ||
-                       is_integer_wrapper<T>) {
+  } else if constexpr (detail::is_integer_field<T>) {
     if (!detail::is_scalar_text(v)) return errc::bad_number;
     sentence_view s;
     s.body = v.text;

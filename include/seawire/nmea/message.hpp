@@ -46,7 +46,7 @@ namespace detail {
 template <class T>
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc check_options(const T& v,
                                                                  const field_options& o) noexcept {
-  if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+  if constexpr (whole_number<T>) {
     return check_options(decimal(static_cast<std::int64_t>(v)), o);
   } else if constexpr (is_integer_wrapper<T>) {
     return check_options(v.value(), o);
@@ -347,7 +347,7 @@ template <class F, class T>
   }
   w.next_field();
   if (has) {
-    if constexpr (std::is_integral_v<V> && std::is_unsigned_v<V> && !std::is_same_v<V, bool>) {
+    if constexpr (whole_number<V> && std::is_unsigned_v<V>) {
       w.put_uint(*v, o.zero_pad);
     } else if constexpr (is_integer_wrapper<V>) {
       // check() has refused a value outside the type: an unsigned one is not negative here.
