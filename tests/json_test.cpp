@@ -983,6 +983,7 @@ TEST_CASE("times, dates and numbers in JSON: padded as the wire has them, every 
   CHECK(value_json(decimal{0}) == "0");
   CHECK(value_json(decimal::scaled(std::numeric_limits<std::int64_t>::max(), 19)) ==
         "0.9223372036854775807");
+  CHECK(value_json(decimal::scaled(-5, 30)) == "null");  // more places than a number can have
   CHECK(value_json(std::uint64_t{18446744073709551615U}) == "18446744073709551615");
 }
 

@@ -152,11 +152,12 @@ constexpr void json_string(Sink& s, std::string_view text) noexcept {
   }
 }
 
-/// A decimal as a JSON number: no padding, the wire's fraction digits.
+/// A decimal as a JSON number: no padding, the wire's fraction digits. One with more than 19
+/// fraction digits (which no decoder makes and encode refuses) is null: the document stays valid.
 template <json_sink Sink>
 constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
   if (d.places > 19) {
-    if (d.negative) s.put('-');
+    s.put("null");
     return;
   }
   seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
