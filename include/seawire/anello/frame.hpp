@@ -48,6 +48,7 @@
 #include "seawire/detail/bit_layout.hpp"
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
+#include "seawire/detail/same_member.hpp"
 #include "seawire/error.hpp"
 
 namespace seawire::anello {
@@ -374,16 +375,6 @@ consteval bool sensor_fields_match_spec() {
 }
 static_assert(sensor_fields_match_spec(), "sensor_fields disagrees with the spec's layout");
 
-// Whether two member pointers, of any types, are the same member.
-template <auto A, auto B>
-inline constexpr bool same_member = [] {
-  if constexpr (std::is_same_v<decltype(A), decltype(B)>) {
-    return A == B;
-  } else {
-    return false;
-  }
-}();
-
 // The row of sensor_fields whose sensor_values member is ValueMember.
 template <auto ValueMember>
 consteval std::size_t row_of() noexcept {
@@ -391,7 +382,8 @@ consteval std::size_t row_of() noexcept {
   return []<std::size_t... I>(std::index_sequence<I...>) {
     std::size_t row = sensor_field_count;
     ((row = row == sensor_field_count &&
-                    same_member<std::tuple_element_t<I, table>::value_member, ValueMember>
+                    seawire::detail::same_member<std::tuple_element_t<I, table>::value_member,
+                                                 ValueMember>
                 ? I
                 : row),
      ...);

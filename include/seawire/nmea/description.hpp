@@ -34,6 +34,7 @@
 
 #include "seawire/detail/fixed_string.hpp"
 #include "seawire/detail/inline.hpp"
+#include "seawire/detail/same_member.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -439,21 +440,15 @@ concept message_like = requires {
 };
 
 namespace detail {
-template <auto A, auto B>
-[[nodiscard]] consteval bool same_member() noexcept {
-  if constexpr (std::is_same_v<decltype(A), decltype(B)>) {
-    return A == B;
-  } else {
-    return false;
-  }
-}
 /// The descriptor index of member M in T's description (fields.size when it is not a field).
 template <message_like T, auto M>
 [[nodiscard]] consteval std::size_t field_index_of() noexcept {
   std::size_t index = 0;
   std::size_t found = T::nmea.fields.size;
   T::nmea.fields.apply([&](const auto&... d) {
-    (((same_member<std::remove_cvref_t<decltype(d)>::member, M>() ? (found = index) : 0), ++index),
+    (((seawire::detail::same_member<std::remove_cvref_t<decltype(d)>::member, M> ? (found = index)
+                                                                                 : 0),
+      ++index),
      ...);
   });
   return found;
