@@ -33,6 +33,7 @@
 #include <utility>
 
 #include "seawire/anello/frame.hpp"
+#include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -277,10 +278,12 @@ inline constexpr auto frame_json_key = [] {
 }();
 
 // The longest a frame's JSON can be: every key, each value at its longest (a number as
-// put_fixed writes it: sign, 20 integer digits, point, 19 fraction digits; a time, 26), the '}'.
+// put_fixed writes it at most; a time, 26 characters, is shorter), the '}'.
 inline constexpr std::size_t frame_json_max_size = [] {
   std::size_t n = 1;
-  [&]<std::size_t... I>(std::index_sequence<I...>) { ((n += frame_json_key_size<I> + 41), ...); }
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    ((n += frame_json_key_size<I> + seawire::detail::max_fixed_chars), ...);
+  }
   (std::make_index_sequence<sensor_field_count>{});
   return n;
 }();

@@ -159,14 +159,22 @@ constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexc
   s.put(std::string_view(tmp, append_uint(tmp, 0, v, min_digits)));
 }
 
-/// scaled / 10^places (places at most 19) into any sink with put(std::string_view), as
-/// append_fixed writes it with no padding, `-` first when `negative`.
+/// Most integer digits a fixed-point number is written with: a 64-bit value's 20, which is also
+/// where zero padding stops.
+inline constexpr unsigned max_integer_digits = 20;
+/// Most fraction digits (10^19 is the largest power of ten a 64-bit integer holds).
+inline constexpr unsigned max_fraction_digits = 19;
+/// The longest text put_fixed writes: sign, integer digits, point, fraction digits.
+inline constexpr std::size_t max_fixed_chars = 1 + max_integer_digits + 1 + max_fraction_digits;
+
+/// scaled / 10^places (places at most max_fraction_digits) into any sink with
+/// put(std::string_view), as append_fixed writes it with no padding, `-` first when `negative`.
 template <class Sink>
 constexpr void put_fixed(Sink& s, std::uint64_t scaled, unsigned places, bool negative) noexcept {
-  char tmp[1 + 20 + 1 + 19];
+  char tmp[max_fixed_chars];
   std::size_t n = 0;
   if (negative) tmp[n++] = '-';
-  n = append_fixed(tmp, n, scaled, places, integer_digits(scaled, places, 1, 20));
+  n = append_fixed(tmp, n, scaled, places, integer_digits(scaled, places, 1, max_integer_digits));
   s.put(std::string_view(tmp, n));
 }
 

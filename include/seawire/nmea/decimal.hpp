@@ -137,12 +137,14 @@ struct decimal {
   }
 
   /// Integer digits of the written form: int_width, or the natural count when that is more (an
-  /// int_width of 1 on "45" pads nothing); the writer pads to 20 digits at most.
+  /// int_width of 1 on "45" pads nothing); the writer pads to max_integer_digits (20) at most.
   [[nodiscard]] constexpr unsigned written_int_digits() const noexcept {
+    using seawire::detail::max_integer_digits;
     const unsigned natural =
-        places > 19 ? 0
-                    : seawire::detail::digit_count(mantissa / seawire::detail::pow10_table[places]);
-    const unsigned padded = int_width < 20 ? int_width : 20;
+        places > seawire::detail::max_fraction_digits
+            ? 0
+            : seawire::detail::digit_count(mantissa / seawire::detail::pow10_table[places]);
+    const unsigned padded = int_width < max_integer_digits ? int_width : max_integer_digits;
     return natural > padded ? natural : padded;
   }
 
@@ -212,8 +214,9 @@ namespace detail {
   out.places = static_cast<std::uint8_t>(places);
   out.negative = neg;
   const unsigned natural = seawire::detail::digit_count(m / seawire::detail::pow10_table[places]);
-  out.int_width =
-      static_cast<std::uint8_t>(int_written > natural && int_written <= 20 ? int_written : 0);
+  out.int_width = static_cast<std::uint8_t>(
+      int_written > natural && int_written <= seawire::detail::max_integer_digits ? int_written
+                                                                                  : 0);
   return errc::ok;
 }
 
@@ -306,8 +309,10 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
 /// writer can produce (20 digits at most).
 [[nodiscard]] constexpr errc check_decimal(const decimal& d) noexcept {
   constexpr std::uint64_t max_mantissa = 9'999'999'999'999'999'999ULL;
-  return d.places > 19 || d.mantissa > max_mantissa || d.int_width > 20 ? errc::value_too_large
-                                                                        : errc::ok;
+  return d.places > seawire::detail::max_fraction_digits || d.mantissa > max_mantissa ||
+                 d.int_width > seawire::detail::max_integer_digits
+             ? errc::value_too_large
+             : errc::ok;
 }
 
 constexpr void write_decimal(writer& w, const decimal& d) noexcept {
@@ -348,7 +353,7 @@ template <>
 struct codec<decimal> {
   static constexpr unsigned width = 1;
   /// Longest text written: sign, 20 integer digits (padding), point, 19 fraction digits.
-  static constexpr std::size_t max_chars = 41;
+  static constexpr std::size_t max_chars = seawire::detail::max_fixed_chars;
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, decimal& v) noexcept {
     return detail::parse_decimal(r.take().text, r.policy(), v);

@@ -156,7 +156,7 @@ constexpr void json_string(Sink& s, std::string_view text) noexcept {
 /// fraction digits (which no decoder makes and encode refuses) is null: the document stays valid.
 template <json_sink Sink>
 constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
-  if (d.places > 19) {
+  if (d.places > seawire::detail::max_fraction_digits) {
     s.put("null");
     return;
   }

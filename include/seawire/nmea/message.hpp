@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "seawire/detail/ascii.hpp"
 #include "seawire/detail/fixed_string.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
@@ -439,7 +440,8 @@ template <class T>
     if constexpr (requires { codec<V>::max_chars; }) {
       std::size_t chars = codec<V>::max_chars;
       if constexpr (is_integer_field<V>) {
-        const std::size_t pad = f.opts.zero_pad < 20 ? f.opts.zero_pad : 20;
+        constexpr unsigned most = seawire::detail::max_integer_digits;
+        const std::size_t pad = f.opts.zero_pad < most ? f.opts.zero_pad : most;
         if (pad > chars) chars = pad;
       }
       n += 1 + chars + (f.opts.unit != 0 ? 2 : 0);

@@ -72,7 +72,8 @@ class writer {
   /// Nothing is written, and the writer fails, if it does not all fit.
   constexpr void put_fixed(std::uint64_t scaled, unsigned places,
                            unsigned min_int_digits = 1) noexcept {
-    const unsigned int_digits = seawire::detail::integer_digits(scaled, places, min_int_digits, 20);
+    const unsigned int_digits = seawire::detail::integer_digits(
+        scaled, places, min_int_digits, seawire::detail::max_integer_digits);
     if (seawire::detail::fixed_size(places, int_digits) > out_.size() - size_) {
       failed_ = true;
       return;
