@@ -598,12 +598,9 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     const result<typename F::value_type> r = F::decode(fbuf_);
     if (r) {
       ++stats_.frames;
-      item out;
-      out.kind = stream_item_kind::frame;
-      out.offset = frame_start_;
-      out.line = line_;
-      out.bytes = fbuf_;
-      out.frame = r.value;
+      std::optional<item> out = make_item(stream_item_kind::frame, frame_start_, line_);
+      out->bytes = fbuf_;
+      out->frame = r.value;
       return out;
     }
     ++stats_.bad_crc_frames;
@@ -678,11 +675,8 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     if (!drop_open_) return std::nullopt;
     drop_open_ = false;
     if (!report_drops_) return std::nullopt;  // turned off while the report was open
-    item out;
-    out.kind = stream_item_kind::dropped;
-    out.offset = doffset_;
-    out.line = dline_;
-    out.drop = stream_drop{dreason_, dsize_, std::string_view(dbuf_, dlen_)};
+    std::optional<item> out = make_item(stream_item_kind::dropped, doffset_, dline_);
+    out->drop = stream_drop{dreason_, dsize_, std::string_view(dbuf_, dlen_)};
     return out;
   }
 
@@ -736,14 +730,20 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     return std::nullopt;
   }
 
-  // Built in the optional that next() returns, not copied into it (an item with a frame's
-  // bytes and value is a few hundred bytes).
+  // An item built in the optional that next() returns, not copied into it (an item with a
+  // frame's bytes and value is a few hundred bytes).
+  static constexpr std::optional<item> make_item(stream_item_kind kind, std::uint64_t offset,
+                                                 std::uint64_t line) noexcept {
+    std::optional<item> out(std::in_place);
+    out->kind = kind;
+    out->offset = offset;
+    out->line = line;
+    return out;
+  }
+
   constexpr std::optional<item> yield_sentence(std::string_view line_text, line_ending e) noexcept {
     ++stats_.sentences;
-    std::optional<item> out(std::in_place);
-    out->kind = stream_item_kind::sentence;
-    out->offset = sentence_start_;
-    out->line = line_;
+    std::optional<item> out = make_item(stream_item_kind::sentence, sentence_start_, line_);
     out->sentence = framed_line{line_text, e, line_};
     if (e != line_ending::none) ++line_;
     return out;
