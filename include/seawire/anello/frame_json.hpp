@@ -254,35 +254,27 @@ namespace detail {
 // What goes before field I's value, `,"key":` (the first after `{"type":"AB00"`), made once at
 // compile time as the messages' keys are.
 template <std::size_t I>
-constexpr void frame_member_key(auto& s) noexcept {
-  if constexpr (I == 0) {
-    s.put("{\"type\":\"");
-    s.put(frame_json_type);
-    s.put('"');
+struct frame_member_key {
+  static constexpr void to(auto& s) noexcept {
+    if constexpr (I == 0) {
+      s.put("{\"type\":\"");
+      s.put(frame_json_type);
+      s.put('"');
+    }
+    s.put(",\"");
+    nmea::detail::json_escape(s, std::get<I>(sensor_fields).json_key);
+    s.put("\":");
   }
-  s.put(",\"");
-  nmea::detail::json_escape(s, std::get<I>(sensor_fields).json_key);
-  s.put("\":");
-}
+};
 template <std::size_t I>
-inline constexpr std::size_t frame_json_key_size = [] {
-  nmea::detail::counting_sink n;
-  frame_member_key<I>(n);
-  return n.size;
-}();
-template <std::size_t I>
-inline constexpr auto frame_json_key = [] {
-  nmea::detail::array_sink<frame_json_key_size<I>> a;
-  frame_member_key<I>(a);
-  return a.text;
-}();
+inline constexpr const auto& frame_json_key = nmea::detail::static_text<frame_member_key<I>>;
 
 // The longest a frame's JSON can be: every key, each value at its longest (a number as
 // put_fixed writes it at most; a time, 26 characters, is shorter), the '}'.
 inline constexpr std::size_t frame_json_max_size = [] {
   std::size_t n = 1;
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    ((n += frame_json_key_size<I> + seawire::detail::max_fixed_chars), ...);
+    ((n += frame_json_key<I>.size() + seawire::detail::max_fixed_chars), ...);
   }
   (std::make_index_sequence<sensor_field_count>{});
   return n;

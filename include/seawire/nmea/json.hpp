@@ -345,37 +345,43 @@ struct array_sink {
   }
 };
 
-// What goes before field I's value: `,"name":`, escaped, made once at compile time.
-template <class T, std::size_t I>
-constexpr void json_member_key(auto& s) noexcept {
-  s.put(",\"");
-  json_escape(s, field_at<I>(T::nmea.fields).name);
-  s.put("\":");
-}
-template <class T, std::size_t I>
-inline constexpr std::size_t json_key_size = [] {
-  counting_sink n;
-  json_member_key<T, I>(n);
-  return n.size;
-}();
-template <class T, std::size_t I>
-inline constexpr auto json_key = [] {
-  array_sink<json_key_size<T, I>> a;
-  json_member_key<T, I>(a);
+// The text Text::to(sink) writes, made once at compile time: counted, then written into an
+// array of that size.
+template <class Text>
+inline constexpr auto static_text = [] {
+  constexpr std::size_t size = [] {
+    counting_sink n;
+    Text::to(n);
+    return n.size;
+  }();
+  array_sink<size> a;
+  Text::to(a);
   return a.text;
 }();
 
+// What goes before field I's value: `,"name":`, escaped.
+template <class T, std::size_t I>
+struct json_member_key {
+  static constexpr void to(auto& s) noexcept {
+    s.put(",\"");
+    json_escape(s, field_at<I>(T::nmea.fields).name);
+    s.put("\":");
+  }
+};
+template <class T, std::size_t I>
+inline constexpr const auto& json_key = static_text<json_member_key<T, I>>;
+
 // `{"type":"ADDR"` for a message with a fixed address.
 template <class T>
-inline constexpr auto json_head = [] {
-  constexpr std::string_view open = "{\"type\":\"";
-  std::array<char, open.size() + T::nmea.address.size() + 1> a{};
-  std::size_t n = 0;
-  for (const char c : open) a[n++] = c;
-  for (const char c : T::nmea.address) a[n++] = c;
-  a[n] = '"';
-  return a;
-}();
+struct json_fixed_head {
+  static constexpr void to(auto& s) noexcept {
+    s.put("{\"type\":\"");
+    s.put(T::nmea.address);
+    s.put('"');
+  }
+};
+template <class T>
+inline constexpr const auto& json_head = static_text<json_fixed_head<T>>;
 
 template <json_sink Sink, std::size_t N>
 constexpr void put_array(Sink& s, const std::array<char, N>& a) noexcept {
