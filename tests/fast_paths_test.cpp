@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -217,6 +218,19 @@ TEST_CASE("field_reader hands out the fields a plain split finds, with their col
     REQUIRE(r.at_end());
     REQUIRE_FALSE(r.take().present);
   }
+}
+
+TEST_CASE("magnitude: |v| of every integer type, the most negative values included") {
+  using seawire::detail::magnitude;
+  STATIC_REQUIRE(magnitude(std::numeric_limits<std::int64_t>::min()) == 0x8000000000000000ULL);
+  STATIC_REQUIRE(magnitude(std::numeric_limits<std::int64_t>::max()) == 0x7FFFFFFFFFFFFFFFULL);
+  STATIC_REQUIRE(magnitude(std::int8_t{-128}) == 128);
+  STATIC_REQUIRE(magnitude(std::int16_t{-32768}) == 32768);
+  STATIC_REQUIRE(magnitude(-1) == 1);
+  STATIC_REQUIRE(magnitude(0) == 0);
+  STATIC_REQUIRE(magnitude(std::numeric_limits<std::uint64_t>::max()) == ~0ULL);
+  for (std::int64_t v = -300; v <= 300; ++v)
+    REQUIRE(magnitude(v) == static_cast<std::uint64_t>(v < 0 ? -v : v));
 }
 
 TEST_CASE("digit_count: exact at every power of ten and either side of it") {

@@ -62,8 +62,7 @@ template <class Field>
                                                   typename Field::raw_type raw) noexcept {
   nmea::decimal d;
   d.negative = raw < 0;
-  d.mantissa = raw < 0 ? 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(raw))
-                       : static_cast<std::uint64_t>(raw);
+  d.mantissa = seawire::detail::magnitude(raw);
   d.places = static_cast<std::uint8_t>(divisor_places(field.divisor));
   return d;
 }

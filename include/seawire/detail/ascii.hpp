@@ -7,8 +7,21 @@
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
 
 namespace seawire::detail {
+
+/// |v| as a 64-bit unsigned number, exact for the most negative value too.
+template <class I>
+[[nodiscard]] constexpr std::uint64_t magnitude(I v) noexcept {
+  static_assert(std::is_integral_v<I> && sizeof(I) <= sizeof(std::uint64_t));
+  if constexpr (std::is_signed_v<I>) {
+    // Conversion to unsigned is modular: a negative v becomes 2^64 + v, and 0 minus that is -v.
+    return v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+  } else {
+    return static_cast<std::uint64_t>(v);
+  }
+}
 
 [[nodiscard]] constexpr bool is_digit(char c) noexcept { return c >= '0' && c <= '9'; }
 [[nodiscard]] constexpr bool is_upper(char c) noexcept { return c >= 'A' && c <= 'Z'; }

@@ -61,9 +61,7 @@ struct decimal {
   template <whole_number I>
   // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
   constexpr decimal(I integer) noexcept
-      : mantissa(integer < 0 ? 0 - static_cast<std::uint64_t>(integer)
-                             : static_cast<std::uint64_t>(integer)),
-        negative(integer < 0) {}
+      : mantissa(seawire::detail::magnitude(integer)), negative(integer < 0) {}
   /// A floating-point value is never taken silently: 1.5 would have to be cut to some number of
   /// places, and a speed or depth command cut to an integer is a different command. Say how many
   /// places: decimal::from_double(1.5, 1), decimal::parse("1.5"), or the literal 1.5_dec.
@@ -394,7 +392,7 @@ struct codec<I> {
     if constexpr (std::is_signed_v<I>) {
       if (v < 0) {
         w.put('-');
-        w.put_uint(0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
+        w.put_uint(seawire::detail::magnitude(v));
         return;
       }
     }

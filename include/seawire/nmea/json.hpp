@@ -217,13 +217,10 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
     s.put(v ? std::string_view("true") : std::string_view("false"));
   } else if constexpr (whole_number<T>) {
     if constexpr (std::is_signed_v<T>) {
-      if (v < 0) {
-        s.put('-');
-        detail::json_uint(s, 0 - static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
-        return;
-      }
+      seawire::detail::put_fixed(s, seawire::detail::magnitude(v), 0, v < 0);
+    } else {
+      detail::json_uint(s, static_cast<std::uint64_t>(v));
     }
-    detail::json_uint(s, static_cast<std::uint64_t>(v));
   } else if constexpr (is_integer_wrapper<T>) {
     write_json_value<Style>(s, v.value());
   } else if constexpr (is_ddmm_position<T> || is_degrees_position<T>) {

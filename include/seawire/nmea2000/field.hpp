@@ -91,8 +91,7 @@ namespace detail {
 template <resolution R>
 [[nodiscard]] constexpr nmea::decimal scaled_decimal(std::int64_t raw) noexcept {
   nmea::decimal d;
-  const std::uint64_t mag =
-      raw < 0 ? 0 - static_cast<std::uint64_t>(raw) : static_cast<std::uint64_t>(raw);
+  const std::uint64_t mag = seawire::detail::magnitude(raw);
   std::uint64_t m = mag * static_cast<std::uint64_t>(R.mantissa);
   if constexpr (R.exponent > 0) m *= seawire::detail::pow10_table[R.exponent];
   d.mantissa = m;

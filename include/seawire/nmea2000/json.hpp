@@ -32,6 +32,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea2000/field.hpp"
@@ -100,22 +101,17 @@ struct enum_of<flags<E, B>> {
 
 template <json_sink Sink>
 constexpr void json_int(Sink& s, std::int64_t v) noexcept {
-  if (v < 0) s.put('-');
-  nmea::detail::json_uint(
-      s, v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v));
+  seawire::detail::put_fixed(s, seawire::detail::magnitude(v), 0, v < 0);
 }
 
 /// Microseconds as seconds: 3 fraction digits, or 6 when the time has microseconds.
 template <json_sink Sink>
 constexpr void json_seconds(Sink& s, std::int64_t t) noexcept {
-  if (t < 0) s.put('-');
-  const std::uint64_t m = t < 0 ? 0 - static_cast<std::uint64_t>(t) : static_cast<std::uint64_t>(t);
-  nmea::detail::json_uint(s, m / 1'000'000);
-  s.put('.');
+  const std::uint64_t m = seawire::detail::magnitude(t);
   if (m % 1000 == 0) {
-    nmea::detail::json_uint(s, m % 1'000'000 / 1000, 3);
+    seawire::detail::put_fixed(s, m / 1000, 3, t < 0);
   } else {
-    nmea::detail::json_uint(s, m % 1'000'000, 6);
+    seawire::detail::put_fixed(s, m, 6, t < 0);
   }
 }
 
@@ -167,24 +163,17 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
       }
     } else if constexpr (std::is_same_v<T, date>) {
       const std::chrono::year_month_day ymd(*v.value());
-      detail::quote<Style>(s);
-      json_uint(s, static_cast<std::uint64_t>(static_cast<int>(ymd.year())), 4);
-      s.put('-');
-      json_uint(s, static_cast<unsigned>(ymd.month()), 2);
-      s.put('-');
-      json_uint(s, static_cast<unsigned>(ymd.day()), 2);
-      detail::quote<Style>(s);
+      nmea::detail::json_joined<Style == nmea::json_style::json>(
+          s,
+          {{{static_cast<std::uint64_t>(static_cast<int>(ymd.year())), 4},
+            {static_cast<unsigned>(ymd.month()), 2},
+            {static_cast<unsigned>(ymd.day()), 2}}},
+          '-');
     } else if constexpr (std::is_same_v<T, time_of_day>) {
-      const auto ticks = static_cast<std::uint64_t>(v.raw());
-      detail::quote<Style>(s);
-      json_uint(s, ticks / 36'000'000, 2);
-      s.put(':');
-      json_uint(s, ticks / 600'000 % 60, 2);
-      s.put(':');
-      json_uint(s, ticks / 10'000 % 60, 2);
-      s.put('.');
-      json_uint(s, ticks % 10'000, 4);
-      detail::quote<Style>(s);
+      const auto ticks = static_cast<std::uint64_t>(v.raw());  // 0.1 ms
+      nmea::detail::json_joined<Style == nmea::json_style::json>(
+          s, {{{ticks / 36'000'000, 2}, {ticks / 600'000 % 60, 2}, {ticks / 10'000 % 60, 2}}}, ':',
+          {ticks % 10'000, 4});
     }
   }
 }
