@@ -380,6 +380,31 @@ TEST_CASE("the fast decimal parser agrees with the general one") {
   }
 }
 
+TEST_CASE("a message's address test says what comparing the strings says") {
+  // matches() compares the known letters one by one; the rule it must keep: same length, any
+  // talker but a 'P' (proprietary) before a "--" address's letters, the rest equal.
+  prng g{29};
+  static constexpr std::string_view chars = "GPRMCNAVWZ";
+  const auto reference = [](std::string_view a, std::string_view address) {
+    if (address.starts_with("--"))
+      return a.size() == address.size() && a[0] != 'P' && a.substr(2) == address.substr(2);
+    return a == address;
+  };
+  for (int k = 0; k < 100000; ++k) {
+    const std::string a = random_text(g, chars, 7);
+    INFO(a);
+    REQUIRE(standard::rmc::nmea.matches(a) == reference(a, standard::rmc::nmea.address));
+    REQUIRE(standard::vwr::nmea.matches(a) == reference(a, standard::vwr::nmea.address));
+  }
+  CHECK(standard::rmc::nmea.matches("GPRMC"));
+  CHECK(standard::rmc::nmea.matches("GNRMC"));
+  CHECK_FALSE(standard::rmc::nmea.matches("PGRMC"));
+  CHECK_FALSE(standard::rmc::nmea.matches("GPRMCX"));
+  CHECK_FALSE(standard::rmc::nmea.matches("GPRM"));
+  CHECK_FALSE(standard::rmc::nmea.matches(""));
+  static_assert(standard::rmc::nmea.matches("IIRMC") && !standard::rmc::nmea.matches("IIRMD"));
+}
+
 TEST_CASE("a number read under a policy is read as under the policy's two flags") {
   // The codecs read numbers with the field reader's policy, which the parser consults only for
   // a sign or a space; the answer must be the one the explicit flags give.

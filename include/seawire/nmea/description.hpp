@@ -371,11 +371,15 @@ struct sentence_desc {
   field_list<Fields...> fields;
 
   [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
+    if (a.size() != address.size()) return false;
     if constexpr (any_talker) {
-      return a.size() == address.size() && a[0] != 'P' && a.substr(2) == address.substr(2);
-    } else {
-      return a == address;
+      if (a[0] == 'P') return false;
     }
+    // The length is a constant: a few byte compares, unrolled, where a string compare would be
+    // a call (decode checks the address of every sentence it is given).
+    for (std::size_t i = any_talker ? 2 : 0; i < address.size(); ++i)
+      if (a[i] != address[i]) return false;
+    return true;
   }
   [[nodiscard]] static constexpr std::size_t size() noexcept { return sizeof...(Fields); }
 

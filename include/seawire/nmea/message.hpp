@@ -249,7 +249,7 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
     return;
   }
   if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
-    (void)talker_of(msg).assign(s.address.substr(0, 2));
+    (void)talker_of(msg).assign(std::string_view(s.address.data(), 2));  // matched "--XXX"
   }
   field_reader r(s, policy);
   errc e = read_fields(

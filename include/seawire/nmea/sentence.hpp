@@ -234,7 +234,7 @@ inline bool scan_clean_simd(const char* p, std::size_t begin, std::size_t end,
   } else if (policy.require_crlf && n > 0) {
     return fail(errc::bad_line_ending, n);
   }
-  line = line.substr(0, n);
+  line = std::string_view(line.data(), n);  // n <= line.size(): no substr and its check
 
   if (n == 0) [[unlikely]]
     return fail(errc::empty_input, 0);
@@ -275,9 +275,9 @@ inline bool scan_clean_simd(const char* p, std::size_t begin, std::size_t end,
     return fail(errc::bad_address, end - 1 == 0 || end - 1 > 15 ? 1 : address_end);
   }
   const std::size_t alen = address_end - 1;
-  s.address = line.substr(1, alen);
+  s.address = std::string_view(line.data() + 1, alen);
   if (address_end < data_end) {
-    s.body = line.substr(address_end + 1, data_end - address_end - 1);
+    s.body = std::string_view(line.data() + address_end + 1, data_end - address_end - 1);
     s.field_count = static_cast<std::uint16_t>(commas);
   }
   s.computed_checksum = x;
