@@ -380,6 +380,44 @@ TEST_CASE("the fast decimal parser agrees with the general one") {
   }
 }
 
+TEST_CASE("a number read up to the comma after it is the number read to the end of its text") {
+  // The codecs let the ',' that follows a field end its digit runs (field_reader::delimited),
+  // so no digit needs a length test; the answer must be the bounded read's.
+  prng g{19};
+  static constexpr std::string_view chars = "0001234567899..-+ x";
+  for (int k = 0; k < 200000; ++k) {
+    const std::string s = random_text(g, chars, 24);
+    const std::string field = s + ",7";  // a digit after the comma: the run must stop at it
+    INFO(s);
+    for (const bool strict : {false, true}) {
+      parse_policy p;
+      p.strict_values = strict;
+      p.spaced_numbers = true;
+      decimal bounded = decimal::scaled(123, 4);
+      decimal delimited = decimal::scaled(123, 4);
+      const std::string_view text(field.data(), s.size());
+      const errc eb = nmea::detail::parse_decimal(text, p, bounded);
+      const errc ed = nmea::detail::parse_decimal(text, p, delimited, true);
+      REQUIRE(eb == ed);
+      REQUIRE(bounded == delimited);
+    }
+  }
+}
+
+TEST_CASE("field_reader::delimited: a comma follows every field but the last") {
+  parse_policy p;
+  p.checksum = checksum_policy::ignore;
+  const auto s = parse("$GPXXX,1,,22,333*00", p);
+  REQUIRE(s);
+  field_reader r(s.value, p);
+  for (const std::string_view want : {"1", "", "22", "333"}) {
+    const std::string_view got = r.take().text;
+    REQUIRE(got == want);
+    CHECK(r.delimited() == (want != "333"));
+    if (r.delimited()) CHECK(got.data()[got.size()] == ',');
+  }
+}
+
 TEST_CASE("a message's address test says what comparing the strings says") {
   // matches() compares the known letters one by one; the rule it must keep: same length, any
   // talker but a 'P' (proprietary) before a "--" address's letters, the rest equal.

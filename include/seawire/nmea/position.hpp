@@ -189,7 +189,9 @@ struct codec<nmea_coordinate<Axis>> {
     const std::size_t n = s.size();
     std::size_t i = 0;
     std::uint64_t ddmm = 0;
-    detail::read_digits(s, i, ddmm);
+    // The hemisphere field follows: the ',' before it ends the digit runs.
+    const bool delimited = r.delimited();
+    detail::read_digits(s, i, ddmm, delimited);
     const std::size_t point = i;
     if (point < 3 || point - 2 > Axis::width) [[unlikely]]
       return Axis::error;
@@ -199,7 +201,7 @@ struct codec<nmea_coordinate<Axis>> {
       if (s[i] != '.') [[unlikely]]
         return Axis::error;
       const std::size_t fraction_begin = ++i;
-      detail::read_digits(s, i, fraction);
+      detail::read_digits(s, i, fraction, delimited);
       places = i - fraction_begin;
       // 12 fraction digits of a minute is 2 micrometres: more is noise, and would overflow the
       // range arithmetic below.

@@ -428,6 +428,9 @@ class field_reader {
   }
 
   [[nodiscard]] constexpr bool at_end() const noexcept { return pos_ > body_.size(); }
+  /// Whether a ',' follows the field last taken in the body (it was not the last field), so a
+  /// reader may look one byte past the field's text and find a byte that ends any number.
+  [[nodiscard]] constexpr bool delimited() const noexcept { return pos_ <= body_.size(); }
   /// Spec number (1-based) of the field last taken.
   [[nodiscard]] constexpr std::uint16_t index() const noexcept { return index_; }
   /// Column of the field last taken (of the first field before any is taken).
