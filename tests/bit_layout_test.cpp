@@ -52,8 +52,12 @@ void check_random_fields(std::uint64_t seed) {
     std::vector<std::uint8_t> p(1 + g.below(12));
     for (auto& b : p) b = static_cast<std::uint8_t>(g.next());
     const auto total = static_cast<unsigned>(8 * p.size());
-    const auto width = static_cast<unsigned>(1 + g.below(std::min(64U, total)));
-    const auto offset = static_cast<unsigned>(g.below(total - width + 1));
+    auto width = static_cast<unsigned>(1 + g.below(std::min(64U, total)));
+    auto offset = static_cast<unsigned>(g.below(total - width + 1));
+    if (k % 2 == 1) {  // whole bytes (get_bits reads those a byte at a time): 8 to 64 bits
+      width = 8 * static_cast<unsigned>(1 + g.below(std::min<std::size_t>(8, p.size())));
+      offset = 8 * static_cast<unsigned>(g.below((total - width) / 8 + 1));
+    }
     INFO("seed " << seed << " case " << k << " offset " << offset << " width " << width);
     REQUIRE(get_bits<Order>(p, offset, width) == reference_get(p, offset, width, Order));
 
@@ -107,6 +111,8 @@ constexpr std::array<std::uint8_t, 2> sample{0b1011'0010, 0b0110'0000};
 // the least significant, the first bit lowest.
 static_assert(get_bits<bit_order::msb_first>(sample, 3, 6) == 0b100100);
 static_assert(get_bits<bit_order::lsb_first>(sample, 3, 6) == 0b010110);
+static_assert(get_bits<bit_order::msb_first>(sample, 0, 16) == 0xB260);
+static_assert(get_bits<bit_order::lsb_first>(sample, 0, 16) == 0x60B2);
 
 }  // namespace
 

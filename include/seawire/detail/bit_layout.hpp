@@ -37,6 +37,18 @@ template <bit_order Order>
 [[nodiscard]] constexpr std::uint64_t get_bits(std::span<const std::uint8_t> p, unsigned offset,
                                                unsigned width) noexcept {
   std::uint64_t v = 0;
+  if (offset % 8 == 0 && width % 8 == 0) {  // whole bytes (most fields): no masks, no shifts
+    const std::size_t at = offset / 8;
+    for (unsigned k = 0; k < width / 8; ++k) {
+      const std::uint64_t byte = p[at + k];
+      if constexpr (Order == bit_order::lsb_first) {
+        v |= byte << (8 * k);
+      } else {
+        v = (v << 8) | byte;
+      }
+    }
+    return v;
+  }
   for (unsigned i = 0; i < width;) {
     const unsigned bit = offset + i;
     const unsigned in_byte = bit % 8;
