@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string_view>
 #include <type_traits>
 
@@ -115,8 +116,13 @@ constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count)
   for (; count >= 2; count -= 2) {
     const auto pair = static_cast<std::size_t>(v % 100) * 2;
     v /= 100;
-    *--end = digit_pairs[pair + 1];
-    *--end = digit_pairs[pair];
+    end -= 2;
+    if (std::is_constant_evaluated()) {
+      end[0] = digit_pairs[pair];
+      end[1] = digit_pairs[pair + 1];
+    } else {
+      std::memcpy(end, digit_pairs + pair, 2);  // one 16-bit load and store
+    }
   }
   if (count == 1) {
     *--end = static_cast<char>('0' + v % 10);
