@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: BSL-1.0
+// The programs' buffered output (examples/tools/io.hpp): what goes in comes out byte for byte,
+// whatever the sizes of the pieces and wherever the end of the buffer falls among them.
+
+#include <catch2/catch.hpp>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+#include "../examples/tools/io.hpp"
+#include "support.hpp"
+
+namespace {
+
+std::string random_bytes(support::prng& g, std::size_t n) {
+  std::string s(n, '\0');
+  for (char& c : s) c = static_cast<char>(g.next());
+  return s;
+}
+
+std::string read_back(std::FILE* f) {
+  std::string all;
+  std::rewind(f);
+  char chunk[4096];
+  for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, f)) > 0;) all.append(chunk, n);
+  return all;
+}
+
+}  // namespace
+
+TEST_CASE("copy_short copies exactly n bytes, for every n up to 32") {
+  support::prng g{41};
+  const std::string from = random_bytes(g, 40);
+  for (std::size_t n = 0; n <= 32; ++n) {
+    INFO("n " << n);
+    std::string to(48, '.');
+    seawire::tools::copy_short(to.data() + 4, from.data() + 3, n);
+    CHECK(to.substr(0, 4) == "....");
+    CHECK(to.substr(4, n) == from.substr(3, n));
+    CHECK(to.substr(4 + n) == std::string(44 - n, '.'));
+  }
+}
+
+TEST_CASE("output writes every piece in order, across its flushes") {
+  support::prng g{43};
+  for (const std::size_t capacity : {1U, 7U, 31U, 32U, 33U, 64U, 1000U}) {
+    INFO("capacity " << capacity);
+    std::FILE* f = std::tmpfile();
+    REQUIRE(f != nullptr);
+    std::string want;
+    {
+      seawire::tools::output out(f, capacity);
+      for (int k = 0; k < 3000; ++k) {
+        if (g.below(5) == 0) {
+          const char c = static_cast<char>(g.next());
+          out.put(c);
+          want += c;
+        } else {
+          // Mostly short pieces (the inline path), some longer than the buffer.
+          const std::size_t n = g.below(4) == 0 ? g.below(2 * capacity + 80) : g.below(33);
+          const std::string piece = random_bytes(g, n);
+          out.put(std::string_view(piece));
+          want += piece;
+        }
+      }
+      out.flush();
+      CHECK_FALSE(out.failed());
+    }
+    CHECK(read_back(f) == want);
+    std::fclose(f);
+  }
+}
