@@ -18,6 +18,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "seawire/detail/inline.hpp"
+
 namespace seawire::detail {
 
 /// How a format lays the bits of a field into bytes.
@@ -34,8 +36,8 @@ enum class bit_order : std::uint8_t {
 /// The `width`-bit field at bit `offset` of `p`, as an unsigned integer (a signed field's caller
 /// extends the sign). Precondition: width <= 64 and offset + width <= 8 * p.size().
 template <bit_order Order>
-[[nodiscard]] constexpr std::uint64_t get_bits(std::span<const std::uint8_t> p, unsigned offset,
-                                               unsigned width) noexcept {
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr std::uint64_t get_bits(
+    std::span<const std::uint8_t> p, unsigned offset, unsigned width) noexcept {
   std::uint64_t v = 0;
   if (offset % 8 == 0 && width % 8 == 0) {  // whole bytes (most fields): no masks, no shifts
     const std::size_t at = offset / 8;

@@ -73,6 +73,7 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -589,7 +590,11 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
       }
     }
     const std::size_t n = std::min(frame_size - flen_, end - i);
-    for (std::size_t k = 0; k < n; ++k) fbuf_[flen_ + k] = static_cast<std::uint8_t>(s[i + k]);
+    if (std::is_constant_evaluated()) {
+      for (std::size_t k = 0; k < n; ++k) fbuf_[flen_ + k] = static_cast<std::uint8_t>(s[i + k]);
+    } else if (n != 0) {
+      std::memcpy(fbuf_.data() + flen_, s + i, n);  // the frame's body, most of it in one go
+    }
     i += n;
     flen_ += n;
     if (flen_ < frame_size) return std::nullopt;
