@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/copy.hpp"
 #include "seawire/detail/crc32.hpp"
 #include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
@@ -378,6 +379,25 @@ TEST_CASE("the fast decimal parser agrees with the general one") {
       if (ef == errc::ok) REQUIRE(fast == slow);
     }
   }
+}
+
+TEST_CASE("copy_bytes copies exactly n bytes, for every n around its word sizes") {
+  prng g{41};
+  std::string from(48, '\0');
+  for (char& c : from) c = static_cast<char>(g.next());
+  for (std::size_t n = 0; n <= 40; ++n) {
+    INFO("n " << n);
+    std::string to(52, '.');
+    seawire::detail::copy_bytes(to.data() + 4, from.data() + 3, n);
+    CHECK(to.substr(0, 4) == "....");
+    CHECK(to.substr(4, n) == from.substr(3, n));
+    CHECK(to.substr(4 + n) == std::string(48 - n, '.'));
+  }
+  static_assert([] {
+    char out[6] = {'.', '.', '.', '.', '.', '.'};
+    seawire::detail::copy_bytes(out + 1, "abcd", 3);
+    return out[0] == '.' && out[1] == 'a' && out[2] == 'b' && out[3] == 'c' && out[4] == '.';
+  }());
 }
 
 TEST_CASE("a number read up to the comma after it is the number read to the end of its text") {

@@ -26,7 +26,6 @@
 #include <cstdint>
 #include <limits>
 #include <span>
-#include <string>  // std::char_traits
 #include <string_view>
 #include <tuple>
 #include <type_traits>
@@ -34,6 +33,7 @@
 
 #include "seawire/anello/frame.hpp"
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/copy.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -285,7 +285,7 @@ struct frame_text {
   std::size_t size = 0;
   constexpr void put(char c) noexcept { out[size++] = c; }
   constexpr void put(std::string_view v) noexcept {
-    std::char_traits<char>::copy(out + size, v.data(), v.size());
+    seawire::detail::copy_bytes(out + size, v.data(), v.size());
     size += v.size();
   }
 };
