@@ -5,16 +5,19 @@
 // gives, byte for byte and error for error, at run time (where the fast paths run) and at
 // compile time (where the simple ones do).
 
+#include <algorithm>
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "seawire/anello/gpsctrl.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/copy.hpp"
 #include "seawire/detail/crc32.hpp"
@@ -401,8 +404,9 @@ TEST_CASE("copy_bytes copies exactly n bytes, for every n around its word sizes"
 }
 
 TEST_CASE("a number read up to the comma after it is the number read to the end of its text") {
-  // The codecs let the ',' that follows a field end its digit runs (field_reader::delimited),
-  // so no digit needs a length test; the answer must be the bounded read's.
+  // The codecs let the ',' that follows a field end its digit runs (field_end::comma, from
+  // field_reader::end_of_field), so no digit needs a length test; the answer must be the
+  // bounded read's.
   prng g{19};
   static constexpr std::string_view chars = "0001234567899..-+ x";
   for (int k = 0; k < 200000; ++k) {
@@ -414,17 +418,17 @@ TEST_CASE("a number read up to the comma after it is the number read to the end 
       p.strict_values = strict;
       p.spaced_numbers = true;
       decimal bounded = decimal::scaled(123, 4);
-      decimal delimited = decimal::scaled(123, 4);
+      decimal at_comma = decimal::scaled(123, 4);
       const std::string_view text(field.data(), s.size());
       const errc eb = nmea::detail::parse_decimal(text, p, bounded);
-      const errc ed = nmea::detail::parse_decimal(text, p, delimited, true);
-      REQUIRE(eb == ed);
-      REQUIRE(bounded == delimited);
+      const errc ec = nmea::detail::parse_decimal(text, p, at_comma, field_end::comma);
+      REQUIRE(eb == ec);
+      REQUIRE(bounded == at_comma);
     }
   }
 }
 
-TEST_CASE("field_reader::delimited: a comma follows every field but the last") {
+TEST_CASE("field_reader::end_of_field: a comma follows every field but the last") {
   parse_policy p;
   p.checksum = checksum_policy::ignore;
   const auto s = parse("$GPXXX,1,,22,333*00", p);
@@ -433,8 +437,41 @@ TEST_CASE("field_reader::delimited: a comma follows every field but the last") {
   for (const std::string_view want : {"1", "", "22", "333"}) {
     const std::string_view got = r.take().text;
     REQUIRE(got == want);
-    CHECK(r.delimited() == (want != "333"));
-    if (r.delimited()) CHECK(got.data()[got.size()] == ',');
+    CHECK((r.end_of_field() == field_end::comma) == (want != "333"));
+    if (r.end_of_field() == field_end::comma) CHECK(got.data()[got.size()] == ',');
+  }
+  (void)r.take();  // past the end
+  CHECK(r.end_of_field() == field_end::unknown);
+}
+
+TEST_CASE("a number or position that ends its sentence is read without a byte past it") {
+  // The last field of a line without a checksum ends where the line's storage ends: read with
+  // field_end::comma by mistake, its digit run would go on past it (the sanitizer build sees
+  // that). Each line is copied to storage of exactly its size.
+  for (const std::string_view line :
+       {"$GPXXX,4807.038", "$GPXXX,12", "$GPXXX,4807", "$GPXXX,4807.", "$GPXXX,-3.25"}) {
+    INFO(line);
+    const auto exact = std::make_unique<char[]>(line.size());
+    std::copy(line.begin(), line.end(), exact.get());
+    const std::string_view copy(exact.get(), line.size());
+    const auto s = parse(copy);
+    REQUIRE(s);
+    {
+      field_reader r(s.value, parse_policy{});
+      decimal d;
+      const errc e = codec<decimal>::read(r, d);
+      CHECK(r.end_of_field() == field_end::unknown);
+      decimal want;
+      CHECK(e == nmea::detail::parse_decimal(line.substr(7), parse_policy{}, want));
+      if (e == errc::ok) CHECK(d == want);
+    }
+    {
+      field_reader r(s.value, parse_policy{});
+      latitude lat;
+      // The digits read, the hemisphere is missing: a position error or too_few_fields, never
+      // a read past the line.
+      CHECK(codec<latitude>::read(r, lat) != errc::ok);
+    }
   }
 }
 
@@ -461,6 +498,12 @@ TEST_CASE("a message's address test says what comparing the strings says") {
   CHECK_FALSE(standard::rmc::nmea.matches("GPRM"));
   CHECK_FALSE(standard::rmc::nmea.matches(""));
   static_assert(standard::rmc::nmea.matches("IIRMC") && !standard::rmc::nmea.matches("IIRMD"));
+  // A fixed address: every letter compared, from the first.
+  constexpr auto& ctrl = anello::papgpsctrl::nmea;
+  CHECK(ctrl.matches("PAPGPSCTRL"));
+  for (const std::string_view a :
+       {"PAPGPSCTRX", "XAPGPSCTRL", "PAPGPSCTR", "PAPGPSCTRLX", "", "QAPGPSCTRL", "PAPGPSCTRl"})
+    CHECK_FALSE(ctrl.matches(a));
 }
 
 TEST_CASE("a number read under a policy is read as under the policy's two flags") {

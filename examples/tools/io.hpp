@@ -83,7 +83,8 @@ class output {
     if (size_ == buf_.size()) flush();
     buf_[size_++] = c;
   }
-  // Inline for the short pieces JSON is made of; a piece that does not fit goes out of line.
+  // Inline for the short pieces JSON is made of (at most 32 bytes, while 32 are free); the
+  // rest, and every piece near the end of the buffer, goes out of line.
   [[gnu::always_inline]] void put(std::string_view s) {
     if (s.size() <= 32 && buf_.size() - size_ >= 32) [[likely]] {
       seawire::detail::copy_bytes(buf_.data() + size_, s.data(), s.size());

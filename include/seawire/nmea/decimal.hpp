@@ -219,16 +219,16 @@ namespace detail {
 }
 
 /// Reads the run of digits at s[i] onto m (m * 10 + digit each; past 19 digits m wraps, and the
-/// caller, which sees the count, does not use it) and moves i past it. `delimited` says that the
+/// caller, which sees the count, does not use it) and moves i past it. With field_end::comma the
 /// byte just past s may be read and is no digit (the ',' after a field in its sentence): that
 /// byte then ends the run, and no digit needs a length test.
 SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t& i,
                                                  std::uint64_t& m,
-                                                 bool delimited = false) noexcept {
+                                                 field_end end = field_end::unknown) noexcept {
   const auto digit = [](char c) {
     return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
   };
-  if (delimited) {
+  if (end == field_end::comma) {
     const char* const p = s.data();
     for (unsigned d = 0; (d = digit(p[i])) < 10; ++i) m = m * 10 + d;
     return;
@@ -242,11 +242,10 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
 /// strict_values, spaces before and after the number when spaced_numbers too (receivers accept
 /// them, senders never write them). No exponent, no spaces inside. The policy is consulted
 /// only for a sign or a bad byte, so the common number does not work its rules out.
-/// `delimited`: as for read_digits (a field reader's delimited()).
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s,
-                                                                 const parse_policy& p,
-                                                                 decimal& out,
-                                                                 bool delimited = false) noexcept {
+/// `end`: as for read_digits (a field reader's end_of_field()).
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(
+    std::string_view s, const parse_policy& p, decimal& out,
+    field_end end = field_end::unknown) noexcept {
   std::size_t i = 0;
   const std::size_t n = s.size();
   bool neg = false;
@@ -260,12 +259,12 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
   // find the integer digits as written; anything longer takes the general path.
   const std::size_t int_begin = i;
   std::uint64_t m = 0;
-  read_digits(s, i, m, delimited);
+  read_digits(s, i, m, end);
   const std::size_t int_written = i - int_begin;
   std::size_t places = 0;
   if (i < n && s[i] == '.') {
     const std::size_t frac_begin = ++i;
-    read_digits(s, i, m, delimited);
+    read_digits(s, i, m, end);
     places = i - frac_begin;
   }
   // Past 19 digits the general path decides, down to which error comes first.
@@ -366,7 +365,7 @@ struct codec<decimal> {
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, decimal& v) noexcept {
     const std::string_view s = r.take().text;
-    return detail::parse_decimal(s, r.policy(), v, r.delimited());
+    return detail::parse_decimal(s, r.policy(), v, r.end_of_field());
   }
   static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
   static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
@@ -381,7 +380,7 @@ struct codec<I> {
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, I& v) noexcept {
     decimal d;
     const std::string_view s = r.take().text;
-    const errc e = detail::parse_decimal(s, r.policy(), d, r.delimited());
+    const errc e = detail::parse_decimal(s, r.policy(), d, r.end_of_field());
     if (e != errc::ok) return e;
     if (d.places != 0) [[unlikely]]
       return errc::bad_number;

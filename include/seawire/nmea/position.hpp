@@ -190,8 +190,8 @@ struct codec<nmea_coordinate<Axis>> {
     std::size_t i = 0;
     std::uint64_t ddmm = 0;
     // The hemisphere field follows: the ',' before it ends the digit runs.
-    const bool delimited = r.delimited();
-    detail::read_digits(s, i, ddmm, delimited);
+    const field_end end = r.end_of_field();
+    detail::read_digits(s, i, ddmm, end);
     const std::size_t point = i;
     if (point < 3 || point - 2 > Axis::width) [[unlikely]]
       return Axis::error;
@@ -201,7 +201,7 @@ struct codec<nmea_coordinate<Axis>> {
       if (s[i] != '.') [[unlikely]]
         return Axis::error;
       const std::size_t fraction_begin = ++i;
-      detail::read_digits(s, i, fraction, delimited);
+      detail::read_digits(s, i, fraction, end);
       places = i - fraction_begin;
       // 12 fraction digits of a minute is 2 micrometres: more is noise, and would overflow the
       // range arithmetic below.

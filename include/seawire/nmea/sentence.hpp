@@ -329,6 +329,10 @@ inline bool scan_clean_simd(const char* p, std::size_t begin, std::size_t end,
   return r;
 }
 
+/// What stands right after a field's text, for the readers that can use it: nothing known, or
+/// the ',' before the next field (a byte that may be read and is no digit).
+enum class field_end : bool { unknown, comma };
+
 /// One field as the reader hands it out. `present` is false past the last field.
 struct field_token {
   std::string_view text;
@@ -428,9 +432,12 @@ class field_reader {
   }
 
   [[nodiscard]] constexpr bool at_end() const noexcept { return pos_ > body_.size(); }
-  /// Whether a ',' follows the field last taken in the body (it was not the last field), so a
-  /// reader may look one byte past the field's text and find a byte that ends any number.
-  [[nodiscard]] constexpr bool delimited() const noexcept { return pos_ <= body_.size(); }
+  /// What follows the text of the field last taken (ask after take()): field_end::comma when it
+  /// was not the last field (a reader may then look one byte past the text, and find a byte
+  /// that ends any number); field_end::unknown for the last field and past it.
+  [[nodiscard]] constexpr field_end end_of_field() const noexcept {
+    return pos_ <= body_.size() ? field_end::comma : field_end::unknown;
+  }
   /// Spec number (1-based) of the field last taken.
   [[nodiscard]] constexpr std::uint16_t index() const noexcept { return index_; }
   /// Column of the field last taken (of the first field before any is taken).
