@@ -436,7 +436,7 @@ class field_reader {
   /// was not the last field (a reader may then look one byte past the text, and find a byte
   /// that ends any number); field_end::unknown for the last field and past it.
   [[nodiscard]] constexpr field_end end_of_field() const noexcept {
-    return pos_ <= body_.size() ? field_end::comma : field_end::unknown;
+    return at_end() ? field_end::unknown : field_end::comma;
   }
   /// Spec number (1-based) of the field last taken.
   [[nodiscard]] constexpr std::uint16_t index() const noexcept { return index_; }
