@@ -385,17 +385,9 @@ TEST_CASE("the fast decimal parser agrees with the general one") {
 }
 
 TEST_CASE("copy_bytes copies exactly n bytes, for every n around its word sizes") {
-  prng g{41};
-  std::string from(48, '\0');
-  for (char& c : from) c = static_cast<char>(g.next());
-  for (std::size_t n = 0; n <= 40; ++n) {
-    INFO("n " << n);
-    std::string to(52, '.');
-    seawire::detail::copy_bytes(to.data() + 4, from.data() + 3, n);
-    CHECK(to.substr(0, 4) == "....");
-    CHECK(to.substr(4, n) == from.substr(3, n));
-    CHECK(to.substr(4 + n) == std::string(48 - n, '.'));
-  }
+  check_copies_exactly(
+      [](char* out, const char* in, std::size_t n) { seawire::detail::copy_bytes(out, in, n); },
+      40);
   static_assert([] {
     char out[6] = {'.', '.', '.', '.', '.', '.'};
     seawire::detail::copy_bytes(out + 1, "abcd", 3);

@@ -5,6 +5,7 @@
 // number decode must report).
 
 #include <catch2/catch.hpp>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -83,6 +84,23 @@ void check_bad(const bad_case& c, Decode&& decode) {
 template <class M>
 void check_bad(const bad_case& c, const seawire::nmea::parse_policy& policy = {}) {
   check_bad(c, [&](std::string_view line) { return seawire::nmea::decode<M>(line, policy); });
+}
+
+/// copy(out, in, n) for every n in 0..most: it writes exactly in[0, n) at out, and nothing before
+/// or after it (the short-piece copies of the library and of the programs' output).
+template <class Copy>
+void check_copies_exactly(Copy&& copy, std::size_t most) {
+  prng g{41};
+  std::string from(most + 8, '\0');
+  for (char& c : from) c = static_cast<char>(g.next());
+  for (std::size_t n = 0; n <= most; ++n) {
+    INFO("n " << n);
+    std::string to(most + 12, '.');
+    copy(to.data() + 4, from.data() + 3, n);
+    CHECK(to.substr(0, 4) == "....");
+    CHECK(to.substr(4, n) == from.substr(3, n));
+    CHECK(to.substr(4 + n) == std::string(most + 8 - n, '.'));
+  }
 }
 
 }  // namespace support
