@@ -308,9 +308,9 @@ class generator {
   }
 
   // -- the Bluefin layout (Kingfisher CPNVG/CPNVR, Sandshark BFNVG/BFNVR) -------------------
-  template <seawire::detail::fixed_string A>
-  bluefin::nav_update<A> nav_update() noexcept {
-    bluefin::nav_update<A> m;
+  template <class M>  // a bluefin::nav_update
+  M nav_update() noexcept {
+    M m;
     m.timestamp = tod(v_.seconds, 3);
     m.lat = lat(v_.lat_deg, 5);
     m.lon = lon(v_.lon_deg, 5);
@@ -324,9 +324,9 @@ class generator {
     m.nav_timestamp = tod(std::fmax(0, v_.seconds - 0.007), 3);
     return m;
   }
-  template <seawire::detail::fixed_string A>
-  bluefin::velocity_update<A> velocity_update() noexcept {
-    bluefin::velocity_update<A> m;
+  template <class M>  // a bluefin::velocity_update
+  M velocity_update() noexcept {
+    M m;
     const double rad = v_.course_deg * 3.14159265358979323846 / 180.0;
     m.timestamp = tod(v_.seconds, 3);
     m.vel_east_mps = dec(v_.speed_mps * std::sin(rad), 6);
@@ -340,8 +340,8 @@ class generator {
 
   // -- Kingfisher -------------------------------------------------------------------------
 #if SEAWIRE_BENCH_HAS_KINGFISHER
-  kingfisher::cpnvg cpnvg() noexcept { return nav_update<"CPNVG">(); }
-  kingfisher::cpnvr cpnvr() noexcept { return velocity_update<"CPNVR">(); }
+  kingfisher::cpnvg cpnvg() noexcept { return nav_update<kingfisher::cpnvg>(); }
+  kingfisher::cpnvr cpnvr() noexcept { return velocity_update<kingfisher::cpnvr>(); }
   kingfisher::cprcm cprcm() noexcept {
     kingfisher::cprcm m;
     m.timestamp = tod(v_.seconds, 3);
@@ -400,13 +400,13 @@ class generator {
   sandshark::bfsht bfsht() noexcept { return {tod(v_.seconds, 3)}; }
   sandshark::bfver bfver() noexcept { return {tod(v_.seconds, 3), "1.0"}; }
   sandshark::bfnvg bfnvg() noexcept {
-    auto m = nav_update<"BFNVG">();
+    auto m = nav_update<sandshark::bfnvg>();
     m.lon.degree_digits = 3;
     m.altitude_m = dec(g_.uniform(5, 45), 1);
     m.depth_m = dec(g_.uniform(0, 20), 1);
     return m;
   }
-  sandshark::bfnvr bfnvr() noexcept { return velocity_update<"BFNVR">(); }
+  sandshark::bfnvr bfnvr() noexcept { return velocity_update<sandshark::bfnvr>(); }
   sandshark::bfmis bfmis() noexcept {
     sandshark::bfmis m;
     m.timestamp = tod(v_.seconds, 3);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 #include "seawire/kingfisher/messages.hpp"
+#include "seawire/sandshark/messages.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -535,7 +536,10 @@ TEST_CASE("malformed CPNVG") {
           {"CPNVG,164959,4261.7,N,7105.4,W," + tail, errc::minute_out_of_range, 2},
           {"CPNVG,164959,9100.0,N,7105.4,W," + tail, errc::bad_latitude, 2},
           {"CPNVG,164959,42x1.7,N,7105.4,W," + tail, errc::bad_latitude, 2},
-          {"CPNVG,164959,21.7,N,7105.4,W," + tail, errc::bad_latitude, 2},
+          {"CPNVG,164959,.7,N,7105.4,W," + tail, errc::bad_latitude, 2},
+          {"CPNVG,164959,61.7,N,7105.4,W," + tail, errc::minute_out_of_range, 2},
+          {"CPNVG,164959,4221.7,N,.4,W," + tail, errc::bad_longitude, 4},
+          {"CPNVG,164959,4221.7,N,nan,W," + tail, errc::bad_longitude, 4},
           {"CPNVG,164959,-4221.7,N,7105.4,W," + tail, errc::bad_latitude, 2},
           {"CPNVG,164959,4221.7,X,7105.4,W," + tail, errc::bad_hemisphere, 3},
           {"CPNVG,164959,4221.7,E,7105.4,W," + tail, errc::bad_hemisphere, 3},
@@ -557,6 +561,139 @@ TEST_CASE("malformed CPNVG") {
           {"CPNVG,164959,4221.7,N,7105.4,W,1,0,0,234.3,-6.7,-1.7,16495", errc::bad_time, 12},
       },
       true);
+}
+
+TEST_CASE("the vehicle's unpadded positions under one degree are minutes of zero degrees") {
+  // The vehicle prints degrees * 100 + minutes as a number: within one degree of the equator or
+  // the prime meridian there are no degree digits at all.
+  struct row {
+    std::string lat, lon;
+    double lat_deg, lon_deg;
+    unsigned lat_degree_digits, lon_degree_digits;
+  };
+  const std::vector<row> rows = {
+      {"4221.711138,N", "22.2,W", 42.0 + 21.711138 / 60, -22.2 / 60, 2, 0},
+      {"44.598,S", "7105.44878,W", -44.598 / 60, -(71.0 + 5.44878 / 60), 0, 2},
+      {"0,S", "0,W", -0.0, -0.0, 0, 0},
+      {"00.00,N", "000.00,W", 0.0, -0.0, 0, 1},
+      {"5.5,N", "59.999,E", 5.5 / 60, 59.999 / 60, 0, 0},
+      {"05.25,S", "0130.5,E", -5.25 / 60, 1.0 + 30.5 / 60, 0, 2},
+  };
+  for (const row& r : rows) {
+    const std::string body = "CPNVG,164959.034," + r.lat + "," + r.lon + ",1,0,0,234.3,-6.8,-1.7,";
+    const std::string line = sealed(body);
+    INFO(line);
+    const auto d = kf::decode_from_vehicle(line);
+    REQUIRE(d);
+    const auto& m = holds<kf::cpnvg>(d.value);
+    CHECK(m.lat.degrees() == Approx(r.lat_deg).margin(1e-12));
+    CHECK(m.lon.degrees() == Approx(r.lon_deg).margin(1e-12));
+    CHECK(std::signbit(m.lat.degrees()) == std::signbit(r.lat_deg));
+    CHECK(std::signbit(m.lon.degrees()) == std::signbit(r.lon_deg));
+    CHECK(m.lat.written_degree_digits() == r.lat_degree_digits);
+    CHECK(m.lon.written_degree_digits() == r.lon_degree_digits);
+    // Written back as it came, but for the fraction digit every DDMM.m position carries.
+    std::string want = line;
+    for (const std::string_view whole : {",0,S", ",0,W"}) {
+      const auto at = want.find(whole);
+      if (at != std::string::npos) want.insert(at + 2, ".0");
+    }
+    CHECK(nmea::encode(m).view() == resealed(want));
+    // The same message under the sending rules, and the same through the generic decoder.
+    CHECK(nmea::decode<kf::cpnvg>(line, nmea::parse_policy::strict()).ec ==
+          (r.lat.find('.') == std::string::npos ? errc::bad_latitude : errc::ok));
+    CHECK(nmea::decode<kf::cpnvg>(line));
+  }
+  SECTION("BFNVG, GPRMC and GPGGA keep the padded form: decimal-degree text is refused") {
+    CHECK(nmea::decode<seawire::sandshark::bfnvg>(
+              sealed("BFNVG,231131.55,22.2,N,07106.000000,W,0,10.0,1.0,45.0,0.0,0.0,231131.55"))
+              .ec == errc::bad_latitude);
+    const auto rmc = kf::decode_from_vehicle(
+        sealed("GPRMC,164959.00,A,37.352387,N,07105.44878,W,0.145,156.78,311214,,,A"));
+    CHECK(rmc.ec == errc::bad_latitude);
+    CHECK(rmc.field == 3);
+    const auto gga = kf::decode_from_vehicle(
+        sealed("GPGGA,164959.00,4221.71114,N,12.203,W,1,06,2.80,46.6,M,-33.2,M,,"));
+    CHECK(gga.ec == errc::bad_longitude);
+    CHECK(gga.field == 4);
+  }
+  SECTION("encode writes the unpadded form only for a message whose sender writes it") {
+    kf::cpnvg nvg = holds<kf::cpnvg>(
+        kf::decode_from_vehicle(sealed("CPNVG,164959.034,0,S,22.2,W,1,0,0,234.3,-6.8,-1.7,"))
+            .value);
+    seawire::standard::rmc rmc;
+    rmc.lat = nvg.lat;
+    rmc.lon = nvg.lon;
+    const auto r = nmea::encode(rmc);
+    CHECK(r.ec == errc::bad_latitude);
+    CHECK(r.field == 3);
+    rmc.lat = nmea::latitude::from_degrees(-0.01, 4).value;  // padded: 0000.6000
+    CHECK(nmea::encode(rmc).ec == errc::bad_longitude);
+    rmc.lon = nmea::longitude::from_degrees(-0.37, 4).value;
+    CHECK(nmea::encode(rmc));
+    // Unpadded with whole degrees is no form at all.
+    kf::cpnvg odd = nvg;
+    odd.lon.whole_degrees = 1;
+    CHECK(nmea::encode(odd).ec == errc::bad_longitude);
+    // A position from degrees is always padded, in a CP* message too.
+    nvg.lon = nmea::longitude::from_degrees(-0.37, 4).value;
+    CHECK(nmea::encode(nvg).view().find(",00022.2000,W,") != std::string_view::npos);
+  }
+}
+
+TEST_CASE("the vehicle's nan is \"not available\": the rest of the sentence is kept") {
+  SECTION("CPNVR velocities when nearly stopped, in any case and sign") {
+    for (const std::string_view nan : {"nan", "NaN", "NAN", "-nan", "-NaN", "+nan"}) {
+      const std::string n(nan);
+      const std::string line =
+          sealed("CPNVR,164959.063," + n + "," + n + ",0,0.060938,-0,-0.061132");
+      INFO(line);
+      const auto d = kf::decode_from_vehicle(line);
+      REQUIRE(d);
+      const auto& m = holds<kf::cpnvr>(d.value);
+      CHECK_FALSE(m.vel_east_mps.has_value());
+      CHECK_FALSE(m.vel_north_mps.has_value());
+      REQUIRE(m.vel_down_mps);
+      CHECK(m.vel_down_mps->is_zero());
+      REQUIRE(m.yaw_rate_dps);
+      CHECK(m.yaw_rate_dps->to_double() == -0.061132);
+      REQUIRE(m.roll_rate_dps);
+      CHECK(m.roll_rate_dps->negative);  // "-0" keeps its sign
+      // Never written: a value that is not there goes out blank.
+      CHECK(nmea::encode(m).view() == sealed("CPNVR,164959.063,,,0,0.060938,-0,-0.061132"));
+      // The sending rules refuse it, naming the field.
+      const auto strict = nmea::decode<kf::cpnvr>(line, nmea::parse_policy::strict());
+      CHECK(strict.ec == errc::bad_number);
+      CHECK(strict.field == 2);
+    }
+  }
+  SECTION("every optional number of every CP* and BF* navigation sentence") {
+    CHECK(kf::decode_from_vehicle(
+        sealed("CPNVG,164959.034,4221.711142,N,7105.44878,W,1,nan,nan,nan,nan,nan,164959.006")));
+    CHECK(kf::decode_from_vehicle(sealed("CPRCM,164959.065,nan,nan,nan,nan,164959.060")));
+    CHECK(kf::decode_from_vehicle(sealed("CPRBS,172909.322,nan,nan,nan,nan")));
+    CHECK(kf::decode_from_vehicle(sealed("CPRBS,172909.322,1,nan,15.1,15.2,nan")));
+    CHECK(kf::decode_from_vehicle(sealed("CPIMU,164958.858,nan,nan,nan,nan,nan,nan")));
+    CHECK(nmea::decode<seawire::sandshark::bfnvr>(sealed("BFNVR,081025.987,nan,0,0,0,0,NaN")));
+    const auto rcm = kf::decode_from_vehicle(sealed("CPRCM,164959.065,0,nan,-1.6,-6.6,"));
+    REQUIRE(rcm);
+    CHECK_FALSE(holds<kf::cprcm>(rcm.value).heading_deg.has_value());
+    CHECK(holds<kf::cprcm>(rcm.value).pitch_deg->to_double() == -1.6);
+  }
+  SECTION("not where a value is required, nor from senders that do not write it") {
+    // Text that merely starts like it is no nan.
+    CHECK(kf::decode_from_vehicle(sealed("CPNVR,164959.063,nanx,0,0,0,0,0")).ec ==
+          errc::bad_number);
+    CHECK(kf::decode_from_vehicle(sealed("CPNVR,164959.063,na,0,0,0,0,0")).ec == errc::bad_number);
+    // A command to the vehicle: the payload's own numbers are NMEA numbers.
+    const auto dir = kf::decode_to_vehicle("$PYDIR,nan,0*\r\n");
+    CHECK(dir.ec == errc::bad_number);
+    CHECK(dir.field == 1);
+    // A relayed GPS sentence keeps the rules of its own sender.
+    CHECK(kf::decode_from_vehicle(
+              sealed("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,nan,156.78,311214,,,A"))
+              .ec == errc::bad_number);
+  }
 }
 
 TEST_CASE("malformed CPNVR") {

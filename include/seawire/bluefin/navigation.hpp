@@ -2,7 +2,8 @@
 #pragma once
 // Navigation and velocity updates in the Bluefin SPI layout. Bluefin vehicles send them as
 // BFNVG/BFNVR; the Clearpath Kingfisher copies the layout as CPNVG/CPNVR. Declared once here,
-// instantiated by each family with its own address.
+// instantiated by each family with its own address and the number forms its vehicle writes
+// (nmea::number_forms).
 
 #include <optional>
 
@@ -16,7 +17,7 @@ namespace seawire::bluefin {
 ///
 ///   $BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,-3.4,4.5,081025.980*4E
 ///          1          2          3 4           5 6 7    8    9     10   11  12
-template <seawire::detail::fixed_string Address>
+template <seawire::detail::fixed_string Address, nmea::number_forms Numbers = nmea::number_forms{}>
 struct nav_update {
   nmea::time_of_day timestamp;  // 1  [Timestamp] when the sentence was made
   nmea::latitude lat;           // 2,3 [Lat_NMEA] [LatNS_NMEA]
@@ -41,25 +42,29 @@ struct nav_update {
 
   friend constexpr bool operator==(const nav_update&, const nav_update&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<Address>(
-      nmea::field<&nav_update::timestamp>("timestamp"),
-      nmea::field<&nav_update::lat>("latitude", nmea::precision(5)),
-      nmea::field<&nav_update::lon>("longitude", nmea::precision(5)),
-      nmea::field<&nav_update::gps>("position_quality"),
-      nmea::field<&nav_update::altitude_m>("altitude_m", nmea::precision(1)),
-      nmea::field<&nav_update::depth_m>("depth_m", nmea::precision(1)),
-      nmea::field<&nav_update::heading_deg>("heading_deg", nmea::precision(2),
-                                            nmea::in_range(0, 360)),
-      nmea::field<&nav_update::roll_deg>("roll_deg", nmea::precision(2), nmea::in_range(-180, 180)),
-      nmea::field<&nav_update::pitch_deg>("pitch_deg", nmea::precision(2), nmea::in_range(-90, 90)),
-      nmea::field<&nav_update::nav_timestamp>("nav_timestamp"));
+  static constexpr auto nmea =
+      nmea::sentence<Address>(
+          nmea::field<&nav_update::timestamp>("timestamp"),
+          nmea::field<&nav_update::lat>("latitude", nmea::precision(5)),
+          nmea::field<&nav_update::lon>("longitude", nmea::precision(5)),
+          nmea::field<&nav_update::gps>("position_quality"),
+          nmea::field<&nav_update::altitude_m>("altitude_m", nmea::precision(1)),
+          nmea::field<&nav_update::depth_m>("depth_m", nmea::precision(1)),
+          nmea::field<&nav_update::heading_deg>("heading_deg", nmea::precision(2),
+                                                nmea::in_range(0, 360)),
+          nmea::field<&nav_update::roll_deg>("roll_deg", nmea::precision(2),
+                                             nmea::in_range(-180, 180)),
+          nmea::field<&nav_update::pitch_deg>("pitch_deg", nmea::precision(2),
+                                              nmea::in_range(-90, 90)),
+          nmea::field<&nav_update::nav_timestamp>("nav_timestamp"))
+          .template sender_writes<Numbers>();
 };
 
 /// Velocity and rate update.
 ///
 ///   $CPNVR,164959.063,0.02941,-0.068552,0,0.060938,0,-0.061132*59
 ///          1          2       3         4 5        6 7
-template <seawire::detail::fixed_string Address>
+template <seawire::detail::fixed_string Address, nmea::number_forms Numbers = nmea::number_forms{}>
 struct velocity_update {
   nmea::time_of_day timestamp;                  // 1 [Timestamp]
   std::optional<nmea::decimal> vel_east_mps;    // 2 [Vel_East] m/s, negative = westward
@@ -72,14 +77,16 @@ struct velocity_update {
   friend constexpr bool operator==(const velocity_update&,
                                    const velocity_update&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<Address>(
-      nmea::field<&velocity_update::timestamp>("timestamp"),
-      nmea::field<&velocity_update::vel_east_mps>("vel_east_mps", nmea::precision(3)),
-      nmea::field<&velocity_update::vel_north_mps>("vel_north_mps", nmea::precision(3)),
-      nmea::field<&velocity_update::vel_down_mps>("vel_down_mps", nmea::precision(3)),
-      nmea::field<&velocity_update::pitch_rate_dps>("pitch_rate_dps", nmea::precision(3)),
-      nmea::field<&velocity_update::roll_rate_dps>("roll_rate_dps", nmea::precision(3)),
-      nmea::field<&velocity_update::yaw_rate_dps>("yaw_rate_dps", nmea::precision(3)));
+  static constexpr auto nmea =
+      nmea::sentence<Address>(
+          nmea::field<&velocity_update::timestamp>("timestamp"),
+          nmea::field<&velocity_update::vel_east_mps>("vel_east_mps", nmea::precision(3)),
+          nmea::field<&velocity_update::vel_north_mps>("vel_north_mps", nmea::precision(3)),
+          nmea::field<&velocity_update::vel_down_mps>("vel_down_mps", nmea::precision(3)),
+          nmea::field<&velocity_update::pitch_rate_dps>("pitch_rate_dps", nmea::precision(3)),
+          nmea::field<&velocity_update::roll_rate_dps>("roll_rate_dps", nmea::precision(3)),
+          nmea::field<&velocity_update::yaw_rate_dps>("yaw_rate_dps", nmea::precision(3)))
+          .template sender_writes<Numbers>();
 };
 
 }  // namespace seawire::bluefin

@@ -45,6 +45,14 @@ namespace seawire::kingfisher {
 // ---------------------------------------------------------------------------------------------
 // from the vehicle
 
+/// How the Clearpath vehicle prints its numbers (a C float format, not NMEA 0183): positions as
+/// degrees * 100 + minutes without padding, so within one degree of the equator or the prime
+/// meridian "22.2,W" (0 deg 22.2 min W) and at 0,0 "0,S,0,W"; and "nan" for a value it does not
+/// have (velocities when nearly stopped), read as not available with the rest of the sentence
+/// kept. Every CP* sentence declares them; the relayed GPRMC/GPGGA do not.
+inline constexpr nmea::number_forms vehicle_numbers{.unpadded_positions = true,
+                                                    .nan_as_blank = true};
+
 /// Navigation update. Real vehicles write unpadded longitude degrees ("7105.44878") and 0, not
 /// blank, for altitude and depth; both are kept as sent. `effective_nav_timestamp()` applies
 /// the spec's "blank field 12 means field 1". (The spec's example is a BFNVG line; under CPNVG
@@ -52,13 +60,13 @@ namespace seawire::kingfisher {
 ///
 ///   $CPNVG,081025.987,4221.81092,N,7106.84603,W,1,0,0,203.1,-3.4,4.5,081025.980*68
 ///          1          2          3 4          5 6 7 8 9     10   11  12
-using cpnvg = bluefin::nav_update<"CPNVG">;
+using cpnvg = bluefin::nav_update<"CPNVG", vehicle_numbers>;
 
 /// Velocity and rate update (m/s east/north/down, deg/s pitch/roll/yaw).
 ///
 ///   $CPNVR,164959.063,0.02941,-0.068552,0,0.060938,0,-0.061132*59
 ///          1          2       3         4 5        6 7
-using cpnvr = bluefin::velocity_update<"CPNVR">;
+using cpnvr = bluefin::velocity_update<"CPNVR", vehicle_numbers>;
 
 /// Raw compass reading, repackaged by the vehicle. The real vehicle reports compass id 0 (the
 /// spec numbers compasses from 1). Any field after the timestamp may be blank, "no data" (spec
@@ -84,12 +92,16 @@ struct cprcm {
 
   friend constexpr bool operator==(const cprcm&, const cprcm&) noexcept = default;
 
-  static constexpr auto nmea = nmea::sentence<"CPRCM">(
-      nmea::field<&cprcm::timestamp>("timestamp"), nmea::field<&cprcm::compass_id>("compass_id"),
-      nmea::field<&cprcm::heading_deg>("heading_deg", nmea::precision(2), nmea::in_range(0, 360)),
-      nmea::field<&cprcm::pitch_deg>("pitch_deg", nmea::precision(2), nmea::in_range(-90, 90)),
-      nmea::field<&cprcm::roll_deg>("roll_deg", nmea::precision(2), nmea::in_range(-180, 180)),
-      nmea::field<&cprcm::nav_timestamp>("nav_timestamp"));
+  static constexpr auto nmea =
+      nmea::sentence<"CPRCM">(
+          nmea::field<&cprcm::timestamp>("timestamp"),
+          nmea::field<&cprcm::compass_id>("compass_id"),
+          nmea::field<&cprcm::heading_deg>("heading_deg", nmea::precision(2),
+                                           nmea::in_range(0, 360)),
+          nmea::field<&cprcm::pitch_deg>("pitch_deg", nmea::precision(2), nmea::in_range(-90, 90)),
+          nmea::field<&cprcm::roll_deg>("roll_deg", nmea::precision(2), nmea::in_range(-180, 180)),
+          nmea::field<&cprcm::nav_timestamp>("nav_timestamp"))
+          .sender_writes<vehicle_numbers>();
 };
 
 /// Battery bank voltages, one sentence per bank. The spec has the battery id as field 2 (six
@@ -125,7 +137,8 @@ struct cprbs {
           nmea::field<&cprbs::min_cell_voltage_v>("min_cell_voltage_v", nmea::precision(2)),
           nmea::field<&cprbs::max_cell_voltage_v>("max_cell_voltage_v", nmea::precision(2)),
           nmea::field<&cprbs::temperature_c>("temperature_c", nmea::precision(1)))
-          .wire_fields_in<&cprbs::wire_fields>();
+          .wire_fields_in<&cprbs::wire_fields>()
+          .sender_writes<vehicle_numbers>();
 };
 
 /// Raw IMU reading, repackaged by the vehicle. Axes follow the sea-vehicle convention (x bow,
@@ -167,7 +180,8 @@ struct cpimu {
           nmea::field<&cpimu::accel_y_mps2>("accel_y_mps2", nmea::precision(3)),
           nmea::field<&cpimu::accel_z_mps2>("accel_z_mps2", nmea::precision(3)),
           nmea::field<&cpimu::nav_timestamp>("nav_timestamp", nmea::may_be_absent))
-          .wire_fields_in<&cpimu::wire_fields>();
+          .wire_fields_in<&cpimu::wire_fields>()
+          .sender_writes<vehicle_numbers>();
 };
 
 /// Lights state. Not in the spec; real vehicles send it (PYCLT switches the lights).

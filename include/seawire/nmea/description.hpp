@@ -312,26 +312,51 @@ template <std::size_t I, class T>
   return slot.value;
 }
 
+/// Forms of numbers that a message's sender writes although NMEA 0183 has no such form, as a
+/// sender does that prints its values with a floating-point format (the Clearpath vehicle's
+/// "%f"). A message declares those its sender writes (sentence_desc::sender_writes); decode then
+/// reads them as the sender means them, for that message only, so a receiver's GGA keeps
+/// refusing what would be a different, wrong form there. Encode never makes them up.
+struct number_forms {
+  /// A DDMM.m position printed as the number degrees * 100 + minutes, unpadded: under one
+  /// degree it has at most two digits before the point, all of them minutes ("22.2,W" is
+  /// 0 deg 22.2 min W, "44.598,S" 0 deg 44.598 min S, "0,S" and "00.00,N" zero). Decoded as
+  /// zero degrees and written back as it came (latitude::degree_digits 0).
+  bool unpadded_positions = false;
+  /// "nan", in any case and with or without a sign (what printf writes for a value the sender
+  /// does not have), in an optional number field: not available (nullopt), and the rest of the
+  /// sentence is kept. Refused where the policy holds input to the sending rules
+  /// (strict_values), since seawire never writes it.
+  bool nan_as_blank = false;
+
+  friend constexpr bool operator==(const number_forms&, const number_forms&) noexcept = default;
+};
+
 /// What a sentence declares besides its fields (see sentence_desc): the member a "--" address's
-/// talker goes to, the member that keeps a decoded sentence's field count, the field counts of
-/// its standard forms, and a larger encode buffer. nullptr / 0 / no counts: not declared.
-template <auto Talker, auto WireFields, std::size_t BufferSize, std::uint8_t... Counts>
+/// talker goes to, the member that keeps a decoded sentence's field count, a larger encode
+/// buffer, the number forms its sender writes, and the field counts of its standard forms.
+/// nullptr / 0 / {} / no counts: not declared.
+template <auto Talker, auto WireFields, std::size_t BufferSize, number_forms Numbers,
+          std::uint8_t... Counts>
 struct sentence_forms {
   static constexpr auto talker = Talker;
   static constexpr auto wire_fields = WireFields;
   static constexpr std::size_t buffer_size = BufferSize;
+  static constexpr number_forms numbers = Numbers;
   static constexpr std::array<std::uint8_t, sizeof...(Counts)> field_counts{Counts...};
 
   template <auto M>
-  using with_talker = sentence_forms<M, WireFields, BufferSize, Counts...>;
+  using with_talker = sentence_forms<M, WireFields, BufferSize, Numbers, Counts...>;
   template <auto M>
-  using with_wire_fields = sentence_forms<Talker, M, BufferSize, Counts...>;
+  using with_wire_fields = sentence_forms<Talker, M, BufferSize, Numbers, Counts...>;
   template <std::size_t N>
-  using with_buffer_size = sentence_forms<Talker, WireFields, N, Counts...>;
+  using with_buffer_size = sentence_forms<Talker, WireFields, N, Numbers, Counts...>;
+  template <number_forms F>
+  using with_numbers = sentence_forms<Talker, WireFields, BufferSize, F, Counts...>;
   template <std::uint8_t... C>
-  using with_field_counts = sentence_forms<Talker, WireFields, BufferSize, C...>;
+  using with_field_counts = sentence_forms<Talker, WireFields, BufferSize, Numbers, C...>;
 };
-using no_forms = sentence_forms<nullptr, nullptr, 0>;
+using no_forms = sentence_forms<nullptr, nullptr, 0, number_forms{}>;
 
 namespace detail {
 template <std::uint8_t... C>
@@ -350,7 +375,7 @@ using member_type_of = typename member_pointer_traits<decltype(M)>::member_type;
 ///
 ///   static constexpr auto nmea = nmea::sentence<"--VBW">(nmea::field<...>(...), ...)
 ///                                    .talker_in<&vbw::talker>()
-///                                    .field_counts<6, 10>()
+///                                    .standard_forms<6, 10>()
 ///                                    .wire_fields_in<&vbw::wire_fields>();
 template <seawire::detail::fixed_string Address, class Forms, class... Fields>
 struct sentence_desc {
@@ -368,6 +393,8 @@ struct sentence_desc {
   static constexpr auto field_counts = Forms::field_counts;
   /// The smallest buffer encode() gives the message (buffer_size); 0: what its fields need.
   static constexpr std::size_t buffer_size = Forms::buffer_size;
+  /// The number forms the message's sender writes beyond NMEA 0183 (sender_writes).
+  static constexpr number_forms numbers = Forms::numbers;
   field_list<Fields...> fields;
 
   [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
@@ -418,6 +445,13 @@ struct sentence_desc {
     static_assert(detail::increasing<Counts...>(), "standard_forms: the counts must increase");
     return sentence_desc<Address, typename Forms::template with_field_counts<Counts...>, Fields...>{
         fields};
+  }
+
+  /// The message's sender writes these number forms (number_forms): `.sender_writes<{.nan_as_blank
+  /// = true}>()`. Decode reads them for this message only.
+  template <number_forms F>
+  [[nodiscard]] consteval auto sender_writes() const noexcept {
+    return sentence_desc<Address, typename Forms::template with_numbers<F>, Fields...>{fields};
   }
 
   /// encode() gives the message a buffer of at least N bytes (it gives 256, or what the

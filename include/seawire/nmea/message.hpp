@@ -88,12 +88,31 @@ constexpr void clear_optional(O& o) noexcept {
   }
 }
 
+/// Whether `s` is "nan" in any case, with or without a sign: what a float formatter prints for a
+/// value it does not have.
+[[nodiscard]] constexpr bool is_nan_text(std::string_view s) noexcept {
+  if (!s.empty() && (s[0] == '-' || s[0] == '+')) s.remove_prefix(1);
+  return s.size() == 3 && (s[0] | 0x20) == 'n' && (s[1] | 0x20) == 'a' && (s[2] | 0x20) == 'n';
+}
+
+/// codec<V>::read, or the read of the number forms T's sender writes (number_forms).
+template <class T, class V>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_value(field_reader& r, V& v) noexcept {
+  if constexpr (is_ddmm_position<V> &&
+                std::remove_cvref_t<decltype(T::nmea)>::numbers.unpadded_positions) {
+    return codec<V>::read_unpadded(r, v);
+  } else {
+    return codec<V>::read(r, v);
+  }
+}
+
 template <class F, class T>
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_field(const F& f, field_reader& r,
                                                               T& msg) noexcept {
   using V = typename F::value_type;
   auto& m = msg.*F::member;
   const field_options& o = f.opts;
+  constexpr number_forms numbers = std::remove_cvref_t<decltype(T::nmea)>::numbers;
   if constexpr (F::is_optional) {
     if (o.only_with_field_count != 0 && r.field_count() < o.only_with_field_count) {
       clear_optional(m);
@@ -115,6 +134,10 @@ template <class F, class T>
     if constexpr (requires(const field_reader& probe) { codec<V>::nothing_span(probe); }) {
       if (t.present) nothing = codec<V>::nothing_span(r);
     }
+    if constexpr (numbers.nan_as_blank && (std::is_same_v<V, decimal> || is_integer_field<V>)) {
+      // The sender's "nan": no value, as a blank is. Not under the sending rules.
+      if (t.present && is_nan_text(t.text) && !r.policy().strict_values) nothing = codec<V>::width;
+    }
     if (nothing != 0) {
       // Blank where it could have been left out: the form to write back is the sentence's
       // (unless a trailing value further on needs it anyway, which resets it below).
@@ -132,7 +155,7 @@ template <class F, class T>
     }
     // Read in place: a value built on the side and copied in would be copied through the
     // stack in wide loads that wait on the narrow stores that just wrote it.
-    errc e = codec<V>::read(r, m.emplace());
+    errc e = read_value<T>(r, m.emplace());
     if (e == errc::ok) e = check_options(*m, o);
     if (e == errc::ok) e = read_unit(r, o, true);
     if (e != errc::ok) clear_optional(m);
@@ -147,7 +170,7 @@ template <class F, class T>
       (void)r.take();
       return errc::missing_field;
     }
-    errc e = codec<V>::read(r, m);
+    errc e = read_value<T>(r, m);
     if (e == errc::ok) e = check_options(m, o);
     if (e == errc::ok) e = read_unit(r, o, true);
     return e;
@@ -338,6 +361,12 @@ template <class F, class T>
   if (has) {
     errc e = codec<V>::check(*v);
     if (e == errc::ok) e = check_options(*v, o);
+    if constexpr (is_ddmm_position<V> &&
+                  !std::remove_cvref_t<decltype(T::nmea)>::numbers.unpadded_positions) {
+      // Receivers of this message read "22.2" as 22 degrees (or refuse it): only a message whose
+      // sender writes the unpadded form may carry it.
+      if (e == errc::ok && v->unpadded) e = V::axis_type::error;
+    }
     if (e != errc::ok) return e;
   } else if (codec<V>::allows_blank &&
              !requires(const field_reader& probe) { codec<V>::nothing_span(probe); }) {

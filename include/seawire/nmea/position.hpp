@@ -38,10 +38,17 @@ using lon_axis = axis<'E', 'W', 180, 3, errc::bad_longitude>;
 /// ("7105.44878") are read correctly and written back as they came (`degree_digits`).
 template <class Axis>
 struct nmea_coordinate {
+  using axis_type = Axis;
   std::uint16_t whole_degrees = 0;
   decimal minutes;  ///< 0 <= minutes < 60, never negative
   hemisphere hemi = static_cast<hemisphere>(Axis::positive);
   std::uint8_t degree_digits = Axis::width;  ///< digits the degrees were written with
+  /// The unpadded form of a sender that prints degrees * 100 + minutes as a number, under one
+  /// degree: no degree digits, the minutes with the integer digits they had (minutes.int_width 1
+  /// or 2: "5.5", "22.2", "05.5"). Set by decode in a message whose sender writes it
+  /// (number_forms::unpadded_positions), where encode writes it back; encode refuses it in any
+  /// other message, and with whole degrees.
+  bool unpadded = false;
 
   constexpr nmea_coordinate() noexcept = default;
   /// `latitude{42, 21.71114_dec, hemisphere::north}`: the parts as written.
@@ -97,10 +104,22 @@ struct nmea_coordinate {
     return r;
   }
 
-  /// Degree digits of the written form: degree_digits, or the natural count when that is more.
+  /// Degree digits of the written form: 0 when unpadded, else degree_digits, or the natural
+  /// count when that is more.
   [[nodiscard]] constexpr unsigned written_degree_digits() const noexcept {
+    if (unpadded) return 0;
     const unsigned natural = seawire::detail::digit_count(whole_degrees);
     return natural > degree_digits ? natural : degree_digits;
+  }
+
+  /// Integer digits of the written minutes: two, or when unpadded the minutes' int_width (1 or
+  /// 2), or their natural count when that is more.
+  [[nodiscard]] constexpr unsigned written_minute_digits() const noexcept {
+    if (!unpadded) return 2;
+    const std::uint64_t whole =
+        minutes.places <= 19 ? minutes.mantissa / seawire::detail::pow10_table[minutes.places] : 0;
+    const unsigned natural = whole >= 10 ? 2 : 1;
+    return minutes.int_width > natural ? 2 : natural;
   }
 
   /// Minutes as written: at least one fraction digit ("21" is written "21.0").
@@ -113,14 +132,14 @@ struct nmea_coordinate {
     return m;
   }
 
-  /// The same written form. The minutes are always written with two integer digits, so their
-  /// int_width is no part of it.
+  /// The same written form. The minutes' int_width counts only where it is written (unpadded).
   friend constexpr bool operator==(const nmea_coordinate& a, const nmea_coordinate& b) noexcept {
     const decimal am = a.written_minutes();
     const decimal bm = b.written_minutes();
     return a.whole_degrees == b.whole_degrees && a.hemi == b.hemi && am.mantissa == bm.mantissa &&
            am.places == bm.places && am.negative == bm.negative &&
-           a.written_degree_digits() == b.written_degree_digits();
+           a.written_degree_digits() == b.written_degree_digits() &&
+           a.written_minute_digits() == b.written_minute_digits();
   }
 };
 using latitude = nmea_coordinate<detail::lat_axis>;
@@ -183,6 +202,19 @@ struct codec<nmea_coordinate<Axis>> {
   static constexpr bool allows_blank = false;
 
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, value_type& v) noexcept {
+    return read_form<false>(r, v);
+  }
+  /// read(), and also the unpadded form of a sender that prints degrees * 100 + minutes as a
+  /// number (number_forms::unpadded_positions): one or two digits before the point are minutes
+  /// of zero degrees ("22.2" is 0 deg 22.2 min), kept as written (degree_digits 0, the minutes'
+  /// int_width the digits they had).
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read_unpadded(field_reader& r,
+                                                            value_type& v) noexcept {
+    return read_form<true>(r, v);
+  }
+
+  template <bool Unpadded>
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read_form(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;
     // One pass. The digits before the point are DDMM: one to Axis::width degree digits and
     // exactly two minute digits. Those after it are the fraction of the minute.
@@ -193,7 +225,9 @@ struct codec<nmea_coordinate<Axis>> {
     const field_end end = r.end_of_field();
     detail::read_digits(s, i, ddmm, end);
     const std::size_t point = i;
-    if (point < 3 || point - 2 > Axis::width) [[unlikely]]
+    // Unpadded, one or two digits are the minutes of zero degrees; none is no number.
+    const bool minutes_only = Unpadded && point >= 1 && point <= 2;
+    if (point < 3 ? !minutes_only : point - 2 > Axis::width) [[unlikely]]
       return Axis::error;
     std::uint64_t fraction = 0;
     std::size_t places = 0;
@@ -218,14 +252,20 @@ struct codec<nmea_coordinate<Axis>> {
     const std::uint64_t whole_minutes = ddmm % 100;
     if (whole_minutes >= 60) [[unlikely]]
       return errc::minute_out_of_range;
-    decimal minutes;  // int_width stays 0: minutes are always written with two digits
+    decimal minutes;  // int_width 0: written with two digits, unless unpadded (below)
     minutes.mantissa = whole_minutes * seawire::detail::pow10_table[places] + fraction;
     minutes.places = static_cast<std::uint8_t>(places);
     if (deg > Axis::max_degrees || (deg == Axis::max_degrees && minutes.mantissa != 0))
       return Axis::error;
     v.whole_degrees = static_cast<std::uint16_t>(deg);
+    if (minutes_only) {
+      minutes.int_width = static_cast<std::uint8_t>(point);
+      v.degree_digits = 0;
+    } else {
+      v.degree_digits = static_cast<std::uint8_t>(point - 2);
+    }
+    v.unpadded = minutes_only;
     v.minutes = minutes;
-    v.degree_digits = static_cast<std::uint8_t>(point - 2);
     return read_hemisphere<Axis>(r, v.hemi);
   }
   static constexpr errc check(const value_type& v) noexcept {
@@ -234,14 +274,18 @@ struct codec<nmea_coordinate<Axis>> {
       return errc::minute_out_of_range;
     if (v.whole_degrees > Axis::max_degrees ||
         (v.whole_degrees == Axis::max_degrees && v.minutes.mantissa != 0) ||
-        v.degree_digits > Axis::width)
+        v.degree_digits > Axis::width || (v.unpadded && v.whole_degrees != 0))
       return Axis::error;
     return check_hemisphere<Axis>(v.hemi);
   }
   static constexpr void write(writer& w, const value_type& v) noexcept {
-    w.put_uint(v.whole_degrees, v.degree_digits);
     const decimal m = v.written_minutes();
-    w.put_fixed(m.mantissa, m.places, 2);
+    if (v.unpadded) {
+      w.put_fixed(m.mantissa, m.places, v.written_minute_digits());
+    } else {
+      w.put_uint(v.whole_degrees, v.degree_digits);
+      w.put_fixed(m.mantissa, m.places, 2);
+    }
     w.next_field();
     w.put(static_cast<char>(v.hemi));
   }

@@ -59,11 +59,16 @@ struct bfver {
 // ---------------------------------------------------------------------------------------------
 // from the vehicle: status (SPI 6), sent only after BPLOG asks for them
 
+/// Vehicles print their navigation numbers with a C float format, which writes "nan" for a value
+/// the filter does not have: read as not available, with the rest of the sentence kept.
+/// Positions keep NMEA's padded DDMM form (the SPI's own examples are padded).
+inline constexpr nmea::number_forms vehicle_numbers{.nan_as_blank = true};
+
 /// BFNVG: navigation update (the layout Kingfisher's CPNVG copies; the SPI's format line is
 /// garbled, the example line is right).
-using bfnvg = bluefin::nav_update<"BFNVG">;
+using bfnvg = bluefin::nav_update<"BFNVG", vehicle_numbers>;
 /// BFNVR: velocity and rate update.
-using bfnvr = bluefin::velocity_update<"BFNVR">;
+using bfnvr = bluefin::velocity_update<"BFNVR", vehicle_numbers>;
 
 /// Mission states the spec names for BFMIS field 3; the list is open ("include, but are not
 /// limited to"), so the wire keeps the text and this is only an interpretation of it.
