@@ -74,7 +74,10 @@ bool is_can_log_line(std::string_view line) {
 struct options {
   format fmt = format::json;
   input in = input::automatic;
-  nmea::parse_policy policy;
+  // Sentences are read by the policy of the role that receives them (tools::receiving_policy);
+  // these options change it for every role.
+  bool strict = false;                            // the rules seawire sends by (CR LF too)
+  std::optional<nmea::checksum_policy> checksum;  // this checksum rule
   bool stats = false;
   bool line_buffered = false;
   bool quiet = false;
@@ -214,10 +217,7 @@ class progress {
 
 class decoder {
  public:
-  decoder(const options& o, progress& shown)
-      : opt_(o), policy_(o.policy), out_(stdout), progress_(shown), in_(o.in) {
-    // The reader has taken the line ending off: it is checked here, from what the reader saw.
-    policy_.require_crlf = false;
+  decoder(const options& o, progress& shown) : opt_(o), out_(stdout), progress_(shown), in_(o.in) {
     // What the reader drops comes as items of its own, in order with the messages.
     reader_.report_drops(true);
     // The one table on stdout has its header even when no message of its type comes.
@@ -279,7 +279,7 @@ class decoder {
   // The input went quiet: a sentence ended by a CR that may yet be followed by LF is decoded
   // now rather than when the next byte comes. Not when CR LF is required: there the LF decides.
   void quiet() {
-    if (opt_.policy.require_crlf) return;
+    if (opt_.strict) return;
     if (const std::optional<anello::stream_item> item = reader_.flush()) handle(*item);
   }
 
@@ -560,20 +560,47 @@ class decoder {
   // ---- one sentence ----
 
   void sentence(const nmea::framed_line& l) {
-    if (opt_.policy.require_crlf && l.ending != nmea::line_ending::crlf) {
+    if (opt_.strict && l.ending != nmea::line_ending::crlf) {
       reject(l.line, errc::bad_line_ending, 0,
              std::string(message(errc::bad_line_ending)) + ": the line does not end in CR LF",
              l.text);
       return;
     }
-    const result<nmea::sentence_view> s = nmea::parse(l.text, policy_);
+    const nmea::parse_policy& policy = policy_for(l.text);
+    const result<nmea::sentence_view> s = nmea::parse(l.text, policy);
     if (!s) {
-      parse_error(l, s);
+      parse_error(l, s, policy);
       return;
     }
     const result<bool> r =
-        all_messages::visit(s.value, policy_, [&](const auto& msg) { emit(l, s.value, msg); });
-    if (!r) decode_error(l, r);
+        all_messages::visit(s.value, policy, [&](const auto& msg) { emit(l, s.value, msg); });
+    if (!r) decode_error(l, r, policy);
+  }
+
+  // The policy of the role that receives the sentence's address (tools::receiving_policy), or
+  // the sending rules with --strict, with --checksum's rule. The last address's is kept: logs
+  // repeat a few addresses.
+  const nmea::parse_policy& policy_for(std::string_view text) {
+    std::string_view address = text.substr(1);
+    address = address.substr(0, address.find_first_of(",*"));
+    if (address.size() == policy_address_size_ &&
+        address == std::string_view(policy_address_.data(), policy_address_size_))
+      return policy_;
+    policy_ = opt_.strict ? nmea::parse_policy::strict() : tools::receiving_policy(address);
+    if (opt_.checksum) policy_.checksum = *opt_.checksum;
+    // A checksum that is not checked has no case to check either (--strict asks for uppercase
+    // hex only of a checksum it verifies). What is after '*' must still be two hex digits: the
+    // library reads it as the sentence's end, and anything else there is no sentence.
+    if (policy_.checksum == nmea::checksum_policy::ignore) policy_.lowercase_hex = true;
+    // The reader has taken the line ending off: it is checked from what the reader saw.
+    policy_.require_crlf = false;
+    if (address.size() <= policy_address_.size()) {
+      std::copy(address.begin(), address.end(), policy_address_.begin());
+      policy_address_size_ = address.size();
+    } else {
+      policy_address_size_ = policy_address_.size() + 1;  // no address matches
+    }
+    return policy_;
   }
 
   // The JSON "type" of a message: its address, or talker + type for talker-agnostic ones.
@@ -712,14 +739,16 @@ class decoder {
 
   // ---- errors ----
 
-  void parse_error(const nmea::framed_line& l, const result<nmea::sentence_view>& s) {
+  void parse_error(const nmea::framed_line& l, const result<nmea::sentence_view>& s,
+                   const nmea::parse_policy& policy) {
     char why[512];
-    reject(l.line, s.ec, 0, nmea::describe<all_messages>(why, s, l.text, policy_), l.text);
+    reject(l.line, s.ec, 0, nmea::describe<all_messages>(why, s, l.text, policy), l.text);
   }
 
-  void decode_error(const nmea::framed_line& l, const result<bool>& r) {
+  void decode_error(const nmea::framed_line& l, const result<bool>& r,
+                    const nmea::parse_policy& policy) {
     char why[512];
-    reject(l.line, r.ec, r.field, nmea::describe<all_messages>(why, r, l.text, policy_), l.text);
+    reject(l.line, r.ec, r.field, nmea::describe<all_messages>(why, r, l.text, policy), l.text);
   }
 
   void reject(std::uint64_t line, errc e, std::uint16_t field, std::string_view detail,
@@ -795,7 +824,9 @@ class decoder {
   }
 
   const options& opt_;
-  nmea::parse_policy policy_;  // opt_.policy, but for the line ending
+  nmea::parse_policy policy_;  // policy_for's, for the address below
+  std::array<char, 16> policy_address_{};
+  std::size_t policy_address_size_ = policy_address_.size() + 1;  // none yet
   tools::output out_;
   progress& progress_;
   anello::stream_reader<1024> reader_;
@@ -879,7 +910,7 @@ int main(int argc, char** argv) {
       "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error.",
       "seawire-decode"};
   std::string fmt = "json";
-  std::string checksum = "verify";
+  std::string checksum;
   bool strict = false;
   options o;
   app.add_option("-f,--format", fmt,
@@ -914,9 +945,13 @@ int main(int argc, char** argv) {
                "no progress line (shown on stderr when it is a terminal and stdin a file)");
   CLI::Option* checksum_opt =
       app.add_option("-c,--checksum", checksum,
-                     "required: a sentence without *hh is rejected; verify: checked when present "
-                     "(default); ignore: not checked, in upper or lower case (e.g. --checksum "
-                     "required)")
+                     "by default each sentence is read by the rules of the role that receives "
+                     "it: a checksum is required of what a vehicle sends (CP*, BF*) and of "
+                     "RobotX and ANELLO inputs, checked when present on commands to a vehicle "
+                     "(PY*, where a bare '*' means none, and BP*) and on standard sentences. This "
+                     "option sets one rule for all: required: a sentence without *hh is "
+                     "rejected; verify: checked when present; ignore: not checked, in upper or "
+                     "lower case (e.g. --checksum required)")
           ->check(CLI::IsMember({"required", "verify", "ignore"}));
   app.add_flag(
       "--strict", strict,
@@ -983,18 +1018,11 @@ int main(int argc, char** argv) {
                  "(e.g. --type CPNVG), or --output-dir DIR for a table per type\n");
     return 2;
   }
-  if (strict) o.policy = nmea::parse_policy::strict();
-  // Numbers with spaces around them (" -3.4"): Sandshark's SPI allows them, and a liberal reader
-  // of every family at once takes them; --strict does not.
-  o.policy.spaced_numbers = !strict;
-  if (!strict || checksum_opt->count() > 0) {
-    o.policy.checksum = checksum == "required" ? nmea::checksum_policy::required
-                        : checksum == "ignore" ? nmea::checksum_policy::ignore
-                                               : nmea::checksum_policy::verify_if_present;
+  o.strict = strict;
+  if (checksum_opt->count() > 0) {
+    o.checksum = checksum == "required" ? nmea::checksum_policy::required
+                 : checksum == "ignore" ? nmea::checksum_policy::ignore
+                                        : nmea::checksum_policy::verify_if_present;
   }
-  // A checksum that is not checked has no case to check either (--strict asks for uppercase hex
-  // only of a checksum it verifies). What is after '*' must still be two hex digits: the library
-  // reads it as the sentence's end, and anything else there is no sentence.
-  if (o.policy.checksum == nmea::checksum_policy::ignore) o.policy.lowercase_hex = true;
   return run(o);
 }

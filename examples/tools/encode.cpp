@@ -125,6 +125,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     depth_ = 0;
     mode_ = mode::top;
     error_.clear();
+    line_ = line;
+    cursor_ = 0;
     if (!nlohmann::json::sax_parse(line, this) && error_.empty()) error_ = "invalid JSON: not JSON";
     return error_.empty();
   }
@@ -156,13 +158,18 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   // ---- nlohmann::json_sax ----
   bool null() override { return value(json_kind::null, ""); }
   bool boolean(bool b) override { return value(json_kind::boolean, b ? "true" : "false"); }
+  // The parser gives whole numbers as integers, and "-0" as 0: the sign of a zero, which the
+  // vehicle writes and a decimal keeps, is read from the number's own text.
   bool number_integer(number_integer_t v) override {
-    return value(json_kind::number, std::to_string(v));
+    const std::string_view text = next_number_text();
+    return value(json_kind::number, v == 0 && text == "-0" ? "-0" : std::to_string(v));
   }
   bool number_unsigned(number_unsigned_t v) override {
+    (void)next_number_text();
     return value(json_kind::number, std::to_string(v));
   }
   bool number_float(number_float_t, const string_t& text) override {
+    (void)next_number_text();
     // The number as written ("203.10"), or, with an exponent, written out ("1e-05": "0.00001"):
     // the library reads plain decimals only. Only values that are kept are converted.
     const bool kept = depth_ == 1 || (depth_ == 2 && mode_ == mode::precision);
@@ -198,6 +205,30 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   }
 
  private:
+  // The text of the next number in the line: the parser calls back for the numbers in the order
+  // they are written, and strings (keys and values) are the only other place a digit or '-'
+  // can be.
+  std::string_view next_number_text() {
+    const auto number_char = [](char c) {
+      return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+    };
+    while (cursor_ < line_.size()) {
+      const char c = line_[cursor_];
+      if (c == '"') {
+        for (++cursor_; cursor_ < line_.size() && line_[cursor_] != '"';)
+          cursor_ += line_[cursor_] == '\\' ? std::size_t{2} : std::size_t{1};
+        ++cursor_;
+      } else if (c == '-' || (c >= '0' && c <= '9')) {
+        const std::size_t begin = cursor_;
+        while (cursor_ < line_.size() && number_char(line_[cursor_])) ++cursor_;
+        return line_.substr(begin, cursor_ - begin);
+      } else {
+        ++cursor_;
+      }
+    }
+    return {};
+  }
+
   enum class mode { top, precision, fields, array, skip };
   struct element {
     std::string_view array;
@@ -273,6 +304,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   int depth_ = 0;
   mode mode_ = mode::top;
   std::string error_;
+  std::string_view line_;  // the line being parsed, for the numbers' text
+  std::size_t cursor_ = 0;
 };
 
 /// Calls f(std::type_identity<M>{}) for the first message of the set whose address matches.

@@ -781,6 +781,81 @@ case_receivers() {
 # A live link whose sender ends lines with CR alone: under --line-buffered each sentence comes
 # out while the input is still open (once the input has been quiet), not when the next one
 # arrives; an LF that comes later completes that CR and is no blank line.
+# Each sentence is read by the rules of the role that receives it; the vehicle's own number
+# forms (unpadded positions under one degree, nan, -0) are read and kept.
+case_roles() {
+  # A payload's command without a checksum ends in a bare '*' (MOOS iM200, Clearpath's tester).
+  printf '%s\r\n' '$PYDIR,45.00000,-30.00000*' '$PYDIR,1.000000,-1.000000*' '$PYCLT,0*' \
+    '$PYDIR,45,55' >"$work/in"
+  local want
+  want=$(printf '%s\n' '{"type":"PYDIR","thrust_left":45.00000,"thrust_right":-30.00000}' \
+    '{"type":"PYDIR","thrust_left":1.000000,"thrust_right":-1.000000}' \
+    '{"type":"PYCLT","lights_on":false}' '{"type":"PYDIR","thrust_left":45,"thrust_right":55}')
+  expect_rc "commands ending in a bare '*', default" 0 "$decode" <"$work/in"
+  expect_eq "read as the vehicle reads them" "$want" "$(cat "$work/out")"
+  expect_rc "commands ending in a bare '*', --checksum verify" 0 "$decode" -c verify <"$work/in"
+  expect_eq "--checksum verify keeps the role's bare '*'" "$want" "$(cat "$work/out")"
+  expect_rc "commands ending in a bare '*', --checksum ignore" 0 "$decode" -c ignore <"$work/in"
+  expect_eq "--checksum ignore keeps the role's bare '*'" "$want" "$(cat "$work/out")"
+  expect_rc "commands ending in a bare '*', --checksum required" 1 "$decode" -c required \
+    --format none <"$work/in"
+  expect_eq "--checksum required: none of them has one" \
+    "$(printf '%s\n' 'line 1: missing_checksum' 'line 2: missing_checksum' 'line 3: missing_checksum' \
+      'line 4: missing_checksum')" "$(sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/' "$work/err")"
+  expect_rc "commands ending in a bare '*', --strict" 1 "$decode" --strict --format none <"$work/in"
+  expect_eq "--strict: seawire never writes a bare '*'" \
+    "$(printf '%s\n' 'line 1: bad_checksum_format' 'line 2: bad_checksum_format' \
+      'line 3: bad_checksum_format' 'line 4: missing_checksum')" \
+    "$(sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/' "$work/err")"
+  # What a vehicle sends always has a checksum: a payload refuses it without one. What a payload
+  # sends a Sandshark may leave it out.
+  printf '%s\r\n' '$CPALT,164959.100,1' '$CPALT,164959.100,1*' '$BPLOG,ALL,ON' '$RXHRB,111221,161229,21.31198,N,157.88972,W,ROBOT,2,1' \
+    '$PAPGPSCTRL,1' '$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A' >"$work/in"
+  expect_rc "checksums by role" 1 "$decode" <"$work/in"
+  expect_eq "required from the vehicle, the RobotX judge's and the INS's senders" \
+    "$(printf '%s\n' '1:missing_checksum' '2:bad_checksum_format' '{"type":"BPLOG","code":"ALL","state":"ON"}' \
+      '4:missing_checksum' '5:missing_checksum' \
+      '{"type":"GPRMC","time":"16:49:59.00","status":"A","latitude":42.3618523333333,"longitude":-71.0908130,"speed_knots":0.145,"course_true":156.78,"date":"2014-12-31","magnetic_variation":null,"mode":"A","navigational_status":null}')" \
+    "$(sed 's/^{"line":\([0-9]*\),"error":"\([a-z_]*\)".*/\1:\2/' "$work/out")"
+  expect_rc "checksums by role, --checksum verify" 1 "$decode" -c verify --format none <"$work/in"
+  expect_eq "--checksum verify for every role; a bare '*' is no checksum only in a command" \
+    'line 2: bad_checksum_format' "$(sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/' "$work/err")"
+
+  # The Clearpath vehicle's unpadded positions within one degree of 0,0.
+  crlf "$(seal CPNVG,164959.034,4221.711138,N,22.2,W,1,0,0,234.3,-6.8,-1.7,)" \
+    "$(seal CPNVG,164959.034,44.598,S,7105.44878,W,1,0,0,234.3,-6.8,-1.7,)" \
+    "$(seal CPNVG,164959.034,0.0,S,0.0,W,1,,,0,,,164959.000)" \
+    "$(seal GPRMC,164959.00,A,37.352387,N,07105.44878,W,0.145,156.78,311214,,,A)" >"$work/in"
+  expect_rc "unpadded positions" 1 "$decode" <"$work/in"
+  expect_eq "minutes of zero degrees in CPNVG; decimal degrees refused in GPRMC" \
+    "$(printf '%s\n' '42.36185230,-0.370' '-0.74330,-71.0908130' '-0.000,-0.000' \
+      'bad_latitude:3')" \
+    "$(sed -e 's/.*"latitude":\([-0-9.]*\),"longitude":\([-0-9.]*\),.*/\1,\2/' \
+      -e 's/^{"line":4,"error":"\([a-z_]*\)","field":\([0-9]*\).*/\1:\2/' "$work/out")"
+  head -n 3 "$work/in" >"$work/vehicle"
+  expect_rc "unpadded positions, --format nmea" 0 "$decode" --format nmea <"$work/vehicle"
+  expect_eq "written back as they came" "$(cat "$work/vehicle")" "$(cat "$work/out")"
+  expect_rc "unpadded positions, --strict" 0 "$decode" --strict --format none <"$work/vehicle"
+
+  # nan from the vehicle: not available, the rest of the sentence kept; -0 keeps its sign.
+  crlf "$(seal CPNVR,164959.063,nan,-NaN,0,0.060938,-0,-0.061132)" >"$work/in"
+  expect_rc "nan velocities" 0 "$decode" <"$work/in"
+  want='{"type":"CPNVR","timestamp":"16:49:59.063","vel_east_mps":null,"vel_north_mps":null,"vel_down_mps":0,"pitch_rate_dps":0.060938,"roll_rate_dps":-0,"yaw_rate_dps":-0.061132}'
+  expect_eq "nan is null, yaw rate kept, -0 keeps its sign" "$want" "$(cat "$work/out")"
+  expect_rc "nan velocities, --format nmea" 0 "$decode" --format nmea <"$work/in"
+  expect_eq "nan is never written" "$(crlf "$(seal CPNVR,164959.063,,,0,0.060938,-0,-0.061132)")" \
+    "$(cat "$work/out")"
+  expect_rc "nan velocities, --strict" 1 "$decode" --strict --format none <"$work/in"
+  printf '%s\n' "$want" '{"type":"PYDIR","thrust_left":-0,"thrust_right":0}' >"$work/in"
+  expect_rc "-0 through seawire-encode" 0 "$encode" <"$work/in"
+  expect_eq "the sign of zero is written" \
+    "$(crlf "$(seal CPNVR,164959.063,,,0,0.060938,-0,-0.061132)" "$(seal PYDIR,-0,0)")" \
+    "$(cat "$work/out")"
+  "$encode" <"$work/in" | "$decode" >"$work/again"
+  expect_eq "decode | encode | decode keeps -0" \
+    "$(printf '%s\n' "$want" '{"type":"PYDIR","thrust_left":-0,"thrust_right":0}')" "$(cat "$work/again")"
+}
+
 case_live() {
   local fifo=$work/fifo first second
   first=$(seal 'PAPGPSCTRL,1')
