@@ -123,7 +123,7 @@ class simulator {
             std::map<std::string, std::string> names)
       : o_(o),
         server_(io, where, o.limits),
-        session_(config(o)),
+        session_(ss::utc_clock(steady::now(), std::chrono::system_clock::now()), config(o)),
         model_(params(), lat, lon, o.seed),
         timer_(io),
         shutdown_timer_(io),
@@ -146,7 +146,7 @@ class simulator {
 
   void start() {
     t0_ = steady::now();
-    session_.set_utc(t0_, nmea::time_of_day::from(std::chrono::system_clock::now(), 2).value);
+    session_.set_utc(t0_, std::chrono::system_clock::now());
     server_.start();
     wait_signal();
     tick();
