@@ -24,8 +24,8 @@
 //   or a re-anchor from the vehicle a little behind): stamps increase. Set back further than
 //   max_stamp_lead (a vehicle clock far from the payload's), the stamps follow the clock at
 //   once, kept apart from the stamps still awaiting an ack, rather than counting 1 ms a sentence
-//   until the clock catches up. A pending (3) ack must be followed by the final
-//   one within pending_timeout (2 s) or ack_timeout is reported. No ack at all within
+//   until the clock catches up. A pending (3) ack must be followed by the final one within
+//   pending_timeout (2 s) or ack_timeout is reported. No ack at all within
 //   resend_after (5 s): the identical sentence (same timestamp, so an ack of either copy
 //   matches) is sent again, up to max_resends times (3), then command_failed_after_retries.
 //   BPLOG has no timestamp, so its acks are matched by name.
@@ -545,8 +545,8 @@ class payload_session {
   }
 
   /// A UTC timestamp that no message awaiting its ack has, so (name, timestamp) names one
-  /// message: the clock's time, or 1 ms after the last stamp when the clock is not past it by
-  /// less than max_stamp_lead (stamps increase); a clock set back further is followed.
+  /// message: the clock's time, or 1 ms after the last stamp when the clock is at or behind it
+  /// by less than max_stamp_lead (stamps increase); a clock set back further is followed.
   [[nodiscard]] constexpr nmea::time_of_day stamp(time_point now) noexcept {
     std::int64_t ms = utc_.ms_at(now);
     if (stamped_ && ms <= last_stamp_ && last_stamp_ - ms < config_.max_stamp_lead.count())
