@@ -2,16 +2,18 @@
 // A Sandshark backseat (payload) session driven from stdin, with simulated time.
 //
 // Each input line is either a sentence from the vehicle ($BF...) or "@<seconds>", which moves
-// the simulated clock. The program prints what the session wants to send ("send: ...") and what
-// happened ("event: ..."). Once the vehicle hands over control (BFCTL 1) it asks for heading 90
-// at 1.5 m/s and keeps that request alive. With no input it runs the startup and exits.
+// the simulated clock (0 s is midnight UTC: the vehicle's sentences below say so). The program
+// prints what the session wants to send ("send: ...") and what happened ("event: ..."). Once the
+// vehicle hands over control (BFCTL 1) it asks for heading 90 at 1.5 m/s and keeps that request
+// alive. With no input it runs the startup and exits.
 //
 //   printf '@0.5\n$BFACK,000000.500,LOG,,,2,0,,*10\n$BFCTL,000001.000,1*71\n@9\n' |
 //     ./seawire_sandshark_backseat
 //
 //   ./seawire_sandshark_backseat --connect 127.0.0.1:29500 [SECONDS]
-//     the same session on a real clock against a vehicle (or seawire-sandshark-sim) over TCP,
-//     for SECONDS (default: until the vehicle closes the connection)
+//     the same session on the real clocks (steady for the timers, the system clock for the UTC
+//     timestamps) against a vehicle (or seawire-sandshark-sim) over TCP, for SECONDS (default:
+//     until the vehicle closes the connection)
 
 #if SEAWIRE_EXAMPLE_HAS_ASIO
 #include <asio.hpp>
@@ -63,7 +65,8 @@ const auto no_write = [](std::string_view) {};
 
 #if SEAWIRE_EXAMPLE_HAS_ASIO
 // The session on the steady clock over TCP: lines from the socket through the stream reader,
-// timers at the session's next deadline, what it sends written at once.
+// timers at the session's next deadline, what it sends written at once. Its timestamps start
+// from the system clock's UTC, read once with the steady time, and follow the vehicle's.
 int live(const std::string& host, const std::string& port, double seconds) {
   asio::io_context io;
   asio::ip::tcp::socket vehicle(io);
@@ -79,7 +82,7 @@ int live(const std::string& host, const std::string& port, double seconds) {
   };
   const auto now = [] { return ss::time_point(std::chrono::steady_clock::now()); };
   ss::payload_config config;
-  ss::payload_session<> session(config);
+  ss::payload_session<> session(ss::utc_clock(now(), std::chrono::system_clock::now()), config);
   session.start(now());
   for (std::string_view code : {"NVG", "MIS", "CTL"}) {
     if (!session.subscribe(code, now())) return 1;
@@ -156,8 +159,8 @@ int main(int argc, char** argv) {
   }
   ss::payload_config config;
   config.heartbeat_period = 1s;
-  ss::payload_session<> session(config);
   ss::time_point now{};
+  ss::payload_session<> session(ss::utc_clock(now, seawire::nmea::time_of_day{}), config);
 
   session.start(now);
   for (std::string_view code : {"NVG", "MIS", "CTL"}) {

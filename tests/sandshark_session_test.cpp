@@ -26,6 +26,8 @@ namespace {
 using namespace support;
 
 time_point at(std::chrono::milliseconds ms) { return time_point{} + ms; }
+/// These tests' UTC: the steady time_point{} is midnight, so at(500ms) is 00:00:00.500.
+const utc_clock midnight(time_point{}, time_of_day{});
 
 template <class S>
 std::vector<std::string> sent(S& s) {
@@ -96,7 +98,7 @@ bprmb heading_request(int heading) {
 // payload side
 
 TEST_CASE("payload startup: BPVER, then BPLOG,ACK,ON before any other subscription") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   // Asked for before start(): still sent after the handshake.
   REQUIRE(p.subscribe("NVG", at(0ms)).ok());
   p.start(at(0ms));
@@ -148,7 +150,7 @@ TEST_CASE("payload startup without acks: nothing waits") {
   payload_config c = quiet();
   c.want_acks = false;
   c.version = "2.1";
-  payload_session<> p(c);
+  payload_session<> p(midnight, c);
   p.start(at(0ms));
   REQUIRE(p.subscribe("ALL", at(0ms)).ok());
   REQUIRE(p.subscribe("NVG", at(0ms), log_state::off).ok());
@@ -168,7 +170,7 @@ TEST_CASE("payload startup without acks: nothing waits") {
 }
 
 TEST_CASE("payload: ack before the timeout completes the command, nothing is resent") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   const auto ticket = p.subscribe("MIS", at(1000ms));
   REQUIRE(ticket.ok());
@@ -188,7 +190,7 @@ TEST_CASE("payload: ack before the timeout completes the command, nothing is res
 }
 
 TEST_CASE("payload: an ack that never comes: 3 resends, 5 s apart, then failure") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   bpabt cmd;
   (void)cmd.message.assign("test");
@@ -228,7 +230,7 @@ TEST_CASE("payload: the resend count is configurable") {
   payload_config c = quiet();
   c.max_resends = 1;
   c.resend_after = 2000ms;
-  payload_session<> p(c);
+  payload_session<> p(midnight, c);
   started_with_acks(p, at(0ms));
   REQUIRE(p.subscribe("NVG", at(0ms)).ok());
   CHECK(sent(p).size() == 1);
@@ -243,7 +245,7 @@ TEST_CASE("payload: the resend count is configurable") {
 }
 
 TEST_CASE("payload: pending, then the final ack within 2 s") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   REQUIRE(p.send(bpver{{}, "1.0"}, at(0ms)).ok());
   const auto lines = sent(p);
@@ -266,7 +268,7 @@ TEST_CASE("payload: pending, then the final ack within 2 s") {
 }
 
 TEST_CASE("payload: pending, then nothing: ack_timeout 2 s later and the queue moves on") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   REQUIRE(p.subscribe("NVG", at(0ms)).ok());
   REQUIRE(p.subscribe("NVR", at(0ms)).ok());
@@ -292,7 +294,7 @@ TEST_CASE("payload: pending, then nothing: ack_timeout 2 s later and the queue m
 TEST_CASE("payload: a final ack exactly 2 s after the pending one, whatever the call order") {
   for (const bool tick_first : {false, true}) {
     INFO("tick at the deadline first: " << tick_first);
-    payload_session<> p(quiet());
+    payload_session<> p(midnight, quiet());
     started_with_acks(p, at(0ms));
     REQUIRE(p.subscribe("NVG", at(0ms)).ok());
     const auto lines = sent(p);
@@ -308,7 +310,7 @@ TEST_CASE("payload: a final ack exactly 2 s after the pending one, whatever the 
 }
 
 TEST_CASE("payload: nothing goes out before start(), not an abort, not a request") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   const auto ticket = p.abort("leak", at(0ms));
   REQUIRE(ticket.ok());
   (void)p.receive(sealed("BFCTL,000000.100,1"), at(100ms));
@@ -331,7 +333,7 @@ TEST_CASE("payload: nothing goes out before start(), not an abort, not a request
 }
 
 TEST_CASE("payload: start() again is a new connection: handshake, subscriptions, old commands") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   REQUIRE(p.subscribe("NVG", at(0ms)).ok());
   auto lines = sent(p);
@@ -383,7 +385,7 @@ TEST_CASE("payload: start() again is a new connection: handshake, subscriptions,
 }
 
 TEST_CASE("payload: unrelated traffic between a command and its ack") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   bpsts st{{}, false, "sonar fault"};
   const auto ticket = p.send(st, at(100ms));
@@ -412,7 +414,7 @@ TEST_CASE("payload: unrelated traffic between a command and its ack") {
 }
 
 TEST_CASE("payload: an ack whose command timestamp matches nothing is reported, queue intact") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   REQUIRE(p.send(bpver{{}, "1.0"}, at(500ms)).ok());
   REQUIRE(p.subscribe("NVG", at(500ms)).ok());
@@ -442,7 +444,7 @@ TEST_CASE("payload: an ack whose command timestamp matches nothing is reported, 
 }
 
 TEST_CASE("payload: commands wait behind the one awaiting its ack, in order") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   const auto a = p.subscribe("NVG", at(0ms));
   const auto b = p.subscribe("NVR", at(0ms));
@@ -479,7 +481,7 @@ TEST_CASE("payload: commands wait behind the one awaiting its ack, in order") {
 }
 
 TEST_CASE("payload: abort goes out at once, ahead of a command awaiting its ack") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   REQUIRE(p.subscribe("NVG", at(0ms)).ok());
   REQUIRE(p.subscribe("NVR", at(0ms)).ok());
@@ -499,7 +501,7 @@ TEST_CASE("payload: abort goes out at once, ahead of a command awaiting its ack"
 }
 
 TEST_CASE("payload: timestamps are distinct, so (name, timestamp) names one message") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   REQUIRE(p.abort("a", at(1000ms)).ok());
   REQUIRE(p.abort("b", at(1000ms)).ok());
@@ -518,7 +520,7 @@ TEST_CASE("payload: timestamps are distinct, so (name, timestamp) names one mess
 TEST_CASE("payload: the UTC clock follows the vehicle's timestamps") {
   payload_config c = quiet();
   c.sync_utc_from_vehicle = true;
-  payload_session<> p(c);
+  payload_session<> p(midnight, c);
   (void)p.receive(sealed("BFCTL,235959.500,0"), at(10000ms));
   p.start(at(10000ms));
   CHECK(stamp_of(sent(p).at(0)) == "235959.500");  // BPVER
@@ -529,8 +531,179 @@ TEST_CASE("payload: the UTC clock follows the vehicle's timestamps") {
   CHECK(stamp_of(sent(p).at(0)) == "080000.250");
 }
 
+namespace {
+using std::chrono::days;
+using std::chrono::January;
+using std::chrono::milliseconds;
+using std::chrono::November;
+using std::chrono::seconds;
+using std::chrono::sys_days;
+
+/// "hhmmss.sss" for a UTC time, by std::chrono's own calendar arithmetic (not the library's).
+std::string utc_text(utc_time t) {
+  const auto ms = std::chrono::floor<std::chrono::milliseconds>(t);
+  const std::chrono::hh_mm_ss<std::chrono::milliseconds> hms(
+      ms - std::chrono::floor<std::chrono::days>(ms));
+  char b[16];
+  std::snprintf(b, sizeof b, "%02d%02d%02d.%03d", static_cast<int>(hms.hours().count()),
+                static_cast<int>(hms.minutes().count()), static_cast<int>(hms.seconds().count()),
+                static_cast<int>(hms.subseconds().count()));
+  return b;
+}
+/// Steady epochs a machine may have: just booted, 36 s, the 36 min 14.581 s whose stamps once
+/// read "003614.581", 400 days; and one before the epoch.
+const std::vector<std::chrono::milliseconds> uptimes = {
+    0ms, 36'000ms, 2'174'581ms, std::chrono::milliseconds(std::chrono::days(400)), -5'000ms};
+}  // namespace
+
+TEST_CASE("payload stamps: the UTC time of day it was built with, advanced by steady time") {
+  // 23:59:59.900 UTC: the stamps cross midnight within the first 100 ms.
+  const utc_time utc0 = sys_days{2026y / November / 26} + 23h + 59min + 59s + 900ms;
+  const std::vector<milliseconds> later = {0ms,   2ms,     50ms,        99ms,        100ms,
+                                           101ms, 1'234ms, 3'600'100ms, 86'400'000ms};
+  for (const milliseconds uptime : uptimes) {
+    CAPTURE(uptime.count());
+    const time_point t0 = time_point{} + uptime;
+    payload_config c = quiet();
+    c.want_acks = false;  // nothing awaits an ack: every abort goes out at once
+    payload_session<> p(utc_clock(t0, utc0), c);
+    p.start(t0);
+    CHECK(stamp_of(sent(p).at(0)) == "235959.900");  // BPVER
+    for (const milliseconds d : later) {
+      CAPTURE(d.count());
+      REQUIRE(p.abort("x", t0 + d).ok());
+      const auto lines = sent(p);
+      REQUIRE(lines.size() == 1);
+      CHECK(stamp_of(lines[0]) == utc_text(utc0 + d + (d == 0ms ? 1ms : 0ms)));
+    }
+  }
+  // The values behind the list: BPVER and the first abort share 23:59:59.900 (the second is
+  // one ms later), the abort 100 ms on is at midnight.
+  CHECK(utc_text(utc0 + 100ms) == "000000.000");
+  CHECK(utc_text(utc0 + 101ms) == "000000.001");
+}
+
+TEST_CASE("payload stamps: the heartbeat's stamps follow the steady clock, whatever its epoch") {
+  const utc_time utc0 = sys_days{2026y / November / 26} + 23h + 13min + 0s + 250ms;
+  for (const milliseconds uptime : uptimes) {
+    CAPTURE(uptime.count());
+    const time_point t0 = time_point{} + uptime;
+    payload_config c = quiet();
+    c.heartbeat_period = 1s;
+    c.want_acks = false;
+    payload_session<> p(utc_clock(t0, utc0), c);
+    p.start(t0);
+    (void)sent(p);
+    std::vector<std::string> stamps;
+    for (int s = 1; s <= 36; ++s) {
+      p.tick(t0 + seconds(s));
+      for (const auto& l : with_address(sent(p), "BPSTS")) stamps.push_back(stamp_of(l));
+    }
+    REQUIRE(stamps.size() == 36);
+    for (int s = 1; s <= 36; ++s)
+      CHECK(stamps[static_cast<std::size_t>(s - 1)] == utc_text(utc0 + seconds(s)));
+  }
+}
+
+TEST_CASE("payload stamps: two in one millisecond are 1 ms apart, across midnight too") {
+  const time_point t0 = time_point{} + days(400);
+  payload_config c = quiet();
+  c.want_acks = false;
+  payload_session<> p(utc_clock(t0, sys_days{2026y / January / 1} - 1ms), c);
+  p.start(t0);
+  REQUIRE(p.abort("a", t0).ok());
+  REQUIRE(p.abort("b", t0).ok());
+  REQUIRE(p.abort("c", t0 + 1ms).ok());  // the clock is at 00:00:00.000, already taken
+  REQUIRE(p.abort("d", t0 + 5ms).ok());
+  std::vector<std::string> stamps;
+  for (const auto& l : sent(p)) stamps.push_back(stamp_of(l));
+  CHECK(stamps == std::vector<std::string>{"235959.999", "000000.000", "000000.001", "000000.002",
+                                           "000000.004"});
+}
+
+TEST_CASE(
+    "payload stamps: a vehicle clock far behind the payload's is followed, not counted up to") {
+  // The payload's own UTC is off (00:36:14.581) and the vehicle says 23:13: stamps take the
+  // vehicle's time at once and advance with the steady clock from there; they do not stay at
+  // the payload's last stamp + 1 ms a sentence for the 1 h 23 min it would take to get there.
+  payload_config c = quiet();
+  c.sync_utc_from_vehicle = true;
+  c.want_acks = false;
+  const time_point t0 = time_point{} + 2'174'581ms;
+  payload_session<> p(utc_clock(t0, time_of_day{0, 36, 14, 581, 3}), c);
+  p.start(t0);
+  CHECK(stamp_of(sent(p).at(0)) == "003614.581");
+  (void)p.receive(sealed("BFCTL,231300.00,0"), t0 + 10ms);
+  for (int i = 0; i < 5; ++i) {
+    REQUIRE(p.abort("x", t0 + 20ms + std::chrono::milliseconds(100 * i)).ok());
+    char want[16];
+    std::snprintf(want, sizeof want, "231300.%03d", 10 + 100 * i);
+    CHECK(stamp_of(sent(p).at(0)) == want);
+  }
+  // Ahead of the payload's clock: followed as well.
+  (void)p.receive(sealed("BFCTL,235900.00,0"), t0 + 1000ms);
+  REQUIRE(p.abort("y", t0 + 1500ms).ok());
+  CHECK(stamp_of(sent(p).at(0)) == "235900.500");
+}
+
+TEST_CASE("payload stamps: a vehicle clock a little behind keeps the stamps increasing") {
+  // Each vehicle sentence re-anchors the clock to a time taken before it travelled: a few tens
+  // of ms behind. The stamps then run 1 ms a sentence ahead until the clock passes them.
+  payload_config c = quiet();
+  c.sync_utc_from_vehicle = true;
+  c.want_acks = false;
+  payload_session<> p(utc_clock(at(0ms), time_of_day{12, 0, 0, 0, 0}), c);
+  p.start(at(0ms));
+  REQUIRE(p.abort("a", at(100ms)).ok());
+  (void)p.receive(sealed("BFCTL,120000.060,0"), at(100ms));  // 40 ms behind
+  REQUIRE(p.abort("b", at(100ms)).ok());
+  REQUIRE(p.abort("c", at(120ms)).ok());
+  REQUIRE(p.abort("d", at(150ms)).ok());
+  std::vector<std::string> stamps;
+  for (const auto& l : sent(p)) stamps.push_back(stamp_of(l));
+  CHECK(stamps == std::vector<std::string>{"120000.000", "120000.100", "120000.101", "120000.102",
+                                           "120000.110"});
+}
+
+TEST_CASE("payload stamps: after the clock steps back, no stamp repeats one awaiting its ack") {
+  payload_session<> p(utc_clock(at(0ms), time_of_day{12, 0, 0, 0, 0}), quiet());
+  started_with_acks(p, at(0ms));
+  const auto a = p.abort("a", at(2000ms));
+  const auto b = p.abort("b", at(4000ms));
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  const auto first = sent(p);
+  REQUIRE(first.size() == 2);
+  CHECK(stamp_of(first[0]) == "120002.000");
+  CHECK(stamp_of(first[1]) == "120004.000");
+  // 12:00:05 set back to 12:00:02: the next stamp would be a's, still awaiting its ack.
+  p.set_utc(at(5000ms), time_of_day{12, 0, 2, 0, 0});
+  const auto c = p.abort("c", at(5000ms));
+  REQUIRE(c.ok());
+  const auto next = sent(p);
+  REQUIRE(next.size() == 1);
+  CHECK(stamp_of(next[0]) == "120002.001");
+  // Each ack finds its own abort.
+  (void)p.receive(ack_of(first[0], '2'), at(5100ms));
+  (void)p.receive(ack_of(next[0], '2'), at(5100ms));
+  const auto ev = events(p);
+  REQUIRE(ev.size() == 2);
+  CHECK(ev[0].ticket == a.value);
+  CHECK(ev[1].ticket == c.value);
+  CHECK(p.in_flight() == 1);  // b
+}
+
+TEST_CASE("payload: set_utc() from a system_clock time") {
+  payload_session<> p(midnight, quiet());
+  p.start(at(0ms));
+  (void)sent(p);
+  p.set_utc(at(1000ms), sys_days{2026y / November / 26} + 8h + 30min);
+  REQUIRE(p.abort("x", at(1250ms)).ok());
+  CHECK(stamp_of(sent(p).at(0)) == "083000.250");
+}
+
 TEST_CASE("payload: BPRMB keep-alive at request_timeout - margin, with a fresh timestamp") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   // Not in control: held, not sent.
   REQUIRE(p.set_request(heading_request(90), at(1000ms)).ok());
@@ -576,7 +749,7 @@ TEST_CASE("payload: BPRMB keep-alive at request_timeout - margin, with a fresh t
 TEST_CASE("payload: the keep-alive margin is configurable") {
   payload_config c = quiet();
   c.keep_alive_margin = 250ms;
-  payload_session<> p(c);
+  payload_session<> p(midnight, c);
   p.start(at(0ms));
   (void)sent(p);
   (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
@@ -591,7 +764,7 @@ TEST_CASE("payload: the keep-alive margin is configurable") {
 
 TEST_CASE("payload: losing control stops the keep-alive and drops the request") {
   SECTION("BFCTL 0") {
-    payload_session<> p(quiet());
+    payload_session<> p(midnight, quiet());
     started_with_acks(p, at(0ms));
     (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
     REQUIRE(p.set_request(heading_request(90), at(0ms)).ok());
@@ -612,7 +785,7 @@ TEST_CASE("payload: losing control stops the keep-alive and drops the request") 
     CHECK(sent(p).empty());
   }
   SECTION("the mission leaves Running") {
-    payload_session<> p(quiet());
+    payload_session<> p(midnight, quiet());
     (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
     REQUIRE(p.set_request(heading_request(90), at(0ms)).ok());
     (void)sent(p);
@@ -631,7 +804,7 @@ TEST_CASE("payload: losing control stops the keep-alive and drops the request") 
 }
 
 TEST_CASE("payload: a refused keep-alive is reported; BFSHT is a shutdown event") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(0ms));
   (void)p.receive(sealed("BFCTL,000000.000,1"), at(0ms));
   REQUIRE(p.set_request(heading_request(90), at(0ms)).ok());
@@ -651,7 +824,7 @@ TEST_CASE("payload: BPSTS heartbeat at the configured period") {
   payload_config c = quiet();
   c.heartbeat_period = 2000ms;
   c.want_acks = false;
-  payload_session<> p(c);
+  payload_session<> p(midnight, c);
   REQUIRE(p.set_status(false, "sonar offline"));
   CHECK_FALSE(p.set_status(true, "bad, text"));
   p.start(at(0ms));
@@ -676,7 +849,7 @@ TEST_CASE("payload: BPSTS heartbeat at the configured period") {
 
 TEST_CASE("payload: full queues are reported, never silent") {
   SECTION("the command queue refuses") {
-    payload_session<2> p(quiet());
+    payload_session<2> p(midnight, quiet());
     started_with_acks(p, at(0ms));
     REQUIRE(p.subscribe("NVG", at(0ms)).ok());  // in flight
     REQUIRE(p.subscribe("NVR", at(0ms)).ok());
@@ -685,7 +858,7 @@ TEST_CASE("payload: full queues are reported, never silent") {
     CHECK(r.ec == errc::buffer_too_small);
   }
   SECTION("bad values are refused when handed in") {
-    payload_session<> p(quiet());
+    payload_session<> p(midnight, quiet());
     const auto r = p.send(bpsts{{}, true, "a*b"}, at(0ms));
     CHECK(r.ec == errc::bad_text);
     CHECK(r.field == 3);
@@ -698,7 +871,7 @@ TEST_CASE("payload: full queues are reported, never silent") {
     CHECK(s.field == 6);
   }
   SECTION("the outbox overflows: reported, and sent once there is room") {
-    payload_session<16, 2> p(quiet());
+    payload_session<16, 2> p(midnight, quiet());
     p.start(at(0ms));  // BPVER + ACK ON fill the outbox
     (void)p.receive(sealed("BFACK,000000.000,LOG,,,2,0,,"), at(10ms));
     REQUIRE(p.subscribe("NVG", at(20ms)).ok());
@@ -713,7 +886,7 @@ TEST_CASE("payload: full queues are reported, never silent") {
     CHECK(sent(p) == std::vector<std::string>{sealed("BPLOG,NVG,ON")});
   }
   SECTION("events beyond the queue are counted in one events_lost event") {
-    payload_session<16, 16, 3> p(quiet());
+    payload_session<16, 16, 3> p(midnight, quiet());
     for (int i = 0; i < 6; ++i) (void)p.receive(sealed("BFSHT,000000.000"), at(0ms));
     const auto ev = events(p);
     REQUIRE(ev.size() == 3);
@@ -726,7 +899,7 @@ TEST_CASE("payload: full queues are reported, never silent") {
 }
 
 TEST_CASE("payload: time never runs backwards") {
-  payload_session<> p(quiet());
+  payload_session<> p(midnight, quiet());
   started_with_acks(p, at(10000ms));
   REQUIRE(p.abort("x", at(5000ms)).ok());  // taken as 10 s (BPVER already has 10.000)
   CHECK(stamp_of(sent(p).at(0)) == "000010.001");
@@ -763,7 +936,7 @@ bfack decoded_ack(const std::string& line) {
 }  // namespace
 
 TEST_CASE("vehicle: BFVER on connect; no acks until ACK ON; ACK OFF is not acked") {
-  vehicle_session<2> v;
+  vehicle_session<2> v(midnight);
   const auto c = v.connect(at(1500ms));
   REQUIRE(c == client_id{0});
   CHECK(sent(v) == std::vector<std::string>{sealed("BFVER,000001.500,1.0")});
@@ -784,8 +957,26 @@ TEST_CASE("vehicle: BFVER on connect; no acks until ACK ON; ACK OFF is not acked
   CHECK_FALSE(v.connect(at(0ms)).has_value());
 }
 
+TEST_CASE("vehicle: stamps are the UTC it was built with, advanced by steady time") {
+  const utc_time utc0 = sys_days{2026y / November / 26} + 23h + 59min + 59s + 950ms;
+  for (const milliseconds uptime : uptimes) {
+    CAPTURE(uptime.count());
+    const time_point t0 = time_point{} + uptime;
+    vehicle_session<> v(utc_clock(t0, utc0));
+    const auto c = v.connect(t0);
+    REQUIRE(c.has_value());
+    CHECK(sent(v) == std::vector<std::string>{sealed("BFVER,235959.950,1.0")});
+    REQUIRE(v.receive(*c, sealed("BPLOG,ALL,ON"), t0 + 10ms).ok());
+    v.set_control(true, t0 + 100ms);
+    CHECK(sent(v) == std::vector<std::string>{sealed("BFCTL,000000.050,1")});
+    v.set_utc(t0 + 200ms, sys_days{2026y / November / 27} + 8h);
+    REQUIRE(v.publish(bfsht{}, t0 + 300ms).ok());
+    CHECK(sent(v) == std::vector<std::string>{sealed("BFSHT,080000.100")});
+  }
+}
+
 TEST_CASE("vehicle: BPLOG subscriptions per client; ALL does not include ACK") {
-  vehicle_session<> v;
+  vehicle_session<> v(midnight);
   const client_id a = connected_with_acks(v, at(0ms));
   const client_id b = *v.connect(at(0ms));
   (void)sent(v);
@@ -830,7 +1021,7 @@ TEST_CASE("vehicle: BPLOG subscriptions per client; ALL does not include ACK") {
 }
 
 TEST_CASE("vehicle: ack status codes") {
-  vehicle_session<> v;
+  vehicle_session<> v(midnight);
   const client_id c = connected_with_acks(v, at(0ms));
 
   SECTION("ok, echoing the command's timestamp") {
@@ -914,7 +1105,7 @@ TEST_CASE("vehicle: pending, then the final ack") {
     vehicle_config cfg;
     cfg.pending.abt = true;
     cfg.complete_pending_after = 1500ms;
-    vehicle_session<> v(cfg);
+    vehicle_session<> v(midnight, cfg);
     const client_id c = connected_with_acks(v, at(0ms));
     REQUIRE(v.receive(c, "$BPABT,081025.987,leak detected,1*6B", at(100ms)).ok());
     const bfack first = decoded_ack(sent(v).at(0));
@@ -932,7 +1123,7 @@ TEST_CASE("vehicle: pending, then the final ack") {
     vehicle_config cfg;
     cfg.pending.ver = true;
     cfg.complete_pending_after = std::nullopt;
-    vehicle_session<> v(cfg);
+    vehicle_session<> v(midnight, cfg);
     const client_id c = connected_with_acks(v, at(0ms));
     REQUIRE(v.receive(c, "$BPVER,081025.987,1.0*6A", at(100ms)).ok());
     CHECK(decoded_ack(sent(v).at(0)).status == ack_status::pending);
@@ -952,7 +1143,7 @@ TEST_CASE("vehicle: pending, then the final ack") {
 TEST_CASE("vehicle: BPRMB holds for 5 s; 5.000 s keeps it, one tick more loses it") {
   vehicle_config cfg;
   cfg.control_allowed = true;
-  vehicle_session<> v(cfg);
+  vehicle_session<> v(midnight, cfg);
   const client_id c = *v.connect(at(0ms));
   REQUIRE(v.receive(c, "$BPRMB,000000.00,90,,,,,0", at(1000ms)).ok());
   CHECK(v.request_active(at(1000ms)));
@@ -992,7 +1183,7 @@ TEST_CASE("vehicle: pending acks go with the client; a new client under its id g
   vehicle_config cfg;
   cfg.control_allowed = true;
   cfg.pending.rmb = true;
-  vehicle_session<> v(cfg);
+  vehicle_session<> v(midnight, cfg);
   const client_id c = connected_with_acks(v, at(0ms));
   REQUIRE(v.receive(c, "$BPRMB,000000.10,90,,,,,0", at(100ms)).ok());
   CHECK(decoded_ack(sent(v).at(0)).status == ack_status::pending);
@@ -1016,7 +1207,7 @@ TEST_CASE("vehicle: pending acks go with the client; a new client under its id g
 }
 
 TEST_CASE("vehicle: control handed over and back with BFCTL; revoking ends the request") {
-  vehicle_session<> v;
+  vehicle_session<> v(midnight);
   const client_id c = *v.connect(at(0ms));
   const client_id quiet_client = *v.connect(at(0ms));
   REQUIRE(v.receive(c, sealed("BPLOG,CTL,ON"), at(0ms)).ok());
@@ -1046,10 +1237,10 @@ TEST_CASE("vehicle: control handed over and back with BFCTL; revoking ends the r
 // both sides
 
 TEST_CASE("a payload session driving a vehicle session for a minute") {
-  vehicle_session<> v;
+  vehicle_session<> v(midnight);
   payload_config pc;
   pc.heartbeat_period = 1000ms;
-  payload_session<> p(pc);
+  payload_session<> p(midnight, pc);
   time_point now = at(0ms);
   const client_id c = *v.connect(now);
   p.start(now);
@@ -1101,7 +1292,7 @@ TEST_CASE("a payload session driving a vehicle session for a minute") {
 }
 
 TEST_CASE("vehicle: publish() stamps a timestamp left unset; BPABT moves the mission to Aborting") {
-  vehicle_session<> v;
+  vehicle_session<> v(midnight);
   v.set_utc(at(0ms), time_of_day{8, 10, 25, 0, 3});
   const client_id c = connected_with_acks(v, at(0ms));
   REQUIRE(v.receive(c, "$BPLOG,ALL,ON*16", at(0ms)).ok());

@@ -123,7 +123,7 @@ class simulator {
             std::map<std::string, std::string> names)
       : o_(o),
         server_(io, where, o.limits),
-        session_(config(o)),
+        session_(ss::utc_clock(steady::now(), std::chrono::system_clock::now()), config(o)),
         model_(params(), lat, lon, o.seed),
         timer_(io),
         shutdown_timer_(io),
@@ -146,7 +146,7 @@ class simulator {
 
   void start() {
     t0_ = steady::now();
-    session_.set_utc(t0_, nmea::time_of_day::from(std::chrono::system_clock::now(), 2).value);
+    session_.set_utc(t0_, std::chrono::system_clock::now());
     server_.start();
     wait_signal();
     tick();
@@ -236,30 +236,49 @@ class simulator {
   void received(net::client& c, std::string_view line) {
     const auto it = ids_.find(c.id());
     if (it == ids_.end()) return;
-    const auto r = session_.receive(it->second, line, steady::now());
+    const auto now = steady::now();
+    const auto r = session_.receive(it->second, line, now);
     if (!r) ++c.rejected_in;
     if (r) {
       std::visit(
           [&](const auto& m) {
             using T = std::decay_t<decltype(m)>;
+            // A payload's timestamps are UTC: each logged with the vehicle's own UTC at receipt,
+            // so a payload clock that is off shows.
+            std::string at;
+            if constexpr (requires { m.timestamp; }) at = " " + stamped(m.timestamp, now);
             if constexpr (std::is_same_v<T, ss::bplog>) {
               net::line_server::log("%s: BPLOG %s %s", who(c).c_str(),
                                     std::string(m.code.view()).c_str(),
                                     m.state == ss::log_state::on ? "ON" : "OFF");
             } else if constexpr (std::is_same_v<T, ss::bpver>) {
-              net::line_server::log("%s: BPVER %s", who(c).c_str(),
-                                    std::string(m.version.view()).c_str());
+              net::line_server::log("%s: BPVER %s%s", who(c).c_str(),
+                                    std::string(m.version.view()).c_str(), at.c_str());
             } else if constexpr (std::is_same_v<T, ss::bpsts>) {
-              net::line_server::log("%s: BPSTS %s %s", who(c).c_str(), m.all_ok ? "OK" : "FAILED",
-                                    std::string(m.message.view()).c_str());
+              net::line_server::log("%s: BPSTS %s %s%s", who(c).c_str(), m.all_ok ? "OK" : "FAILED",
+                                    std::string(m.message.view()).c_str(), at.c_str());
             } else if constexpr (std::is_same_v<T, ss::bpabt>) {
-              net::line_server::log("%s: BPABT %s", who(c).c_str(),
-                                    std::string(m.message.view()).c_str());
+              net::line_server::log("%s: BPABT %s%s", who(c).c_str(),
+                                    std::string(m.message.view()).c_str(), at.c_str());
             }
           },
           r.value);
     }
     drain();
+  }
+
+  // "[stamped 231300.125, vehicle 231300.127]": a payload's timestamp and the vehicle's UTC.
+  [[nodiscard]] std::string stamped(const nmea::time_of_day& t, steady::time_point now) const {
+    const auto text = [](const nmea::time_of_day& x) {
+      char b[24];
+      std::snprintf(
+          b, sizeof b, "%02u%02u%02u.%03u", unsigned{x.hour}, unsigned{x.minute},
+          unsigned{x.second},
+          static_cast<unsigned>(
+              std::chrono::floor<std::chrono::milliseconds>(x.since_midnight()).count() % 1000));
+      return std::string(b);
+    };
+    return "[stamped " + text(t) + ", vehicle " + text(session_.utc().at(now)) + "]";
   }
 
   // Everything the session has to say: lines to their clients, events to the log.

@@ -38,6 +38,20 @@ def stamp():
     return time.strftime("%H%M%S.00", t)
 
 
+def seconds_of_day(hhmmss):
+    """'231300.125' -> seconds since midnight."""
+    return int(hhmmss[0:2]) * 3600 + int(hhmmss[2:4]) * 60 + float(hhmmss[4:])
+
+
+def day_offset(a, b):
+    """a - b in seconds for two times of day, the nearest way round midnight."""
+    return (a - b + 43200) % 86400 - 43200
+
+
+def wall_seconds_of_day():
+    return time.time() % 86400
+
+
 def checksum_ok(line):
     m = re.fullmatch(r"\$([^*]*)\*([0-9A-F]{2})", line)
     return bool(m) and functools.reduce(lambda a, c: a ^ ord(c), m.group(1), 0) == int(m.group(2), 16)
@@ -232,8 +246,10 @@ def case_backseat():
     sim = Sim("--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
     watcher = Payload(sim.port)
     watcher.send("BPLOG,NVG,ON")
+    started = wall_seconds_of_day()
     backseat = subprocess.run([BACKSEAT, "--connect", "127.0.0.1:%d" % sim.port, "12"],
                               capture_output=True, timeout=60)
+    ended = wall_seconds_of_day()
     out = backseat.stdout.decode()
     watcher.pump(0.2)
     check(backseat.returncode == 0, "the example ran: %r" % backseat.stderr)
@@ -245,6 +261,35 @@ def case_backseat():
     check("takes control back" not in log, "no lapse while the backseat runs:\n" + log)
     check(sim.wait_log("no BPRMB for 5 s: the vehicle takes control back", timeout=10),
           "the lapse once it is gone")
+    # Its timestamps are the UTC time of day, advancing with the run, whatever the machine's
+    # uptime: as the simulator received them (BPVER, the BPSTS heartbeat) against the wall clock
+    # and the simulator's own UTC at receipt ...
+    received = re.findall(r"client \d+: (BP\w+) .*\[stamped (\d{6}\.\d{3}), vehicle (\d{6}\.\d{3})\]",
+                          log)
+    check(len(received) >= 10 and received[0][0] == "BPVER" and
+          sum(1 for r in received if r[0] == "BPSTS") >= 10,
+          "the simulator logged the backseat's BPVER and heartbeats:\n" + log[-1500:])
+    for address, stamp, vehicle in received:
+        t = seconds_of_day(stamp)
+        check(-2 < day_offset(t, started) and day_offset(t, ended) < 2,
+              "%s stamped %s within the run's wall clock (%.3f to %.3f s of the day)"
+              % (address, stamp, started, ended))
+        check(abs(day_offset(t, seconds_of_day(vehicle))) < 1,
+              "%s stamped %s, the simulator's UTC %s" % (address, stamp, vehicle))
+    sts = [seconds_of_day(r[1]) for r in received if r[0] == "BPSTS"]
+    check(len(sts) >= 2 and day_offset(sts[-1], sts[0]) > 8,
+          "the heartbeat's stamps advance over the 12 s run: %r" % sts)
+    # ... and every stamp it sent, in order.
+    sent = re.findall(r"^send: \$(BP\w+),(\d{6}\.\d{3}),", out, re.M)
+    check(any(a == "BPRMB" for a, _ in sent), "BPRMB stamps sent:\n" + out[-1500:])
+    for address, stamp in sent:
+        t = seconds_of_day(stamp)
+        check(-2 < day_offset(t, started) and day_offset(t, ended) < 2,
+              "sent %s stamped %s within the run's wall clock (%.3f to %.3f)"
+              % (address, stamp, started, ended))
+    times = [seconds_of_day(st) for _, st in sent]
+    check(all(day_offset(b, a) > 0 for a, b in zip(times, times[1:])),
+          "the stamps sent increase: %r" % [st for _, st in sent][:20])
     watcher.close()
     sim.proc.send_signal(signal.SIGTERM)
     check(sim.proc.wait(timeout=10) == 0, "exit 0")

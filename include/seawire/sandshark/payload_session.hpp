@@ -3,9 +3,10 @@
 // The payload (backseat) side of a Sandshark SPI session, sans I/O: it is fed what the vehicle
 // sent and the current time, and hands back sentences to send and events. Nothing here reads a
 // socket or a clock; the caller does, and calls tick() when no input arrives (next_deadline()
-// says when the session next needs one).
+// says when the session next needs one). `now` is always steady time; the session is built with
+// a utc_clock, which ties it to UTC for the timestamps it writes (see session_common.hpp).
 //
-//   payload_session<> s;
+//   payload_session<> s(utc_clock(steady_clock::now(), system_clock::now()));
 //   s.start(now);                      // BPVER, then BPLOG,ACK,ON (acks wanted by default)
 //   (void)s.subscribe("NVG", now);     // queued behind ACK ON, each awaits its ack in turn
 //   loop:
@@ -18,8 +19,13 @@
 // - Commands (send(), subscribe()) go through a FIFO; with acks on, one command at a time awaits
 //   its BFACK. Acks are matched by command name AND the command's timestamp (the session stamps
 //   each message it sends with a distinct UTC time, see utc_clock), never by name alone, since
-//   acks arrive interleaved with other traffic. A pending (3) ack must be followed by the final
-//   one within pending_timeout (2 s) or ack_timeout is reported. No ack at all within
+//   acks arrive interleaved with other traffic. Each stamp is the UTC clock's time, or 1 ms after
+//   the previous stamp when the clock has not moved past it (two sentences in one millisecond,
+//   or a re-anchor from the vehicle a little behind): stamps increase. Set back further than
+//   max_stamp_lead (a vehicle clock far from the payload's), the stamps follow the clock at
+//   once, kept apart from the stamps still awaiting an ack, rather than counting 1 ms a sentence
+//   until the clock catches up. A pending (3) ack must be followed by the final one within
+//   pending_timeout (2 s) or ack_timeout is reported. No ack at all within
 //   resend_after (5 s): the identical sentence (same timestamp, so an ack of either copy
 //   matches) is sent again, up to max_resends times (3), then command_failed_after_retries.
 //   BPLOG has no timestamp, so its acks are matched by name.
@@ -71,6 +77,9 @@ struct payload_config {
   milliseconds keep_alive_margin{1000};  ///< BPRMB is resent this long before request_timeout
   bool sync_utc_from_vehicle = true;     ///< take UTC from each vehicle timestamp (SPI 2: the BAM
                                          ///< keeps the reference time)
+  /// The most a stamp runs ahead of the UTC clock to stay after the previous one; a clock set
+  /// back further is followed at once.
+  milliseconds max_stamp_lead{1000};
 };
 
 /// Why a payload_event was raised.
@@ -174,8 +183,11 @@ class payload_session {
   /// heartbeats and requests of the last resend_after.
   static constexpr std::size_t max_in_flight = 32;
 
-  constexpr explicit payload_session(const payload_config& config = {}) noexcept
-      : config_(config) {}
+  /// `utc` gives the timestamps' UTC time of day at each steady `now` (re-anchored from the
+  /// vehicle's timestamps when config.sync_utc_from_vehicle, or by set_utc()).
+  constexpr explicit payload_session(const utc_clock& utc,
+                                     const payload_config& config = {}) noexcept
+      : config_(config), utc_(utc) {}
 
   // -- what the application does --------------------------------------------------------------
 
@@ -302,6 +314,15 @@ class payload_session {
     advance(now);
     utc_.set(now, utc);
   }
+  /// The UTC time at `now` (a std::chrono::system_clock time), for the timestamps.
+  constexpr void set_utc(time_point now, utc_time utc) noexcept {
+    advance(now);
+    utc_.set(now, utc);
+  }
+  /// Refused at compile time: a steady (or other non-system_clock) time is not UTC.
+  template <class T>
+  requires detail::not_utc_time_point<T>
+  constexpr void set_utc(time_point now, T utc) noexcept { utc_.set(now, utc); }
 
   // -- what the vehicle says ------------------------------------------------------------------
 
@@ -523,13 +544,24 @@ class payload_session {
     return last;
   }
 
-  /// A UTC timestamp later than every one sent before, so (name, timestamp) names one message.
+  /// A UTC timestamp that no message awaiting its ack has, so (name, timestamp) names one
+  /// message: the clock's time, or 1 ms after the last stamp when the clock is at or behind it
+  /// by less than max_stamp_lead (stamps increase); a clock set back further is followed.
   [[nodiscard]] constexpr nmea::time_of_day stamp(time_point now) noexcept {
     std::int64_t ms = utc_.ms_at(now);
-    if (stamped_ && ms <= last_stamp_) ms = last_stamp_ + 1;
+    if (stamped_ && ms <= last_stamp_ && last_stamp_ - ms < config_.max_stamp_lead.count())
+      ms = last_stamp_ + 1;
+    // After a step back, stamps sent before it may lie ahead: pass the ones still in flight.
+    for (std::size_t pass = 0; pass <= max_in_flight && stamp_in_flight(ms); ++pass) ++ms;
     stamped_ = true;
     last_stamp_ = ms;
     return utc_clock::to_time_of_day(ms);
+  }
+  [[nodiscard]] constexpr bool stamp_in_flight(std::int64_t ms) const noexcept {
+    const nmea::time_of_day t = utc_clock::to_time_of_day(ms);
+    for (const payload_in_flight& f : flights_)
+      if (f.active && f.timestamp() == t) return true;
+    return false;
   }
 
   /// Stamp, encode and place in the outbox; track the ack if acks are on. False if the outbox
@@ -726,7 +758,7 @@ class payload_session {
 
   payload_config config_;
   utc_clock utc_;
-  time_point now_{};
+  time_point now_ = time_point::min();  // any steady epoch: the first `now` is taken as it is
   bool started_ = false;
   bool control_ = false;
   std::uint32_t next_ticket_ = 1;

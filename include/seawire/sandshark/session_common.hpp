@@ -4,11 +4,15 @@
 // timing rules, a UTC time-of-day clock driven by that time, the BPLOG subscription rules, and
 // the fixed-capacity queues the sessions fill and the caller drains.
 //
-// Time: every session call takes `now`, a std::chrono::steady_clock::time_point the caller
-// reads (or simulates: tests use time_point{} + 5s). Sessions never read a clock. A `now`
-// earlier than one already seen is taken as the later one, so time never runs backwards.
-// The wire's timestamps are UTC times of day; a utc_clock maps `now` to one, from an anchor
-// the caller sets (or the payload session takes from the vehicle's own timestamps).
+// Time: two clocks, told apart by their types. Every session call takes `now`, a
+// std::chrono::steady_clock::time_point the caller reads (or simulates: tests use
+// time_point{} + 5s), for the session's timers; sessions never read a clock. A `now` earlier
+// than one already seen is taken as the later one, so time never runs backwards. The wire's
+// timestamps are UTC times of day: a utc_clock, which every session is built with, ties one
+// steady time to the UTC time (a std::chrono::system_clock time) at that moment and advances
+// the UTC time with the steady clock from there. steady_clock counts from an arbitrary epoch
+// (often the machine's boot), never from midnight UTC: a steady time where a UTC time is expected
+// does not compile.
 
 #include <array>
 #include <chrono>
@@ -16,6 +20,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -23,9 +28,28 @@
 
 namespace seawire::sandshark {
 
-/// The time every session call takes.
+/// The time every session call takes, for its timers: steady (monotonic), any epoch.
 using time_point = std::chrono::steady_clock::time_point;
+/// UTC as std::chrono::system_clock keeps it (no leap seconds): system_clock::now(), or any
+/// sys_time (std::chrono::sys_days{...} + 23h), which converts implicitly.
+using utc_time = std::chrono::system_clock::time_point;
 using milliseconds = std::chrono::milliseconds;
+
+namespace detail {
+/// True for a time point of system_clock (UTC); the steady clock and the others are not UTC.
+template <class T>
+inline constexpr bool is_utc_time = false;
+template <class Duration>
+inline constexpr bool is_utc_time<std::chrono::time_point<std::chrono::system_clock, Duration>> =
+    true;
+/// Whether T is a time point, of a clock other than system_clock, passed where UTC is expected.
+template <class T>
+concept not_utc_time_point = requires {
+  typename T::clock;
+}
+&&std::is_same_v<T, std::chrono::time_point<typename T::clock, typename T::duration>> &&
+    !is_utc_time<T>;
+}  // namespace detail
 
 /// The SPI's timing rules; session configurations start from these.
 namespace timing {
@@ -40,13 +64,35 @@ inline constexpr milliseconds resend_after{5000};
 inline constexpr time_point::duration just_after{1};
 }  // namespace timing
 
-/// UTC time of day as a function of steady time: at `anchor` it was `anchor_ms` ms after
-/// midnight. Counts on past midnight (ms_at() exceeds one day) so timestamps made from it stay
-/// ordered; to_time_of_day() folds them back into a day. Until set(), steady time_point{} is
-/// midnight, which keeps simulated runs deterministic.
+/// UTC time of day as a function of steady time: at the steady time `anchor` it was `anchor_ms`
+/// ms after midnight UTC. Built from a steady time and the UTC time at that moment, read once
+/// from both clocks:
+///
+///   utc_clock clock(std::chrono::steady_clock::now(), std::chrono::system_clock::now());
+///
+/// and from there advanced by the steady time passed in (so a step of the system clock does not
+/// move it; set() re-anchors it). Counts on past midnight (ms_at() exceeds one day) so
+/// timestamps made from it stay ordered; to_time_of_day() folds them back into a day.
 class utc_clock {
  public:
   static constexpr std::int64_t day_ms = 86'400'000;
+
+  /// At the steady time `now` it is `utc`.
+  constexpr utc_clock(time_point now, utc_time utc) noexcept
+      : anchor_(now), anchor_ms_(ms_of(utc)) {}
+  /// At the steady time `now` the UTC time of day is `t` (a timestamp off the wire, or a
+  /// simulation's start: time_of_day{} is midnight).
+  constexpr utc_clock(time_point now, const nmea::time_of_day& t) noexcept
+      : anchor_(now), anchor_ms_(ms_of(t)) {}
+  /// Refused: a time point of another clock than system_clock is not a UTC time.
+  template <class T>
+  requires detail::not_utc_time_point<T>
+  constexpr utc_clock(time_point /*now*/, T /*utc*/) noexcept {
+    static_assert(
+        !detail::not_utc_time_point<T>,
+        "a UTC time is a std::chrono::system_clock time (system_clock::now()): "
+        "steady_clock counts from an arbitrary epoch (often boot), not from midnight UTC");
+  }
 
   /// At `now` the UTC time of day is `t`. Re-anchoring picks the day nearest the running
   /// estimate, so a re-anchor just after midnight does not send the clock back a day.
@@ -59,6 +105,20 @@ class utc_clock {
     anchor_ = now;
     anchor_ms_ = candidate;
   }
+  /// At `now` it is `utc` (its time of day; the day nearest the running estimate, as above).
+  constexpr void set(time_point now, utc_time utc) noexcept {
+    set(now, to_time_of_day(ms_of(utc)));
+  }
+  /// Refused: a time point of another clock than system_clock is not a UTC time.
+  template <class T>
+  requires detail::not_utc_time_point<T>
+  constexpr void set(time_point /*now*/, T /*utc*/) noexcept {
+    static_assert(
+        !detail::not_utc_time_point<T>,
+        "a UTC time is a std::chrono::system_clock time (system_clock::now()): "
+        "steady_clock counts from an arbitrary epoch (often boot), not from midnight UTC");
+  }
+
   /// Milliseconds since the midnight the clock started from (may exceed one day).
   [[nodiscard]] constexpr std::int64_t ms_at(time_point now) const noexcept {
     return anchor_ms_ + std::chrono::floor<milliseconds>(now - anchor_).count();
@@ -73,6 +133,11 @@ class utc_clock {
   }
   [[nodiscard]] static constexpr std::int64_t ms_of(const nmea::time_of_day& t) noexcept {
     return std::chrono::floor<milliseconds>(t.since_midnight()).count();
+  }
+  /// Milliseconds since the UTC midnight before `utc` (floor, before 1970 too).
+  [[nodiscard]] static constexpr std::int64_t ms_of(utc_time utc) noexcept {
+    const auto ms = std::chrono::floor<milliseconds>(utc);
+    return (ms - std::chrono::floor<std::chrono::days>(ms)).count();
   }
 
  private:

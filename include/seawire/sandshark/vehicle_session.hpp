@@ -2,9 +2,11 @@
 #pragma once
 // The vehicle (BAM) side of a Sandshark SPI session, sans I/O: what a simulator or a test
 // double of the vehicle needs. It is fed the payload clients' raw lines and the current time,
-// and hands back sentences for each client and events.
+// and hands back sentences for each client and events. `now` is always steady time; the session
+// is built with a utc_clock, which ties it to UTC for the timestamps it writes (see
+// session_common.hpp).
 //
-//   vehicle_session<> v;
+//   vehicle_session<> v(utc_clock(steady_clock::now(), system_clock::now()));
 //   auto c = v.connect(now);              // BFVER to the new client
 //   (void)v.receive(*c, line, now);       // BPLOG/BPSTS/BPRMB/BPABT/BPVER: state + BFACK
 //   if (v.should_send(*c, "NVG")) ...     // or v.publish(bfnvg{...}, now) to every subscriber
@@ -126,8 +128,10 @@ class vehicle_session {
  public:
   static constexpr std::size_t max_pending = 8;
 
-  constexpr explicit vehicle_session(const vehicle_config& config = {}) noexcept
-      : config_(config), control_allowed_(config.control_allowed) {}
+  /// `utc` gives the timestamps' UTC time of day at each steady `now` (set_utc() re-anchors it).
+  constexpr explicit vehicle_session(const utc_clock& utc,
+                                     const vehicle_config& config = {}) noexcept
+      : config_(config), utc_(utc), control_allowed_(config.control_allowed) {}
 
   // -- clients --------------------------------------------------------------------------------
 
@@ -323,6 +327,15 @@ class vehicle_session {
     advance(now);
     utc_.set(now, t);
   }
+  /// The UTC time at `now` (a std::chrono::system_clock time).
+  constexpr void set_utc(time_point now, utc_time utc) noexcept {
+    advance(now);
+    utc_.set(now, utc);
+  }
+  /// Refused at compile time: a steady (or other non-system_clock) time is not UTC.
+  template <class T>
+  requires detail::not_utc_time_point<T>
+  constexpr void set_utc(time_point now, T utc) noexcept { utc_.set(now, utc); }
   [[nodiscard]] constexpr std::uint64_t events_lost() const noexcept { return events_.lost(); }
   [[nodiscard]] constexpr std::uint64_t outbox_overflows() const noexcept { return overflows_; }
 
@@ -568,7 +581,7 @@ class vehicle_session {
 
   vehicle_config config_;
   utc_clock utc_;
-  time_point now_{};
+  time_point now_ = time_point::min();  // any steady epoch: the first `now` is taken as it is
   bool control_allowed_ = false;
   std::uint32_t next_ticket_ = 1;
   std::array<client_state, MaxClients> clients_{};
