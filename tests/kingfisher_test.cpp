@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -531,7 +532,8 @@ TEST_CASE("malformed CPNVG") {
           {"CPNVG,164959.x,4221.7,N,7105.4,W," + tail, errc::bad_time, 1},
           {"CPNVG,244959,4221.7,N,7105.4,W," + tail, errc::hour_out_of_range, 1},
           {"CPNVG,166059,4221.7,N,7105.4,W," + tail, errc::minute_out_of_range, 1},
-          {"CPNVG,164960,4221.7,N,7105.4,W," + tail, errc::second_out_of_range, 1},
+          {"CPNVG,164960.5,4221.7,N,7105.4,W," + tail, errc::second_out_of_range, 1},
+          {"CPNVG,164961.000,4221.7,N,7105.4,W," + tail, errc::second_out_of_range, 1},
           {"CPNVG,164959,,N,7105.4,W," + tail, errc::missing_field, 2},
           {"CPNVG,164959,4261.7,N,7105.4,W," + tail, errc::minute_out_of_range, 2},
           {"CPNVG,164959,9100.0,N,7105.4,W," + tail, errc::bad_latitude, 2},
@@ -694,6 +696,45 @@ TEST_CASE("the vehicle's nan is \"not available\": the rest of the sentence is k
               sealed("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,nan,156.78,311214,,,A"))
               .ec == errc::bad_number);
   }
+}
+
+TEST_CASE("the vehicle's seconds rounded up to 60.000 are the next minute's first instant") {
+  // The vehicle prints seconds with "%06.3f": from hh:mm:59.9995 on that is "60.000".
+  const std::string nvg = sealed(
+      "CPNVG,164960.000,4221.711142,N,7105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,164959.006");
+  const auto d = kf::decode_from_vehicle(nvg);
+  REQUIRE(d);
+  const auto& m = holds<kf::cpnvg>(d.value);
+  CHECK(m.timestamp.second == 60);
+  CHECK(m.timestamp.since_midnight() == std::chrono::hours(16) + std::chrono::minutes(50));
+  CHECK(nmea::encode(m).view() == nvg);  // written back as it came
+  for (const std::string& line :
+       {sealed("CPIMU,235960.000,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172"),
+        sealed("CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,000060.000"),
+        sealed("CPNVR,120060,0.02941,-0.068552,0,0.060938,0,-0.061132"),
+        sealed("CPRBS,172960.00,15.121597,15.121597,15.121597,0"), sealed("CPALT,164960.000,1")}) {
+    INFO(line);
+    const auto r = kf::decode_from_vehicle(line);
+    REQUIRE(r);
+    std::visit(
+        [&](const auto& msg) {
+          if constexpr (nmea::message_like<std::remove_cvref_t<decltype(msg)>>)
+            CHECK(nmea::encode(msg).view() == line);
+        },
+        r.value);
+  }
+  // A fraction that is not zero is no rounding, and the leap second stays 23:59's.
+  CHECK(kf::decode_from_vehicle(sealed("CPALT,164960.001,1")).ec == errc::second_out_of_range);
+  CHECK(kf::decode_from_vehicle(sealed("CPALT,235960.5,1")));
+  // A relayed GPS sentence and a command keep the rule of their own senders.
+  const auto rmc = kf::decode_from_vehicle(
+      sealed("GPRMC,164960.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A"));
+  CHECK(rmc.ec == errc::second_out_of_range);
+  CHECK(rmc.field == 1);
+  // Encode follows the message: a GPRMC with second 60 before 23:59 is refused.
+  seawire::standard::rmc fix;
+  fix.time = m.timestamp;
+  CHECK(nmea::encode(fix).ec == errc::second_out_of_range);
 }
 
 TEST_CASE("malformed CPNVR") {

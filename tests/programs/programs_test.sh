@@ -854,6 +854,18 @@ case_roles() {
   "$encode" <"$work/in" | "$decode" >"$work/again"
   expect_eq "decode | encode | decode keeps -0" \
     "$(printf '%s\n' "$want" '{"type":"PYDIR","thrust_left":-0,"thrust_right":0}')" "$(cat "$work/again")"
+
+  # The vehicle's seconds printed "%06.3f": 16:49:59.9995 and later is "164960.000".
+  crlf "$(seal CPNVG,164960.000,4221.711142,N,07105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,164959.006)" \
+    "$(seal GPRMC,164960.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A)" >"$work/in"
+  expect_rc "seconds rounded up to 60" 1 "$decode" <"$work/in"
+  expect_eq "kept in CPNVG, refused in GPRMC" \
+    "$(printf '%s\n' '"16:49:60.000"' 'second_out_of_range:1')" \
+    "$(sed -e 's/^{"type":"CPNVG","timestamp":\("[^"]*"\).*/\1/' \
+      -e 's/^{"line":2,"error":"\([a-z_]*\)","field":\([0-9]*\).*/\1:\2/' "$work/out")"
+  head -n 1 "$work/out" >"$work/json"
+  expect_rc "seconds rounded up to 60, through seawire-encode" 0 "$encode" <"$work/json"
+  expect_eq "written back as it came" "$(head -n 1 "$work/in")" "$(cat "$work/out")"
 }
 
 case_live() {

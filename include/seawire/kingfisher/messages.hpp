@@ -49,9 +49,10 @@ namespace seawire::kingfisher {
 /// degrees * 100 + minutes without padding, so within one degree of the equator or the prime
 /// meridian "22.2,W" (0 deg 22.2 min W) and at 0,0 "0,S,0,W"; and "nan" for a value it does not
 /// have (velocities when nearly stopped), read as not available with the rest of the sentence
-/// kept. Every CP* sentence declares them; the relayed GPRMC/GPGGA do not.
-inline constexpr nmea::number_forms vehicle_numbers{.unpadded_positions = true,
-                                                    .nan_as_blank = true};
+/// kept; and seconds rounded up to "60.000" ("%06.3f" of hh:mm:59.9995). Every CP* sentence
+/// declares them; the relayed GPRMC/GPGGA do not.
+inline constexpr nmea::number_forms vehicle_numbers{
+    .unpadded_positions = true, .nan_as_blank = true, .rounded_seconds = true};
 
 /// Navigation update. Real vehicles write unpadded longitude degrees ("7105.44878") and 0, not
 /// blank, for altitude and depth; both are kept as sent. `effective_nav_timestamp()` applies
@@ -195,7 +196,8 @@ struct cpalt {
   friend constexpr bool operator==(const cpalt&, const cpalt&) noexcept = default;
 
   static constexpr auto nmea = nmea::sentence<"CPALT">(nmea::field<&cpalt::timestamp>("timestamp"),
-                                                       nmea::field<&cpalt::lights_on>("lights_on"));
+                                                       nmea::field<&cpalt::lights_on>("lights_on"))
+                                   .sender_writes<vehicle_numbers>();
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -328,6 +328,11 @@ struct number_forms {
   /// sentence is kept. Refused where the policy holds input to the sending rules
   /// (strict_values), since seawire never writes it.
   bool nan_as_blank = false;
+  /// Seconds printed with a float format: "%06.3f" writes hh:mm:59.9995 and later as
+  /// "hhmm60.000", the first instant of the next minute. Second 60 with a fraction of zeros is
+  /// then read at any minute (elsewhere only 23:59:60, a leap second, is), and written back as
+  /// it came.
+  bool rounded_seconds = false;
 
   friend constexpr bool operator==(const number_forms&, const number_forms&) noexcept = default;
 };

@@ -573,6 +573,22 @@ template <message_like T>
   return T::nmea.fields.apply([&](const auto&... d) { return ((d.name == name) || ...); });
 }
 
+namespace detail {
+/// read_json_value, with the forms message T's sender writes (number_forms).
+template <message_like T, class V>
+[[nodiscard]] constexpr errc read_json_field(const json_value& v, V& out, int precision) noexcept {
+  if constexpr (std::is_same_v<V, time_of_day> &&
+                std::remove_cvref_t<decltype(T::nmea)>::numbers.rounded_seconds) {
+    if (v.kind != json_kind::string && v.kind != json_kind::number) return errc::bad_time;
+    const result<time_of_day> t = parse_time_text(v.text, true);
+    if (t) out = t.value;
+    return t.ec;
+  } else {
+    return read_json_value(v, out, precision);
+  }
+}
+}  // namespace detail
+
 /// Reads a message from a JSON object. `type` is its "type" member ("GPRMC": the talker of a
 /// talker-agnostic message comes from it). `lookup(object, key)` returns the json_value of
 /// member `key` of the message object (object == "") or of its "precision" object (object ==
@@ -615,7 +631,7 @@ template <message_like T, class Lookup>
           detail::clear_optional(member);
         } else {
           V value{};
-          e = read_json_value(v, value, precision);
+          e = detail::read_json_field<T>(v, value, precision);
           if (e == errc::ok) member = value;
         }
       } else if (v.blank()) {
@@ -625,7 +641,7 @@ template <message_like T, class Lookup>
           e = errc::missing_field;
         }
       } else {
-        e = read_json_value(v, member, precision);
+        e = detail::read_json_field<T>(v, member, precision);
       }
     }
     if (e != errc::ok) {

@@ -98,9 +98,11 @@ constexpr void clear_optional(O& o) noexcept {
 /// codec<V>::read, or the read of the number forms T's sender writes (number_forms).
 template <class T, class V>
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_value(field_reader& r, V& v) noexcept {
-  if constexpr (is_ddmm_position<V> &&
-                std::remove_cvref_t<decltype(T::nmea)>::numbers.unpadded_positions) {
+  constexpr number_forms numbers = std::remove_cvref_t<decltype(T::nmea)>::numbers;
+  if constexpr (is_ddmm_position<V> && numbers.unpadded_positions) {
     return codec<V>::read_unpadded(r, v);
+  } else if constexpr (std::is_same_v<V, time_of_day> && numbers.rounded_seconds) {
+    return codec<V>::read_rounded_seconds(r, v);
   } else {
     return codec<V>::read(r, v);
   }
@@ -359,7 +361,13 @@ template <class F, class T>
     v = &m;
   }
   if (has) {
-    errc e = codec<V>::check(*v);
+    errc e = errc::ok;
+    if constexpr (std::is_same_v<V, time_of_day> &&
+                  std::remove_cvref_t<decltype(T::nmea)>::numbers.rounded_seconds) {
+      e = codec<V>::template check_form<true>(*v);
+    } else {
+      e = codec<V>::check(*v);
+    }
     if (e == errc::ok) e = check_options(*v, o);
     if constexpr (is_ddmm_position<V> &&
                   !std::remove_cvref_t<decltype(T::nmea)>::numbers.unpadded_positions) {

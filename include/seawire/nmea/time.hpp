@@ -19,7 +19,10 @@
 namespace seawire::nmea {
 
 /// Time of day hhmmss[.f], 0 to 9 fraction digits kept as written. Second 60 is accepted only
-/// as 23:59:60, the one place a UTC leap second can stand.
+/// as 23:59:60, the one place a UTC leap second can stand, except in a message whose sender
+/// prints seconds with a float format (number_forms::rounded_seconds): there "164960.000", what
+/// "%06.3f" makes of hh:mm:59.9995 and later, is the first instant of the next minute, kept as
+/// written (since_midnight() reads it as that time).
 struct time_of_day {
   std::uint8_t hour = 0;
   std::uint8_t minute = 0;
@@ -174,6 +177,15 @@ struct codec<time_of_day> {
   static constexpr std::size_t max_chars = 16;  // hhmmss.fffffffff
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
+    return read_form<false>(r, v);
+  }
+  /// read(), and second 60 with a fraction of zeros at any minute (number_forms::rounded_seconds).
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read_rounded_seconds(field_reader& r,
+                                                                   time_of_day& v) noexcept {
+    return read_form<true>(r, v);
+  }
+  template <bool RoundedSeconds>
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read_form(field_reader& r, time_of_day& v) noexcept {
     const std::string_view s = r.take().text;
     if (s.size() < 6) [[unlikely]]
       return errc::bad_time;
@@ -191,14 +203,20 @@ struct codec<time_of_day> {
     }
     v = {static_cast<std::uint8_t>(two[0]), static_cast<std::uint8_t>(two[1]),
          static_cast<std::uint8_t>(two[2]), frac, static_cast<std::uint8_t>(places)};
-    return check(v);
+    return check_form<RoundedSeconds>(v);
   }
   SEAWIRE_ALWAYS_INLINE static constexpr errc check(const time_of_day& v) noexcept {
+    return check_form<false>(v);
+  }
+  /// check(), and with RoundedSeconds second 60 with a fraction of zeros at any minute.
+  template <bool RoundedSeconds>
+  SEAWIRE_ALWAYS_INLINE static constexpr errc check_form(const time_of_day& v) noexcept {
     if (v.hour > 23) [[unlikely]]
       return errc::hour_out_of_range;
     if (v.minute > 59) [[unlikely]]
       return errc::minute_out_of_range;
-    if (v.second > 60 || (v.second == 60 && !(v.hour == 23 && v.minute == 59)))
+    if (v.second > 60 || (v.second == 60 && !(v.hour == 23 && v.minute == 59) &&
+                          !(RoundedSeconds && v.fraction == 0)))
       return errc::second_out_of_range;
     if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places]) [[unlikely]]
       return errc::bad_time;
@@ -251,8 +269,11 @@ struct codec<date> {
 // from text people write (JSON and the command line take these)
 
 /// A time of day from "hh:mm:ss[.f]" (1 to 9 fraction digits after a point, kept) or the wire's
-/// "hhmmss[.f]". bad_time for other shapes, *_out_of_range for impossible values.
-[[nodiscard]] constexpr result<time_of_day> parse_time_text(std::string_view s) noexcept {
+/// "hhmmss[.f]". bad_time for other shapes, *_out_of_range for impossible values (second 60
+/// with a fraction of zeros is possible at any minute with `rounded_seconds`, for a message
+/// that declares number_forms::rounded_seconds).
+[[nodiscard]] constexpr result<time_of_day> parse_time_text(std::string_view s,
+                                                            bool rounded_seconds = false) noexcept {
   result<time_of_day> r;
   const bool colons = s.size() >= 8 && s[2] == ':' && s[5] == ':';
   const std::size_t step = colons ? 3 : 2;
@@ -272,7 +293,8 @@ struct codec<date> {
   }
   r.value = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m),
              static_cast<std::uint8_t>(sec), frac, static_cast<std::uint8_t>(places)};
-  r.ec = codec<time_of_day>::check(r.value);
+  r.ec = rounded_seconds ? codec<time_of_day>::check_form<true>(r.value)
+                         : codec<time_of_day>::check(r.value);
   return r;
 }
 
