@@ -126,10 +126,27 @@ inline constexpr std::string_view format_header_prefix = "# format=";
   return !line.empty() && line.front() == '#';
 }
 
+/// The canboat format called `text` (in any case: "fast" is FAST), or nullopt.
+[[nodiscard]] constexpr std::optional<canboat_format> canboat_format_named(
+    std::string_view text) noexcept {
+  for (std::size_t i = 0; i < canboat_format_count; ++i) {
+    const auto f = static_cast<canboat_format>(i);
+    const std::string_view n = name(f);
+    bool same = n.size() == text.size();
+    for (std::size_t k = 0; same && k < n.size(); ++k) {
+      const char c = text[k];
+      same = (c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c) == n[k];
+    }
+    if (same) return f;
+  }
+  return std::nullopt;
+}
+
 /// The format a header line `# format=NAME` names (NAME in any case; a trailing CR/LF ignored).
 /// bad_log_line (field 0) for a line that is no such header; unknown_log_format, with `field` 1
-/// and `column` 9 (where NAME starts), for a NAME canboat has no format of, and for a format of
-/// canboat's that seawire does not read (value = that format; is_readable() says which).
+/// and `column` 9 (where NAME starts), for a NAME canboat has no format of
+/// (canboat_format_named() says so), and for a format of canboat's that seawire does not read
+/// (value = that format; is_readable() says which).
 [[nodiscard]] constexpr result<canboat_format> parse_format_header(std::string_view line) noexcept {
   while (!line.empty() &&
          (line.back() == '\n' || line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
@@ -139,28 +156,13 @@ inline constexpr std::string_view format_header_prefix = "# format=";
     r.ec = errc::bad_log_line;
     return r;
   }
-  const std::string_view text = line.substr(format_header_prefix.size());
-  const auto column = static_cast<std::uint16_t>(format_header_prefix.size());
-  for (std::size_t i = 0; i < canboat_format_count; ++i) {
-    const auto f = static_cast<canboat_format>(i);
-    const std::string_view n = name(f);
-    bool same = n.size() == text.size();
-    for (std::size_t k = 0; same && k < n.size(); ++k) {
-      const char c = text[k];
-      same = (c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c) == n[k];
-    }
-    if (!same) continue;
-    r.value = f;
-    if (!is_readable(f)) {
-      r.ec = errc::unknown_log_format;
-      r.field = 1;
-      r.column = column;
-    }
-    return r;
+  const auto f = canboat_format_named(line.substr(format_header_prefix.size()));
+  if (f) r.value = *f;
+  if (!f || !is_readable(*f)) {
+    r.ec = errc::unknown_log_format;
+    r.field = 1;
+    r.column = static_cast<std::uint16_t>(format_header_prefix.size());
   }
-  r.ec = errc::unknown_log_format;
-  r.field = 1;
-  r.column = column;
   return r;
 }
 
