@@ -15,12 +15,13 @@
 //    to the millisecond of the day (yd_raw); a canboat line whose timestamp did not parse is
 //    written as 1970-01-01T00:00:00.000Z, which reads back as time 0;
 //  - writing that record again gives the same line;
-//  - log_reader::read_line reads a comment line ('#' first) as parse_format_header says (empty
-//    input for a plain comment), and until a header line was read returns what parse_log_line
-//    does (after one, an error still has a place); it calls back at most once per line, with the
-//    line's key and a payload no longer than 223 bytes (the line's own bytes, or a fast packet
-//    its frame completed), which decodes and encodes; its assembler balances
-//    (in == assembled + dropped + pending) after every line, and has nothing pending after flush.
+//  - log_reader::read_line reads a blank line as empty input whatever the format, a comment line
+//    ('#' first) as parse_format_header says (empty input for a plain comment), and until a header
+//    line was read returns what parse_log_line does (after one, an error still has a place); it
+//    calls back at most once per line, with the line's key and a payload no longer than 223 bytes
+//    (the line's own bytes, or a fast packet its frame completed), which decodes and encodes; its
+//    assembler balances (in == assembled + dropped + pending) after every line, and has nothing
+//    pending after flush.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -173,6 +174,13 @@ void read_through(Reader& reader, bool& headed, std::string_view line,
                   std::optional<n2k::log_format> format) {
   int calls = 0;
   const std::string_view trimmed = n2k::detail::trim_line_end(line);
+  if (trimmed.find_first_not_of(" \t") == std::string_view::npos) {
+    const seawire::result<n2k::log_format> b = reader.read_line(
+        line, [&](const auto&, auto) { ++calls; }, format);
+    SEAWIRE_FUZZ_CHECK(b.ec == errc::empty_input && calls == 0, "a blank line not empty input",
+                       line, name(b.ec));
+    return;
+  }
   if (n2k::is_log_comment(trimmed)) {
     const seawire::result<n2k::log_format> c = reader.read_line(
         line, [&](const auto&, auto) { ++calls; }, format);

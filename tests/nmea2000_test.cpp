@@ -138,8 +138,19 @@ TEST_CASE("sentinels are states, not numbers") {
   CHECK(u4::from_raw(14).state() == n2k::field_state::out_of_range);
   CHECK(u4::from_raw(13).state() == n2k::field_state::value);
   using l2 = n2k::lookup<n2k::humidity_source, 2>;
+  // lookups, as canboat reads them: three sentinels above 2 bits, two of 2 bits (J1939's
+  // "error" and "not available" of a two-bit state)
   CHECK(l2::from_raw(3).state() == n2k::field_state::not_available);
-  CHECK(l2::from_raw(2).state() == n2k::field_state::value);
+  CHECK(l2::from_raw(2).state() == n2k::field_state::out_of_range);
+  CHECK(l2::from_raw(1).state() == n2k::field_state::value);
+  using l6 = n2k::lookup<n2k::temperature_source, 6>;
+  CHECK(l6::from_raw(63).state() == n2k::field_state::not_available);
+  CHECK(l6::from_raw(62).state() == n2k::field_state::out_of_range);
+  CHECK(l6::from_raw(61).state() == n2k::field_state::reserved);
+  CHECK(l6::from_raw(60).state() == n2k::field_state::value);
+  using l8 = n2k::lookup<n2k::water_reference, 8>;
+  CHECK(l8::from_raw(253).state() == n2k::field_state::reserved);
+  CHECK(l8::from_raw(252).state() == n2k::field_state::value);
   // flag words have no sentinel: all ones is every flag
   const auto all = n2k::flags<n2k::engine_status_1, 16>::from_raw(0xFFFF);
   CHECK(all.test(n2k::engine_status_1::emergency_stop));
@@ -772,7 +783,7 @@ TEST_CASE("every captured and synthetic vector reads, and encodes back to its pa
                          "07_yanmar_127489.in",       "08_synthetic_fast_lines.in",
                          "09_synthetic_candump.in",   "10_synthetic_ydraw.in",
                          "11_special_values.in",      "12_format_fast_header.in",
-                         "13_ydraw_out_of_order.in"};
+                         "13_ydraw_out_of_order.in",  "14_lookup_edges.in"};
   // messages canboat decoded from each file (its .out.json has one line per message)
   std::size_t total = 0;
   for (const char* name : files) {
@@ -814,7 +825,7 @@ TEST_CASE("every captured and synthetic vector reads, and encodes back to its pa
         read_lines(std::string(name).replace(std::string(name).size() - 3, 3, ".out.json")).size());
     total += messages;
   }
-  CHECK(total == 74 + 13 + 7);
+  CHECK(total == 74 + 13 + 7 + 8);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -959,6 +970,15 @@ TEST_CASE("canboat lines: a FAST log's line is a whole message, whatever its len
                   "(1502984866.953084) slcan0 09F50374#001200FFFF00FFFF"});
     CHECK(msgs.size() == 1);
     CHECK(codes[2] == errc::bad_time);
+  }
+  SECTION("blank lines after a header, or with the format given, are blank lines") {
+    const auto [msgs, codes] = read_all({"# format=FAST", "", "  \r", whole});
+    CHECK(codes == std::vector<errc>{errc::ok, errc::empty_input, errc::empty_input, errc::ok});
+    n2k::log_reader<> reader;
+    CHECK(reader
+              .read_line(
+                  "\r\n", [](const auto&, auto) {}, n2k::log_format::yd_raw)
+              .ec == errc::empty_input);
   }
   SECTION("a header for a format seawire does not read, and other comments") {
     const auto [msgs, codes] = read_all({"# format=AIRMAR", "# recorded at the dock", whole});

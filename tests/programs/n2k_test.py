@@ -149,7 +149,7 @@ def lookup(names):
 
 def flag_set(names):
     """ours: array of names (bit_N when unnamed); canboat: array of display names, null when no
-    bit is set. No vector sets an unnamed bit; such a bit is expected as its number."""
+    bit is set; an unnamed bit as the bit's value (bit_8 is 256: canboat's analyzer, checked)."""
     def cmp(ours, theirs):
         if ours is None:  # not sent (a short message): canboat null too
             return None if theirs is None else "ours null (not sent), canboat has bits"
@@ -160,7 +160,8 @@ def flag_set(names):
         want = []
         for n in ours:
             m = re.fullmatch(r"bit_(\d+)", n)
-            want.append(int(m.group(1)) if m else names.get(n, f"<no canboat name for {n!r}>"))
+            want.append(1 << int(m.group(1)) if m else
+                        names.get(n, f"<no canboat name for {n!r}>"))
         return None if want == theirs else f"expected canboat {want!r}"
     return cmp
 
@@ -493,7 +494,14 @@ def field_value(data, offset, width, kind, arg):
     signed = kind == S
     if signed and raw >> (width - 1):
         raw -= 1 << width
-    special = sentinel(raw, width, signed)
+    if kind == "lookup":
+        # canboat's rule for an unnamed lookup value: the top three of more than 2 bits, the top
+        # two of 2 bits (J1939's error / not available) are no values
+        top = (1 << width) - 1
+        names = {top: "n/a", top - 1: "out_of_range", top - 2: "reserved"}
+        special = names.get(raw) if raw > top - (3 if width > 2 else 2) else None
+    else:
+        special = sentinel(raw, width, signed)
     if special:
         return None if special == "n/a" else special
     if kind in (U, S):

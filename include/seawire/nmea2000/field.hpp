@@ -18,8 +18,10 @@
 //   one below                               out of range      (field_state::out_of_range)
 //   two below                               reserved          (field_state::reserved)
 //
-// Fields of 4 to 7 bits reserve the first two, of 2 or 3 bits only "not available"; lookups and
-// flag sets of the standard follow the same rule, except flag words, where all ones is all flags.
+// Numbers of 4 to 7 bits reserve the first two, of 2 or 3 bits only "not available". A lookup
+// (an enumeration) reserves three of more than 2 bits (61, 62, 63 of a 6-bit one) and two of 2
+// bits (2 and 3: J1939's "error" and "not available" of a two-bit state), as canboat reads them.
+// Flag words have no sentinel: all ones is every flag, and "not available" is a word not sent.
 // A value in one of these states reads as an empty optional; the state says which. The most
 // negative signed value (0x80.., -32.768 m/s in a speed) is an ordinary number.
 //
@@ -82,9 +84,24 @@ struct resolution {
 
 namespace detail {
 
-/// How many of a field's top raw values are sentinels (see the top of this file).
+/// How many of a number's top raw values are sentinels (see the top of this file).
 [[nodiscard]] constexpr unsigned sentinel_count(unsigned bits) noexcept {
   return bits >= 8 ? 3U : bits >= 4 ? 2U : bits >= 2 ? 1U : 0U;
+}
+
+/// How many of a lookup's top raw values are sentinels (see the top of this file).
+[[nodiscard]] constexpr unsigned lookup_sentinel_count(unsigned bits) noexcept {
+  return bits > 2 ? 3U : bits == 2 ? 2U : 0U;
+}
+
+/// The state of raw value `raw` of a field whose top `sentinels` values (at most 3) are
+/// sentinels, `top` being the largest raw value.
+[[nodiscard]] constexpr field_state state_of(std::int64_t raw, std::int64_t top,
+                                             unsigned sentinels) noexcept {
+  if (raw <= top - sentinels) return field_state::value;
+  if (raw == top) return field_state::not_available;
+  if (raw == top - 1) return field_state::out_of_range;
+  return field_state::reserved;
 }
 
 /// The raw value as a decimal at resolution R: raw 3194 at 0.25 is 798.50.
@@ -299,7 +316,8 @@ template <named_enum E>
 
 /// A field of `Bits` bits whose values name things (a speed sensor's type, a temperature's
 /// source). Values the standard has not named are kept and sent as they are. The top raw values
-/// are sentinels as for numbers (63 and 62 in a 6-bit lookup, 3 in a 2-bit one).
+/// are sentinels: three of a lookup of more than 2 bits (63, 62, 61 of a 6-bit one: not
+/// available, out of range, reserved), two of a 2-bit one (3 and 2).
 template <named_enum E, unsigned Bits>
 class lookup {
   static_assert(Bits >= 1 && Bits <= 16);
@@ -307,7 +325,7 @@ class lookup {
  public:
   static constexpr unsigned bits = Bits;
   static constexpr bool is_signed = false;
-  static constexpr unsigned sentinels = detail::sentinel_count(Bits);
+  static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
   static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(max_valid_raw) + 1,
@@ -332,9 +350,8 @@ class lookup {
 
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
   [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
-  /// The same sentinels as an unsigned number of the width.
   [[nodiscard]] constexpr field_state state() const noexcept {
-    return number<Bits, false>::from_raw(raw_).state();
+    return detail::state_of(raw_, top_raw, sentinels);
   }
   [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
   /// The value, named or not; nullopt unless state() is value.

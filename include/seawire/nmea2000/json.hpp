@@ -276,7 +276,13 @@ namespace detail {
 template <class T>
 [[nodiscard]] constexpr std::optional<T> sentinel(field_state st) noexcept {
   constexpr std::int64_t top = T::top_raw;
-  constexpr unsigned n = detail::sentinel_count(T::bits);
+  constexpr unsigned n = [] {
+    if constexpr (requires { T::sentinels; }) {
+      return T::sentinels;
+    } else {
+      return detail::sentinel_count(T::bits);
+    }
+  }();
   if (st == field_state::not_available && n >= 1) return T::from_raw(top);
   if (st == field_state::out_of_range && n >= 2) return T::from_raw(top - 1);
   if (st == field_state::reserved && n >= 3) return T::from_raw(top - 2);

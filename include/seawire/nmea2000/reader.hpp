@@ -42,6 +42,8 @@ class log_reader {
   constexpr result<log_format> read_line(std::string_view line, Fn&& fn,
                                          std::optional<log_format> format = std::nullopt) {
     const std::string_view text = detail::trim_line_end(line);
+    if (text.find_first_not_of(" \t") == std::string_view::npos)
+      return {format.value_or(fixed_.value_or(log_format::candump_log)), errc::empty_input, 0, 0};
     if (is_log_comment(text)) {
       const result<canboat_format> h = parse_format_header(text);
       if (h.ec == errc::bad_log_line) return {log_format::canboat, errc::empty_input, 0, 0};
