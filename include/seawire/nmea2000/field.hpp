@@ -659,8 +659,8 @@ template <pgn_like P>
 }
 
 /// The bytes encode() writes for a PGN of `N` bytes: the first size() of `bytes`. That is all N,
-/// unless a flag set that is not available ends the payload early (see encode). Views as a span
-/// and iterates like a container.
+/// unless a flag set that is not available ends the payload early (see encode). A contiguous
+/// range: a std::span<const std::uint8_t> of it (what decode takes) views the bytes written.
 template <std::size_t N>
 struct encoded_bytes {
   std::array<std::uint8_t, N> bytes{};
@@ -674,8 +674,6 @@ struct encoded_bytes {
   [[nodiscard]] constexpr std::span<const std::uint8_t> view() const noexcept {
     return {bytes.data(), length};
   }
-  // NOLINTNEXTLINE(google-explicit-constructor): decode<P>(encode(m).value) reads what was written
-  constexpr operator std::span<const std::uint8_t>() const noexcept { return view(); }
   /// The same bytes, as many.
   [[nodiscard]] constexpr bool operator==(std::span<const std::uint8_t> o) const noexcept {
     if (o.size() != length) return false;
