@@ -902,6 +902,7 @@ std::pair<std::vector<collected>, std::vector<errc>> read_all(
   n2k::log_reader<> reader;
   std::vector<collected> out;
   std::vector<errc> codes;
+  codes.reserve(lines.size());
   for (const std::string_view l : lines) {
     codes.push_back(reader
                         .read_line(l,
@@ -1191,5 +1192,5 @@ TEST_CASE("random messages of every PGN: decode, encode, JSON and back give the 
       ++checked;
     }
   });
-  CHECK(checked == 6 * 3000);
+  CHECK(checked == std::size_t{6} * 3000);
 }
