@@ -192,8 +192,10 @@ void read_through(Reader& reader, bool& headed, std::string_view line,
     headed = headed || h.ok();
     return;
   }
+  // The format the line is read in: the one given, else the one the log's header fixed.
+  const std::optional<n2k::log_format> as = format ? format : reader.header_format();
   const seawire::result<n2k::log_record> parsed =
-      format ? n2k::parse_log_line(line, *format) : n2k::parse_log_line(line);
+      as ? n2k::parse_log_line(line, *as) : n2k::parse_log_line(line);
   const seawire::result<n2k::log_format> r = reader.read_line(
       line,
       [&](const n2k::message_header& h, std::span<const std::uint8_t> payload) {

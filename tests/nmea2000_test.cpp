@@ -971,6 +971,10 @@ TEST_CASE("canboat lines: a FAST log's line is a whole message, whatever its len
                   "(1502984866.953084) slcan0 09F50374#001200FFFF00FFFF"});
     CHECK(msgs.size() == 1);
     CHECK(codes[2] == errc::bad_time);
+    n2k::log_reader<> reader;
+    CHECK_FALSE(reader.header_format());
+    CHECK(reader.read_line("# format=ydwg02", [](const auto&, auto) {}));
+    CHECK(reader.header_format() == n2k::log_format::yd_raw);
   }
   SECTION("blank lines after a header, or with the format given, are blank lines") {
     const auto [msgs, codes] = read_all({"# format=FAST", "", "  \r", whole});

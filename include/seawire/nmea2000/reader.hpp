@@ -87,6 +87,12 @@ class log_reader {
     return r;
   }
 
+  /// The format the log's last readable header fixed for lines read without one given (canboat,
+  /// or yd_raw for YDWG02); nullopt before any.
+  [[nodiscard]] constexpr std::optional<log_format> header_format() const noexcept {
+    return fixed_;
+  }
+
   /// How canboat lines are read now: the log's header, or what its first canboat line made of a
   /// log without one; nullopt before either.
   [[nodiscard]] constexpr std::optional<canboat_format> canboat_lines() const noexcept {
