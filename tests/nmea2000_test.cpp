@@ -630,6 +630,16 @@ TEST_CASE("each log format reads its line") {
   CHECK(short_last.value.size == 2);
 }
 
+TEST_CASE("a canboat line's byte may be one hex digit, as canboat reads it") {
+  const auto r = n2k::parse_log_line("2022-04-17-04:35:34.254,2,128259,35,255,3,0,f,12");
+  REQUIRE(r);
+  CHECK(std::vector<std::uint8_t>(r.value.data().begin(), r.value.data().end()) ==
+        hex_bytes("000F12"));
+  CHECK(n2k::parse_log_line("2022-04-17-04:35:34.254,2,128259,35,255,2,0,123").ec ==
+        errc::bad_number);
+  CHECK(n2k::parse_log_line("21:55:35.925 R 09F50323 0 12").ec == errc::bad_number);
+}
+
 TEST_CASE("malformed log lines name the token and the reason") {
   const struct {
     std::string_view line;

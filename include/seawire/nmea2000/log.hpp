@@ -368,7 +368,9 @@ template <bool Spaced>
     }
     const std::string_view tok = c.until(Spaced ? " \t" : ",");
     std::uint32_t v = 0;
-    if (tok.size() != 2 || !parse_hex(tok, v) || r.size >= max) return false;
+    // Two hex digits; canboat lines may have one (canboat writes and reads "0" for 00)
+    const bool size_ok = tok.size() == 2 || (!Spaced && tok.size() == 1);
+    if (!size_ok || !parse_hex(tok, v) || r.size >= max) return false;
     r.bytes[r.size++] = static_cast<std::uint8_t>(v);
   }
 }
