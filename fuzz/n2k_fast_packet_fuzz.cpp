@@ -7,9 +7,10 @@
 //  - after every feed, frames_in == frames_assembled + frames_dropped + frames_pending; after
 //    flush(), frames_pending == 0 and the sum still holds;
 //  - a completed packet is of the frame's key (source, PGN, destination), carries the priority
-//    of the frame that completed it, is no longer than the max_length passed (and 223), is as
-//    long as the last frame 0 of its key announced, holds exactly the bytes its frames carried
-//    since that frame 0, and moves fast_packet_frame_count(length) frames to frames_assembled;
+//    of the frame that completed it, is no longer than 223 bytes, is as long as the last frame 0
+//    of its key announced, holds at each place the bytes of the frame of that number its key
+//    sent last (frames come in any order), all of one sequence counter, and moves
+//    fast_packet_frame_count(length) frames to frames_assembled;
 //  - split_fast_packet refuses payloads above 223 bytes and sequences above 7, and otherwise
 //    gives fast_packet_frame_count(size) frames of 8 bytes whose first byte is the sequence and
 //    frame number, which a fresh assembler turns back into the same payload, on the last frame
@@ -43,15 +44,9 @@ std::string hex_of(std::span<const std::uint8_t> bytes) {
   return out;
 }
 
-/// The PGNs a header byte can pick, with the max_length passed for each: three of the library's
-/// fast-packet PGNs at their lengths, and an addressed (PDU1) proprietary one with a max_length
-/// above 223, which the assembler must cap.
-struct pgn_choice {
-  std::uint32_t pgn;
-  std::size_t max_length;
-};
-constexpr std::array<pgn_choice, 4> choices = {
-    {{127489, 26}, {128275, 14}, {130578, 12}, {126720, 255}}};
+/// The PGNs a header byte can pick: three of the library's fast-packet PGNs, and an addressed
+/// (PDU1) proprietary one.
+constexpr std::array<std::uint32_t, 4> choices = {127489, 128275, 130578, 126720};
 
 template <std::size_t Slots>
 void check_balance(const n2k::fast_packet_assembler<Slots>& a, const std::string& where) {
@@ -63,14 +58,10 @@ void check_balance(const n2k::fast_packet_assembler<Slots>& a, const std::string
 
 void check_stream(std::span<const std::uint8_t> input) {
   n2k::fast_packet_assembler<4> a;
-  // What each key (4 sources x 4 PGNs) carried since its last frame 0: the announced length and
-  // the data bytes, frame 0's from byte 2 and the others' from byte 1.
-  struct key_state {
-    bool started = false;
-    std::size_t announced = 0;
-    std::vector<std::uint8_t> carried;
-  };
-  std::array<key_state, 16> keys{};
+  // The last frame of each number each key (4 sources x 4 PGNs) sent, that the assembler could
+  // take (not an empty frame, nor a frame 0 without a length or announcing more than 223).
+  using frame_bytes = std::vector<std::uint8_t>;
+  std::array<std::array<std::optional<frame_bytes>, 32>, 16> keys{};
   std::uint64_t packets = 0;
 
   std::size_t at = 0;
@@ -83,25 +74,21 @@ void check_stream(std::span<const std::uint8_t> input) {
 
     const auto source = static_cast<std::uint8_t>(h & 3U);
     const std::size_t pick = (h >> 2U) & 3U;
-    const pgn_choice& c = choices[pick];
+    const std::uint32_t pgn = choices[pick];
     n2k::can_id id;
     id.priority = static_cast<std::uint8_t>(frame % 8);
-    id.pgn = c.pgn;
+    id.pgn = pgn;
     id.source = source;
     // The PDU1 PGN is sent to the next source's address, so the destination is part of the key.
     id.destination =
-        n2k::is_addressed(c.pgn) ? static_cast<std::uint8_t>(source ^ 1U) : n2k::broadcast_address;
-    key_state& k = keys[pick * 4 + source];
-    if (!data.empty() && (data[0] & 0x1FU) == 0) {
-      k.started = data.size() >= 2;
-      k.announced = data.size() >= 2 ? data[1] : 0;
-      k.carried.assign(data.begin() + std::min<std::ptrdiff_t>(2, std::ssize(data)), data.end());
-    } else if (!data.empty()) {
-      k.carried.insert(k.carried.end(), data.begin() + 1, data.end());
-    }
+        n2k::is_addressed(pgn) ? static_cast<std::uint8_t>(source ^ 1U) : n2k::broadcast_address;
+    auto& k = keys[pick * 4 + source];
+    const bool takeable =
+        !data.empty() && ((data[0] & 0x1FU) != 0 || (data.size() >= 2 && data[1] <= 223));
+    if (takeable) k[data[0] & 0x1FU] = frame_bytes(data.begin(), data.end());
 
     const std::uint64_t assembled_before = a.frames_assembled();
-    const std::optional<n2k::assembled_packet> done = a.feed(id, data, c.max_length);
+    const std::optional<n2k::assembled_packet> done = a.feed(id, data);
     const std::string where = "frame " + number(frame) + ": " + hex_of(data);
     check_balance(a, where);
     if (!done) {
@@ -115,20 +102,30 @@ void check_stream(std::span<const std::uint8_t> input) {
                            done->id.destination == id.destination &&
                            done->id.priority == id.priority,
                        "a packet of another key, or not the last frame's priority", where);
-    SEAWIRE_FUZZ_CHECK(p.size() <= std::min(c.max_length, n2k::max_fast_packet_length),
-                       "a packet longer than max_length", where, number(p.size()));
-    SEAWIRE_FUZZ_CHECK(k.started && p.size() == k.announced,
-                       "a packet not as long as its frame 0 announced", where, number(p.size()),
-                       number(k.announced));
-    SEAWIRE_FUZZ_CHECK(
-        k.carried.size() >= p.size() && std::equal(p.begin(), p.end(), k.carried.begin()),
-        "a packet's bytes are not its frames' bytes", where, hex_of(p), hex_of(k.carried));
-    SEAWIRE_FUZZ_CHECK(
-        a.frames_assembled() - assembled_before == n2k::fast_packet_frame_count(p.size()),
-        "a packet of n bytes did not take fast_packet_frame_count(n) frames", where,
-        number(a.frames_assembled() - assembled_before));
+    SEAWIRE_FUZZ_CHECK(p.size() <= n2k::max_fast_packet_length, "a packet longer than 223 bytes",
+                       where, number(p.size()));
+    SEAWIRE_FUZZ_CHECK(k[0] && (*k[0])[1] == p.size(),
+                       "a packet not as long as its key's last frame 0 announced", where,
+                       number(p.size()));
+    // Every byte is the byte of the frame of its number last sent, whatever the frames' order.
+    const std::size_t n = n2k::fast_packet_frame_count(p.size());
+    for (std::size_t f = 0; f < n; ++f) {
+      SEAWIRE_FUZZ_CHECK(k[f].has_value(), "a packet of a frame never sent", where, number(f));
+      const frame_bytes& b = *k[f];
+      const std::size_t skip = f == 0 ? 2 : 1;
+      const std::size_t off = f == 0 ? 0 : 6 + 7 * (f - 1);
+      for (std::size_t i = 0; off + i < p.size() && i < (f == 0 ? 6U : 7U); ++i) {
+        SEAWIRE_FUZZ_CHECK(skip + i < b.size() && b[skip + i] == p[off + i],
+                           "a packet's byte is not its frame's", where, number(f), number(i),
+                           hex_of(p), hex_of(b));
+      }
+      SEAWIRE_FUZZ_CHECK((b[0] >> 5U) == (*k[0])[0] >> 5U,
+                         "a packet of frames of different sequence counters", where, number(f));
+    }
+    SEAWIRE_FUZZ_CHECK(a.frames_assembled() - assembled_before == n,
+                       "a packet of n bytes did not take fast_packet_frame_count(n) frames", where,
+                       number(a.frames_assembled() - assembled_before));
     SEAWIRE_FUZZ_CHECK(a.packets() == packets, where);
-    k.started = false;
   }
   a.flush();
   check_balance(a, "after flush");

@@ -15,10 +15,13 @@
 //    to the millisecond of the day (yd_raw); a canboat line whose timestamp did not parse is
 //    written as 1970-01-01T00:00:00.000Z, which reads back as time 0;
 //  - writing that record again gives the same line;
-//  - log_reader::read_line returns what parse_log_line does, calls back at most once per line,
-//    with the line's key and a payload no longer than 223 bytes (a fast-packet PGN's frames:
-//    no longer than its length), which decodes and encodes; its assembler balances
-//    (in == assembled + dropped + pending) after every line, and has nothing pending after flush.
+//  - log_reader::read_line reads a blank line as empty input whatever the format, a comment line
+//    ('#' first) as parse_format_header says (empty input for a plain comment), and until a header
+//    line was read returns what parse_log_line does (after one, an error still has a place); it
+//    calls back at most once per line, with the line's key and a payload no longer than 223 bytes
+//    (the line's own bytes, or a fast packet its frame completed), which decodes and encodes; its
+//    assembler balances (in == assembled + dropped + pending) after every line, and has nothing
+//    pending after flush.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -167,10 +170,32 @@ void check_line(std::string_view line) {
 }
 
 template <class Reader>
-void read_through(Reader& reader, std::string_view line, std::optional<n2k::log_format> format) {
+void read_through(Reader& reader, bool& headed, std::string_view line,
+                  std::optional<n2k::log_format> format) {
   int calls = 0;
+  const std::string_view trimmed = n2k::detail::trim_line_end(line);
+  if (trimmed.find_first_not_of(" \t") == std::string_view::npos) {
+    const seawire::result<n2k::log_format> b = reader.read_line(
+        line, [&](const auto&, auto) { ++calls; }, format);
+    SEAWIRE_FUZZ_CHECK(b.ec == errc::empty_input && calls == 0, "a blank line not empty input",
+                       line, name(b.ec));
+    return;
+  }
+  if (n2k::is_log_comment(trimmed)) {
+    const seawire::result<n2k::log_format> c = reader.read_line(
+        line, [&](const auto&, auto) { ++calls; }, format);
+    const seawire::result<n2k::canboat_format> h = n2k::parse_format_header(trimmed);
+    SEAWIRE_FUZZ_CHECK(calls == 0, "a comment line gave a message", line);
+    SEAWIRE_FUZZ_CHECK(h.ec == errc::bad_log_line ? c.ec == errc::empty_input : c.ec == h.ec,
+                       "a comment or header line not read as parse_format_header says", line,
+                       name(c.ec), name(h.ec));
+    headed = headed || h.ok();
+    return;
+  }
+  // The format the line is read in: the one given, else the one the log's header fixed.
+  const std::optional<n2k::log_format> as = format ? format : reader.header_format();
   const seawire::result<n2k::log_record> parsed =
-      format ? n2k::parse_log_line(line, *format) : n2k::parse_log_line(line);
+      as ? n2k::parse_log_line(line, *as) : n2k::parse_log_line(line);
   const seawire::result<n2k::log_format> r = reader.read_line(
       line,
       [&](const n2k::message_header& h, std::span<const std::uint8_t> payload) {
@@ -180,26 +205,34 @@ void read_through(Reader& reader, std::string_view line, std::optional<n2k::log_
                                h.id.destination == rec.id.destination && h.time_us == rec.time_us,
                            "a message of another key than its line", line);
         SEAWIRE_FUZZ_CHECK(payload.size() <= n2k::max_fast_packet_length, line);
+        // The line's own bytes, or a packet its frames completed (a canboat line is a frame
+        // or a whole message as the log's header or first canboat line says).
         const auto info = n2k::ins_input_pgns::info(rec.id.pgn);
-        if (!rec.assembled && info && info->transport == n2k::framing::fast_packet) {
-          SEAWIRE_FUZZ_CHECK(payload.size() <= n2k::ins_input_pgns::length(rec.id.pgn),
-                             "an assembled packet longer than its PGN", line);
-        } else {
-          SEAWIRE_FUZZ_CHECK(std::ranges::equal(payload, rec.data()),
-                             "a line's own payload not passed on as it is", line);
-        }
+        SEAWIRE_FUZZ_CHECK(
+            std::ranges::equal(payload, rec.data()) ||
+                (info && info->transport == n2k::framing::fast_packet && rec.size <= 8),
+            "a line's own payload not passed on as it is", line);
         (void)n2k::ins_input_pgns::visit(h.id.pgn, payload, [&](const auto& m) {
           SEAWIRE_FUZZ_CHECK(n2k::encode(m).ok(), "a message read from a log does not encode",
                              line);
         });
       },
       format);
-  SEAWIRE_FUZZ_CHECK(r.ec == parsed.ec && r.field == parsed.field && r.column == parsed.column &&
-                         (!r || r.value == parsed.value.format),
-                     "read_line's result is not parse_log_line's", line, name(r.ec),
-                     name(parsed.ec));
-  SEAWIRE_FUZZ_CHECK(calls <= 1 && (parsed.ok() || calls == 0), "called back more than once", line,
-                     number(static_cast<std::uint64_t>(calls)));
+  if (headed) {
+    // A header fixed the format (or PLAIN refuses a line of more than 8 bytes): an error still
+    // has a place.
+    SEAWIRE_FUZZ_CHECK(
+        r.ok() || (r.column <= line.size() && !n2k::log_field_name(r.value, r.field).empty()),
+        "a read error without a place", line, name(r.ec));
+    SEAWIRE_FUZZ_CHECK(calls <= 1 && (r.ok() || calls == 0), "called back more than once", line);
+  } else {
+    SEAWIRE_FUZZ_CHECK(r.ec == parsed.ec && r.field == parsed.field && r.column == parsed.column &&
+                           (!r || r.value == parsed.value.format),
+                       "read_line's result is not parse_log_line's", line, name(r.ec),
+                       name(parsed.ec));
+    SEAWIRE_FUZZ_CHECK(calls <= 1 && (parsed.ok() || calls == 0), "called back more than once",
+                       line, number(static_cast<std::uint64_t>(calls)));
+  }
   const auto& a = reader.assembler();
   SEAWIRE_FUZZ_CHECK(
       a.frames_in() == a.frames_assembled() + a.frames_dropped() + a.frames_pending(),
@@ -213,14 +246,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Two slots, so that a few sources interleaving fast packets evict each other.
   n2k::log_reader<n2k::ins_input_pgns, 2> detecting;
   n2k::log_reader<n2k::ins_input_pgns, 2> fixed;
+  bool detecting_headed = false;
+  bool fixed_headed = false;
   const n2k::log_format fixed_format = formats[size == 0 ? 0 : data[0] % formats.size()];
   std::size_t at = 0;
   while (at <= text.size()) {
     const std::size_t nl = std::min(text.find('\n', at), text.size());
     const std::string_view line = text.substr(at, nl - at);
     check_line(line);
-    read_through(detecting, line, std::nullopt);
-    read_through(fixed, line, fixed_format);
+    read_through(detecting, detecting_headed, line, std::nullopt);
+    read_through(fixed, fixed_headed, line, fixed_format);
     at = nl + 1;
   }
   for (auto* reader : {&detecting, &fixed}) {

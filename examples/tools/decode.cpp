@@ -68,6 +68,8 @@ constexpr std::size_t max_log_line = 4096;
 bool is_can_log_line(std::string_view line) {
   const std::size_t at = line.find_first_not_of(" \t");
   if (at == std::string_view::npos || line[at] == '$' || line[at] == '!') return false;
+  // canboat's "# format=NAME" header, of a format known or not, says this is a CAN log.
+  if (nmea2000::parse_format_header(line).ec != errc::bad_log_line) return true;
   return static_cast<bool>(nmea2000::parse_log_line(line));
 }
 
@@ -434,6 +436,17 @@ class decoder {
         opt_.log_format);
     if (r.ec == errc::empty_input || r.ok()) return;
     std::string detail;
+    if (r.ec == errc::unknown_log_format) {
+      const std::string_view named =
+          nmea2000::detail::trim_line_end(text).substr(nmea2000::format_header_prefix.size());
+      detail = "the log's header names format \"" + std::string(named) + "\": " +
+               (nmea2000::canboat_format_named(named) ? "a canboat format seawire does not read"
+                                                      : "no canboat format has this name") +
+               " (seawire reads PLAIN, FAST, PLAIN_OR_FAST, PLAIN_MIX_FAST and YDWG02); the lines "
+               "after it are read as before";
+      reject(log_lines_, r.ec, r.field, detail, text);
+      return;
+    }
     if (r.field != 0) {
       detail = std::string(name(r.value)) + " " +
                std::string(nmea2000::log_field_name(r.value, r.field)) + " at column " +

@@ -470,7 +470,11 @@ class encoder {
         }
         const auto bytes = nmea2000::encode(m.value);
         if (!bytes) {
-          field_error(type, bytes.ec, bytes.field, nmea2000::field_name<P>(bytes.field));
+          field_error(type, bytes.ec, bytes.field, nmea2000::field_name<P>(bytes.field),
+                      bytes.ec == errc::missing_field
+                          ? " (a flag set has no \"not available\" value: it can be left out "
+                            "only with every field after it; [] sends it with no flag set)"
+                          : "");
           ok = false;
           return;
         }
@@ -507,6 +511,14 @@ class encoder {
   }
 
   bool put_record(std::string_view type, const nmea2000::log_record& rec) {
+    if (opt_.log == nmea2000::log_format::canboat && !canboat_header_) {
+      // Every canboat line written is a whole message: say so, as canboat's loggers do, so a
+      // reader takes a fast-packet PGN's message of 8 bytes or fewer whole, not as a frame.
+      out_.put(nmea2000::format_header_prefix);
+      out_.put(nmea2000::name(nmea2000::canboat_format::fast));
+      out_.put('\n');
+      canboat_header_ = true;
+    }
     const errc e = nmea2000::write_log_line(out_, rec, opt_.log);
     if (e != errc::ok) {
       field_error(type, e, 0, {});
@@ -671,6 +683,7 @@ class encoder {
   tools::output out_;
   json_object obj_;
   nmea2000::fast_packet_sequencer<> sequence_;
+  bool canboat_header_ = false;  // "# format=FAST" written
   std::uint64_t line_ = 0;
   std::uint64_t rejected_ = 0;
 };
@@ -741,8 +754,9 @@ int main(int argc, char** argv) {
   std::string log = "candump_log";
   app.add_option("-o,--output", log,
                  "how NMEA 2000 messages (\"type\":\"PGN128259\") are written: candump_log "
-                 "(default: candump -L lines, what canplayer reads), candump, canboat (PLAIN, or "
-                 "FAST for a whole fast packet) or yd_raw; fast packets are split into frames "
+                 "(default: candump -L lines, what canplayer reads), candump, canboat (FAST: a "
+                 "\"# format=FAST\" header, then one line per whole message) or yd_raw; fast "
+                 "packets are split into frames "
                  "with a sequence counter per PGN and source (e.g. seawire-encode < speed.jsonl | "
                  "canplayer -I - vcan0=can0)")
       ->check(CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw"}));

@@ -61,8 +61,9 @@ enum class errc : std::uint8_t {
   bad_variation_direction,  ///< magnetic variation letter other than E or W
   variation_out_of_range,   ///< magnetic variation to send beyond 0..180 degrees
   // -- NMEA 2000 --
-  bad_can_id,    ///< not a 29-bit identifier, or fields no identifier can carry
-  bad_log_line,  ///< a CAN log line of no known format, or malformed in its format
+  bad_can_id,          ///< not a 29-bit identifier, or fields no identifier can carry
+  bad_log_line,        ///< a CAN log line of no known format, or malformed in its format
+  unknown_log_format,  ///< a log's format header names a format seawire does not read
 };
 
 /// The identifier of an errc as text ("checksum_mismatch"), for logs and JSON.
@@ -113,6 +114,7 @@ enum class errc : std::uint8_t {
     case errc::variation_out_of_range: return "variation_out_of_range";
     case errc::bad_can_id: return "bad_can_id";
     case errc::bad_log_line: return "bad_log_line";
+    case errc::unknown_log_format: return "unknown_log_format";
   }
   return "unknown_error";
 }
@@ -166,6 +168,8 @@ enum class errc : std::uint8_t {
     case errc::bad_can_id:
       return "not a 29-bit CAN identifier, or priority/PGN/destination it cannot carry";
     case errc::bad_log_line: return "not a CAN log line of a known format";
+    case errc::unknown_log_format:
+      return "the log's format header names a format seawire does not read";
   }
   return "unknown error";
 }

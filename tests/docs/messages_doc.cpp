@@ -271,14 +271,15 @@ std::string n2k_form(std::string& step, std::string& range) {
     return "lookup";
   } else if constexpr (kind == 3) {
     range = names_of<typename n2k_kind<V>::enum_type>(true);
-    return "flag set (`[]` when none is set)";
+    return "flag set (`[]` when none is set, `null` when not sent)";
   } else if constexpr (std::is_same_v<V, nmea2000::date>) {
     step = "1 day";
     range = "1970-01-01 to 2149-06-03";
     return "date, days since 1970-01-01, JSON `\"YYYY-MM-DD\"`";
   } else if constexpr (std::is_same_v<V, nmea2000::time_of_day>) {
     step = "0.0001 s";
-    range = "00:00:00.0000 to 24:00:01.0000";
+    range = "00:00:00.0000 to 24:00:01.0000 (a leap second); later times as sent, to "
+            "119:18:16.7292";
     return "UTC time of day, JSON `\"hh:mm:ss.ffff\"`";
   } else {
     static_assert(!sizeof(V), "messages_doc: say what this PGN field holds");
@@ -317,11 +318,18 @@ void pgns(nmea2000::pgn_list<P...>*) {
       "## NMEA 2000: inputs to the INS\n\n"
       "Fields are little-endian and packed least significant bit first from the bit offset. A\n"
       "number's physical value is its raw value times the step, in the unit its name ends with.\n"
-      "The highest raw values of a field are not values: in a field of 8 bits or more the top\n"
+      "The highest raw values of a field are not values: in a number of 8 bits or more the top\n"
       "one means \"not available\" (JSON `null`, an empty optional), the next \"out of range\"\n"
-      "and the third \"reserved\" (JSON `\"out_of_range\"`, `\"reserved\"`); a field of 4 to 7\n"
-      "bits has the first two, of 2 or 3 bits only \"not available\". The Values column gives\n"
-      "the range left for values. A lookup value without a name is written as its number.\n\n");
+      "and the third \"reserved\" (JSON `\"out_of_range\"`, `\"reserved\"`); a number of 4 to 7\n"
+      "bits has the first two, of 2 or 3 bits only \"not available\". A lookup has all three\n"
+      "above 2 bits and the first two of 2 bits (3 and 2, as J1939 and canboat read a two-bit\n"
+      "state). The Values column gives the range left for values. A lookup value without a name\n"
+      "is written as its number. A flag set has no such value: all ones is every flag.\n"
+      "A message may be shorter than its PGN (a sender leaves trailing fields out): a field it\n"
+      "does not hold in full is not available, `null`, a flag set too (not `[]`, which says no\n"
+      "flag is set); encoding leaves a flag set that is not available out, with every field\n"
+      "after it, which must be not available too. A longer message (fields a newer sender\n"
+      "appends) is read for the fields here, the rest ignored.\n\n");
   (pgn<P>(), ...);
 }
 

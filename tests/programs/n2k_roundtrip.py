@@ -6,12 +6,15 @@
 For every vector and every log format seawire-encode writes, the second decode gives the same
 messages as the first: the same values, and the same time to what the format keeps (yd_raw keeps
 milliseconds of the day). Then seawire-encode's refusals: each names the line, the field and why,
-and the good lines around them are still written.
+and the good lines around them are still written. Then whatever decodes encodes: a short 127489
+(its flag words not sent), and random messages of every PGN of every length, times of 24 h and
+later among them, come back the same through every format.
 """
 
 import glob
 import json
 import os
+import random
 import subprocess
 import sys
 
@@ -87,14 +90,16 @@ bad = (b'{"type":"PGN128259","speed_water_mps":700}\n'
        b'{"type":"PGN128259","speed_water_mps":1.5,"prio":9}\n'
        b'{"type":"PGN60928","data":"12345"}\n'
        b'{"type":"PGN128259","speed_water_mps":1.5}\n'
-       b'{"type":"PGN127489","discrete_status_2":["warning_level_1","bit_9"]}\n'
-       b'{"type":"PGN127489","discrete_status_1":["low_oil_levels"]}\n')
+       b'{"type":"PGN127489","discrete_status_1":[],"discrete_status_2":["warning_level_1","bit_9"]}\n'
+       b'{"type":"PGN127489","discrete_status_1":["low_oil_levels"]}\n'
+       b'{"type":"PGN127489","discrete_status_2":["warning_level_1"]}\n')
 out = run(ENCODE, [], bad)
 err = out.stderr.decode()
 check(out.returncode == 1, f"refusals: exit {out.returncode}")
 for line, words in [(1, ["speed_water_mps", "out_of_range"]), (2, ["speed_type", "bad_enum"]),
                     (3, ['"spede"']), (4, ["prio", "out_of_range"]), (5, ['"data"']),
-                    (8, ["discrete_status_1", "bad_flag"])]:
+                    (8, ["discrete_status_1", "bad_flag"]),
+                    (9, ["discrete_status_1", "missing_field", "not available"])]:
     found = [l for l in err.splitlines() if l.startswith(f"seawire-encode: line {line}:")]
     check(len(found) == 1 and all(w in found[0] for w in words),
           f"line {line} refused naming {words}: {found}")
@@ -104,6 +109,48 @@ check([g["type"] for g in got] == ["PGN128259", "PGN127489"], f"good lines writt
 if len(got) == 2:
     check(got[0]["speed_water_mps"] == 1.5, f"1.5 m/s: {got[0]}")
     check(got[1]["discrete_status_2"] == ["warning_level_1", "bit_9"], f"flags: {got[1]}")
+    check(got[1]["discrete_status_1"] == [], f"no flag set: {got[1]}")
+
+# A 127489 without its discrete status words (a short message): not available, null, and written
+# back short, so it reads back the same.
+short = b"2016-04-09T16:41:39.628Z,2,127489,16,255,20,00,2f,06,ff,ff,e3,73,65,05,ff,7f,72,10,00,00,ff,ff,ff,ff,ff\n"
+first = run(DECODE, [], short)
+m = json.loads(first.stdout)
+check(m.get("discrete_status_1", "absent") is None and m.get("discrete_status_2", "absent") is None,
+      f"127489 without status words: {m}")
+for fmt in FORMATS:
+    again = run(DECODE, [], run(ENCODE, ["--output", fmt], first.stdout).stdout)
+    check(again.returncode == 0 and comparable(json.loads(again.stdout), "")[0] ==
+          comparable(m, "")[0], f"short 127489 -> {fmt}: {again.stdout[:300]!r}")
+
+# Whatever decodes encodes: random payloads of every PGN, of every length from none to past the
+# PGN's (bytes biased to the top of each range, where the sentinels are), as a canboat FAST log,
+# through seawire-decode | seawire-encode | seawire-decode in every format.
+LENGTHS = {127488: 8, 127489: 26, 128259: 8, 128275: 14, 130311: 8, 130578: 12}
+rng = random.Random(20261127)
+lines = [b"# format=FAST"]
+for pgn, length in LENGTHS.items():
+    for i in range(400):
+        n = length if i < 250 else rng.randrange(0, length + 9)
+        data = [0xFF - rng.randrange(4) if rng.random() < 0.25 else rng.randrange(256)
+                for _ in range(n)]
+        if pgn == 128275 and n >= 6 and i % 3 == 0:  # times of 24 h and later
+            t = rng.choice([864000000, 864010000, 900000000, 0xFFFFFFFC, rng.randrange(864000000, 0xFFFFFFFD)])
+            data[2:6] = list(t.to_bytes(4, "little"))
+        lines.append(("2024-07-03T15:42:58.%03dZ,2,%d,35,255,%d" % (i % 1000, pgn, n)
+                      + "".join(",%02x" % b for b in data)).encode())
+first = run(DECODE, [], b"\n".join(lines) + b"\n")
+check(first.returncode == 0, f"random: decode exit {first.returncode}: {first.stderr[:300]}")
+msgs = [json.loads(l) for l in first.stdout.decode().splitlines()]
+check(len(msgs) == len(lines) - 1, f"random: {len(msgs)} messages of {len(lines) - 1}")
+for fmt in FORMATS:
+    enc = run(ENCODE, ["--output", fmt], first.stdout)
+    check(enc.returncode == 0, f"random -> {fmt}: encode exit {enc.returncode}: {enc.stderr[:500]}")
+    second = run(DECODE, [], enc.stdout)
+    again = [json.loads(l) for l in second.stdout.decode().splitlines()]
+    check(len(again) == len(msgs), f"random -> {fmt}: {len(again)} messages, not {len(msgs)}")
+    bad = [(a, b) for a, b in zip(msgs, again) if comparable(a, fmt)[0] != comparable(b, "")[0]]
+    check(not bad, f"random -> {fmt}: {len(bad)} messages changed, e.g. {bad[:1]}")
 
 if failures:
     print(f"{len(failures)} failure(s)", file=sys.stderr)

@@ -149,8 +149,10 @@ def lookup(names):
 
 def flag_set(names):
     """ours: array of names (bit_N when unnamed); canboat: array of display names, null when no
-    bit is set. No vector sets an unnamed bit; such a bit is expected as its number."""
+    bit is set; an unnamed bit as the bit's value (bit_8 is 256: canboat's analyzer, checked)."""
     def cmp(ours, theirs):
+        if ours is None:  # not sent (a short message): canboat null too
+            return None if theirs is None else "ours null (not sent), canboat has bits"
         if not isinstance(ours, list):
             return "ours not an array"
         if theirs is None:
@@ -158,7 +160,8 @@ def flag_set(names):
         want = []
         for n in ours:
             m = re.fullmatch(r"bit_(\d+)", n)
-            want.append(int(m.group(1)) if m else names.get(n, f"<no canboat name for {n!r}>"))
+            want.append(1 << int(m.group(1)) if m else
+                        names.get(n, f"<no canboat name for {n!r}>"))
         return None if want == theirs else f"expected canboat {want!r}"
     return cmp
 
@@ -265,11 +268,13 @@ CANBOAT_IGNORED = {"reserved"}
 CANDUMP_LOG = re.compile(r"\((\d+\.\d+)\)\s+(\S+)\s+([0-9A-Fa-f]{8})#([0-9A-Fa-f]*)")
 CANDUMP = re.compile(r"\s*(\S+)\s+([0-9A-Fa-f]{8})\s+\[(\d)\]((?:\s+[0-9A-Fa-f]{2})*)\s*")
 YD_RAW = re.compile(r"(\d\d):(\d\d):(\d\d(?:\.\d+)?)\s+([RT])\s+([0-9A-Fa-f]{8})"
-                    r"((?:\s+[0-9A-Fa-f]{2}){1,8})\s*")
+                    r"((?:\s+[0-9A-Fa-f]{2}){0,8})\s*")
 ISO = re.compile(r"(\d{4})-(\d\d)-(\d\d)[T-](\d\d):(\d\d):(\d\d)(\.\d+)?(Z|[+-]\d\d:?\d\d)?")
 
 
 def line_format(line):
+    if line.startswith("#"):
+        return "comment"
     if CANDUMP_LOG.fullmatch(line):
         return "candump_log"
     if YD_RAW.fullmatch(line):
@@ -316,53 +321,86 @@ def parse_line(line):
     if m:
         prio, pgn, src, dst = split_id(int(m.group(3), 16))
         return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(4)),
-                    time=Decimal(m.group(1)), extra={"interface": m.group(2)}, whole=False)
+                    time=Decimal(m.group(1)), extra={"interface": m.group(2)}, whole=False,
+                    canboat=False)
     m = YD_RAW.fullmatch(line)
     if m:
         prio, pgn, src, dst = split_id(int(m.group(5), 16))
         t = int(m.group(1)) * 3600 + int(m.group(2)) * 60 + Decimal(m.group(3))
         return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(6)),
-                    time=t, extra={"direction": m.group(4)}, whole=False)
+                    time=t, extra={"direction": m.group(4)}, whole=False, canboat=False)
     m = CANDUMP.fullmatch(line)
     if m:
         prio, pgn, src, dst = split_id(int(m.group(2), 16))
         return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(4)),
-                    time=None, extra={"interface": m.group(1)}, whole=False)
+                    time=None, extra={"interface": m.group(1)}, whole=False, canboat=False)
     parts = line.split(",")
     ts, prio, pgn, src, dst, n = parts[:6]
     data = bytes(int(x, 16) for x in parts[6:])
     assert len(data) == int(n), line
     return dict(prio=int(prio), pgn=int(pgn), src=int(src), dst=int(dst), data=data,
-                time=iso_seconds(ts)[0], extra={}, whole=len(data) > 8)
+                time=iso_seconds(ts)[0], extra={}, whole=len(data) > 8, canboat=True)
 
 
 def messages(lines):
-    """Whole messages from log lines: single frames as they are, fast packets reassembled
-    (N2K.md section 10: byte 0 = sequence << 5 | frame, frame 0 byte 1 = length), each with
-    the time of the frame that completed it."""
+    """Whole messages from log lines (N2K.md sections 10-11), each with the time of the frame that
+    completed it. Single frames as they are. canboat lines: a "# format=" header says whether a
+    line is a frame (PLAIN), a whole message (FAST), or each by its length (PLAIN_MIX_FAST);
+    without one, as canboat does: FAST when the first canboat line has more than 8 bytes, else
+    frames until the first longer line (PLAIN_OR_FAST). Fast packets reassembled from frames in any
+    order (byte 0 = sequence << 5 | frame, frame 0 byte 1 = length), as canboat's analyzer does:
+    frames held before a frame 0 that would complete the packet at once are dropped (the rest of
+    an earlier packet), and so are frames numbered past the count frame 0 announces."""
     out = []
-    partial = {}  # (src, pgn) -> [sequence, length, next frame, payload]
+    partial = {}  # (src, pgn, dst) -> [sequence, {frame: data}]
+    mode = None
     for line in lines:
+        if line.startswith("#"):
+            m = re.fullmatch(r"# format=(\w+)\s*", line)
+            if m and m.group(1).upper() in ("PLAIN", "FAST", "PLAIN_OR_FAST", "PLAIN_MIX_FAST"):
+                mode = m.group(1).upper()
+            continue
         f = parse_line(line)
+        if f["canboat"]:
+            n = len(f["data"])
+            if mode is None:
+                mode = "FAST" if n > 8 else "PLAIN_OR_FAST"
+            if mode == "PLAIN_OR_FAST" and n > 8:
+                mode = "FAST"
+            f["whole"] = mode == "FAST" or (mode != "PLAIN" and n > 8)
         if f["pgn"] not in FAST_PACKET or f["whole"]:
             out.append(f)
             continue
         d = f["data"]
+        if not d or (d[0] & 0x1F == 0 and len(d) < 2):
+            continue  # no frame of a packet
         seq, frame = d[0] >> 5, d[0] & 0x1F
-        key = (f["src"], f["pgn"])
-        if frame == 0:
-            partial[key] = [seq, d[1], 1, bytearray(d[2:])]
-        else:
-            p = partial.get(key)
-            if p is None or p[0] != seq or p[2] != frame:
-                partial.pop(key, None)
-                continue
-            p[2] += 1
-            p[3] += d[1:]
-        p = partial[key]
-        if len(p[3]) >= p[1]:
-            del partial[key]
-            out.append(dict(f, data=bytes(p[3][:p[1]])))
+        key = (f["src"], f["pgn"], f["dst"])
+        p = partial.get(key)
+        if p is not None and (p[0] != seq or frame in p[1]):
+            p = None  # another packet begins
+        count = lambda length: 1 if length <= 6 else 1 + (length - 6 + 6) // 7
+        if p is not None and frame == 0:
+            need = set(range(count(d[1])))
+            held = set(p[1])
+            if not held <= need or (len(need) > 1 and held | {0} == need):
+                p = None
+        elif p is not None and 0 in p[1] and frame >= count(p[1][0][1]):
+            continue  # past the packet's end
+        if p is None:
+            p = partial[key] = [seq, {}]
+        p[1][frame] = d
+        if 0 not in p[1]:
+            continue
+        length = p[1][0][1]
+        if set(p[1]) != set(range(count(length))):
+            continue
+        payload = bytearray(p[1][0][2:8])
+        for k in range(1, count(length)):
+            payload += p[1][k][1:8]
+        del partial[key]
+        if len(payload) >= length:
+            out.append(dict(f, data=bytes(payload[:length])))
     return out
 
 
@@ -456,7 +494,14 @@ def field_value(data, offset, width, kind, arg):
     signed = kind == S
     if signed and raw >> (width - 1):
         raw -= 1 << width
-    special = sentinel(raw, width, signed)
+    if kind == "lookup":
+        # canboat's rule for an unnamed lookup value: the top three of more than 2 bits, the top
+        # two of 2 bits (J1939's error / not available) are no values
+        top = (1 << width) - 1
+        names = {top: "n/a", top - 1: "out_of_range", top - 2: "reserved"}
+        special = names.get(raw) if raw > top - (3 if width > 2 else 2) else None
+    else:
+        special = sentinel(raw, width, signed)
     if special:
         return None if special == "n/a" else special
     if kind in (U, S):
@@ -577,13 +622,15 @@ def case_canboat():
         name = os.path.basename(path)
         with open(path) as f:
             lines = [l.rstrip("\r\n") for l in f if l.strip()]
-        formats = {line_format(l) for l in lines}
+        formats = {line_format(l) for l in lines} - {"comment"}
         check(len(formats) == 1, f"{name}: mixed log formats {formats}")
         fmt = formats.pop()
         # canboat lines by timestamp (to the millisecond, "T" separator): named a zone offset?
         offsets = {}
         if fmt == "canboat":
             for l in lines:
+                if l.startswith("#"):
+                    continue
                 ts = l.split(",")[0]
                 key = ts[:10] + "T" + ts[11:23]
                 offsets[key] = iso_seconds(ts)[1]
@@ -606,12 +653,16 @@ def case_canboat():
                 continue
             check(set(o) - META == set(table),
                   f"{where}: our fields {sorted(set(o) - META)} vs mapping {sorted(table)}")
-            fields = t["fields"]
+            fields = t.get("fields", {})  # none at all for a frame of no data
             unmapped = set(fields) - CANBOAT_IGNORED - {c for c, _ in table.values()}
             check(not unmapped, f"{where}: canboat fields not in the mapping: {sorted(unmapped)}")
             for ours_name, (their_name, cmp) in table.items():
                 compared += 1
-                if not check(their_name in fields, f"{where}: canboat has no {their_name}"):
+                if their_name not in fields:
+                    # canboat leaves out a field a short message did not send; seawire gives null
+                    check(o.get(ours_name, "<missing>") is None,
+                          f"{where}: canboat has no {their_name} (not sent), ours "
+                          f"{o.get(ours_name, '<missing>')!r}")
                     continue
                 a, b = o.get(ours_name, "<missing>"), fields[their_name]
                 why = cmp(a, b)
@@ -723,6 +774,64 @@ def case_errors():
         one(["--input", "n2k"], f"{other}\n{fits}\n{other}\n", 0)
     run(["--log-format", "actisense"], b"", 2)
     run(["--input", "can"], b"", 2)
+
+    # canboat's header: honoured, not an error (exit 0 when every message decodes), recognised
+    # as a CAN log by itself; a FAST line of 8 bytes is a whole message.
+    fast8 = "2024-07-03T15:42:58.000Z,6,128275,35,255,8,c3,4d,20,1e,b9,21,ff,ff"
+    out = one([], f"# format=FAST\n{fast8}\n", 0)
+    check(len(out) == 1 and out[0].get("date") == "2024-07-03"
+          and out[0].get("time") == "15:42:58.0000" and out[0].get("log_m") is None,
+          f"# format=FAST, 8 bytes of 128275: {out}")
+    # without the header, as the log's first canboat line: canboat reads it as one frame
+    out = one([], f"{fast8}\n", 0)
+    check(out == [], f"8 bytes of 128275 first in a log without header: a frame: {out}")
+    # comments are skipped; headers naming formats seawire does not read are precise errors and
+    # the lines after them still read
+    out = one([], f"# written on board\n# format=AIRMAR\n# format=SEATALK\n{canboat}\n", 1)
+    kinds = [o.get("error") or o.get("type") for o in out]
+    check(kinds == ["unknown_log_format", "unknown_log_format", "PGN127488"]
+          and [out[0].get("line"), out[1].get("line")] == [2, 3]
+          and "canboat format seawire does not read" in out[0].get("detail", "")
+          and "no canboat format has this name" in out[1].get("detail", ""),
+          f"unknown format headers: {out}")
+    # PLAIN: every line a frame; a longer line is refused, naming the length
+    out = one([], f"# format=PLAIN\n{canboat}\n"
+              "2016-04-09T16:41:39.628Z,2,127489,16,255,26,00,2f,06,ff,ff,e3,73,65,05,ff,7f,"
+              "72,10,00,00,ff,ff,ff,ff,ff,06,00,00,00,7f,7f\n", 1)
+    check([o.get("error") or o.get("type") for o in out] == ["PGN127488", "bad_length"]
+          and "length" in out[1].get("detail", ""), f"# format=PLAIN, 26 bytes: {out}")
+    # YDWG02: Yacht Devices RAW lines, the first one decides nothing else
+    out = one([], f"# format=YDWG02\n{yd}\n{canboat}\n", 1)
+    check([o.get("error") or o.get("type") for o in out] == ["PGN130311", "bad_time"],
+          f"# format=YDWG02: {out}")
+    # A frame of no data reads in every format (fields not available); a fast-packet PGN's
+    # frame of no data is dropped as short (not a line error)
+    for empty in ("21:55:35.925 R 09F50323", "(1502984866.953084) slcan0 09F50374#",
+                  "can0  09F50323   [0]", "2024-07-03T15:42:58.000Z,2,128259,35,255,0"):
+        out = one(["--input", "n2k"], f"{empty}\n", 0)
+        check(len(out) == 1 and out[0].get("type") == "PGN128259"
+              and out[0].get("speed_water_mps", 0) is None, f"frame of no data {empty!r}: {out}")
+    p = run(["--stats", "--format", "none"], b"21:55:35.925 R 19F51323\n", 0)
+    check(re.search(r"\bshort_frame\s+1\b", p.stderr.decode()), f"empty fast frame: {p.stderr!r}")
+    # Frames 1 and 2 of a fast packet swapped, as some gateways deliver them: assembled
+    swapped = ("(1720021378.000000) can0 19F51323#000EC34D201EB921\n"
+               "(1720021378.000000) can0 19F51323#0200FFFFFFFFFFFF\n"
+               "(1720021378.000000) can0 19F51323#0140E20100D21E00\n")
+    out = one([], swapped, 0)
+    check(len(out) == 1 and out[0].get("log_m") == 123456 and out[0].get("trip_log_m") == 7890,
+          f"frames 1 and 2 swapped: {out}")
+    # A fast packet longer than its PGN (fields appended by a newer sender): decoded from frames
+    # as from a FAST line
+    longer = ("(1720021378.000000) can0 09FE1223#4013C40988FF280A\n"
+              "(1720021378.000000) can0 09FE1223#41D4FEFF7FFF7FFF\n"
+              "(1720021378.000000) can0 09FE1223#42010203040506FF\n")
+    a = one([], longer, 0)
+    b = one([], "2024-07-03T15:42:58.000Z,2,130578,35,255,19,c4,09,88,ff,28,0a,d4,fe,ff,7f,ff,"
+                "7f,ff,01,02,03,04,05,06\n", 0)
+    strip = lambda o: {k: v for k, v in o.items() if k not in META}
+    check(len(a) == 1 and len(b) == 1 and strip(a[0]) == strip(b[0])
+          and a[0].get("longitudinal_water_mps") == Decimal("2.500"),
+          f"130578 of 19 bytes, frames vs FAST line: {a} {b}")
 
 
 {"canboat": case_canboat, "layout": case_layout, "errors": case_errors}[CASE]()

@@ -12,22 +12,36 @@
 // sequence counter of each (PGN, source).
 //
 // Receiving: fast_packet_assembler<Slots> rebuilds packets from frames of any number of sources
-// and PGNs interleaved, in `Slots` fixed buffers (Slots x 240 bytes; 16 slots, about 3.8 KiB, by
-// default), keyed on (source, PGN, destination). Frames must come in order, as every sender
-// sends them. What cannot be assembled is dropped and counted by reason:
+// and PGNs interleaved, in `Slots` fixed buffers (about 270 bytes each; 16 slots, about 4.3 KiB, by
+// default), one per (source, PGN, destination). A packet is the frames of one key with one
+// sequence counter. Its frames may come in any order (some gateways swap them), with one limit
+// canboat's analyzer has too: frames held before a frame 0 that would complete its packet at once
+// are taken for the rest of an earlier packet whose frame 0 was lost (which a sender that keeps
+// one sequence counter for every packet makes look the same), so frame 0 may come after some of
+// its packet's frames, never after all of them. A payload may be as long as frame 0 says, up to
+// 223 bytes, whatever the PGN's known length: a newer sender may append fields, which a decoder
+// of the known ones ignores. What cannot be assembled is dropped and counted by reason:
 //
-//   missing_frame     a frame skipped (frame k+2 after frame k), or a new frame 0 before the
-//                     packet was complete; the unfinished packet is dropped with the frame
-//   repeated_frame    a frame number that already arrived (a retransmission)
-//   sequence_changed  a frame whose sequence counter differs from its packet's frame 0
-//   too_long          frame 0 announcing more bytes than 223 or than the PGN's length
-//   short_frame       a frame, other than the last, with fewer than 8 bytes (or an empty one)
-//   orphan_frame      a frame k >= 1 with no packet begun (its frame 0 was lost or dropped)
+//   missing_frame     a packet given up with frames missing: a new frame 0 of the same sequence
+//                     counter came while it had frame 0 and more, or the log ended (flush)
+//   repeated_frame    a frame number the unfinished packet already holds (a retransmission, or
+//                     the next packet of a sender that does not change the sequence counter):
+//                     the unfinished packet is dropped and the frame begins the next one
+//   sequence_changed  a frame of another sequence counter came while a packet was unfinished:
+//                     the unfinished packet is dropped and the frame begins the next one
+//   too_long          frame 0 announcing more than 223 bytes (this frame only)
+//   short_frame       an empty frame, a frame 0 without its length byte (these frames only), or
+//                     a packet one of whose frames carries fewer bytes than its place in the
+//                     payload needs (only the last frame may be shortened rather than padded)
+//   orphan_frame      frames that belong to no packet: held without their frame 0 when the
+//                     frame 0 that came would complete the packet without them or does not
+//                     reach their numbers, held without a frame 0 at the end of the log, or a
+//                     frame numbered past the frame count its packet's frame 0 announced
 //   evicted           every slot busy with an unfinished packet when a new one began: the one
 //                     touched longest ago is dropped to make room
 //
 // Every frame fed is accounted for: frames_in() == frames_assembled() + frames_dropped() +
-// frames_pending(). A dropped packet never blocks the next one: the next frame 0 starts afresh.
+// frames_pending(). A dropped packet never blocks the next one.
 
 #include <algorithm>
 #include <array>
@@ -176,77 +190,60 @@ class fast_packet_assembler {
   static_assert(Slots >= 1);
 
  public:
-  /// Takes one frame of a fast-packet PGN. `max_length` is the longest payload the PGN may have
-  /// (its description's length for a PGN of this library). Returns the packet this frame
-  /// completes, if any.
-  constexpr std::optional<assembled_packet> feed(
-      const can_id& id, std::span<const std::uint8_t> data,
-      std::size_t max_length = max_fast_packet_length) noexcept {
+  /// Takes one frame of a fast-packet PGN (see the top of this file). Returns the packet this
+  /// frame completes, if any.
+  constexpr std::optional<assembled_packet> feed(const can_id& id,
+                                                 std::span<const std::uint8_t> data) noexcept {
     ++frames_in_;
     ++clock_;
-    if (max_length > max_fast_packet_length) max_length = max_fast_packet_length;
-    if (data.empty()) {
+    if (data.empty() || ((data[0] & 0x1F) == 0 && data.size() < 2)) {
       drop_frame(fast_packet_drop::short_frame);
       return std::nullopt;
     }
     const auto sequence = static_cast<std::uint8_t>(data[0] >> 5);
     const auto number = static_cast<std::uint8_t>(data[0] & 0x1F);
+    const std::uint32_t bit = std::uint32_t{1} << number;
+    if (number == 0 && data[1] > max_fast_packet_length) {
+      drop_frame(fast_packet_drop::too_long);
+      return std::nullopt;
+    }
     slot* s = find(id);
-    if (number == 0) {
-      if (s) {
-        drop_packet(*s, s->sequence == sequence && s->frames == 1
-                            ? fast_packet_drop::repeated_frame
-                            : fast_packet_drop::missing_frame);
+    if (s != nullptr && s->sequence != sequence) {
+      drop_packet(*s, fast_packet_drop::sequence_changed);
+      s = nullptr;
+    }
+    if (s != nullptr && (s->received & bit) != 0) {
+      // Frame 0 again after frame 0 and more: that packet lacked frames; anything else repeats.
+      drop_packet(*s, number == 0 && s->received != 1 ? fast_packet_drop::missing_frame
+                                                      : fast_packet_drop::repeated_frame);
+      s = nullptr;
+    }
+    if (s != nullptr && number == 0) {
+      const std::uint32_t all = mask_of(data[1]);
+      if ((s->received & ~all) != 0 || (all != 1 && ((s->received | 1) & all) == all)) {
+        drop_packet(*s, fast_packet_drop::orphan_frame);
+        s = nullptr;
       }
-      if (data.size() < 2) {
-        drop_frame(fast_packet_drop::short_frame);
-        return std::nullopt;
-      }
-      const std::size_t length = data[1];
-      if (length > max_length) {
-        drop_frame(fast_packet_drop::too_long);
-        return std::nullopt;
-      }
-      const std::size_t here = std::min<std::size_t>(length, 6);
-      if (data.size() < 2 + here) {
-        drop_frame(fast_packet_drop::short_frame);
-        return std::nullopt;
-      }
+    } else if (s != nullptr && (s->received & 1) != 0 && (mask_of(s->length) & bit) == 0) {
+      drop_frame(fast_packet_drop::orphan_frame);  // past the end frame 0 announced
+      return std::nullopt;
+    }
+    if (s == nullptr) {
       s = claim();
       s->id = id;
       s->sequence = sequence;
-      s->length = static_cast<std::uint8_t>(length);
+      s->length = 0;
       s->received = 0;
-      s->frames = 1;
+      s->frames = 0;
       s->used = true;
-      s->touched = clock_;
-      for (std::size_t i = 0; i < here; ++i) s->buffer[s->received++] = data[2 + i];
-      pending_ += 1;
-      return complete_if_done(*s);
     }
-    if (!s) {
-      drop_frame(fast_packet_drop::orphan_frame);
-      return std::nullopt;
-    }
-    if (sequence != s->sequence) {
-      drop_packet(*s, fast_packet_drop::sequence_changed, 1);
-      return std::nullopt;
-    }
-    if (number < s->frames) {
-      drop_packet(*s, fast_packet_drop::repeated_frame, 1);
-      return std::nullopt;
-    }
-    if (number > s->frames) {
-      drop_packet(*s, fast_packet_drop::missing_frame, 1);
-      return std::nullopt;
-    }
-    const std::size_t remaining = s->length - s->received;
-    const std::size_t here = std::min<std::size_t>(remaining, 7);
-    if (data.size() < 1 + here) {
-      drop_packet(*s, fast_packet_drop::short_frame, 1);
-      return std::nullopt;
-    }
-    for (std::size_t i = 0; i < here; ++i) s->buffer[s->received++] = data[1 + i];
+    const std::size_t skip = number == 0 ? 2 : 1;  // frame 0 also carries the length
+    const std::size_t at = offset_of(number);
+    const std::size_t here = std::min<std::size_t>(data.size() - skip, capacity_of(number));
+    for (std::size_t i = 0; i < here; ++i) s->buffer[at + i] = data[skip + i];
+    s->sizes[number] = static_cast<std::uint8_t>(here);
+    if (number == 0) s->length = data[1];
+    s->received |= bit;
     s->frames += 1;
     s->touched = clock_;
     s->id.priority = id.priority;
@@ -254,10 +251,13 @@ class fast_packet_assembler {
     return complete_if_done(*s);
   }
 
-  /// Forgets every unfinished packet (counted as missing_frame), e.g. at the end of a log.
+  /// Forgets every unfinished packet (missing_frame, or orphan_frame for frames without their
+  /// frame 0), e.g. at the end of a log.
   constexpr void flush() noexcept {
     for (slot& s : slots_)
-      if (s.used) drop_packet(s, fast_packet_drop::missing_frame);
+      if (s.used)
+        drop_packet(s, (s.received & 1) != 0 ? fast_packet_drop::missing_frame
+                                             : fast_packet_drop::orphan_frame);
   }
 
   [[nodiscard]] constexpr std::uint64_t frames_in() const noexcept { return frames_in_; }
@@ -274,13 +274,26 @@ class fast_packet_assembler {
   struct slot {
     can_id id;
     std::uint8_t sequence = 0;
-    std::uint8_t length = 0;
-    std::uint8_t received = 0;
-    std::uint8_t frames = 0;  ///< frames taken so far = the next frame number expected
+    std::uint8_t length = 0;     ///< as frame 0 announced (when received has bit 0)
+    std::uint32_t received = 0;  ///< bit k: frame k is held
+    std::uint8_t frames = 0;     ///< frames held
     bool used = false;
     std::uint64_t touched = 0;
+    std::array<std::uint8_t, max_fast_packet_frames> sizes{};  ///< payload bytes each frame gave
     std::array<std::uint8_t, max_fast_packet_length> buffer{};
   };
+
+  /// Where frame k's bytes go in the payload, and how many it carries at most.
+  [[nodiscard]] static constexpr std::size_t offset_of(std::size_t k) noexcept {
+    return k == 0 ? 0 : 6 + 7 * (k - 1);
+  }
+  [[nodiscard]] static constexpr std::size_t capacity_of(std::size_t k) noexcept {
+    return k == 0 ? 6 : 7;
+  }
+  /// The frames a payload of `length` bytes (at most 223) needs, as a bit mask.
+  [[nodiscard]] static constexpr std::uint32_t mask_of(std::size_t length) noexcept {
+    return static_cast<std::uint32_t>((std::uint64_t{1} << fast_packet_frame_count(length)) - 1);
+  }
 
   [[nodiscard]] static constexpr bool same_key(const can_id& a, const can_id& b) noexcept {
     return a.source == b.source && a.pgn == b.pgn && a.destination == b.destination;
@@ -303,15 +316,23 @@ class fast_packet_assembler {
     ++drops_[static_cast<std::size_t>(why)];
     ++dropped_;
   }
-  /// Drops the slot's packet and `extra` frames just fed with it.
-  constexpr void drop_packet(slot& s, fast_packet_drop why, std::uint64_t extra = 0) noexcept {
+  /// Drops the slot's packet (the frames it holds).
+  constexpr void drop_packet(slot& s, fast_packet_drop why) noexcept {
     ++drops_[static_cast<std::size_t>(why)];
-    dropped_ += s.frames + extra;
+    dropped_ += s.frames;
     pending_ -= s.frames;
     s.used = false;
   }
   constexpr std::optional<assembled_packet> complete_if_done(slot& s) noexcept {
-    if (s.received < s.length) return std::nullopt;
+    if ((s.received & 1) == 0 || s.received != mask_of(s.length)) return std::nullopt;
+    for (std::size_t k = 0; k < s.frames; ++k) {
+      const std::size_t at = offset_of(k);
+      const std::size_t need = std::min<std::size_t>(capacity_of(k), s.length - at);
+      if (s.sizes[k] < need) {
+        drop_packet(s, fast_packet_drop::short_frame);
+        return std::nullopt;
+      }
+    }
     s.used = false;
     pending_ -= s.frames;
     assembled_ += s.frames;

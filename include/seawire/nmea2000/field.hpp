@@ -18,8 +18,10 @@
 //   one below                               out of range      (field_state::out_of_range)
 //   two below                               reserved          (field_state::reserved)
 //
-// Fields of 4 to 7 bits reserve the first two, of 2 or 3 bits only "not available"; lookups and
-// flag sets of the standard follow the same rule, except flag words, where all ones is all flags.
+// Numbers of 4 to 7 bits reserve the first two, of 2 or 3 bits only "not available". A lookup
+// (an enumeration) reserves three of more than 2 bits (61, 62, 63 of a 6-bit one) and two of 2
+// bits (2 and 3: J1939's "error" and "not available" of a two-bit state), as canboat reads them.
+// Flag words have no sentinel: all ones is every flag, and "not available" is a word not sent.
 // A value in one of these states reads as an empty optional; the state says which. The most
 // negative signed value (0x80.., -32.768 m/s in a speed) is an ordinary number.
 //
@@ -82,9 +84,24 @@ struct resolution {
 
 namespace detail {
 
-/// How many of a field's top raw values are sentinels (see the top of this file).
+/// How many of a number's top raw values are sentinels (see the top of this file).
 [[nodiscard]] constexpr unsigned sentinel_count(unsigned bits) noexcept {
   return bits >= 8 ? 3U : bits >= 4 ? 2U : bits >= 2 ? 1U : 0U;
+}
+
+/// How many of a lookup's top raw values are sentinels (see the top of this file).
+[[nodiscard]] constexpr unsigned lookup_sentinel_count(unsigned bits) noexcept {
+  return bits > 2 ? 3U : bits == 2 ? 2U : 0U;
+}
+
+/// The state of raw value `raw` of a field whose top `sentinels` values (at most 3) are
+/// sentinels, `top` being the largest raw value.
+[[nodiscard]] constexpr field_state state_of(std::int64_t raw, std::int64_t top,
+                                             unsigned sentinels) noexcept {
+  if (raw <= top - sentinels) return field_state::value;
+  if (raw == top) return field_state::not_available;
+  if (raw == top - 1) return field_state::out_of_range;
+  return field_state::reserved;
 }
 
 /// The raw value as a decimal at resolution R: raw 3194 at 0.25 is 798.50.
@@ -299,7 +316,8 @@ template <named_enum E>
 
 /// A field of `Bits` bits whose values name things (a speed sensor's type, a temperature's
 /// source). Values the standard has not named are kept and sent as they are. The top raw values
-/// are sentinels as for numbers (63 and 62 in a 6-bit lookup, 3 in a 2-bit one).
+/// are sentinels: three of a lookup of more than 2 bits (63, 62, 61 of a 6-bit one: not
+/// available, out of range, reserved), two of a 2-bit one (3 and 2).
 template <named_enum E, unsigned Bits>
 class lookup {
   static_assert(Bits >= 1 && Bits <= 16);
@@ -307,7 +325,7 @@ class lookup {
  public:
   static constexpr unsigned bits = Bits;
   static constexpr bool is_signed = false;
-  static constexpr unsigned sentinels = detail::sentinel_count(Bits);
+  static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
   static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(max_valid_raw) + 1,
@@ -332,9 +350,8 @@ class lookup {
 
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
   [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
-  /// The same sentinels as an unsigned number of the width.
   [[nodiscard]] constexpr field_state state() const noexcept {
-    return number<Bits, false>::from_raw(raw_).state();
+    return detail::state_of(raw_, top_raw, sentinels);
   }
   [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
   /// The value, named or not; nullopt unless state() is value.
@@ -357,7 +374,10 @@ class lookup {
 };
 
 /// A word of `Bits` independent flags (an engine's discrete status). E's values are bit numbers;
-/// bits without a name are kept. There is no sentinel: all ones means every flag is set.
+/// bits without a name are kept. No raw value is a sentinel: all ones means every flag is set.
+/// So "not available" is a state of its own, for a word the sender did not send (a payload
+/// that ends before it): default-constructed, a flag set is not available, which is not the same
+/// as none(), every flag clear. encode() can only leave such a word out at the end of a payload.
 template <named_enum E, unsigned Bits>
 class flags {
   static_assert(Bits >= 1 && Bits <= 32);
@@ -367,33 +387,47 @@ class flags {
   static constexpr bool is_signed = false;
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
 
-  constexpr flags() noexcept = default;  // no flag set
-  constexpr flags(std::initializer_list<E> set) noexcept {
+  constexpr flags() noexcept = default;  // not available
+  /// The flags in `set` set, every other clear.
+  constexpr flags(std::initializer_list<E> set) noexcept : available_(true) {
     for (const E e : set) raw_ |= std::int64_t{1} << static_cast<unsigned>(e);
   }
   [[nodiscard]] static constexpr flags from_raw(std::int64_t raw) noexcept {
     flags f;
     f.raw_ = raw;
+    f.available_ = true;
     return f;
   }
+  /// Every flag clear.
+  [[nodiscard]] static constexpr flags none() noexcept { return from_raw(0); }
+  [[nodiscard]] static constexpr flags not_available() noexcept { return flags{}; }
+  /// Whether flag `e` is set (false when not available).
   [[nodiscard]] constexpr bool test(E e) const noexcept {
     return ((raw_ >> static_cast<unsigned>(e)) & 1) != 0;
   }
   [[nodiscard]] constexpr bool test_bit(unsigned bit) const noexcept {
     return bit < Bits && ((raw_ >> bit) & 1) != 0;
   }
+  /// Sets or clears flag `e`; a word not available becomes one with only this change from none.
   constexpr void set(E e, bool on = true) noexcept {
     const std::int64_t m = std::int64_t{1} << static_cast<unsigned>(e);
     raw_ = on ? (raw_ | m) : (raw_ & ~m);
+    available_ = true;
   }
+  /// The word (0 when not available).
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
   [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
-  [[nodiscard]] constexpr field_state state() const noexcept { return field_state::value; }
-  [[nodiscard]] constexpr bool has_value() const noexcept { return true; }
-  [[nodiscard]] constexpr bool operator==(const flags& o) const noexcept { return raw_ == o.raw_; }
+  [[nodiscard]] constexpr field_state state() const noexcept {
+    return available_ ? field_state::value : field_state::not_available;
+  }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return available_; }
+  [[nodiscard]] constexpr bool operator==(const flags& o) const noexcept {
+    return available_ == o.available_ && raw_ == o.raw_;
+  }
 
  private:
   std::int64_t raw_ = 0;
+  bool available_ = false;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -542,6 +576,13 @@ struct pgn_info {
   std::uint16_t interval_ms = 0;  ///< default transmit interval; 0 = on demand
 };
 
+namespace detail {
+template <class T>
+inline constexpr bool is_flag_word = false;
+template <class E, unsigned B>
+inline constexpr bool is_flag_word<flags<E, B>> = true;
+}  // namespace detail
+
 /// How PGN payloads lay out their bits (see the top of this file).
 inline constexpr auto payload_order = seawire::detail::bit_order::lsb_first;
 
@@ -591,8 +632,9 @@ using payload_of = std::array<std::uint8_t, description_of<P>::length>;
 // decode and encode
 
 /// P from a payload. Fields the payload is too short to hold in full read as not available (a
-/// sender may leave trailing fields out); bytes past P's length are ignored (a later version of
-/// the standard may add fields). Reserved bits are not looked at. Never fails.
+/// sender may leave trailing fields out; a flag set left out is not available, not "no flag
+/// set"); bytes past P's length are ignored (a later version of the standard may add fields).
+/// Reserved bits are not looked at. Never fails.
 template <pgn_like P>
 [[nodiscard]] constexpr P decode(std::span<const std::uint8_t> payload) noexcept {
   P out{};
@@ -600,7 +642,10 @@ template <pgn_like P>
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (!F::is_reserved) {
       using V = typename F::value_type;
-      if (offset + F::bits > payload.size() * 8) return;
+      if (offset + F::bits > payload.size() * 8) {
+        out.*F::member = V{};  // not available
+        return;
+      }
       const std::uint64_t u = seawire::detail::get_bits<payload_order>(payload, offset, F::bits);
       std::int64_t raw = static_cast<std::int64_t>(u);
       if constexpr (V::is_signed) {
@@ -613,30 +658,83 @@ template <pgn_like P>
   return out;
 }
 
-/// P's payload: every field at its offset, reserved bits as ones. value_too_large, with `field`
-/// = the row number, when a member holds a raw value (from_raw) its width cannot carry.
+/// The bytes encode() writes for a PGN of `N` bytes: the first size() of `bytes`. That is all N,
+/// unless a flag set that is not available ends the payload early (see encode). A contiguous
+/// range: a std::span<const std::uint8_t> of it (what decode takes) views the bytes written.
+template <std::size_t N>
+struct encoded_bytes {
+  std::array<std::uint8_t, N> bytes{};
+  std::size_t length = N;
+
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return length; }
+  [[nodiscard]] constexpr const std::uint8_t* data() const noexcept { return bytes.data(); }
+  [[nodiscard]] constexpr const std::uint8_t* begin() const noexcept { return bytes.data(); }
+  [[nodiscard]] constexpr const std::uint8_t* end() const noexcept { return bytes.data() + length; }
+  [[nodiscard]] constexpr std::uint8_t operator[](std::size_t i) const noexcept { return bytes[i]; }
+  [[nodiscard]] constexpr std::span<const std::uint8_t> view() const noexcept {
+    return {bytes.data(), length};
+  }
+  /// The same bytes, as many.
+  [[nodiscard]] constexpr bool operator==(std::span<const std::uint8_t> o) const noexcept {
+    if (o.size() != length) return false;
+    for (std::size_t i = 0; i < length; ++i)
+      if (bytes[i] != o[i]) return false;
+    return true;
+  }
+};
+
+/// What encode<P> returns the bytes in.
 template <pgn_like P>
-[[nodiscard]] constexpr result<payload_of<P>> encode(const P& msg) noexcept {
-  result<payload_of<P>> r;
-  r.value.fill(0xFF);
+using encoded_payload = encoded_bytes<description_of<P>::length>;
+
+/// P's payload: every field at its offset, reserved bits as ones. A field not available is sent
+/// as its "not available" value, except a flag set, which has none: the payload then ends before
+/// it (at the byte the word starts in, rounded up), as a sender that leaves trailing fields out
+/// does, so decode() gives back the same message. Errors, with `field` = the row number (of the
+/// first in table order):
+///   value_too_large   a member holds a raw value (from_raw) its width cannot carry;
+///   missing_field     a flag set is not available but a field after it is not "not available"
+///                     either (the word can only be left out with everything after it).
+template <pgn_like P>
+[[nodiscard]] constexpr result<encoded_payload<P>> encode(const P& msg) noexcept {
+  result<encoded_payload<P>> r;
+  r.value.bytes.fill(0xFF);
+  std::size_t cut = r.value.length;
+  std::uint16_t cut_row = 0;
+  unsigned cut_offset = 0;
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (!F::is_reserved) {
       const auto& v = msg.*F::member;
+      const auto fail = [&](errc e, std::uint16_t row, unsigned at) {
+        if (r.ec != errc::ok) return;
+        r.ec = e;
+        r.field = row;
+        r.column = static_cast<std::uint16_t>(at / 8);
+      };
       if (!v.fits()) {
-        if (r.ec == errc::ok) {
-          r.ec = errc::value_too_large;
-          r.field = n;
-          r.column = static_cast<std::uint16_t>(offset / 8);
-        }
+        fail(errc::value_too_large, n, offset);
         return;
+      }
+      if (cut_row != 0) {
+        if (v.state() != field_state::not_available) fail(errc::missing_field, cut_row, cut_offset);
+        return;
+      }
+      if constexpr (detail::is_flag_word<typename F::value_type>) {
+        if (!v.has_value()) {
+          cut = (offset + 7) / 8;
+          cut_row = n;
+          cut_offset = offset;
+          return;
+        }
       }
       const std::uint64_t mask =
           F::bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << F::bits) - 1;
-      seawire::detail::put_bits<payload_order>(r.value, offset, F::bits,
+      seawire::detail::put_bits<payload_order>(r.value.bytes, offset, F::bits,
                                                static_cast<std::uint64_t>(v.raw()) & mask);
     }
   });
+  r.value.length = cut;
   return r;
 }
 

@@ -17,8 +17,12 @@
 //                  when not available, "out_of_range" / "reserved" for those states
 //   lookups        the value's name ("doppler"); the number for a value without a name
 //   flag sets      an array of the names of the flags set (["over_temperature"]); a set bit
-//                  without a name as "bit_N"
-//   date, time     "YYYY-MM-DD" and "hh:mm:ss.ffff" (UTC)
+//                  without a name as "bit_N"; [] when the word was sent with no flag set, null
+//                  when it was not sent (a short payload): a flag word has no "not available"
+//                  value of its own, so only its absence says that
+//   date, time     "YYYY-MM-DD" and "hh:mm:ss.ffff" (UTC); a time of 24 h or more (a leap
+//                  second, a sender's clock run past midnight) as "24:00:00.0000" and on, up to
+//                  "119:18:16.7292", and read back so
 //   a PGN of no description: "data" with its bytes in hex ("FF0000FFFF03FFFF")
 //
 // Reading takes the same forms: a number (or numeric string) for a number field, rounded to the
@@ -128,6 +132,10 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
   using nmea::detail::json_uint;
   if constexpr (detail::is_flags<T>::value) {
     using E = typename detail::enum_of<T>::type;
+    if (!v.has_value()) {  // not sent: not the same as [] (sent, no flag set)
+      s.put("null");
+      return;
+    }
     s.put('[');
     bool first = true;
     for (unsigned bit = 0; bit < T::bits; ++bit) {
@@ -268,7 +276,13 @@ namespace detail {
 template <class T>
 [[nodiscard]] constexpr std::optional<T> sentinel(field_state st) noexcept {
   constexpr std::int64_t top = T::top_raw;
-  constexpr unsigned n = detail::sentinel_count(T::bits);
+  constexpr unsigned n = [] {
+    if constexpr (requires { T::sentinels; }) {
+      return T::sentinels;
+    } else {
+      return detail::sentinel_count(T::bits);
+    }
+  }();
   if (st == field_state::not_available && n >= 1) return T::from_raw(top);
   if (st == field_state::out_of_range && n >= 2) return T::from_raw(top - 1);
   if (st == field_state::reserved && n >= 3) return T::from_raw(top - 2);
@@ -296,6 +310,35 @@ template <class T>
   if (!ymd.ok()) return false;
   out = std::chrono::sys_days(ymd);
   return true;
+}
+
+/// A time field's text as write_json_value writes it: hh:mm:ss with up to 4 fraction digits (the
+/// field's 0.1 ms), the hours of two or more digits, since the field counts past midnight: 24:00:00
+/// and later is what the leap second, and senders whose clock runs on past midnight, send (23:59:60
+/// reads as 24:00:00). bad_time for another form, out_of_range beyond what the field carries as a
+/// value (119:18:16.7292).
+[[nodiscard]] constexpr errc parse_time_of_day(std::string_view t, std::int64_t& ticks) noexcept {
+  const std::size_t colon = t.find(':');
+  if (colon < 2 || colon > 6 || t.size() < colon + 6 || t[colon + 3] != ':') return errc::bad_time;
+  std::int64_t h = 0;
+  if (!parse_plain_uint(t.substr(0, colon), h)) return errc::bad_time;
+  const int m = two_digits(t, colon + 1);
+  const int s = two_digits(t, colon + 4);
+  if (m < 0 || s < 0 || m > 59 || s > 60 || (s == 60 && (h != 23 || m != 59)))
+    return errc::bad_time;
+  std::int64_t frac = 0;
+  std::size_t i = colon + 6;
+  if (i < t.size()) {
+    if (t[i] != '.' || t.size() == i + 1 || t.size() > i + 5) return errc::bad_time;
+    std::size_t digits = 0;
+    for (++i; i < t.size(); ++i, ++digits) {
+      if (!seawire::detail::is_digit(t[i])) return errc::bad_time;
+      frac = frac * 10 + (t[i] - '0');
+    }
+    for (; digits < 4; ++digits) frac *= 10;
+  }
+  ticks = ((h * 60 + m) * 60 + s) * 10'000 + frac;
+  return ticks > time_of_day::number_type::max_valid_raw ? errc::out_of_range : errc::ok;
 }
 
 }  // namespace detail
@@ -370,16 +413,11 @@ template <field_value T, class Lookup>
       if (r) out = r.value;
       return r.ec;
     } else if constexpr (std::is_same_v<T, time_of_day>) {
-      std::int64_t us = 0;
       if (v.kind != json_kind::string) return errc::bad_time;
-      // hh:mm:ss with up to 4 fraction digits (the field's 0.1 ms)
-      const std::size_t used = detail::parse_clock(v.text, us);
-      if (used == 0 || used != v.text.size()) return errc::bad_time;
-      const std::size_t dot = v.text.find('.');
-      if (dot != std::string_view::npos && v.text.size() - dot - 1 > 4) return errc::bad_time;
-      const auto r = time_of_day::from(std::chrono::microseconds(us));
-      if (r) out = r.value;
-      return r.ec;
+      std::int64_t ticks = 0;
+      const errc e = detail::parse_time_of_day(v.text, ticks);
+      if (e == errc::ok) out = T::from_raw(ticks);
+      return e;
     }
   }
 }
@@ -482,7 +520,8 @@ template <class Lookup>
 
 // ---------------------------------------------------------------------------------------------
 // CSV: one table per PGN, columns time_s, prio, src, dst, then the fields; cells as in JSON
-// without quotes, empty for not available and no time, flags joined by ';'.
+// without quotes, empty for not available and no time, flags joined by ';' ("none" when the word
+// was sent with no flag set).
 
 /// The header row of P's table, ending in LF.
 template <pgn_like P, json_sink Sink>
@@ -514,11 +553,14 @@ constexpr void write_csv(Sink& s, const message_header& h, const P& msg) noexcep
       s.put(',');
       const auto& v = msg.*F::member;
       if constexpr (detail::is_flags<typename F::value_type>::value) {
-        nmea::json_buffer<512> cell;
-        write_json_value<nmea::json_style::plain>(cell, v);
-        std::string_view c = cell.view();  // [a,b]
-        c = c.substr(1, c.size() - 2);
-        for (const char ch : c) s.put(ch == ',' ? ';' : ch);
+        if (v.has_value()) {
+          nmea::json_buffer<512> cell;
+          write_json_value<nmea::json_style::plain>(cell, v);
+          std::string_view c = cell.view();  // [a,b]
+          c = c.substr(1, c.size() - 2);
+          if (c.empty()) s.put("none");
+          for (const char ch : c) s.put(ch == ',' ? ';' : ch);
+        }
       } else if (v.state() != field_state::not_available) {
         write_json_value<nmea::json_style::plain>(s, v);
       }

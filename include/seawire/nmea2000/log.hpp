@@ -19,6 +19,13 @@
 // token it concerns (`field`, see log_field_name) and its byte column; a caller reading a file
 // reports it and goes on with the next line.
 //
+// A CAN frame carries 0 to 8 data bytes, and every format reads a frame of any of these lengths
+// (a frame without data is a legal frame: its PGN's fields are all not available). A line whose
+// first character is '#' is a comment (is_log_comment): canboat skips them, and the header
+// `# format=NAME` its loggers write first says how the lines after it are to be read
+// (canboat_format, parse_format_header; log_reader follows it). A canboat line is one frame in
+// a PLAIN log and one whole message in a FAST log, whatever its length.
+//
 // Timestamps are kept in microseconds: of Unix time (UTC) for candump and canboat lines, of the
 // day for yd_raw lines (the gateway's clock: UTC once it has seen the time on the bus, time since
 // power-up before). canboat's timestamp is free text to canboat; the forms it writes
@@ -61,6 +68,104 @@ enum class log_format : std::uint8_t { candump_log, candump, canboat, yd_raw };
   return std::nullopt;
 }
 
+/// canboat's names for the line formats of its logs: what a `# format=NAME` header line (which
+/// canboat's loggers write first) and analyzer's -format option say the lines are.
+enum class canboat_format : std::uint8_t {
+  plain,           ///< PLAIN: every line is one CAN frame (at most 8 bytes)
+  fast,            ///< FAST: every line is one whole message, whatever its length
+  plain_or_fast,   ///< PLAIN_OR_FAST: frames until a line of more than 8 bytes, whole messages
+                   ///< from that line on (what canboat assumes of a log without a header whose
+                   ///< first line has at most 8 bytes; one whose first line is longer is FAST)
+  plain_mix_fast,  ///< PLAIN_MIX_FAST: a line of at most 8 bytes is a frame, a longer one a
+                   ///< whole message
+  ydwg02,          ///< YDWG02: Yacht Devices RAW lines (log_format::yd_raw)
+  // canboat formats seawire does not read:
+  airmar,               ///< AIRMAR
+  chetco,               ///< CHETCO ($PCDIN sentences)
+  garmin_csv1,          ///< GARMIN_CSV1
+  garmin_csv2,          ///< GARMIN_CSV2
+  actisense_n2k_ascii,  ///< ACTISENSE_N2K_ASCII
+};
+inline constexpr std::size_t canboat_format_count = 10;
+
+/// The name canboat gives `f` ("PLAIN_OR_FAST").
+[[nodiscard]] constexpr std::string_view name(canboat_format f) noexcept {
+  switch (f) {
+    case canboat_format::plain: return "PLAIN";
+    case canboat_format::fast: return "FAST";
+    case canboat_format::plain_or_fast: return "PLAIN_OR_FAST";
+    case canboat_format::plain_mix_fast: return "PLAIN_MIX_FAST";
+    case canboat_format::ydwg02: return "YDWG02";
+    case canboat_format::airmar: return "AIRMAR";
+    case canboat_format::chetco: return "CHETCO";
+    case canboat_format::garmin_csv1: return "GARMIN_CSV1";
+    case canboat_format::garmin_csv2: return "GARMIN_CSV2";
+    case canboat_format::actisense_n2k_ascii: return "ACTISENSE_N2K_ASCII";
+  }
+  return "PLAIN";
+}
+
+/// Whether seawire reads logs of canboat format `f` (the first five).
+[[nodiscard]] constexpr bool is_readable(canboat_format f) noexcept {
+  return f <= canboat_format::ydwg02;
+}
+
+/// The log_format of lines of canboat format `f` (canboat, or yd_raw for YDWG02); nullopt for a
+/// format seawire does not read.
+[[nodiscard]] constexpr std::optional<log_format> log_format_of(canboat_format f) noexcept {
+  if (!is_readable(f)) return std::nullopt;
+  return f == canboat_format::ydwg02 ? log_format::yd_raw : log_format::canboat;
+}
+
+/// What every canboat log header starts with.
+inline constexpr std::string_view format_header_prefix = "# format=";
+
+/// Whether `line` is a comment of a log: its first character is '#'. canboat's programs skip
+/// them; `# format=NAME` is one that says what the lines after it are (parse_format_header).
+[[nodiscard]] constexpr bool is_log_comment(std::string_view line) noexcept {
+  return !line.empty() && line.front() == '#';
+}
+
+/// The canboat format called `text` (in any case: "fast" is FAST), or nullopt.
+[[nodiscard]] constexpr std::optional<canboat_format> canboat_format_named(
+    std::string_view text) noexcept {
+  for (std::size_t i = 0; i < canboat_format_count; ++i) {
+    const auto f = static_cast<canboat_format>(i);
+    const std::string_view n = name(f);
+    bool same = n.size() == text.size();
+    for (std::size_t k = 0; same && k < n.size(); ++k) {
+      const char c = text[k];
+      same = (c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c) == n[k];
+    }
+    if (same) return f;
+  }
+  return std::nullopt;
+}
+
+/// The format a header line `# format=NAME` names (NAME in any case; a trailing CR/LF ignored).
+/// bad_log_line (field 0) for a line that is no such header; unknown_log_format, with `field` 1
+/// and `column` 9 (where NAME starts), for a NAME canboat has no format of
+/// (canboat_format_named() says so), and for a format of canboat's that seawire does not read
+/// (value = that format; is_readable() says which).
+[[nodiscard]] constexpr result<canboat_format> parse_format_header(std::string_view line) noexcept {
+  while (!line.empty() &&
+         (line.back() == '\n' || line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
+    line.remove_suffix(1);
+  result<canboat_format> r;
+  if (!line.starts_with(format_header_prefix)) {
+    r.ec = errc::bad_log_line;
+    return r;
+  }
+  const auto f = canboat_format_named(line.substr(format_header_prefix.size()));
+  if (f) r.value = *f;
+  if (!f || !is_readable(*f)) {
+    r.ec = errc::unknown_log_format;
+    r.field = 1;
+    r.column = static_cast<std::uint16_t>(format_header_prefix.size());
+  }
+  return r;
+}
+
 /// One line of a log: a CAN frame, or (canboat FAST) a whole fast-packet payload.
 struct log_record {
   log_format format = log_format::candump_log;
@@ -68,7 +173,10 @@ struct log_record {
   std::optional<std::int64_t> time_us;  ///< see the top of this file for what it counts from
   nmea::text<15> interface;             ///< candump formats: the CAN interface ("can0")
   char direction = 'R';                 ///< yd_raw: 'R' received, 'T' transmitted
-  bool assembled = false;               ///< data is a whole payload (canboat FAST), not a frame
+  /// data is a whole message (a canboat FAST line), not a frame. parse_log_line() takes a
+  /// canboat line of more than 8 bytes for one (PLAIN_MIX_FAST); log_reader also follows the
+  /// log's format header and canboat's rule for a log without one (canboat_format).
+  bool assembled = false;
   std::array<std::uint8_t, max_fast_packet_length> bytes{};
   std::uint8_t size = 0;
 
@@ -260,7 +368,9 @@ template <bool Spaced>
     }
     const std::string_view tok = c.until(Spaced ? " \t" : ",");
     std::uint32_t v = 0;
-    if (tok.size() != 2 || !parse_hex(tok, v) || r.size >= max) return false;
+    // Two hex digits; canboat lines may have one (canboat writes and reads "0" for 00)
+    const bool size_ok = tok.size() == 2 || (!Spaced && tok.size() == 1);
+    if (!size_ok || !parse_hex(tok, v) || r.size >= max) return false;
     r.bytes[r.size++] = static_cast<std::uint8_t>(v);
   }
 }
@@ -415,7 +525,6 @@ constexpr result<log_record> parse_yd_raw(std::string_view line) noexcept {
     return log_fail(r, e, 3, at);
   at = c.pos();
   if (!parse_byte_tokens<true>(c, r, 8)) return log_fail(r, errc::bad_number, 4, at);
-  if (r.size == 0) return log_fail(r, errc::bad_length, 4, at);
   return {r, errc::ok, 0, 0};
 }
 

@@ -2,12 +2,20 @@
 #pragma once
 // From CAN log lines to NMEA 2000 messages: each line parsed (log.hpp), frames of fast-packet PGNs
 // assembled (fast_packet.hpp), and every complete message handed to a callback with its header
-// and payload. Which PGNs travel as fast packets, and how long their payloads may be, comes from
-// the PGN set (`Pgns`, the ANELLO inputs by default); frames of any other PGN are passed on one by
-// one as single-frame messages. A canboat FAST line is a whole payload and is passed on as it is.
-// Fixed memory: the assembler's slots (Slots x 240 bytes) and one parsed line.
+// and payload. Which PGNs travel as fast packets comes from the PGN set (`Pgns`, the ANELLO
+// inputs by default); frames of any other PGN are passed on one by one as single-frame messages.
+// A fast packet may be longer than its PGN's known layout (up to 223 bytes): the fields past it
+// are a newer sender's, which decode ignores, as it does for a canboat FAST line.
+//
+// canboat lines: a `# format=NAME` header fixes how the lines after it are read (FAST: each is a
+// whole message, whatever its length; PLAIN: each is one frame; PLAIN_OR_FAST, PLAIN_MIX_FAST;
+// YDWG02: Yacht Devices RAW lines); a later header replaces it. Without one, the reader does what
+// canboat's analyzer does: a log whose first canboat line has more than 8 bytes is FAST, any
+// other is PLAIN_OR_FAST. Other comment lines ('#' first) are skipped.
+// Fixed memory: the assembler's slots (Slots x about 270 bytes) and one parsed line.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -23,20 +31,51 @@ namespace seawire::nmea2000 {
 template <class Pgns = ins_input_pgns, std::size_t Slots = 16>
 class log_reader {
  public:
-  /// Reads one log line (of format `format`, or detected) and calls
-  /// fn(const message_header&, std::span<const std::uint8_t> payload) when it completes a message.
-  /// Returns the line's parse result: ok, empty_input for a blank line, or the error and the
-  /// token (`field`, log_field_name(value, field)) and byte column; value = the line's format.
+  /// Reads one log line (of format `format`, else of the format the log's header fixed, else
+  /// detected) and calls fn(const message_header&, std::span<const std::uint8_t> payload) when it
+  /// completes a message. Returns the line's parse result: ok (a header line too), empty_input
+  /// for a blank line or a comment, or the error and the token (`field`,
+  /// log_field_name(value, field)) and byte column; value = the line's format. A header naming a
+  /// format seawire does not read is unknown_log_format (the format in force is kept); a line
+  /// of more than 8 bytes in a PLAIN log is bad_length (field 6, the length).
   template <class Fn>
   constexpr result<log_format> read_line(std::string_view line, Fn&& fn,
                                          std::optional<log_format> format = std::nullopt) {
-    record_ = format ? parse_log_line(line, *format) : parse_log_line(line);
+    const std::string_view text = detail::trim_line_end(line);
+    if (text.find_first_not_of(" \t") == std::string_view::npos)
+      return {format.value_or(fixed_.value_or(log_format::candump_log)), errc::empty_input, 0, 0};
+    if (is_log_comment(text)) {
+      const result<canboat_format> h = parse_format_header(text);
+      if (h.ec == errc::bad_log_line) return {log_format::canboat, errc::empty_input, 0, 0};
+      if (!h) return {log_format::canboat, h.ec, h.field, h.column};
+      fixed_ = log_format_of(h.value);
+      if (h.value != canboat_format::ydwg02) canboat_ = h.value;
+      return {*fixed_, errc::ok, 0, 0};
+    }
+    if (!format) format = fixed_;
+    record_ = format ? parse_log_line(text, *format) : parse_log_line(text);
     result<log_format> r{record_.value.format, record_.ec, record_.field, record_.column};
     if (!record_) return r;
-    const log_record& rec = record_.value;
+    log_record& rec = record_.value;
+    if (rec.format == log_format::canboat) {
+      if (!canboat_) canboat_ = rec.size > 8 ? canboat_format::fast : canboat_format::plain_or_fast;
+      if (*canboat_ == canboat_format::plain_or_fast && rec.size > 8)
+        canboat_ = canboat_format::fast;
+      if (*canboat_ == canboat_format::plain && rec.size > 8) {
+        std::size_t column = 0;  // of the length: after the fifth comma
+        for (int commas = 0; column < text.size() && commas < 5; ++column)
+          if (text[column] == ',') ++commas;
+        r.ec = errc::bad_length;
+        r.field = 6;
+        r.column = static_cast<std::uint16_t>(column);
+        return r;
+      }
+      rec.assembled =
+          *canboat_ == canboat_format::fast || (*canboat_ != canboat_format::plain && rec.size > 8);
+    }
     const auto info = Pgns::info(rec.id.pgn);
     if (!rec.assembled && info && info->transport == framing::fast_packet) {
-      const auto done = assembler_.feed(rec.id, rec.data(), Pgns::length(rec.id.pgn));
+      const auto done = assembler_.feed(rec.id, rec.data());
       if (done) {
         message_header h = header_of(rec);
         h.id = done->id;
@@ -48,6 +87,18 @@ class log_reader {
     return r;
   }
 
+  /// The format the log's last readable header fixed for lines read without one given (canboat,
+  /// or yd_raw for YDWG02); nullopt before any.
+  [[nodiscard]] constexpr std::optional<log_format> header_format() const noexcept {
+    return fixed_;
+  }
+
+  /// How canboat lines are read now: the log's header, or what its first canboat line made of a
+  /// log without one; nullopt before either.
+  [[nodiscard]] constexpr std::optional<canboat_format> canboat_lines() const noexcept {
+    return canboat_;
+  }
+
   /// Drops unfinished fast packets (at the end of a log; counted as missing_frame).
   constexpr void flush() noexcept { assembler_.flush(); }
   [[nodiscard]] constexpr const fast_packet_assembler<Slots>& assembler() const noexcept {
@@ -57,6 +108,8 @@ class log_reader {
  private:
   result<log_record> record_;
   fast_packet_assembler<Slots> assembler_;
+  std::optional<log_format> fixed_;        ///< the format the log's header fixed
+  std::optional<canboat_format> canboat_;  ///< how canboat lines are read
 };
 
 }  // namespace seawire::nmea2000
