@@ -108,6 +108,23 @@ constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint1
       t.put(" (sent ").hex(s.value.received_checksum).put(", computed ");
       t.hex(s.value.computed_checksum).put(")");
     }
+    if (e == errc::trailing_characters && column < line.size()) {
+      // What stands after the checksum, without the one line ending parse() takes off; bytes
+      // that are not printable ASCII as \xHH.
+      std::string_view rest = line.substr(column);
+      if (rest.ends_with("\r\n"))
+        rest.remove_suffix(2);
+      else if (rest.ends_with('\n') || rest.ends_with('\r'))
+        rest.remove_suffix(1);
+      t.put(" (\"");
+      for (const char c : rest) {
+        if (seawire::detail::is_printable(c) && c != '"' && c != '\\')
+          t.put(std::string_view(&c, 1));
+        else
+          t.put("\\x").hex(static_cast<std::uint8_t>(c));
+      }
+      t.put("\")");
+    }
     return t.put(" at column ").put(std::uint64_t{column}).view();
   }
   const field_about a = about(s.value.address, field, s.value.field_count);
