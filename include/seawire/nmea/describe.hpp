@@ -100,7 +100,8 @@ constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint1
   lax.checksum = checksum_policy::ignore;
   lax.max_length = 0xFFFF;
   const result<sentence_view> s = parse(line, lax);
-  const bool framing = e >= errc::empty_input && e <= errc::too_long;
+  const bool framing =
+      (e >= errc::empty_input && e <= errc::too_long) || e == errc::trailing_characters;
   if (!framing && s && field == 0) return t.put(s.value.address).put(": ").put(message(e)).view();
   if (field == 0 || !s) {
     t.put(message(e));
