@@ -129,7 +129,8 @@ enum class errc : std::uint8_t {
     case errc::bad_address: return "address is not 1-15 upper-case letters or digits";
     case errc::bad_character: return "byte outside printable ASCII, or '$' inside a sentence";
     case errc::missing_checksum: return "checksum required but missing";
-    case errc::bad_checksum_format: return "checksum is not two hex digits";
+    case errc::bad_checksum_format:
+      return "checksum is not two hex digits (upper-case where required)";
     case errc::checksum_mismatch: return "checksum does not match the sentence";
     case errc::bad_line_ending: return "line does not end in CR LF";
     case errc::too_long: return "sentence longer than the maximum length";

@@ -847,7 +847,7 @@ case_live() {
   wait "$pid" || rc=$?
   expect_eq "exit status: the last sentence rejected" 1 "$rc"
   expect_eq "the late LF was no blank line: the rejected sentence is on line 3" \
-    '{"line":3,"error":"checksum_mismatch","field":0,"detail":"checksum does not match the sentence (sent 11, computed 17) at column 13","input":"$PAPGPSCTRL,7*11"}' \
+    '{"line":3,"error":"checksum_mismatch","field":0,"detail":"checksum does not match the sentence (sent 11, computed 17) at column 14","input":"$PAPGPSCTRL,7*11"}' \
     "$(line 3 "$work/out")"
 }
 
