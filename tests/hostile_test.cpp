@@ -382,7 +382,11 @@ TEST_CASE("a checksum of one digit or three, or not hex") {
     for (const std::string& extra :
          std::vector<std::string>{" ", "X", "G", "\t", "*", "*" + sum, "  ", "\r\r", "\x01"}) {
       for (const parse_policy& p : {liberal, strict}) {
-        const std::string line = data + "*" + sum + extra + "\r\n";
+        std::string line = data;
+        line += '*';
+        line += sum;
+        line += extra;
+        line += "\r\n";
         const auto d = decode_with(set, line, p);
         INFO(line);
         CHECK(d.ec == errc::trailing_characters);

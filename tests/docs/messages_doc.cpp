@@ -39,7 +39,7 @@ std::string member_name() {
   const std::size_t at = f.find("Member = ");
   const std::string_view with = f.substr(0, f.find_first_of(";]", at));
   const std::size_t colon = with.rfind("::");
-  const std::string name(with.substr(colon == std::string_view::npos ? with.size() : colon + 2));
+  std::string name(with.substr(colon == std::string_view::npos ? with.size() : colon + 2));
   const bool identifier = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
   });
