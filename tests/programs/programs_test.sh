@@ -268,16 +268,19 @@ case_roundtrip() {
     '$PYDIR,45,55*57' "$(line 14 "$data/bad.nmea" | tr -d '\r')")" "$(cat "$work/out")"
   # docs/round-trip.md: what --format nmea keeps and what it writes in the standard form.
   local rmc='GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.011,,311214,'
-  crlf "$(seal 'IIVHW,,T,,M,5.2,N,9.6,K')" "$(seal "$rmc,E,A")" "$(seal "$rmc,W")" \
-    "$(seal 'IIVHW,,,211.0,M,5.2,N,,')" "$(seal "${rmc}999.9,E,A")" >"$work/in"
-  expect_rc "--strict takes the non-canonical forms" 0 "$decode" --strict --format none <"$work/in"
+  local kept=("$(seal 'IIVHW,,T,,M,5.2,N,9.6,K')" "$(seal "$rmc,E,A")" "$(seal "$rmc,W")"
+    "$(seal 'IIVHW,,,211.0,M,5.2,N,,')" "$(seal 'GPGGA,092725.00,,,,,0,00,99.99,,,,,,')")
+  crlf "${kept[@]}" "$(seal "${rmc}999.9,E,A")" "$(seal 'IIVHW,,,211.0,,5.2,N,,')" >"$work/in"
+  expect_rc "--strict takes these forms" 0 "$decode" --strict --format none <"$work/in"
   expect_rc "--format nmea" 0 "$decode" --format nmea <"$work/in"
   expect_eq "kept as they came, or written in the listed standard form" \
-    "$(crlf "$(seal 'IIVHW,,T,,M,5.2,N,9.6,K')" "$(seal "$rmc,E,A")" "$(seal "$rmc,W")" \
-      "$(seal 'IIVHW,,T,211.0,M,5.2,N,,K')" "$(seal "$rmc,E,A")")" "$(cat "$work/out")"
+    "$(crlf "${kept[@]}" "$(seal "$rmc,E,A")" "$(seal 'IIVHW,,,211.0,M,5.2,N,,')")" \
+    "$(cat "$work/out")"
   expect_rc "decode | encode" 0 "$encode" < <("$decode" <"$work/in")
   expect_eq "through JSON a variation letter without a value is null, as no variation is" \
     "$(seal "$rmc,,A")" "$(line 2 "$work/out" | tr -d '\r')"
+  expect_eq "through JSON the unit letters of blank values are written" \
+    "$(seal 'IIVHW,,T,211.0,M,5.2,N,,K')" "$(line 4 "$work/out" | tr -d '\r')"
 }
 
 case_options() {
