@@ -72,7 +72,10 @@ class model {
         }
         break;
       case state::sentence:
-        if (c == '$') {  // a '!' is text here, below
+        if (c == '$' && ends_in_checksum()) {  // only the line ending is missing
+          emit(line_ending::none);
+          start(c);
+        } else if (c == '$') {  // a '!' is text here, below
           ++out_.stats.interrupted;
           out_.stats.dropped_bytes += buf_.size();
           start(c);
@@ -122,6 +125,13 @@ class model {
  private:
   enum class state { idle, sentence, discard };
 
+  [[nodiscard]] bool ends_in_checksum() const {
+    const auto hex = [](char c) {
+      return (c >= '0' && c <= '9') || (c >= 'A' && c <= 'F') || (c >= 'a' && c <= 'f');
+    };
+    const std::size_t n = buf_.size();
+    return n >= 5 && buf_[n - 3] == '*' && hex(buf_[n - 2]) && hex(buf_[n - 1]);
+  }
   void start(char c) {
     buf_ = std::string(1, c);
     state_ = state::sentence;

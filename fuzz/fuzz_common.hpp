@@ -394,7 +394,9 @@ inline constexpr nmea::parse_policy liberal_policy = [] {
 }();
 inline constexpr nmea::parse_policy strict_policy = nmea::parse_policy::strict();
 
-inline bool sentence_level(errc e) { return e >= errc::empty_input && e <= errc::too_long; }
+inline bool sentence_level(errc e) {
+  return (e >= errc::empty_input && e <= errc::too_long) || e == errc::trailing_characters;
+}
 inline bool field_level(errc e) {
   return (e >= errc::too_few_fields && e <= errc::bad_length) || e == errc::bad_variation ||
          e == errc::bad_variation_direction || e == errc::variation_out_of_range;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -361,6 +362,13 @@ outcome reference_read(std::string_view s, std::size_t capacity, bool drops = fa
         o.items.push_back(sentence(cur, cur_offset, e, line));
         ++k.sentences;
         ++line;
+        state = st::idle;
+      } else if ((c == '$' || u == 0xAB) && cur.size() >= 5 && cur[cur.size() - 3] == '*' &&
+                 std::isxdigit(static_cast<unsigned char>(cur[cur.size() - 2])) != 0 &&
+                 std::isxdigit(static_cast<unsigned char>(cur.back())) != 0) {
+        // A whole "*hh" sentence lacks only its line ending: it comes out; c is read again.
+        o.items.push_back(sentence(cur, cur_offset, line_ending::none, line));
+        ++k.sentences;
         state = st::idle;
       } else if (c == '$' || u == 0xAB) {  // not '!': that is text here
         ++k.interrupted;
@@ -892,7 +900,8 @@ TEST_CASE("garbage that holds AB 00 by chance", "[anello][stream]") {
   }
 }
 
-TEST_CASE("0xAB inside a sentence ends it as interrupted", "[anello][stream]") {
+TEST_CASE("0xAB inside a sentence ends it: interrupted, unless its checksum is whole",
+          "[anello][stream]") {
   SECTION("a stray AB") {
     const std::string stream =
         "$VMVBW,0.0\xAB"s + "0.0*58\r\n" + std::string(gpsctrl_line) + "\r\n";
@@ -900,12 +909,22 @@ TEST_CASE("0xAB inside a sentence ends it as interrupted", "[anello][stream]") {
     CHECK(o.items == std::vector<rec>{sentence(gpsctrl_line, 19, line_ending::crlf, 2)});
     CHECK(o.stats == stream_stats{1, 0, 7, 0, 0, 0, 1, 0, 0, 10, 4});
   }
-  SECTION("a frame right after a sentence with no line ending") {
+  SECTION("a frame right after a whole sentence with no line ending") {
+    // "*hh" is complete: only the line ending is missing, and nothing is lost.
     const std::string stream = std::string(gpsctrl_line) + str(seed);
     const outcome o = read(stream);
-    CHECK(o.items == std::vector<rec>{frame(seed, 16)});
+    CHECK(o.items ==
+          std::vector<rec>{sentence(gpsctrl_line, 0, line_ending::none, 1), frame(seed, 16)});
+    CHECK(o.stats.interrupted == 0);
+    CHECK(o.stats.dropped_bytes == 0);
+  }
+  SECTION("a frame right after a sentence cut inside its checksum") {
+    const std::string cut(gpsctrl_line.substr(0, gpsctrl_line.size() - 1));
+    const std::string stream = cut + str(seed);
+    const outcome o = read(stream);
+    CHECK(o.items == std::vector<rec>{frame(seed, cut.size())});
     CHECK(o.stats.interrupted == 1);
-    CHECK(o.stats.dropped_bytes == 16);
+    CHECK(o.stats.dropped_bytes == cut.size());
   }
 }
 

@@ -44,6 +44,15 @@ TEST_CASE("describe: errors of the sentence as a whole say where") {
   CHECK(told<set>("$PYDIR,45,55*58\r\n") ==
         "checksum does not match the sentence (sent 58, computed 57) at column 13");
   CHECK(told<set>("PYDIR,45,55\r\n").ends_with(" at column 0"));
+  // What follows a whole checksum is shown, without the line ending, unprintable bytes in hex.
+  CHECK(told<set>("$PYDIR,45,55*6f \r\n") ==
+        R"(unexpected characters after the checksum (" ") at column 15)");
+  CHECK(told<set>("$PYDIR,45,55*57X\n") ==
+        R"(unexpected characters after the checksum ("X") at column 15)");
+  CHECK(told<set>("$PYDIR,45,55*57\x01\"\r\r\n") ==
+        R"(unexpected characters after the checksum ("\x01\x22\x0D") at column 15)");
+  CHECK(told<set>("$PYDIR,45,55*577\r\n") ==
+        "checksum is not two hex digits (upper-case where required) at column 13");
   // One message type, without a set.
   char buf[200];
   const std::string_view line =

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <cstddef>
 #include <cstdint>
 #include <ostream>
@@ -161,7 +162,15 @@ reference_result reference_frame(std::string_view s, std::size_t capacity) {
     // '$' starts a sentence anywhere (interrupting one); '!' only between sentences: inside
     // one it is text, and in a discarded rest it is discarded.
     if (c == '$' || (c == '!' && state == st::idle)) {
-      if (state == st::in) {
+      // The sentence before a '$' comes out if its "*hh" is complete: it lacks only its ending.
+      const bool checksummed =
+          cur.size() >= 5 && cur[cur.size() - 3] == '*' &&
+          std::isxdigit(static_cast<unsigned char>(cur[cur.size() - 2])) != 0 &&
+          std::isxdigit(static_cast<unsigned char>(cur.back())) != 0;
+      if (state == st::in && checksummed) {
+        r.lines.push_back({cur, line_ending::none, line});
+        ++r.stats.sentences;
+      } else if (state == st::in) {
         ++r.stats.interrupted;
         r.stats.dropped_bytes += cur.size();
       }
@@ -381,6 +390,41 @@ TEST_CASE("'$' in the middle restarts the sentence", "[framer]") {
     CHECK(frame(f, {"$$$A\n"sv}) == std::vector<rec>{{"$A", line_ending::lf, 1}});
     CHECK(f.stats() == framer_stats{1, 0, 2, 0, 0, 2});
   }
+}
+
+TEST_CASE("a '$' right after a whole \"*hh\" ends that sentence: only its line ending is missing",
+          "[framer]") {
+  const std::string_view stream = "$PYDIR,45,55*57$PYDIR,0,0*56\r\n$A*6f$B*4e"sv;
+  const std::vector<rec> want{{"$PYDIR,45,55*57", line_ending::none, 1},
+                              {"$PYDIR,0,0*56", line_ending::crlf, 1},
+                              {"$A*6f", line_ending::none, 2},  // lower-case hex is hex
+                              {"$B*4e", line_ending::none, 2}};
+  framer<> f;
+  CHECK(frame(f, {stream}) == want);
+  CHECK(f.stats() == framer_stats{4, 0, 0, 0, 0, 0});
+  // However the stream is cut: the checksum may lie in an earlier chunk than the '$'.
+  for (std::size_t cut = 1; cut < stream.size(); ++cut) {
+    INFO("cut at " << cut);
+    framer<> g;
+    CHECK(frame(g, {stream.substr(0, cut), stream.substr(cut)}) == want);
+    framer<> h;
+    CHECK(frame_bytewise(h, stream) == want);
+  }
+  // Anything short of two hex digits after the '*' may be a sentence cut short: dropped.
+  for (const std::string_view cut :
+       {"$A,1*5"sv, "$A,1*"sv, "$A,1*5G"sv, "$A,1*G5"sv, "$A,15"sv, "$*5"sv, "$*57"sv}) {
+    INFO(cut);
+    framer<> g;
+    CHECK(frame(g, {std::string(cut) + "$B*42\n"}) ==
+          std::vector<rec>{{"$B*42", line_ending::lf, 1}});
+    CHECK(g.stats().interrupted == 1);
+    CHECK(g.stats().dropped_bytes == cut.size());
+  }
+  // A '!' after the checksum is no start (inside a sentence it is text): the line goes on, and
+  // its parse says what follows the checksum.
+  framer<> g;
+  CHECK(frame(g, {"$A*41!AIVDM,1*00\n"sv}) ==
+        std::vector<rec>{{"$A*41!AIVDM,1*00", line_ending::lf, 1}});
 }
 
 TEST_CASE("'!' starts a sentence where '$' would: between sentences and in noise", "[framer]") {
@@ -790,9 +834,12 @@ built_stream build_stream(std::uint64_t seed) {
     }
   };
   // '!' starts a sentence only between sentences; after one cut short, a '$' must do it.
-  const auto add_valid = [&](bool terminated, bool bang_ok = true) {
+  const auto add_valid = [&](bool terminated, bool bang_ok = true, std::string_view tail = {}) {
     const char start = bang_ok && r.chance(30) ? '!' : '$';
-    pending p{b.bytes.size(), std::string::npos, start + body(r.below(120))};
+    // A checksum after at least one byte, else "$*hh" is no sentence with only its ending lost.
+    pending p{b.bytes.size(), std::string::npos,
+              start + body(r.below(120) + (tail.empty() ? 0 : 1))};
+    p.text += tail;
     b.bytes += p.text;
     if (terminated) {
       p.ending = b.bytes.size();
@@ -845,11 +892,17 @@ built_stream build_stream(std::uint64_t seed) {
       b.bytes += ending();
       ++b.stats.invalid_bytes;
       b.stats.dropped_bytes += s.size();
-    } else if (kind < 94) {  // cut short by the next '$' (a '!' would be text)
-      const std::string s = (r.chance(30) ? "!" : "$") + body(r.below(property_capacity));
+    } else if (kind < 88) {  // cut short by the next '$' (a '!' would be text)
+      std::string s = (r.chance(30) ? "!" : "$") + body(r.below(property_capacity));
+      if (s.size() >= 4 && s[s.size() - 3] == '*') s[s.size() - 3] = '#';  // a checksum's cut
       b.bytes += s;
       ++b.stats.interrupted;
       b.stats.dropped_bytes += s.size();
+      add_valid(true, false);
+    } else if (kind < 94) {  // a whole "*hh" sentence with no line ending before the next '$'
+      constexpr std::string_view hex = "0123456789ABCDEFabcdef";
+      const std::string checksum{'*', hex[r.below(hex.size())], hex[r.below(hex.size())]};
+      add_valid(false, true, checksum);
       add_valid(true, false);
     } else {  // overlong but properly terminated
       const std::string s = (r.chance(30) ? "!" : "$") + body(property_capacity + r.below(3000));

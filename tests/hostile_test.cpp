@@ -156,8 +156,10 @@ TEST_CASE("NUL, control and 8-bit bytes are bad_character at their column, in ev
         line[8] = brk;
         CHECK(decode_with(set, line, liberal).ec == errc::bad_character);
       }
-      // After the '*' a byte is part of a checksum that is not two hex digits.
-      CHECK(decode_with(set, std::string(good) + bad, liberal).ec == errc::bad_checksum_format);
+      // After the checksum's two hex digits a byte is one too many, whatever it is.
+      const auto after = decode_with(set, std::string(good) + bad, liberal);
+      CHECK(after.ec == errc::trailing_characters);
+      CHECK(after.column == good.size());
     }
   });
 }
@@ -333,7 +335,8 @@ TEST_CASE("a lone $ or *, and a $ inside a sentence") {
         {"*" + std::string(good), errc::missing_start, 0},
         {"$$" + body, errc::bad_character, 1},
         {std::string(good.substr(0, 7)) + "$" + body, errc::bad_character, 7},
-        {std::string(good) + "$", errc::bad_checksum_format, 0},
+        {std::string(good) + "$", errc::trailing_characters,
+         static_cast<std::uint16_t>(good.size())},
     };
     for (const row& r : rows) {
       INFO(r.line);
@@ -348,18 +351,52 @@ TEST_CASE("a lone $ or *, and a $ inside a sentence") {
   CHECK(lines == std::vector<std::string>{std::string(standard_line), "$"});
   CHECK(stats.interrupted == 1);
   CHECK(stats.noise_bytes == 1);  // the lone '*'
+  // A '$' right after a whole "*hh" cuts nothing: the sentence before it lacks only its line
+  // ending, and both are read. Any other sentence ended by a '$' may have lost its tail.
+  for_each_family([](auto, std::string_view good) {
+    const std::string data(good.substr(0, good.find('*')));
+    framer_stats st;
+    CHECK(frame_all(std::string(good) + std::string(good) + "\r\n", &st) ==
+          std::vector<std::string>{std::string(good), std::string(good)});
+    CHECK(st.interrupted == 0);
+    for (const std::string& cut : {data, data + "*", data + "*" + std::string(1, good.back())}) {
+      INFO(cut);
+      CHECK(frame_all(cut + std::string(good) + "\r\n", &st) ==
+            std::vector<std::string>{std::string(good)});
+      CHECK(st.interrupted == 1);
+      CHECK(st.dropped_bytes == cut.size());
+    }
+  });
 }
 
 TEST_CASE("a checksum of one digit or three, or not hex") {
   for_each_family([](auto set, std::string_view good) {
     const std::string data(good.substr(0, good.find('*')));
     const auto column = static_cast<std::uint16_t>(data.size() + 1);
-    for (const std::string_view sum : {"7", "7FF", "G0", "0G", " 7", "7 ", "-1", "0x7"}) {
+    for (const std::string_view sum :
+         {"7", "7FF", "G0", "0G", " 7", "7 ", "-1", "0x7", "7G7", "1234"}) {
       for (const parse_policy& p : {liberal, strict}) {
         const auto d = decode_with(set, data + "*" + std::string(sum) + "\r\n", p);
         INFO(data << "*" << sum);
         CHECK(d.ec == errc::bad_checksum_format);
         CHECK(d.column == column);
+      }
+    }
+    // Two hex digits then anything but a third ("*6F ", "*57X") is a whole checksum followed by
+    // characters where only the line ending may stand.
+    const std::string sum(good.substr(good.find('*') + 1, 2));
+    for (const std::string& extra :
+         std::vector<std::string>{" ", "X", "G", "\t", "*", "*" + sum, "  ", "\r\r", "\x01"}) {
+      for (const parse_policy& p : {liberal, strict}) {
+        std::string line = data;
+        line += '*';
+        line += sum;
+        line += extra;
+        line += "\r\n";
+        const auto d = decode_with(set, line, p);
+        INFO(line);
+        CHECK(d.ec == errc::trailing_characters);
+        CHECK(d.column == column + 2);
       }
     }
     // Lower-case hex: receivers take it, the strict policy does not.

@@ -172,9 +172,13 @@ TEST_CASE("malformed sentences: each failure class gives its errc and column") {
       {"$PYDIR,45,55*5", errc::bad_checksum_format, 13},
       {"$PYDIR,45,55*577", errc::bad_checksum_format, 13},
       {"$PYDIR,45,55*G7", errc::bad_checksum_format, 13},
-      {"$PYDIR,45,55*57 ", errc::bad_checksum_format, 13},
+      {"$PYDIR,45,55*57 ", errc::trailing_characters, 15},
+      {"$PYDIR,45,55*57X", errc::trailing_characters, 15},
+      {"$PYDIR,45,55*6f ", errc::trailing_characters, 15},  // the checksum is not checked first
+      {"$PYDIR,45,55*57*57", errc::trailing_characters, 15},
+      {"$PYDIR,45,55*5757", errc::bad_checksum_format, 13},
       {"$PYDIR,45,55*58", errc::checksum_mismatch, 13},
-      {"$PYDIR,45,55*57\r\r\n", errc::bad_checksum_format, 13},
+      {"$PYDIR,45,55*57\r\r\n", errc::trailing_characters, 15},
   };
   for (const auto& r : rows) {
     INFO(r.line);

@@ -442,6 +442,15 @@ TEST_CASE("validator: checksum findings") {
                                        "checksum RXHRB 0 bad_checksum_format",
                                        "field RXHRB 9 bad_enum",
                                    });
+  // A whole checksum then other characters: the checksum rule names them; fields still read.
+  rx::validator fresh;  // no RXHRB before it: no rate finding
+  const auto trailing =
+      fresh.check("$RXHRB,101218,161229,21.31198,N,157.88972,W,ROBO1,2,7*7F \r\n", seed_utc + 2s);
+  CHECK_FALSE(trailing.accepted);
+  CHECK(rules_of(trailing.findings) == std::vector<std::string>{
+                                           "checksum RXHRB 0 trailing_characters",
+                                           "field RXHRB 9 bad_enum",
+                                       });
   // A second '*' makes the checksum text malformed; the fields before it are still read.
   const auto two_stars = v.check("$RXDEL,101218,161229,AUVSI,R,CIRCL*3*2\r\n", seed_utc + 2s);
   CHECK(rules_of(two_stars.findings) ==

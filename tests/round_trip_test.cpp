@@ -19,6 +19,10 @@
 #include "seawire/nmea/message.hpp"
 #include "seawire/robotx/messages.hpp"
 #include "seawire/sandshark/messages.hpp"
+#include "seawire/standard/gga.hpp"
+#include "seawire/standard/rmc.hpp"
+#include "seawire/standard/vhw.hpp"
+#include "seawire/standard/vwr.hpp"
 #include "support.hpp"
 
 namespace nm = seawire::nmea;
@@ -163,4 +167,76 @@ TEST_CASE("the generator reaches the corners of each domain", "[round_trip]") {
   CHECK(empty_depth);
   CHECK(six_field_cprbs);
   CHECK(five_field_cprbs);
+}
+
+namespace {
+
+/// decode as M (the default policy), then encode: the sentence --format nmea writes back.
+template <nm::message_like M>
+std::string written_back(const std::string& line) {
+  const auto m = nm::decode<M>(line);
+  if (!m) return std::string("decode: ") + std::string(seawire::name(m.ec));
+  const auto out = nm::encode(m.value);
+  if (!out) return std::string("encode: ") + std::string(seawire::name(out.ec));
+  return std::string(out.view());
+}
+
+/// The same for the standard sentences the forms below are of, chosen by address.
+std::string written_back_standard(const std::string& line) {
+  namespace st = seawire::standard;
+  const std::string_view address = std::string_view(line).substr(3, 3);
+  if (address == "VHW") return written_back<st::vhw>(line);
+  if (address == "RMC") return written_back<st::rmc>(line);
+  if (address == "GGA") return written_back<st::gga>(line);
+  if (address == "VWR") return written_back<st::vwr>(line);
+  return "no message for " + line;
+}
+
+}  // namespace
+
+TEST_CASE("forms kept and forms normalized, as docs/round-trip.md lists them", "[round_trip]") {
+  namespace st = seawire::standard;
+  using support::sealed;
+  struct row {
+    std::string received;
+    std::string written;  // the same as received: kept as it came
+  };
+  const auto same = [](const std::string& s) { return row{s, s}; };
+  const std::string rmc = "GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.011,,311214,";
+  const std::string gga = "GPGGA,105027.80,5612.9900,N,01200.7600,E,1,03,2.5,160.0,";
+  // Kept: what the wire says, in the forms real senders write.
+  for (const row& r : {
+           same(sealed("IIVHW,,T,,M,5.2,N,9.6,K")),  // blank values with their letters
+           same(sealed(rmc + ",E,A")),               // a variation letter without a value
+           same(sealed(rmc + ",W")),                 // the same in the 11-field RMC
+           same(sealed(rmc + "15.3,W,A")),           // a variation with its letter
+           same(sealed(gga + "M,,M,,")),             // GGA's blank geoid separation
+           same(sealed(gga + "M,,,,")),              // ... with its letter blank too
+           same(sealed("IIVHW,,,211.0,M,5.2,N,,")),  // blank letters beside blank values
+           same(sealed("IIVHW,,T,,,5.2,N,,K")),      // some blank, some not
+           same(sealed("GPGGA,105027.80,,,,,0,00,99.99,,,,,,")),  // u-blox without a fix
+           same(sealed("GPGGA,105027.80,,,,,,,,,,,,,")),          // no fix, not even a quality
+           same(sealed("WIVWR,45.0,L,,,,,,")),                    // one of VWR's three speeds
+       }) {
+    INFO(r.received);
+    CHECK(written_back_standard(r.received) == r.written);
+  }
+  // Normalized, each row as the doc's table gives it. A value has its unit letter.
+  CHECK(written_back<st::gga>(sealed(gga + ",,M,,")) == sealed(gga + "M,,M,,"));
+  CHECK(written_back<st::vhw>(sealed("IIVHW,,,211.0,,5.2,N,,")) ==
+        sealed("IIVHW,,,211.0,M,5.2,N,,"));
+  CHECK(written_back<st::gga>(
+            sealed("GPGGA,105027.80,5612.9900,N,01200.7600,E,1,3,2.5,160.0,M,,M,,")) ==
+        sealed(gga + "M,,M,,"));
+  CHECK(written_back<st::rmc>(sealed(rmc + "999.9,E,A")) == sealed(rmc + ",E,A"));
+  CHECK(written_back<st::rmc>(sealed(rmc + "15.3,,A")) == sealed(rmc + ",,A"));
+  CHECK(written_back<st::rmc>(
+            sealed("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.011,,181207,0,A")) ==
+        sealed("GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.011,,181207,,,A"));
+  // What a normalization writes is canonical: it comes back unchanged.
+  for (const std::string& canonical :
+       {sealed("IIVHW,,,211.0,M,5.2,N,,"), sealed(gga + "M,,M,,"), sealed(rmc + ",E,A")}) {
+    INFO(canonical);
+    CHECK(written_back_standard(canonical) == canonical);
+  }
 }

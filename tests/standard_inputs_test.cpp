@@ -298,8 +298,16 @@ TEST_CASE("VHW: all blank, unit letters blank too", "[vhw]") {
   CHECK_FALSE(r.value.heading_magnetic_deg.has_value());
   CHECK_FALSE(r.value.speed_knots.has_value());
   CHECK_FALSE(r.value.speed_kmh.has_value());
-  // seawire always writes the unit letters.
-  CHECK(nmea::encode(r.value).view() == sealed("IIVHW,,T,,M,,N,,K"));
+  // Written back as it came: the letters that came blank beside blank values stay blank.
+  CHECK(r.value.blank_units == 0b1'0101'0100U);  // wire fields 2, 4, 6 and 8
+  CHECK(nmea::encode(r.value).view() == "$IIVHW,,,,,,,,*49\r\n");
+  // A message built in code has its letters written; so has a value given later.
+  vhw built;
+  built.talker = "II";
+  CHECK(nmea::encode(built).view() == sealed("IIVHW,,T,,M,,N,,K"));
+  vhw later = r.value;
+  later.speed_knots = decimal::scaled(52, 1);
+  CHECK(nmea::encode(later).view() == sealed("IIVHW,,,,,5.2,N,,"));
 }
 
 TEST_CASE("VHW: any talker, kept on re-encode", "[vhw]") {

@@ -574,9 +574,11 @@ class decoder {
 
   void sentence(const nmea::framed_line& l) {
     if (opt_.strict && l.ending != nmea::line_ending::crlf) {
+      const char* ends = l.ending == nmea::line_ending::lf   ? "it ends in LF alone"
+                         : l.ending == nmea::line_ending::cr ? "it ends in CR alone"
+                                                             : "it has no line ending";
       reject(l.line, errc::bad_line_ending, 0,
-             std::string(message(errc::bad_line_ending)) + ": the line does not end in CR LF",
-             l.text);
+             std::string(message(errc::bad_line_ending)) + ": " + ends, l.text);
       return;
     }
     const nmea::parse_policy& policy = policy_for(l.text);
@@ -814,7 +816,12 @@ class decoder {
         break;
       case anello::drop_reason::interrupted:
         e = errc::truncated;
-        detail = "a sentence cut short by the next '$' or 0xAB; " + n + " dropped";
+        // A sentence with a complete checksum before the '$' was yielded: this one has none,
+        // or part of one, so it may have lost its tail.
+        detail =
+            "a sentence without a complete checksum, ended by the next '$' or 0xAB before its line "
+            "ending (cut short, or sent without either); " +
+            n + " dropped";
         break;
       case anello::drop_reason::bad_crc:
         e = errc::crc_mismatch;

@@ -244,7 +244,9 @@ class simulator {
       ++rejected_;
       if (c.rejected_in <= 3) {
         char why[200];
-        const auto text = nmea::describe<kf::to_vehicle>(why, r, sentence);
+        // Told with the policy it was read with: a command that ends "*" without a checksum
+        // splits into its fields only under the vehicle's policy, and so has its field named.
+        const auto text = nmea::describe<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
         net::line_server::log("client %llu: rejected: %.*s%s",
                               static_cast<unsigned long long>(c.id()),
                               static_cast<int>(text.size()), text.data(),

@@ -17,9 +17,9 @@ enum class errc : std::uint8_t {
   bad_address,          ///< the address is empty, too long, or not upper-case letters/digits
   bad_character,        ///< a byte outside printable ASCII 0x20..0x7E, or a reserved '$' inside
   missing_checksum,     ///< the policy requires a checksum and none was sent
-  bad_checksum_format,  ///< the checksum is not exactly two hex digits (or lower-case when refused)
+  bad_checksum_format,  ///< the hex digits after '*' are not two (or lower-case when refused)
   checksum_mismatch,    ///< the checksum does not match the XOR of the sentence
-  bad_line_ending,      ///< bytes after the checksum other than the allowed CR/LF endings
+  bad_line_ending,      ///< the line does not end in CR LF where the policy requires it
   too_long,             ///< the sentence is longer than the policy's maximum length
   // -- message selection --
   unknown_address,  ///< no message of the requested set has this address
@@ -64,6 +64,8 @@ enum class errc : std::uint8_t {
   bad_can_id,          ///< not a 29-bit identifier, or fields no identifier can carry
   bad_log_line,        ///< a CAN log line of no known format, or malformed in its format
   unknown_log_format,  ///< a log's format header names a format seawire does not read
+  // -- sentence framing, added later --
+  trailing_characters,  ///< "*hh" then a character that is no hex digit, before the line ending
 };
 
 /// The identifier of an errc as text ("checksum_mismatch"), for logs and JSON.
@@ -115,6 +117,7 @@ enum class errc : std::uint8_t {
     case errc::bad_can_id: return "bad_can_id";
     case errc::bad_log_line: return "bad_log_line";
     case errc::unknown_log_format: return "unknown_log_format";
+    case errc::trailing_characters: return "trailing_characters";
   }
   return "unknown_error";
 }
@@ -128,9 +131,10 @@ enum class errc : std::uint8_t {
     case errc::bad_address: return "address is not 1-15 upper-case letters or digits";
     case errc::bad_character: return "byte outside printable ASCII, or '$' inside a sentence";
     case errc::missing_checksum: return "checksum required but missing";
-    case errc::bad_checksum_format: return "checksum is not two hex digits";
+    case errc::bad_checksum_format:
+      return "checksum is not two hex digits (upper-case where required)";
     case errc::checksum_mismatch: return "checksum does not match the sentence";
-    case errc::bad_line_ending: return "unexpected bytes after the checksum";
+    case errc::bad_line_ending: return "line does not end in CR LF";
     case errc::too_long: return "sentence longer than the maximum length";
     case errc::unknown_address: return "no known message has this address";
     case errc::wrong_address: return "sentence is not the requested message";
@@ -170,6 +174,7 @@ enum class errc : std::uint8_t {
     case errc::bad_log_line: return "not a CAN log line of a known format";
     case errc::unknown_log_format:
       return "the log's format header names a format seawire does not read";
+    case errc::trailing_characters: return "unexpected characters after the checksum";
   }
   return "unknown error";
 }

@@ -16,6 +16,7 @@ struct m {
   std::optional<n::decimal> a;
   std::optional<n::decimal> b;
   std::uint8_t wire_fields = 0;
+  std::uint32_t blank_units = 0;
   int count = 0;
 
 #if defined(CASE_ok)
@@ -24,6 +25,7 @@ struct m {
                                    .talker_in<&m::talker>()
                                    .standard_forms<1, 2>()
                                    .wire_fields_in<&m::wire_fields>()
+                                   .blank_units_in<&m::blank_units>()
                                    .buffer_size_at_least<1000>();
 #elif defined(CASE_any_talker_without_talker_in)
   static constexpr auto nmea = n::sentence<"--XYZ">(n::field<&m::a>("a"));
@@ -34,6 +36,9 @@ struct m {
 #elif defined(CASE_wire_fields_in_not_uint8)
   static constexpr auto nmea =
       n::sentence<"GPXYZ">(n::field<&m::a>("a", n::may_be_absent)).wire_fields_in<&m::count>();
+#elif defined(CASE_blank_units_in_not_uint32)
+  static constexpr auto nmea =
+      n::sentence<"GPXYZ">(n::field<&m::a>("a", n::unit('M'))).blank_units_in<&m::wire_fields>();
 #elif defined(CASE_standard_forms_not_increasing)
   static constexpr auto nmea =
       n::sentence<"GPXYZ">(n::field<&m::a>("a"), n::field<&m::b>("b")).standard_forms<2, 1>();
@@ -45,7 +50,7 @@ int main() {
   const auto r = n::decode<m>("$GPXYZ,1,2*5A\r\n");
 #if defined(CASE_ok)
   static_assert(std::is_same_v<decltype(n::encode(msg)), n::sentence_buffer<1000>>);
-  static_assert(n::keeps_wire_fields<m> && n::lists_field_counts<m>);
+  static_assert(n::keeps_wire_fields<m> && n::lists_field_counts<m> && n::keeps_blank_units<m>);
 #endif
   return r.ok() ? 0 : static_cast<int>(n::encode(msg).size);
 }

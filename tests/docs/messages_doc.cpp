@@ -5,8 +5,10 @@
 //
 //   seawire_messages_doc > docs/messages.md
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <string_view>
@@ -27,6 +29,27 @@ std::string number(const nmea::decimal& d) {
 }
 
 std::string quoted(std::string_view s) { return "`" + std::string(s) + "`"; }
+
+// The name of the member a field reads into, as the source spells it ("lat"), from the name the
+// compiler gives the function template instantiated for its member pointer: C++20 has no
+// reflection, and the description names the JSON key ("latitude"), which may differ.
+template <auto Member>
+std::string member_name() {
+  const std::string_view f = __PRETTY_FUNCTION__;
+  const std::size_t at = f.find("Member = ");
+  const std::string_view with = f.substr(0, f.find_first_of(";]", at));
+  const std::size_t colon = with.rfind("::");
+  std::string name(with.substr(colon == std::string_view::npos ? with.size() : colon + 2));
+  const bool identifier = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+  });
+  if (at == std::string_view::npos || !identifier) {
+    std::fprintf(stderr, "messages_doc: no member name in %.*s\n", static_cast<int>(f.size()),
+                 f.data());
+    std::exit(1);
+  }
+  return name;
+}
 
 // What the wire field holds, told from the member's type.
 template <class V>
@@ -106,6 +129,7 @@ template <class M>
 void message(std::string_view section) {
   constexpr auto& d = M::nmea;
   std::string wire = "$" + std::string(d.address);
+  const bool hawaii = section.starts_with("RobotX");
   std::string rows;
   unsigned first = 1;
   d.fields.apply([&](const auto&... f) {
@@ -133,9 +157,14 @@ void message(std::string_view section) {
           std::string precision =
               field.opts.precision >= 0 ? std::to_string(field.opts.precision) : "";
           if (field.opts.precision >= 0 && nmea::is_ddmm_position<V>) precision += " (minutes)";
-          rows += "| " + numbers + " | " + quoted(field.name) + " | " + form_of<V>(field.opts) +
-                  " | " + allowed(field.opts) + " | " + (F::is_optional ? "yes" : "no") + " | " +
-                  when + " | " + precision + " |\n";
+          std::string form = form_of<V>(field.opts);
+          // RobotX dates and times are read on the Hawaii clock, not UTC.
+          if (hawaii && form.starts_with("UTC time"))
+            form = "HST time (Hawaii, UTC-10, no daylight saving)" + form.substr(8);
+          if (hawaii && form.starts_with("date")) form = "HST date" + form.substr(4);
+          rows += "| " + numbers + " | " + quoted(member_name<F::member>()) + " | " +
+                  quoted(field.name) + " | " + form + " | " + allowed(field.opts) + " | " +
+                  (F::is_optional ? "yes" : "no") + " | " + when + " | " + precision + " |\n";
           first = last + 1;
         }(f),
         ...);
@@ -150,8 +179,9 @@ void message(std::string_view section) {
     std::printf(" Standard forms: %s fields.", forms.c_str());
   }
   std::printf("\n\n```\n%s*hh\n```\n\n", wire.c_str());
-  std::printf("| Field | Name (JSON key) | Wire form | Allowed | Blank | Present | Precision |\n");
-  std::printf("|---|---|---|---|---|---|---|\n%s\n", rows.c_str());
+  std::printf(
+      "| Field | C++ member | JSON key | Wire form | Allowed | Blank | Present | Precision |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n%s\n", rows.c_str());
 }
 
 std::set<std::string> written;
@@ -344,10 +374,13 @@ int main() {
       "docs/messages.md`.\n\n"
       "Columns: **Field** is the wire field number after the address (errors name the same\n"
       "numbers; a field that spans two wire fields, such as a position and its hemisphere, has\n"
-      "both). **Name** is the C++ member and the JSON key (positions are written to JSON as\n"
-      "signed decimal degrees). **Blank** says whether an empty field is accepted (it reads as\n"
-      "`std::nullopt`). **Present** says when a field may be missing from the sentence\n"
-      "altogether. **Precision** is the number of fraction digits `nmea::builder` rounds a\n"
+      "both). **C++ member** is the struct member the field reads into, **JSON key** the key\n"
+      "seawire-decode and `nmea::write_json` write it under, and the name errors and\n"
+      "`field_name` give; they differ where a short member has a spelled-out key (a\n"
+      "position: `lat` is written as `latitude`, in signed decimal degrees).\n"
+      "**Blank** says whether an empty field is accepted (it reads as `std::nullopt`).\n"
+      "**Present** says when a field may be missing from the sentence altogether.\n"
+      "**Precision** is the number of fraction digits `nmea::builder` rounds a\n"
       "double to by default.\n\n");
   set("Kingfisher: vehicle to payload", "Kingfisher, from the vehicle.",
       of<kingfisher::from_vehicle>());

@@ -263,7 +263,9 @@ def case_commands():
     pump_all([c], 1.2)
     check(c.of("CPALT")[-1][2] == "1", "PYCLT 1: CPALT reports lights on")
     # Refused commands change nothing and are logged with the field.
-    c.send(with_checksum("PYDIR,150,0") + "$PYDIR,10,10*00\r\n" + "$PYXYZ,1*00\r\n")
+    # (the first three per client are logged).
+    c.send(with_checksum("PYDIR,150,0") + "$PYDIR,0,-150*\r\n" + "$PYDIR,10,10*00\r\n" +
+           "$PYXYZ,1*00\r\n")
     pump_all([c], 0.3)
     # The watchdog: no command for 1 s stops the thrusters; the vehicle coasts to a stop.
     pump_all([c], 6)
@@ -273,7 +275,12 @@ def case_commands():
     c.close()
     check(sim.stop(signal.SIGINT) == 0, "exit status 0 on SIGINT")
     log = sim.log()
-    check("PYDIR field 1 (thrust_left)" in log, "rejected thrust named in the log:\n" + log)
+    # As the manual shows it: the field by number and name, its text, why, and the range.
+    check('rejected: PYDIR field 1 (thrust_left) "150": value outside the range the spec '
+          'allows: -100..100' in log, "rejected thrust named in the log:\n" + log)
+    # A command without a checksum ("*" then the line end, as the spec allows) is told the same.
+    check('rejected: PYDIR field 2 (thrust_right) "-150": value outside the range the spec '
+          'allows: -100..100' in log, "rejected thrust without checksum named:\n" + log)
     check("checksum" in log, "rejected checksum in the log")
     check("watchdog: no command for 1 s, thrusters stopped" in log, "watchdog logged")
     check("stopped (SIGINT)" in log, "SIGINT logged")

@@ -171,7 +171,7 @@ case_bad() {
     '"input":"$CPNVR,164959.063,0.029\u000141,-0.068552,0,0.060938,0,-0.061132*59"}' \
     "$(line 10 "$o" | grep -o '"input".*')"
   expect_eq "an interrupted sentence: only its own bytes shown" \
-    '{"line":12,"error":"truncated","field":0,"detail":"a sentence cut short by the next '"'"'$'"'"' or 0xAB; 25 bytes dropped","input":"$CPRCM,164959.065,0,234.3"}' \
+    '{"line":12,"error":"truncated","field":0,"detail":"a sentence without a complete checksum, ended by the next '"'"'$'"'"' or 0xAB before its line ending (cut short, or sent without either); 25 bytes dropped","input":"$CPRCM,164959.065,0,234.3"}' \
     "$(line 12 "$o")"
   expect_eq "the sentence after an interrupted one still decodes, after the report" \
     '{"type":"PYDIR","thrust_left":45,"thrust_right":55}' "$(line 13 "$o")"
@@ -266,6 +266,21 @@ case_roundtrip() {
   expect_rc "encode decode's output of bad.nmea" 0 "$encode" <"$work/bad.json"
   expect_eq "only the good sentences come back" "$(crlf "$(line 1 "$data/bad.nmea" | tr -d '\r')" \
     '$PYDIR,45,55*57' "$(line 14 "$data/bad.nmea" | tr -d '\r')")" "$(cat "$work/out")"
+  # docs/round-trip.md: what --format nmea keeps and what it writes in the standard form.
+  local rmc='GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.011,,311214,'
+  local kept=("$(seal 'IIVHW,,T,,M,5.2,N,9.6,K')" "$(seal "$rmc,E,A")" "$(seal "$rmc,W")"
+    "$(seal 'IIVHW,,,211.0,M,5.2,N,,')" "$(seal 'GPGGA,092725.00,,,,,0,00,99.99,,,,,,')")
+  crlf "${kept[@]}" "$(seal "${rmc}999.9,E,A")" "$(seal 'IIVHW,,,211.0,,5.2,N,,')" >"$work/in"
+  expect_rc "--strict takes these forms" 0 "$decode" --strict --format none <"$work/in"
+  expect_rc "--format nmea" 0 "$decode" --format nmea <"$work/in"
+  expect_eq "kept as they came, or written in the listed standard form" \
+    "$(crlf "${kept[@]}" "$(seal "$rmc,E,A")" "$(seal 'IIVHW,,,211.0,M,5.2,N,,')")" \
+    "$(cat "$work/out")"
+  expect_rc "decode | encode" 0 "$encode" < <("$decode" <"$work/in")
+  expect_eq "through JSON a variation letter without a value is null, as no variation is" \
+    "$(seal "$rmc,,A")" "$(line 2 "$work/out" | tr -d '\r')"
+  expect_eq "through JSON the unit letters of blank values are written" \
+    "$(seal 'IIVHW,,T,211.0,M,5.2,N,,K')" "$(line 4 "$work/out" | tr -d '\r')"
 }
 
 case_options() {
@@ -412,6 +427,34 @@ case_drops() {
   expect_eq "--format none: the same reports on stderr" \
     "$(printf '%s\n' 'line 1: missing_start' 'line 2: bad_character')" \
     "$("$decode" --format none <"$work/in" 2>&1 | sed 's/^seawire-decode: \(line [0-9]*: [a-z_]*\):.*/\1/')"
+  # A '$' right after a whole "*hh": nothing was cut, only the line ending is missing. Both
+  # sentences decode; --strict says what is wrong with the first.
+  printf '%s%s\r\n%s%s' "$a" "$b" "$c" "$d" >"$work/in"
+  expect_rc "no line ending between sentences" 0 "$decode" <"$work/in"
+  expect_eq "no line ending between sentences: every sentence decoded" \
+    "$(printf '%s\n' 'PYDIR 1' 'PYDIR 3' 'PYDIR 5' 'PYDIR 7')" "$("${summary[@]}" "$work/out")"
+  expect_rc "no line ending between sentences, --strict" 1 "$decode" --strict <"$work/in"
+  expect_eq "--strict: the missing line endings named, the others decoded" \
+    "$(printf '%s\n' 1:bad_line_ending 'PYDIR 3' 2:bad_line_ending 2:bad_line_ending)" \
+    "$("${summary[@]}" "$work/out")"
+  expect_eq "--strict: what the line ends in" \
+    '"detail":"line does not end in CR LF: it has no line ending","input":"'"$a"'"}' \
+    "$(line 1 "$work/out" | grep -o '"detail".*')"
+  # A sentence cut inside its checksum, or sent without one, may have lost its tail: dropped,
+  # and the next one still read.
+  printf '%s%s\r\n' "${a%?}" "$b" >"$work/in"
+  expect_rc "a checksum cut by the next '\$'" 1 "$decode" <"$work/in"
+  expect_eq "a checksum cut by the next '\$': only its own bytes dropped" \
+    "$(printf '%s\n' 1:truncated 'PYDIR 3')" "$("${summary[@]}" "$work/out")"
+  # After the checksum only the line ending may stand.
+  printf '%s \r\n%sX\r\n%s*\r\n%s\r\n' "$a" "$b" "$c" "$d" >"$work/in"
+  expect_rc "characters after the checksum" 1 "$decode" <"$work/in"
+  expect_eq "characters after the checksum, named and shown" \
+    "$(printf '%s\n' \
+      '{"line":1,"error":"trailing_characters","field":0,"detail":"unexpected characters after the checksum (\" \") at column 13","input":"'"$a"' "}' \
+      '{"line":2,"error":"trailing_characters","field":0,"detail":"unexpected characters after the checksum (\"X\") at column 13","input":"'"$b"'X"}' \
+      '{"line":3,"error":"trailing_characters","field":0,"detail":"unexpected characters after the checksum (\"*\") at column 13","input":"'"$c"'*"}' \
+      '{"type":"PYDIR","thrust_left":7,"thrust_right":8}')" "$(cat "$work/out")"
 }
 
 # hex2bin <hex>: the bytes.

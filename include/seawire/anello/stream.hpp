@@ -24,7 +24,9 @@
 //   bytes after it again, so a sentence or a real frame that a false AB 00 00 30 swallowed
 //   still comes out; a byte is read again at most 14 times (candidates start 4 bytes apart at
 //   the closest: AB 00 00 30 AB ...).
-// - A 0xAB inside a sentence ends it as interrupted, as a '$' does, and starts a candidate.
+// - A 0xAB inside a sentence ends it as a '$' does, and starts a candidate: a sentence whose
+//   "*hh" checksum is complete is yielded (it lacks only its line ending), any other is dropped
+//   as interrupted.
 // What a false sync costs: the items inside its 56 bytes come out once the 56th byte has arrived
 // (or at finish()), not before; nothing is lost and the order is kept.
 

@@ -100,13 +100,31 @@ constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint1
   lax.checksum = checksum_policy::ignore;
   lax.max_length = 0xFFFF;
   const result<sentence_view> s = parse(line, lax);
-  const bool framing = e >= errc::empty_input && e <= errc::too_long;
+  const bool framing =
+      (e >= errc::empty_input && e <= errc::too_long) || e == errc::trailing_characters;
   if (!framing && s && field == 0) return t.put(s.value.address).put(": ").put(message(e)).view();
   if (field == 0 || !s) {
     t.put(message(e));
     if (e == errc::checksum_mismatch && s) {
       t.put(" (sent ").hex(s.value.received_checksum).put(", computed ");
       t.hex(s.value.computed_checksum).put(")");
+    }
+    if (e == errc::trailing_characters && column < line.size()) {
+      // What stands after the checksum, without the one line ending parse() takes off; bytes
+      // that are not printable ASCII as \xHH.
+      std::string_view rest = line.substr(column);
+      if (rest.ends_with("\r\n"))
+        rest.remove_suffix(2);
+      else if (rest.ends_with('\n') || rest.ends_with('\r'))
+        rest.remove_suffix(1);
+      t.put(" (\"");
+      for (const char c : rest) {
+        if (seawire::detail::is_printable(c) && c != '"' && c != '\\')
+          t.put(std::string_view(&c, 1));
+        else
+          t.put("\\x").hex(static_cast<std::uint8_t>(c));
+      }
+      t.put("\")");
     }
     return t.put(" at column ").put(std::uint64_t{column}).view();
   }

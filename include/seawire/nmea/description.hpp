@@ -137,7 +137,8 @@ struct length {
   return {static_cast<std::int8_t>(n)};
 }
 /// The value is followed by a field holding this unit letter ("5.2,N"). On receive the letter
-/// may also be blank; seawire always writes it.
+/// may also be blank; seawire writes it, except blank beside a blank value where the message
+/// keeps that it came so (sentence_desc::blank_units_in).
 [[nodiscard]] constexpr option::unit unit(char c) noexcept { return {c}; }
 /// The field exists only in the longer form of the sentence, the one with at least `n` fields
 /// (an optional member; written only when it has a value).
@@ -338,30 +339,35 @@ struct number_forms {
 };
 
 /// What a sentence declares besides its fields (see sentence_desc): the member a "--" address's
-/// talker goes to, the member that keeps a decoded sentence's field count, a larger encode
-/// buffer, the number forms its sender writes, and the field counts of its standard forms.
-/// nullptr / 0 / {} / no counts: not declared.
-template <auto Talker, auto WireFields, std::size_t BufferSize, number_forms Numbers,
-          std::uint8_t... Counts>
+/// talker goes to, the member that keeps a decoded sentence's field count, the member that
+/// keeps which unit letters came blank, a larger encode buffer, the number forms its sender
+/// writes, and the field counts of its standard forms. nullptr / 0 / {} / no counts: not
+/// declared.
+template <auto Talker, auto WireFields, auto BlankUnits, std::size_t BufferSize,
+          number_forms Numbers, std::uint8_t... Counts>
 struct sentence_forms {
   static constexpr auto talker = Talker;
   static constexpr auto wire_fields = WireFields;
+  static constexpr auto blank_units = BlankUnits;
   static constexpr std::size_t buffer_size = BufferSize;
   static constexpr number_forms numbers = Numbers;
   static constexpr std::array<std::uint8_t, sizeof...(Counts)> field_counts{Counts...};
 
   template <auto M>
-  using with_talker = sentence_forms<M, WireFields, BufferSize, Numbers, Counts...>;
+  using with_talker = sentence_forms<M, WireFields, BlankUnits, BufferSize, Numbers, Counts...>;
   template <auto M>
-  using with_wire_fields = sentence_forms<Talker, M, BufferSize, Numbers, Counts...>;
+  using with_wire_fields = sentence_forms<Talker, M, BlankUnits, BufferSize, Numbers, Counts...>;
+  template <auto M>
+  using with_blank_units = sentence_forms<Talker, WireFields, M, BufferSize, Numbers, Counts...>;
   template <std::size_t N>
-  using with_buffer_size = sentence_forms<Talker, WireFields, N, Numbers, Counts...>;
+  using with_buffer_size = sentence_forms<Talker, WireFields, BlankUnits, N, Numbers, Counts...>;
   template <number_forms F>
-  using with_numbers = sentence_forms<Talker, WireFields, BufferSize, F, Counts...>;
+  using with_numbers = sentence_forms<Talker, WireFields, BlankUnits, BufferSize, F, Counts...>;
   template <std::uint8_t... C>
-  using with_field_counts = sentence_forms<Talker, WireFields, BufferSize, Numbers, C...>;
+  using with_field_counts =
+      sentence_forms<Talker, WireFields, BlankUnits, BufferSize, Numbers, C...>;
 };
-using no_forms = sentence_forms<nullptr, nullptr, 0, number_forms{}>;
+using no_forms = sentence_forms<nullptr, nullptr, nullptr, 0, number_forms{}>;
 
 namespace detail {
 template <std::uint8_t... C>
@@ -394,6 +400,9 @@ struct sentence_desc {
   /// The std::uint8_t member that keeps a decoded sentence's field count (wire_fields_in), or
   /// nullptr.
   static constexpr auto wire_fields_member = Forms::wire_fields;
+  /// The std::uint32_t member that keeps which unit letters came blank (blank_units_in), or
+  /// nullptr.
+  static constexpr auto blank_units_member = Forms::blank_units;
   /// The field counts of the standard forms, increasing (field_counts); empty: any count.
   static constexpr auto field_counts = Forms::field_counts;
   /// The smallest buffer encode() gives the message (buffer_size); 0: what its fields need.
@@ -438,6 +447,18 @@ struct sentence_desc {
     static_assert(std::is_same_v<detail::member_type_of<M>, std::uint8_t>,
                   "wire_fields_in: the member must be a std::uint8_t");
     return sentence_desc<Address, typename Forms::template with_wire_fields<M>, Fields...>{fields};
+  }
+
+  /// For a sentence with unit letter fields (nmea::unit) that senders may leave blank beside a
+  /// blank value ("$IIVHW,,,211.0,M,..." as well as "$IIVHW,,T,211.0,M,..."): member M (a
+  /// std::uint32_t) remembers, bit n for wire field n, which unit letters of blank values came
+  /// blank, and encode writes those blank again, so both forms go back out as they came. 0 (the
+  /// default, and a message built in code) writes every unit letter.
+  template <auto M>
+  [[nodiscard]] consteval auto blank_units_in() const noexcept {
+    static_assert(std::is_same_v<detail::member_type_of<M>, std::uint32_t>,
+                  "blank_units_in: the member must be a std::uint32_t");
+    return sentence_desc<Address, typename Forms::template with_blank_units<M>, Fields...>{fields};
   }
 
   /// A sentence whose standard forms have only some field counts lists them, increasing
@@ -514,6 +535,11 @@ template <auto M>
 template <class T>
 concept keeps_wire_fields = message_like<T> &&
     !std::is_null_pointer_v<decltype(std::remove_cvref_t<decltype(T::nmea)>::wire_fields_member)>;
+
+/// A message whose description keeps which unit letters came blank (blank_units_in).
+template <class T>
+concept keeps_blank_units = message_like<T> &&
+    !std::is_null_pointer_v<decltype(std::remove_cvref_t<decltype(T::nmea)>::blank_units_member)>;
 
 /// A message whose description lists its standard forms' field counts (standard_forms).
 template <class T>

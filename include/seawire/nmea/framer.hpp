@@ -11,8 +11,10 @@
 // - A sentence starts at '$', or at '!' (NMEA 0183 encapsulation sentences: !AIVDM, !AIVDO).
 //   Bytes outside a sentence are noise; CR and LF are line breaks, not noise. A line ends at LF,
 //   CR, or CR LF (one ending, one line).
-// - A '$' inside a sentence abandons the partial one (interrupted) and starts anew at that '$'.
-//   A '!' inside a sentence is text: it starts a sentence only where a '$' would start one
+// - A '$' inside a sentence starts anew at that '$'. The sentence before it comes out (ending
+//   none) if it ends in a complete "*hh" checksum, as a sender that omits line endings writes
+//   it; else it is abandoned (interrupted), since its tail may be lost. A '!' inside a sentence
+//   is text: it starts a sentence only where a '$' would start one
 //   without interrupting anything (between sentences, in noise), so a text field holding '!'
 //   ("Mission done!") is never cut.
 // - A sentence is dropped, and everything up to its line ending or the next '$' discarded, on the
@@ -43,7 +45,8 @@ namespace seawire::nmea {
 struct framer_stats {
   std::uint64_t sentences = 0;      ///< lines yielded
   std::uint64_t noise_bytes = 0;    ///< bytes outside any sentence (not counting CR, LF)
-  std::uint64_t interrupted = 0;    ///< partial sentences abandoned for a new '$' (not '!')
+  std::uint64_t interrupted = 0;    ///< sentences without a complete checksum abandoned for a
+                                    ///< new '$' (not '!')
   std::uint64_t overlong = 0;       ///< lines dropped for exceeding the capacity
   std::uint64_t invalid_bytes = 0;  ///< lines dropped for a byte outside 0x20..0x7E
   std::uint64_t dropped_bytes = 0;  ///< bytes of all dropped lines, without their line endings

@@ -150,6 +150,12 @@ template <class F, class T>
       }
       for (unsigned k = 0; k < nothing; ++k) (void)r.take();
       clear_optional(m);
+      if constexpr (keeps_blank_units<T>) {
+        // A unit letter left blank beside the blank value: kept, to be written back blank.
+        const unsigned unit_field = r.index() + 1U;  // the unit letter's wire field, next
+        if (o.unit != 0 && unit_field < 32 && r.peek().present && r.peek().blank())
+          msg.*T::nmea.blank_units_member |= std::uint32_t{1} << unit_field;
+      }
       return read_unit(r, o, false);
     }
     if constexpr (keeps_wire_fields<T>) {
@@ -345,7 +351,8 @@ template <class V>
 
 template <class F, class T>
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc write_field(const F& f, writer& w, const T& msg,
-                                                               bool& skip_rest) noexcept {
+                                                               bool& skip_rest,
+                                                               std::uint16_t first_wire) noexcept {
   using V = typename F::value_type;
   const auto& m = msg.*F::member;
   const field_options& o = f.opts;
@@ -402,7 +409,14 @@ template <class F, class T>
   }
   if (o.unit != 0) {
     w.next_field();
-    w.put(o.unit);
+    bool blank = false;
+    if constexpr (keeps_blank_units<T>) {
+      // Blank as it came: only beside a blank value (a value always has its unit).
+      const unsigned unit_field = first_wire + f.width() - 1U;
+      blank =
+          !has && unit_field < 32 && ((msg.*T::nmea.blank_units_member >> unit_field) & 1U) != 0;
+    }
+    if (!blank) w.put(o.unit);
   }
   return errc::ok;
 }
@@ -445,7 +459,7 @@ template <message_like T>
     // A field of the longer form that this message does not have takes no number.
     if (f.opts.only_with_field_count != 0 && detail::skipped(f, msg)) return true;
     ++wire_field;
-    e = detail::write_field(f, w, msg, skip_rest);
+    e = detail::write_field(f, w, msg, skip_rest, wire_field);
     using V = typename std::remove_cvref_t<decltype(f)>::value_type;
     wire_field = static_cast<std::uint16_t>(
         wire_field + (e == errc::ok ? f.width() - 1 : detail::error_offset<V>(e)));

@@ -288,16 +288,22 @@ inline bool scan_clean_simd(const char* p, std::size_t begin, std::size_t end,
     if (digits == 0 && !policy.empty_checksum) [[unlikely]]
       return fail(errc::bad_checksum_format, star + 1);
     if (digits != 0) {
-      if (digits != 2) [[unlikely]]
+      if (digits < 2) [[unlikely]]
         return fail(errc::bad_checksum_format, star + 1);
       const char h = line[star + 1];
       const char l = line[star + 2];
       const int hv = hex_value(h);
       const int lv = hex_value(l);
-      if (hv < 0 || lv < 0) [[unlikely]]
+      // The checksum is the run of hex digits after the '*': one of three or more ("*577",
+      // "*116") is no checksum of two.
+      if (hv < 0 || lv < 0 || (digits > 2 && hex_value(line[star + 3]) >= 0)) [[unlikely]]
         return fail(errc::bad_checksum_format, star + 1);
       if (!policy.lowercase_hex && ((h >= 'a' && h <= 'f') || (l >= 'a' && l <= 'f')))
         return fail(errc::bad_checksum_format, star + 1);
+      // Two hex digits and then something else before the line ending ("*6F ", "*57X"): the
+      // checksum is whole, and characters follow it where only the line ending may stand.
+      if (digits > 2) [[unlikely]]
+        return fail(errc::trailing_characters, star + 3);
       s.received_checksum = static_cast<std::uint8_t>(hv * 16 + lv);
       if (s.received_checksum == x) {
         s.checksum = checksum_state::valid;

@@ -32,13 +32,15 @@
 //   "between items" state, so a sentence or a real frame that a false header swallowed still
 //   comes out. The reader keeps those bytes itself (they are the candidate's buffer), so this
 //   works across any chunking. Each re-read is shorter than the one before, so it ends.
-// - A sentence ends at LF, CR or CR LF. A '$' inside a sentence abandons it (interrupted) and
-//   starts anew there; so does a recognizer's first header byte (sentences are printable ASCII,
-//   so that byte belongs to what comes next). A '!' inside a sentence is text (a status message
-//   may say "done!"): it interrupts nothing. Any other byte outside 0x20..0x7E drops the sentence
-//   (invalid_byte) and the rest of its line; so does a sentence longer than Capacity
-//   (overlong). A '$' or a frame's first byte in the dropped rest starts a new item; a '!' there
-//   is dropped with the rest.
+// - A sentence ends at LF, CR or CR LF. A '$' inside a sentence starts anew there; so does a
+//   recognizer's first header byte (sentences are printable ASCII, so that byte belongs to what
+//   comes next). The sentence before it is yielded, with line_ending::none, if it ends in a
+//   complete "*hh" checksum: only its line ending is missing ("$A,1*57$B,2*55\r\n" is two
+//   sentences). Otherwise it is dropped (interrupted): its tail may be lost. A '!' inside a
+//   sentence is text (a status message may say "done!"): it interrupts nothing. Any other byte
+//   outside 0x20..0x7E drops the sentence (invalid_byte) and the rest of its line; so does a
+//   sentence longer than Capacity (overlong). A '$' or a frame's first byte in the dropped rest
+//   starts a new item; a '!' there is dropped with the rest.
 // - Nothing else is checked: checksums and fields are sentence_view's business.
 //
 // A line lying wholly inside the chunk being read is yielded as a view into that chunk. Only a
@@ -79,6 +81,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "seawire/detail/ascii.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/framer_scan.hpp"
@@ -87,7 +90,8 @@ namespace seawire::nmea {
 
 /// What ended a framed line.
 enum class line_ending : std::uint8_t {
-  none,  ///< nothing: the stream ended (only from finish())
+  none,  ///< nothing: the stream ended (from finish()), or the next sentence or frame started
+         ///< right after the sentence's "*hh" checksum
   lf,    ///< "\n"
   cr,    ///< "\r" not followed by "\n"
   crlf,  ///< "\r\n"
@@ -169,7 +173,8 @@ enum class drop_reason : std::uint8_t {
                     ///< frame's sync byte not followed by its id is one of them)
   invalid_byte,     ///< a sentence holding a byte outside 0x20..0x7E: it and the rest of its line
   overlong,         ///< a sentence longer than the reader's capacity: it and the rest of its line
-  interrupted,      ///< a sentence cut short by a '$' or a frame's sync byte before its line ended
+  interrupted,      ///< a sentence without a complete "*hh" checksum, ended by a '$' or a frame's
+                    ///< sync byte before its line ending: cut short, or sent without either
   bad_crc,          ///< a whole frame candidate that failed its check (the CRC)
   bad_length,       ///< a frame's sync and id followed by other header bytes (the length)
   truncated_frame,  ///< a frame candidate (sync and id at least) cut short by finish()
@@ -263,7 +268,8 @@ struct stream_stats {
   std::uint64_t bad_crc_frames = 0;     ///< whole candidates that failed their check (CRC)
   std::uint64_t bad_length_frames = 0;  ///< sync and id followed by other header bytes
   std::uint64_t truncated_frames = 0;   ///< candidates (sync and id at least) cut by finish()
-  std::uint64_t interrupted = 0;        ///< partial sentences ended by a '$' or a sync byte
+  std::uint64_t interrupted = 0;        ///< sentences without a complete checksum ended by a '$'
+                                        ///< or a sync byte before their line ending
   std::uint64_t overlong = 0;           ///< sentences dropped for exceeding the capacity
   std::uint64_t invalid_bytes = 0;      ///< sentences dropped for a byte outside 0x20..0x7E
   std::uint64_t dropped_bytes = 0;      ///< bytes of dropped sentences + the sync byte of each
@@ -559,10 +565,15 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
       return yield_sentence(text(s, start, q, have), line_ending::lf);
     }
     if (c == '$' || c == sync) {  // a new item starts at q (a '!' is text: find_special passed it)
+      state_ = state::idle;
+      i = q;
+      // A sentence whose "*hh" checksum is complete lacks only its line ending: nothing is
+      // missing, so it is yielded (ending none) and the new item read from q. Any other sentence
+      // may have lost its tail: it is dropped.
+      if (ends_in_checksum(s, start, q, have))
+        return yield_sentence(text(s, start, q, have), line_ending::none);
       ++stats_.interrupted;
       stats_.dropped_bytes += n;
-      i = q;
-      state_ = state::idle;
       sentence_drop(drop_reason::interrupted, s, start, q, have);
       return close_drop();
     }
@@ -757,6 +768,18 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
   constexpr void stash(const char* s, std::size_t from, std::size_t to, std::size_t have) noexcept {
     std::copy_n(s + from, to - from, lbuf_ + have);
     llen_ = have + (to - from);
+  }
+
+  // Whether the sentence lbuf_[0, have) + s[from, to) ends in '*' and two hex digits.
+  [[nodiscard]] constexpr bool ends_in_checksum(const char* s, std::size_t from, std::size_t to,
+                                                std::size_t have) const noexcept {
+    const std::size_t in_s = to - from;
+    if (have + in_s < 5) return false;      // at least the start character, an address byte, "*hh"
+    const auto back = [&](std::size_t k) {  // the k-th byte from the end, k = 1 the last
+      return k <= in_s ? s[to - k] : lbuf_[have - (k - in_s)];
+    };
+    return back(3) == '*' && seawire::detail::hex_value(back(2)) >= 0 &&
+           seawire::detail::hex_value(back(1)) >= 0;
   }
 
   // The finished sentence: a view into the source when it lies wholly there, else the buffer.

@@ -449,8 +449,9 @@ class validator {
     // Read the sentence with nothing checked but its framing, so every field can be judged.
     const nmea::parse_policy inspect = inspect_policy(config_.policy);
     result<nmea::sentence_view> s = nmea::parse(line, inspect);
-    std::string_view digits;  // checksum text when it could not be read as two hex digits
-    if (s.ec == errc::bad_checksum_format) {
+    std::string_view digits;  // checksum text when it could not be read as two hex digits alone
+    const errc checksum_error = s.ec;
+    if (s.ec == errc::bad_checksum_format || s.ec == errc::trailing_characters) {
       const std::size_t star = detail::star_of(line);
       digits = line.substr(star + 1);
       s = nmea::parse(line.substr(0, star), inspect);
@@ -469,8 +470,10 @@ class validator {
 
     // Checksum.
     if (!digits.empty()) {
-      add(decimal_checksum(digits, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
-          0, errc::bad_checksum_format);
+      if (decimal_checksum(digits, sv.computed_checksum))
+        add(rule::checksum_decimal, 0, errc::bad_checksum_format);
+      else
+        add(rule::checksum, 0, checksum_error);  // malformed, or characters after it
     } else if (sv.checksum == nmea::checksum_state::absent) {
       if (config_.policy.checksum == nmea::checksum_policy::required)
         add(rule::checksum, 0, errc::missing_checksum);

@@ -7,6 +7,7 @@
 //
 // Fields 9-10 and 11-12 are value + unit letter pairs ('M'): one declaration each.
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -41,6 +42,9 @@ struct gga {
   std::optional<nmea::decimal> dgps_age_s;          // 13 seconds since the last DGPS update
   std::optional<nmea::integer<std::uint16_t>> dgps_station;  // 14 station id 0000-1023
 
+  std::uint32_t blank_units = 0;  // bit n: wire field n, a unit letter that came blank beside
+                                  //   a blank value, written back blank (blank_units_in)
+
   friend constexpr bool operator==(const gga&, const gga&) noexcept = default;
 
   static constexpr auto nmea =
@@ -56,7 +60,8 @@ struct gga {
           nmea::field<&gga::dgps_age_s>("dgps_age_s", nmea::precision(1), nmea::at_least(0)),
           nmea::field<&gga::dgps_station>("dgps_station", nmea::in_range(0, 1023),
                                           nmea::zero_pad(4)))
-          .talker_in<&gga::talker>();
+          .talker_in<&gga::talker>()
+          .blank_units_in<&gga::blank_units>();
 };
 
 }  // namespace seawire::standard

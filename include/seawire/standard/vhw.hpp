@@ -7,9 +7,11 @@
 //
 // Four value + unit letter pairs, one declaration each. A speed log without a compass sends
 // blank headings ("$IIVHW,,T,,M,5.2,N,9.6,K"); some senders blank the unit letters too. Every
-// value may be blank and a blank unit letter is accepted; seawire always writes the letters.
+// value may be blank and a blank unit letter is accepted. A letter that came blank beside a blank
+// value is written back blank (blank_units); otherwise seawire writes the letters.
 // Speed through water is a magnitude here: the signed, two-axis form is VBW.
 
+#include <cstdint>
 #include <optional>
 
 #include "seawire/nmea/fields.hpp"
@@ -24,6 +26,9 @@ struct vhw {
   std::optional<nmea::decimal> speed_knots;           // 5,6 [Knots, N] speed through water, knots
   std::optional<nmea::decimal> speed_kmh;  // 7,8 [Kilometers, K] speed through water, km/h
 
+  std::uint32_t blank_units = 0;  // bit n: wire field n, a unit letter that came blank beside
+                                  //   a blank value, written back blank (blank_units_in)
+
   friend constexpr bool operator==(const vhw&, const vhw&) noexcept = default;
 
   static constexpr auto nmea =
@@ -36,7 +41,8 @@ struct vhw {
                                          nmea::unit('N')),
           nmea::field<&vhw::speed_kmh>("speed_kmh", nmea::precision(2), nmea::at_least(0),
                                        nmea::unit('K')))
-          .talker_in<&vhw::talker>();
+          .talker_in<&vhw::talker>()
+          .blank_units_in<&vhw::blank_units>();
 };
 
 }  // namespace seawire::standard

@@ -7,9 +7,10 @@
 //
 // The angle is a magnitude, 0-180 degrees off the bow, and field 2 says to which side. The
 // three speeds are value + unit letter pairs, one declaration each; senders often fill only
-// one of them. Every field may be blank and a blank unit letter is accepted; seawire always
-// writes the letters.
+// one of them. Every field may be blank and a blank unit letter is accepted; one that came
+// blank beside a blank value is written back blank (blank_units), the others are written.
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -38,6 +39,9 @@ struct vwr {
     return side == bow_side::left ? -a : a;
   }
 
+  std::uint32_t blank_units = 0;  // bit n: wire field n, a unit letter that came blank beside
+                                  //   a blank value, written back blank (blank_units_in)
+
   friend constexpr bool operator==(const vwr&, const vwr&) noexcept = default;
 
   static constexpr auto nmea =
@@ -50,7 +54,8 @@ struct vwr {
                                        nmea::unit('M')),
           nmea::field<&vwr::speed_kmh>("speed_kmh", nmea::precision(1), nmea::at_least(0),
                                        nmea::unit('K')))
-          .talker_in<&vwr::talker>();
+          .talker_in<&vwr::talker>()
+          .blank_units_in<&vwr::blank_units>();
 };
 
 }  // namespace seawire::standard

@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: BSL-1.0
+// Writes docs/enums.md: every public enum of the library, each enumerator with its value on the
+// wire (a letter, a word, a number) or, for an enum that is not a wire field, its underlying
+// value, and the comment its header gives it. The enumerators are read from the enums
+// themselves (the compiler names an enumerator in a function template's signature, as
+// nmea/enum.hpp does for letters), so a value added to an enum is a row added here; the
+// docs_enums_current test fails until the file is regenerated, and docs_enums_listed fails when
+// a header declares an enum this program does not list.
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "seawire/seawire.hpp"
+
+#ifndef SEAWIRE_SOURCE_DIR
+#error "SEAWIRE_SOURCE_DIR: the source tree, to read the enumerators' comments from"
+#endif
+
+namespace {
+
+using namespace seawire;
+
+template <auto V>
+std::string_view signature() {
+  return __PRETTY_FUNCTION__;
+}
+
+[[noreturn]] void fail(std::string_view what, std::string_view detail) {
+  std::fprintf(stderr, "enums_doc: %.*s: %.*s\n", static_cast<int>(what.size()), what.data(),
+               static_cast<int>(detail.size()), detail.data());
+  std::exit(1);
+}
+
+// The enumerator whose value is V, by name ("red"); empty when V is no enumerator (the compiler
+// writes it as a cast, "(seawire::robotx::color)66").
+template <auto V>
+std::string enumerator() {
+  const std::string_view f = signature<V>();
+  const std::size_t at = f.find("V = ");
+  if (at == std::string_view::npos) fail("no template argument in", f);
+  std::string_view e = f.substr(at + 4);
+  e = e.substr(0, e.find_first_of(";]"));
+  if (e.empty() || e[0] == '(' || e[0] == '-' || (e[0] >= '0' && e[0] <= '9')) return {};
+  const std::size_t colon = e.rfind("::");
+  return std::string(colon == std::string_view::npos ? e : e.substr(colon + 2));
+}
+
+struct row {
+  std::string name;
+  unsigned value = 0;
+};
+
+template <class E, auto... V>
+std::vector<row> rows_of(std::integer_sequence<std::underlying_type_t<E>, V...>) {
+  std::vector<row> out;
+  (
+      [&] {
+        std::string n = enumerator<static_cast<E>(V)>();
+        if (!n.empty()) out.push_back({std::move(n), static_cast<unsigned>(V)});
+      }(),
+      ...);
+  return out;
+}
+
+// Every enumerator of E: letters and digits for a letter enum, else the values 0..127 (every
+// enum here counts from 0, and none has more).
+template <class E>
+std::vector<row> enumerators() {
+  using U = std::underlying_type_t<E>;
+  if constexpr (std::is_same_v<U, char>) {
+    std::vector<row> out;
+    const auto all = rows_of<E>(std::make_integer_sequence<char, 127>{});
+    for (const row& r : all)
+      if (r.value >= 0x20) out.push_back(r);
+    return out;
+  } else if constexpr (std::is_same_v<U, bool>) {
+    return rows_of<E>(std::integer_sequence<bool, false, true>{});
+  } else {
+    return rows_of<E>(std::make_integer_sequence<U, 128>{});
+  }
+}
+
+// The comment an enumerator has in its header: the "///<" text after it, with the lines that
+// continue it.
+std::string comment_of(const std::string& header, std::string_view type, std::string_view name) {
+  std::ifstream in(std::string(SEAWIRE_SOURCE_DIR) + "/include/seawire/" + header);
+  if (!in) fail("cannot read", header);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string text = all.str();
+  const std::size_t decl = text.find("enum class " + std::string(type) + " ");
+  if (decl == std::string::npos) fail("no declaration of", type);
+  const std::size_t end = text.find("};", decl);
+  std::size_t at = decl;
+  for (;;) {
+    at = text.find(name, at + 1);
+    if (at == std::string::npos || at > end) return {};
+    const char before = text[at - 1];
+    const char after = text[at + name.size()];
+    if ((before == ' ' || before == '{' || before == '\n') &&
+        (after == ' ' || after == ',' || after == '\n' || after == '}'))
+      break;
+  }
+  std::string out;
+  std::size_t line_end = text.find('\n', at);
+  std::size_t c = text.find("///<", at);
+  // Only a comment on the enumerator's own line (or one the next lines continue).
+  while (c != std::string::npos && c < line_end) {
+    std::string piece = text.substr(c + 4, line_end - c - 4);
+    while (!piece.empty() && piece.front() == ' ') piece.erase(0, 1);
+    out += (out.empty() ? "" : " ") + piece;
+    const std::size_t next_end = text.find('\n', line_end + 1);
+    const std::string next = text.substr(line_end + 1, next_end - line_end - 1);
+    const std::size_t first = next.find_first_not_of(' ');
+    if (first == std::string::npos || next.compare(first, 4, "///<") != 0) break;
+    c = line_end + 1 + first;
+    line_end = next_end;
+  }
+  std::string escaped;
+  for (const char ch : out) escaped += ch == '|' ? std::string("\\|") : std::string(1, ch);
+  return escaped;
+}
+
+enum class kind { letter, word, lookup, text, value };
+
+std::string code(std::string_view s) { return "`" + std::string(s) + "`"; }
+
+template <class E>
+void table(std::string_view qualified, const std::string& header, std::string_view about, kind k,
+           std::vector<std::string> spelled = {}) {
+  const std::vector<row> rows = enumerators<E>();
+  if (rows.empty()) fail("no enumerators found for", qualified);
+  const std::string_view type = qualified.substr(qualified.rfind("::") + 2);
+  std::printf("### `%.*s`\n\n`seawire/%s`. %.*s\n\n", static_cast<int>(qualified.size()),
+              qualified.data(), header.c_str(), static_cast<int>(about.size()), about.data());
+  const char* value_column = "Value";
+  switch (k) {
+    case kind::letter: value_column = "Wire letter"; break;
+    case kind::word: value_column = "Wire word"; break;
+    case kind::lookup: value_column = "Wire number | JSON name"; break;
+    case kind::text: value_column = "Wire text"; break;
+    case kind::value: value_column = "Value"; break;
+  }
+  std::printf("| Enumerator | %s | Meaning |\n|---|---|%s---|\n", value_column,
+              k == kind::lookup ? "---|" : "");
+  for (const row& r : rows) {
+    std::string v;
+    switch (k) {
+      case kind::letter: v = code(std::string(1, static_cast<char>(r.value))); break;
+      case kind::word:
+        if constexpr (nmea::word_enum_like<E>) v = code(nmea::to_string(static_cast<E>(r.value)));
+        break;
+      case kind::lookup: {
+        v = std::to_string(r.value) + " | ";
+        if constexpr (nmea2000::named_enum<E>) {
+          const auto names = lookup_names(E{});
+          if (r.value < names.size()) v += code(names[r.value]);
+        }
+        break;
+      }
+      case kind::text:
+        v = r.value < spelled.size() && !spelled[r.value].empty() ? code(spelled[r.value]) : "";
+        break;
+      case kind::value: v = std::to_string(r.value); break;
+    }
+    std::printf("| `%s` | %s | %s |\n", r.name.c_str(), v.c_str(),
+                comment_of(header, type, r.name).c_str());
+  }
+  std::printf("\n");
+}
+
+// BFMIS's status texts, by the state bfmis::state() reads each as.
+std::vector<std::string> mission_texts() {
+  std::vector<std::string> out(32);
+  for (const std::string_view t :
+       {"Offline", "Waiting", "Invalid Dive File", "Invalid Wrapup File", "Ready", "Running",
+        "WrappingUp", "Aborting", "Completed", "Aborted", "Stopped"}) {
+    sandshark::bfmis m;
+    if (!m.status.assign(t)) fail("mission text", t);
+    const auto s = static_cast<std::size_t>(m.state());
+    out[s] = std::string(t) + (t == "Running" ? " [log directory]" : "");
+  }
+  out[static_cast<std::size_t>(sandshark::mission_state::unknown)] = "";  // any other text
+  return out;
+}
+
+}  // namespace
+
+int main() {
+  std::printf(
+      "# Enumerations\n\n"
+      "Every public enum of the library with each of its values, generated from the enums "
+      "themselves\n"
+      "and the comments in their headers (`tests/docs/enums_doc.cpp`; the test "
+      "`docs_enums_current`\n"
+      "fails when this file is out of date, `docs_enums_listed` when a header declares an enum "
+      "it\n"
+      "does not list). Regenerate with `build/<dir>/tests/seawire_enums_doc > docs/enums.md`.\n\n"
+      "A field's enum is written on the wire as its **wire letter** (an `enum class E : char`: "
+      "the\n"
+      "enumerator is the letter), its **wire word** (the enum's `enum_words`), or, in NMEA 2000, "
+      "its\n"
+      "**wire number** (the enumerator's value; JSON and fmt write the name). The other enums are "
+      "not\n"
+      "sent: their **value** is the enumerator's underlying value (stable for `errc`).\n\n");
+
+  std::printf("## Fields of NMEA 0183 sentences\n\n");
+  table<nmea::hemisphere>("seawire::nmea::hemisphere", "nmea/position.hpp",
+                          "A position's or a magnetic variation's direction letter.", kind::letter);
+  table<standard::rmc_status>("seawire::standard::rmc_status", "standard/rmc.hpp", "RMC field 2.",
+                              kind::letter);
+  table<standard::mode_indicator>("seawire::standard::mode_indicator", "standard/rmc.hpp",
+                                  "RMC field 12 (NMEA 2.3 and later).", kind::letter);
+  table<standard::nav_status>("seawire::standard::nav_status", "standard/rmc.hpp",
+                              "RMC field 13 (NMEA 4.1).", kind::letter);
+  table<standard::gps_quality>("seawire::standard::gps_quality", "standard/gga.hpp", "GGA field 6.",
+                               kind::letter);
+  table<standard::rpm_source>("seawire::standard::rpm_source", "standard/rpm.hpp", "RPM field 1.",
+                              kind::letter);
+  table<standard::rpm_status>("seawire::standard::rpm_status", "standard/rpm.hpp", "RPM field 5.",
+                              kind::letter);
+  table<standard::rsa_status>("seawire::standard::rsa_status", "standard/rsa.hpp",
+                              "RSA fields 2 and 4.", kind::letter);
+  table<standard::vbw_status>("seawire::standard::vbw_status", "standard/vbw.hpp",
+                              "VBW status fields.", kind::letter);
+  table<standard::bow_side>("seawire::standard::bow_side", "standard/vwr.hpp",
+                            "VWR field 2: which side of the bow the wind is on.", kind::letter);
+  table<anello::gps_control>("seawire::anello::gps_control", "anello/gpsctrl.hpp",
+                             "PAPGPSCTRL field 1.", kind::letter);
+  table<sandshark::ack_status>("seawire::sandshark::ack_status", "sandshark/messages.hpp",
+                               "BFACK field 5.", kind::letter);
+  table<sandshark::log_state>("seawire::sandshark::log_state", "sandshark/messages.hpp",
+                              "BPLOG field 2.", kind::word);
+  table<sandshark::depth_mode>("seawire::sandshark::depth_mode", "sandshark/messages.hpp",
+                               "BPRMB depth mode.", kind::letter);
+  table<sandshark::speed_mode>("seawire::sandshark::speed_mode", "sandshark/messages.hpp",
+                               "BPRMB speed mode.", kind::letter);
+  table<sandshark::horizontal_mode>("seawire::sandshark::horizontal_mode", "sandshark/messages.hpp",
+                                    "BPRMB horizontal mode.", kind::letter);
+  table<sandshark::abort_reason>("seawire::sandshark::abort_reason", "sandshark/messages.hpp",
+                                 "BPABT field 2.", kind::letter);
+  table<sandshark::mission_state>(
+      "seawire::sandshark::mission_state", "sandshark/messages.hpp",
+      "BFMIS field 3 is text (the spec's list is open); `bfmis::state()` reads it as one of "
+      "these.",
+      kind::text, mission_texts());
+  table<robotx::system_mode>("seawire::robotx::system_mode", "robotx/messages.hpp",
+                             "RXHRB field 8.", kind::letter);
+  table<robotx::auv_status>("seawire::robotx::auv_status", "robotx/messages.hpp", "RXHRB field 9.",
+                            kind::letter);
+  table<robotx::gate>("seawire::robotx::gate", "robotx/messages.hpp", "RXGAT fields 3 and 4.",
+                      kind::letter);
+  table<robotx::light_buoy>("seawire::robotx::light_buoy", "robotx/messages.hpp",
+                            "RXCOD: whether the light buoy is lit.", kind::letter);
+  table<robotx::color>("seawire::robotx::color", "robotx/messages.hpp",
+                       "RXCOD light pattern: three of these letters.", kind::letter);
+  table<robotx::dock_shape>("seawire::robotx::dock_shape", "robotx/messages.hpp", "RXDOK field 4.",
+                            kind::word);
+  table<robotx::deliver_shape>("seawire::robotx::deliver_shape", "robotx/messages.hpp",
+                               "RXDEL field 4.", kind::word);
+
+  std::printf("## Fields of NMEA 2000 PGNs\n\n");
+  table<nmea2000::water_reference>("seawire::nmea2000::water_reference", "nmea2000/pgns.hpp",
+                                   "PGN 128259's speed sensor type.", kind::lookup);
+  table<nmea2000::temperature_source>("seawire::nmea2000::temperature_source", "nmea2000/pgns.hpp",
+                                      "PGN 130311's temperature source.", kind::lookup);
+  table<nmea2000::humidity_source>("seawire::nmea2000::humidity_source", "nmea2000/pgns.hpp",
+                                   "PGN 130311's humidity source.", kind::lookup);
+  table<nmea2000::engine_status_1>("seawire::nmea2000::engine_status_1", "nmea2000/pgns.hpp",
+                                   "PGN 127489's discrete status 1: bit numbers.", kind::lookup);
+  table<nmea2000::engine_status_2>("seawire::nmea2000::engine_status_2", "nmea2000/pgns.hpp",
+                                   "PGN 127489's discrete status 2: bit numbers.", kind::lookup);
+
+  std::printf("## Library enums (not on the wire)\n\n");
+  table<errc>("seawire::errc", "error.hpp",
+              "Why a decode or encode failed; `name(e)` gives the enumerator's name, "
+              "`message(e)` a sentence.",
+              kind::value);
+  table<nmea::checksum_policy>("seawire::nmea::checksum_policy", "nmea/sentence.hpp",
+                               "`parse_policy::checksum`.", kind::value);
+  table<nmea::checksum_state>("seawire::nmea::checksum_state", "nmea/sentence.hpp",
+                              "`sentence_view::checksum`.", kind::value);
+  table<nmea::field_end>("seawire::nmea::field_end", "nmea/sentence.hpp",
+                         "`field_reader::end_of_field()`.", kind::value);
+  table<nmea::line_ending>("seawire::nmea::line_ending", "nmea/stream.hpp",
+                           "`framed_line::ending`.", kind::value);
+  table<nmea::stream_item_kind>("seawire::nmea::stream_item_kind", "nmea/stream.hpp",
+                                "`stream_item::kind`.", kind::value);
+  table<nmea::drop_reason>("seawire::nmea::drop_reason", "nmea/stream.hpp",
+                           "`stream_drop::reason`; `name(r)` gives the enumerator's name.",
+                           kind::value);
+  table<nmea::json_style>("seawire::nmea::json_style", "nmea/json.hpp", "How `write_json` writes.",
+                          kind::value);
+  table<nmea::json_kind>("seawire::nmea::json_kind", "nmea/json.hpp",
+                         "What a JSON reader found for a key.", kind::value);
+  table<sandshark::payload_event_kind>("seawire::sandshark::payload_event_kind",
+                                       "sandshark/payload_session.hpp", "`payload_event::kind`.",
+                                       kind::value);
+  table<sandshark::message_origin>(
+      "seawire::sandshark::message_origin", "sandshark/payload_session.hpp",
+      "Which part of the payload session wrote an outgoing message.", kind::value);
+  table<sandshark::vehicle_event_kind>("seawire::sandshark::vehicle_event_kind",
+                                       "sandshark/vehicle_session.hpp", "`vehicle_event::kind`.",
+                                       kind::value);
+  table<robotx::too_soon>("seawire::robotx::too_soon", "robotx/heartbeat.hpp",
+                          "`scheduler_config::when_too_soon`.", kind::value);
+  table<robotx::submit_status>("seawire::robotx::submit_status", "robotx/heartbeat.hpp",
+                               "What `scheduler::submit` did.", kind::value);
+  table<robotx::report_type>("seawire::robotx::report_type", "robotx/messages.hpp",
+                             "The five RobotX report types.", kind::value);
+  table<robotx::rule>("seawire::robotx::rule", "robotx/validator.hpp",
+                      "What a validator finding broke; `name(r)` and `message(r)` tell it.",
+                      kind::value);
+  table<nmea2000::field_state>("seawire::nmea2000::field_state", "nmea2000/field.hpp",
+                               "What a PGN field's raw value holds.", kind::value);
+  table<nmea2000::framing>("seawire::nmea2000::framing", "nmea2000/field.hpp",
+                           "How a PGN is carried: one CAN frame or a fast packet.", kind::value);
+  table<nmea2000::fast_packet_drop>("seawire::nmea2000::fast_packet_drop",
+                                    "nmea2000/fast_packet.hpp",
+                                    "Why a fast-packet assembler dropped frames.", kind::value);
+  table<nmea2000::log_format>("seawire::nmea2000::log_format", "nmea2000/log.hpp",
+                              "The CAN log formats read and written.", kind::value);
+  return 0;
+}
