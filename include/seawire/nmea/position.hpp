@@ -66,34 +66,33 @@ struct nmea_coordinate {
   /// received without a fraction is still decoded (as "4221.0": one fraction digit, zero),
   /// except under a strict policy (parse_policy::strict(), seawire-decode --strict), which
   /// refuses it; minutes given with no fraction digits are written with one ("4221.0").
+  /// The degrees are taken by the rule for every double (decimal::from_double): their shortest
+  /// decimal, here times 60 exactly, rounded half away from zero to the minute places, so
+  /// 59.99999' may carry into the next degree. A position that rounds to zero is N or E.
   [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
       double deg, unsigned minute_places = 4) noexcept {
     result<nmea_coordinate> r;
-    if (!(deg == deg) || deg > 1e300 || deg < -1e300) {
-      r.ec = errc::not_finite;
-      return r;
-    }
-    const double mag = deg < 0 ? -deg : deg;
-    if (mag > Axis::max_degrees || minute_places < 1 || minute_places > 12) {
+    seawire::detail::shortest_decimal s;
+    r.ec = seawire::detail::shortest(deg, s);
+    if (!r) return r;
+    if (minute_places < 1 || minute_places > 12) {
       r.ec = errc::out_of_range;
       return r;
     }
-    auto whole = static_cast<std::uint64_t>(mag);
-    const std::uint64_t scale = seawire::detail::pow10_table[minute_places];
-    auto m = detail::round_nonnegative((mag - static_cast<double>(whole)) * 60.0 *
-                                       static_cast<double>(scale));
-    if (m >= 60 * scale) {  // 59.99999 rounded up to 60: carry into the degrees
-      m -= 60 * scale;
-      ++whole;
-    }
-    if (whole > Axis::max_degrees || (whole == Axis::max_degrees && m != 0)) {
+    // Minutes x 10^p in all (shortest digits < 10^17, so times 60 fits 64 bits), then split.
+    std::uint64_t total = 0;
+    const std::uint64_t per_degree = 60 * seawire::detail::pow10_table[minute_places];
+    if (!seawire::detail::round_scaled(s.digits * 60, s.exponent + static_cast<int>(minute_places),
+                                       1, total) ||
+        total > Axis::max_degrees * per_degree) {
       r.ec = errc::out_of_range;
       return r;
     }
-    r.value.whole_degrees = static_cast<std::uint16_t>(whole);
-    r.value.minutes.mantissa = m;
+    r.value.whole_degrees = static_cast<std::uint16_t>(total / per_degree);
+    r.value.minutes.mantissa = total % per_degree;
     r.value.minutes.places = static_cast<std::uint8_t>(minute_places);
-    r.value.hemi = static_cast<hemisphere>(deg < 0 ? Axis::negative : Axis::positive);
+    r.value.hemi =
+        static_cast<hemisphere>(s.negative && total != 0 ? Axis::negative : Axis::positive);
     return r;
   }
 
@@ -137,6 +136,8 @@ struct decimal_coordinate {
     const double v = value.to_double();
     return static_cast<char>(hemi) == Axis::negative ? -v : v;
   }
+  /// From signed decimal degrees rounded to `places` fraction digits by the rule for every
+  /// double (decimal::from_double). A position that rounds to zero is N or E.
   [[nodiscard]] static constexpr result<decimal_coordinate> from_degrees(
       double deg, unsigned places = 5) noexcept {
     result<decimal_coordinate> r;
@@ -150,7 +151,8 @@ struct decimal_coordinate {
       return r;
     }
     r.value.value = d.value;
-    r.value.hemi = static_cast<hemisphere>(deg < 0 ? Axis::negative : Axis::positive);
+    r.value.hemi =
+        static_cast<hemisphere>(deg < 0 && !d.value.is_zero() ? Axis::negative : Axis::positive);
     return r;
   }
   friend constexpr bool operator==(const decimal_coordinate&,
