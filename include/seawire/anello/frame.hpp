@@ -468,7 +468,8 @@ template <auto ValueMember>
 }
 
 /// The frame a strict sender writes for `values`: each value rounded to its field's resolution
-/// (halves away from zero), nullopt as "not available". Refuses the first field (in table order)
+/// (its shortest decimal, halves away from zero, as nmea::decimal::from_double rounds: 1.05 m/s
+/// is 11 tenths), nullopt as "not available". Refuses the first field (in table order)
 /// whose value is NaN or infinite (not_finite), outside the spec's range (out_of_range: heading,
 /// course and wind directions 0..360, latitude +-90, longitude +-180, fix quality 0..8, motor and
 /// rudder +-100), or, for fields the spec gives no range, not carried by the wire type or equal

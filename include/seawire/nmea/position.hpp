@@ -324,8 +324,10 @@ struct coordinate_traits<decimal_coordinate<A>> {
 /// Rounds a decimal to at most `places` fraction digits (halves away from zero).
 [[nodiscard]] constexpr decimal round_places(decimal d, unsigned places) noexcept {
   if (d.places <= places) return d;
-  const std::uint64_t div = seawire::detail::pow10_table[d.places - places];
-  d.mantissa = d.mantissa / div + (d.mantissa % div >= div / 2 ? 1 : 0);
+  std::uint64_t m = 0;  // fewer places: always fits
+  (void)seawire::detail::round_scaled(d.mantissa,
+                                      static_cast<int>(places) - static_cast<int>(d.places), 1, m);
+  d.mantissa = m;
   d.places = static_cast<std::uint8_t>(places);
   return d;
 }
@@ -408,8 +410,8 @@ template <class Coordinate>
 }  // namespace detail
 
 /// The NMEA position of signed decimal degrees given as written, exactly (no double):
-/// minutes rounded to `minute_places` digits (halves up), hemisphere from the sign (so -0.0 is
-/// S or W). minute_places < 0 picks the default: the fewest minute digits from which
+/// minutes rounded to `minute_places` digits (halves away from zero), hemisphere from the sign (so
+/// -0.0 is S or W). minute_places < 0 picks the default: the fewest minute digits from which
 /// to_decimal_degrees() writes exactly these degrees, so degrees that seawire wrote give back
 /// the wire's minutes digit for digit (up to 8 minute digits for longitudes, 9 for latitudes;
 /// past that the trailing zeros of the minutes may be lost). Degrees written otherwise get the
