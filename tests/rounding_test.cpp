@@ -151,6 +151,53 @@ TEST_CASE("shortest: the digits std::to_chars writes, for any double") {
   CHECK(seawire::detail::shortest(-inf, s) == errc::not_finite);
 }
 
+TEST_CASE("round_double: deciding from the double agrees with the shortest digits") {
+  // round_double skips the shortest digits when no tie is near; it must give what rounding
+  // the shortest digits gives, for ties (k / 10^j written with a last 5) and any other value.
+  std::mt19937_64 rng(3);
+  const std::uint64_t dens[] = {1, 4, 25, 3, 1'000'000'007};
+  std::size_t decided_by_digits = 0;
+  for (int i = 0; i < 300000; ++i) {
+    double v = 0;
+    if (i % 2 == 0) {
+      const auto j = static_cast<int>(rng() % 12);
+      v = static_cast<double>(rng() % 100'000'000) /
+          static_cast<double>(seawire::detail::pow10_table[j]);
+    } else {
+      const std::uint64_t bits =
+          (rng() & 0x800F'FFFF'FFFF'FFFFULL) | ((980 + rng() % 100) << 52U);  // 2^-43 .. 2^56
+      std::memcpy(&v, &bits, sizeof v);
+    }
+    if (rng() % 2 == 0) v = -v;
+    const std::uint64_t mul = rng() % 2 == 0 ? 1 : 60;
+    const int t = static_cast<int>(rng() % 24) - 4;
+    const std::uint64_t den = dens[rng() % 5];
+    seawire::detail::rounded_double got;
+    const errc e = seawire::detail::round_double(v, mul, t, den, got);
+    const shortest_decimal s = shortest_of(v);
+    std::uint64_t want = 0;
+    const bool fits = seawire::detail::round_scaled(s.digits * mul, s.exponent + t, den, want);
+    INFO(v << " x " << mul << " x 10^" << t << " / " << den);
+    if (fits) {
+      REQUIRE(e == errc::ok);
+      REQUIRE(got.magnitude == want);
+    } else {
+      // The digits' product passed 64 bits; the quotient may still fit (a large den), and then
+      // only the double decided it.
+      REQUIRE((e == errc::value_too_large || den > 1));
+    }
+    REQUIRE(got.negative == std::signbit(v));
+    // How often the digits were needed: a tie within the double's interval.
+    const double scaled_value =
+        std::fabs(v) * static_cast<double>(mul) * std::pow(10.0, t) / static_cast<double>(den);
+    if (std::fabs(scaled_value - std::floor(scaled_value) - 0.5) < 1e-9) ++decided_by_digits;
+  }
+  CHECK(decided_by_digits > 1000);  // ties were among the cases
+  seawire::detail::rounded_double r;
+  CHECK(seawire::detail::round_double(nan, 1, 0, 1, r) == errc::not_finite);
+  CHECK(seawire::detail::round_double(-inf, 1, 0, 1, r) == errc::not_finite);
+}
+
 /// A row of tests/data/rounding_table.txt.
 struct row {
   double x = 0;
@@ -459,7 +506,9 @@ TEST_CASE("ANELLO frame: sensor values rounded by the rule, refused precisely") 
   CHECK(f.ec == errc::out_of_range);
   CHECK(f.field == 1);
   v.heading_deg = nan;
-  CHECK(anello::build_frame(v).ec == errc::not_finite);
+  f = anello::build_frame(v);
+  CHECK(f.ec == errc::not_finite);
+  CHECK(f.field == 1);
   v.heading_deg = 1e300;
   CHECK(anello::build_frame(v).ec == errc::out_of_range);
   v.heading_deg.reset();

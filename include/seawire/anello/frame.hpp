@@ -256,14 +256,15 @@ struct sensor_field {
     } else if constexpr (std::is_same_v<value_type, double>) {
       // seawire's one rule for doubles (nmea::decimal::from_double): the shortest decimal of
       // the value, rounded half away from zero to the field's step (1.05 m/s is 11 tenths).
-      seawire::detail::shortest_decimal s;
-      if (seawire::detail::shortest(*value, s) != errc::ok) return errc::not_finite;
-      std::uint64_t mag = 0;
-      if (!seawire::detail::round_scaled(s, static_cast<int>(detail::divisor_places(divisor)), 1,
-                                         mag) ||
-          mag > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+      seawire::detail::rounded_double m;
+      const errc e = seawire::detail::round_double(
+          *value, 1, static_cast<int>(detail::divisor_places(divisor)), 1, m);
+      if (e == errc::not_finite) return e;
+      if (e != errc::ok ||
+          m.magnitude > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
         return refusal();
-      wire = s.negative ? -static_cast<std::int64_t>(mag) : static_cast<std::int64_t>(mag);
+      const auto mag = static_cast<std::int64_t>(m.magnitude);
+      wire = m.negative ? -mag : mag;
     } else {
       wire = static_cast<std::int64_t>(*value);
     }

@@ -34,10 +34,10 @@ struct shortest_decimal {
 
 namespace rounding {
 
-/// An unsigned integer of up to 40 x 32 bits: the largest a double's interval needs is below
-/// 2^1140 (a subnormal scaled by 10^324).
+/// An unsigned integer of up to Capacity x 32 bits.
+template <unsigned Capacity>
 struct big {
-  static constexpr unsigned capacity = 40;
+  static constexpr unsigned capacity = Capacity;
   std::uint32_t limb[capacity]{};  // least significant first
   unsigned size = 0;               // limbs in use; limb[size - 1] != 0 unless size == 0
 
@@ -102,33 +102,17 @@ struct big {
   }
 };
 
-[[nodiscard]] constexpr big sum(big a, const big& b) noexcept {
+template <unsigned C>
+[[nodiscard]] constexpr big<C> sum(big<C> a, const big<C>& b) noexcept {
   a.add(b);
   return a;
 }
 
-}  // namespace rounding
-
-/// The shortest decimal of `v` (see the top of this file); among decimals of that length that
-/// read back as v, the nearest to v (an exact tie: the even last digit). not_finite for NaN and
-/// infinities.
-[[nodiscard]] constexpr errc shortest(double v, shortest_decimal& out) noexcept {
-  using rounding::big;
-  if (!(v == v) || v > std::numeric_limits<double>::max() ||
-      v < -std::numeric_limits<double>::max())
-    return errc::not_finite;
-  const auto bits = std::bit_cast<std::uint64_t>(v);
-  out = shortest_decimal{};
-  out.negative = (bits >> 63U) != 0;
-  const auto biased = static_cast<int>((bits >> 52U) & 0x7FFU);
-  std::uint64_t f = bits & ((std::uint64_t{1} << 52U) - 1);
-  int e = -1074;
-  if (biased != 0) {
-    f |= std::uint64_t{1} << 52U;
-    e = biased - 1075;
-  } else if (f == 0) {
-    return errc::ok;  // zero
-  }
+/// The digits of f x 2^e (f < 2^53, from a finite nonzero double of biased exponent
+/// `biased`) in big integers of C x 32 bits, which must hold every value below: see shortest().
+template <unsigned C>
+constexpr void shortest_digits(std::uint64_t f, int e, int biased, shortest_decimal& out) noexcept {
+  using big = big<C>;
   // v = r / s; the decimals that read back as v lie between (r - minus) / s and (r + plus) / s,
   // both ends included when f is even (a reader rounds a tie to the even mantissa). Below a
   // power of two the next smaller double is half as far.
@@ -212,6 +196,37 @@ struct big {
   }
   out.digits = digits;
   out.exponent = exponent;
+}
+
+}  // namespace rounding
+
+/// The shortest decimal of `v` (see the top of this file); among decimals of that length that
+/// read back as v, the nearest to v (an exact tie: the even last digit). not_finite for NaN and
+/// infinities.
+[[nodiscard]] constexpr errc shortest(double v, shortest_decimal& out) noexcept {
+  if (!(v == v) || v > std::numeric_limits<double>::max() ||
+      v < -std::numeric_limits<double>::max())
+    return errc::not_finite;
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  out = shortest_decimal{};
+  out.negative = (bits >> 63U) != 0;
+  const auto biased = static_cast<int>((bits >> 52U) & 0x7FFU);
+  std::uint64_t f = bits & ((std::uint64_t{1} << 52U) - 1);
+  int e = -1074;
+  if (biased != 0) {
+    f |= std::uint64_t{1} << 52U;
+    e = biased - 1075;
+  } else if (f == 0) {
+    return errc::ok;  // zero
+  }
+  // The common magnitudes, 2^-8 <= v < 2^63, need at most 125 bits (s <= 2^62 x 10^17 when
+  // e < 0; r <= 2^65, s <= 4 x 10^20 otherwise); five limbs leave a margin. The rest of the
+  // range needs up to 2^1140 (a subnormal scaled by 10^324): forty.
+  if (biased >= 1023 - 8 && e <= 10) {
+    rounding::shortest_digits<5>(f, e, biased, out);
+  } else {
+    rounding::shortest_digits<40>(f, e, biased, out);
+  }
   return errc::ok;
 }
 
@@ -258,6 +273,74 @@ struct big {
   }
   // |exponent| stays within 330, so the sum cannot overflow.
   return round_scaled(d.digits, d.exponent + t, den, out);
+}
+
+/// A double as a wire integer: the rounded magnitude and the double's sign.
+struct rounded_double {
+  std::uint64_t magnitude = 0;
+  bool negative = false;  ///< the sign bit; a caller writes a zero magnitude as the plain zero
+};
+
+namespace rounding {
+#if defined(__SIZEOF_INT128__)
+__extension__ using u128 = unsigned __int128;
+
+/// The rule's result for f x 2^e (-64 <= e < 0) without the shortest digits, when it is decided
+/// by the double alone: the exact value a = f x 2^e, and the interval of decimals that read back
+/// as it (within a +- 2^(e-1)), scaled by mul x 10^t / den, contain no half of an integer step,
+/// so the shortest decimal (in that interval) rounds as a itself does. False when it is not
+/// decided (a tie near; then the caller takes the shortest digits) or the operands do not fit.
+[[nodiscard]] constexpr bool round_decided(std::uint64_t f, int e, std::uint64_t mul, int t,
+                                           std::uint64_t den, std::uint64_t& out,
+                                           bool& too_large) noexcept {
+  const auto up = static_cast<unsigned>(t > 0 ? t : 0);
+  const auto down = static_cast<unsigned>(t < 0 ? -t : 0);
+  if (up > 19 || down > 19 || mul > 100 || den > scale_limit[down]) return false;
+  const std::uint64_t divisor = pow10_table[down] * den;
+  if ((divisor >> 63U) != 0) return false;
+  // The value is n / d; the interval n +- scale / 2 (over d); steps of d; all below 2^127.
+  const u128 scale = u128{mul} * pow10_table[up];             // < 2^70
+  const u128 n = u128{f} * scale;                             // < 2^123
+  const u128 d = u128{divisor} << static_cast<unsigned>(-e);  // < 2^127
+  if (scale >= d) return false;  // the interval could hold more than one half step
+  const u128 q = n / d;
+  const u128 twice_r = (n % d) * 2;  // the half step is at d
+  const u128 distance = twice_r > d ? twice_r - d : d - twice_r;
+  if (distance <= scale) return false;  // a half step lies in the interval: not decided here
+  const u128 rounded = q + (twice_r > d ? 1U : 0U);
+  too_large = rounded > std::numeric_limits<std::uint64_t>::max();
+  out = static_cast<std::uint64_t>(rounded);
+  return true;
+}
+#endif
+}  // namespace rounding
+
+/// |v| x mul x 10^t / den (mul <= 100, den >= 1) by the rule: v's shortest decimal, rounded half
+/// away from zero, exactly. not_finite for NaN and infinities, value_too_large when the result
+/// does not fit 64 bits. Where the double alone decides the result (no tie within the interval
+/// of decimals that read back as v, nearly always), it is found without the shortest digits.
+[[nodiscard]] constexpr errc round_double(double v, std::uint64_t mul, int t, std::uint64_t den,
+                                          rounded_double& out) noexcept {
+  if (!(v == v) || v > std::numeric_limits<double>::max() ||
+      v < -std::numeric_limits<double>::max())
+    return errc::not_finite;
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  out.negative = (bits >> 63U) != 0;
+#if defined(__SIZEOF_INT128__)
+  const auto biased = static_cast<int>((bits >> 52U) & 0x7FFU);
+  const int e = biased - 1075;
+  if (biased != 0 && e >= -64 && e < 0) {
+    const std::uint64_t f = (bits & ((std::uint64_t{1} << 52U) - 1)) | (std::uint64_t{1} << 52U);
+    bool too_large = false;
+    if (rounding::round_decided(f, e, mul, t, den, out.magnitude, too_large))
+      return too_large ? errc::value_too_large : errc::ok;
+  }
+#endif
+  shortest_decimal s;
+  (void)shortest(v, s);
+  if (mul > 100) return errc::value_too_large;  // outside the contract
+  return round_scaled(s.digits * mul, s.exponent + t, den, out.magnitude) ? errc::ok
+                                                                          : errc::value_too_large;
 }
 
 }  // namespace seawire::detail

@@ -88,19 +88,15 @@ struct decimal {
   /// value_too_large past 19 places or 19 digits.
   [[nodiscard]] static constexpr result<decimal> from_double(double v, unsigned places) noexcept {
     result<decimal> r;
-    seawire::detail::shortest_decimal s;
-    r.ec = seawire::detail::shortest(v, s);
-    if (!r) return r;
-    std::uint64_t m = 0;
-    if (places > seawire::detail::max_fraction_digits ||
-        !seawire::detail::round_scaled(s, static_cast<int>(places), 1, m) ||
-        m > 9'999'999'999'999'999'999ULL) {
+    seawire::detail::rounded_double m;
+    r.ec = seawire::detail::round_double(v, 1, static_cast<int>(places > 99 ? 99 : places), 1, m);
+    if (r && (places > seawire::detail::max_fraction_digits ||
+              m.magnitude > 9'999'999'999'999'999'999ULL))
       r.ec = errc::value_too_large;
-      return r;
-    }
-    r.value.mantissa = m;
+    if (!r) return r;
+    r.value.mantissa = m.magnitude;
     r.value.places = static_cast<std::uint8_t>(places);
-    r.value.negative = s.negative && m != 0;
+    r.value.negative = m.negative && m.magnitude != 0;
     return r;
   }
 

@@ -72,19 +72,16 @@ struct nmea_coordinate {
   [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
       double deg, unsigned minute_places = 4) noexcept {
     result<nmea_coordinate> r;
-    seawire::detail::shortest_decimal s;
-    r.ec = seawire::detail::shortest(deg, s);
-    if (!r) return r;
-    if (minute_places < 1 || minute_places > 12) {
-      r.ec = errc::out_of_range;
-      return r;
-    }
-    // Minutes x 10^p in all (shortest digits < 10^17, so times 60 fits 64 bits), then split.
-    std::uint64_t total = 0;
-    const std::uint64_t per_degree = 60 * seawire::detail::pow10_table[minute_places];
-    if (!seawire::detail::round_scaled(s.digits * 60, s.exponent + static_cast<int>(minute_places),
-                                       1, total) ||
-        total > Axis::max_degrees * per_degree) {
+    const bool places_ok = minute_places >= 1 && minute_places <= 12;
+    // Minutes x 10^p in all (degrees x 60, rounded once), then split.
+    seawire::detail::rounded_double m;
+    r.ec = seawire::detail::round_double(deg, 60, places_ok ? static_cast<int>(minute_places) : 1,
+                                         1, m);
+    if (r.ec == errc::not_finite) return r;
+    const std::uint64_t total = m.magnitude;
+    const std::uint64_t per_degree =
+        60 * seawire::detail::pow10_table[places_ok ? minute_places : 1];
+    if (!r || !places_ok || total > Axis::max_degrees * per_degree) {
       r.ec = errc::out_of_range;
       return r;
     }
@@ -92,7 +89,7 @@ struct nmea_coordinate {
     r.value.minutes.mantissa = total % per_degree;
     r.value.minutes.places = static_cast<std::uint8_t>(minute_places);
     r.value.hemi =
-        static_cast<hemisphere>(s.negative && total != 0 ? Axis::negative : Axis::positive);
+        static_cast<hemisphere>(m.negative && total != 0 ? Axis::negative : Axis::positive);
     return r;
   }
 

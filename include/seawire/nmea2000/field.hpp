@@ -173,12 +173,14 @@ class number {
   /// halves away from zero (1.005 at 0.01 is raw 101, -1.005 is -101). not_finite for NaN and
   /// infinities, out_of_range as for a decimal.
   [[nodiscard]] static constexpr result<number> from(double v) noexcept {
-    seawire::detail::shortest_decimal s;
-    const errc e = seawire::detail::shortest(v, s);
-    if (e != errc::ok) return {number{}, e};
-    std::int64_t raw = 0;
-    const bool fits = detail::raw_from_scaled<Res>(s.digits, s.exponent, s.negative, raw);
-    return checked(fits, raw);
+    seawire::detail::rounded_double m;
+    const errc e = seawire::detail::round_double(v, 1, -Res.exponent,
+                                                 static_cast<std::uint64_t>(Res.mantissa), m);
+    if (e == errc::not_finite) return {number{}, e};
+    const bool fits = e == errc::ok && m.magnitude <= static_cast<std::uint64_t>(
+                                                          std::numeric_limits<std::int64_t>::max());
+    const auto mag = static_cast<std::int64_t>(fits ? m.magnitude : 0);
+    return checked(fits, m.negative ? -mag : mag);
   }
   template <nmea::whole_number I>
   [[nodiscard]] static constexpr result<number> from(I v) noexcept {
