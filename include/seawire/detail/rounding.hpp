@@ -6,13 +6,17 @@
 // same double (what std::to_chars(double) writes, and what a person typing 1.005 meant; the
 // double's exact binary value is 1.00499999999999989...). That decimal is then rounded to the
 // places or step the wire needs, exactly, halves away from zero: 1.005 -> 1.01, 2.675 -> 2.68,
-// -1.005 -> -1.01, 0.125 -> 0.13 at two places. Every path from a double uses these two
-// functions: nmea::decimal::from_double, the positions' and magnetic variation's from_degrees,
-// nmea::builder, nmea2000::number::from and the ANELLO frame's to_wire.
+// -1.005 -> -1.01, 0.125 -> 0.13 at two places. Every path from a double goes through
+// round_double (nmea::decimal::from_double, the positions' and magnetic variation's
+// from_degrees, nmea::builder, nmea2000::number::from and the ANELLO frame's to_wire), and every
+// path from decimal text through round_scaled, the same exact halves-away-from-zero arithmetic.
 //
 // shortest() is hand-written so that it is constexpr (std::to_chars is not): the exact interval
 // of decimals that read back as v, in big integers, and its digits generated until one of the
 // interval's ends is reached (Steele & White's free-format method as Burger & Dybvig state it).
+// round_double needs those digits only when a tie lies within that interval: otherwise every
+// decimal there, the shortest too, rounds as the double's exact value does, which 128-bit
+// integers give in a few nanoseconds.
 
 #include <bit>
 #include <cstdint>
@@ -298,13 +302,49 @@ __extension__ using u128 = unsigned __int128;
   if (up > 19 || down > 19 || mul > 100 || den > scale_limit[down]) return false;
   const std::uint64_t divisor = pow10_table[down] * den;
   if ((divisor >> 63U) != 0) return false;
+  const auto sh = static_cast<unsigned>(-e);
   // The value is n / d; the interval n +- scale / 2 (over d); steps of d; all below 2^127.
+  // First in 64 bits, where most wire fields are (n = f x scale below 2^64: f < 2^53 and
+  // scale < 2^11; d = divisor x 2^sh below 2^63).
+  if (mul * pow10_table[up] < 2048 && sh < 63 && divisor < (std::uint64_t{1} << (63U - sh))) {
+    const std::uint64_t scale64 = mul * pow10_table[up];
+    const std::uint64_t n64 = f * scale64;
+    const std::uint64_t d64 = divisor << sh;
+    if (scale64 >= d64) return false;
+    std::uint64_t q64 = n64 >> sh;  // then divided by the divisor, when it is not 1
+    std::uint64_t r64 = n64 & ((std::uint64_t{1} << sh) - 1);
+    if (divisor != 1) {
+      r64 |= (q64 % divisor) << sh;
+      q64 /= divisor;
+    }
+    const std::uint64_t twice_r64 = r64 * 2;
+    const std::uint64_t distance64 = twice_r64 > d64 ? twice_r64 - d64 : d64 - twice_r64;
+    if (distance64 <= scale64) return false;
+    too_large = false;
+    out = q64 + (twice_r64 > d64 ? 1U : 0U);
+    return true;
+  }
   const u128 scale = u128{mul} * pow10_table[up];             // < 2^70
   const u128 n = u128{f} * scale;                             // < 2^123
   const u128 d = u128{divisor} << static_cast<unsigned>(-e);  // < 2^127
   if (scale >= d) return false;  // the interval could hold more than one half step
-  const u128 q = n / d;
-  const u128 twice_r = (n % d) * 2;  // the half step is at d
+  // n / d and its remainder, d = divisor x 2^sh: a shift, then a division only by the divisor
+  // (in 64 bits when the quotient allows: no 128-bit division on the common path).
+  const u128 high = n >> sh;
+  const u128 low = n & ((u128{1} << sh) - 1);
+  u128 q = high;
+  u128 high_r = 0;
+  if (divisor != 1) {
+    if ((high >> 64U) == 0) {
+      const auto h = static_cast<std::uint64_t>(high);
+      q = h / divisor;
+      high_r = h % divisor;
+    } else {
+      q = high / divisor;
+      high_r = high % divisor;
+    }
+  }
+  const u128 twice_r = ((high_r << sh) | low) * 2;  // below 2d; the half step is at d
   const u128 distance = twice_r > d ? twice_r - d : d - twice_r;
   if (distance <= scale) return false;  // a half step lies in the interval: not decided here
   const u128 rounded = q + (twice_r > d ? 1U : 0U);
