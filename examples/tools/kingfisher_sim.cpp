@@ -27,12 +27,15 @@ namespace kf = seawire::kingfisher;
 namespace net = seawire::tools::net;
 using sys_ns = std::chrono::sys_time<std::chrono::nanoseconds>;
 
-// A heading in [0, 360) rounded to `places` digits: -0.3 is 359.7, and 359.996 at two places
-// is 0.00, not 360.00 (which the field refuses).
-double wrap_heading(double h, int places) {
-  const double scale = std::pow(10.0, places);
-  const double r = std::round(std::fmod(std::fmod(h, 360.0) + 360.0, 360.0) * scale) / scale;
-  return r >= 360 ? 0 : r;
+// A heading in [0, 360) for heading field M: -0.3 is 359.7, and 359.996 for a field of two
+// places is 0, not 360.00 (which the field refuses). The builder then rounds it to the field's
+// places by the library's one rule, the same rounding that decides the wrap here.
+template <auto M>
+double wrap_heading(double h) {
+  constexpr auto places = static_cast<unsigned>(nmea::precision_of<M>());
+  const double w = std::fmod(std::fmod(h, 360.0) + 360.0, 360.0);
+  const auto r = nmea::decimal::from_double(w, places);
+  return r && r.value.compare(nmea::decimal{360}) >= 0 ? 0.0 : w;
 }
 
 struct options {
@@ -158,7 +161,7 @@ class simulator {
         nmea::builder<kf::cpnvg>{nvg}
             .set<&kf::cpnvg::lat>(model_.lat())
             .set<&kf::cpnvg::lon>(model_.lon())
-            .set<&kf::cpnvg::heading_deg>(wrap_heading(heading, 5))
+            .set<&kf::cpnvg::heading_deg>(wrap_heading<&kf::cpnvg::heading_deg>(heading))
             .set<&kf::cpnvg::roll_deg>(model_.roll())
             .set<&kf::cpnvg::pitch_deg>(model_.pitch())
             .result());
@@ -173,7 +176,8 @@ class simulator {
             .result());
     put(b->bytes, b->lines,
         nmea::builder<kf::cprcm>{rcm}
-            .set<&kf::cprcm::heading_deg>(wrap_heading(heading + model_.noise(0.3), 2))
+            .set<&kf::cprcm::heading_deg>(
+                wrap_heading<&kf::cprcm::heading_deg>(heading + model_.noise(0.3)))
             .set<&kf::cprcm::pitch_deg>(model_.pitch() + model_.noise(0.05))
             .set<&kf::cprcm::roll_deg>(model_.roll() + model_.noise(0.05))
             .result());
@@ -208,8 +212,8 @@ class simulator {
       alt.lights_on = model_.lights();
       put(b->bytes, b->lines, result<kf::cpalt>{alt});
       const auto fix = nmea::time_of_day::from(t, 2).value;
-      const double course = wrap_heading(
-          model_.speed() >= 0 ? model_.heading() : std::fmod(model_.heading() + 180, 360), 2);
+      const double course = wrap_heading<&standard::rmc::course_true>(
+          model_.speed() >= 0 ? model_.heading() : model_.heading() + 180);
       standard::rmc rmc;
       rmc.time = fix;
       rmc.date = nmea::date::from(t);

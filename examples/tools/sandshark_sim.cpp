@@ -422,17 +422,22 @@ class simulator {
     nvg.timestamp = stamp;
     nvg.gps = depth_ < 0.3;  // GPS only at the surface
     nvg.nav_timestamp = stamp;
-    const double h = std::round(model_.heading() * 10) / 10;
-    (void)session_.publish(nmea::builder<ss::bfnvg>{nvg}
-                               .set<&ss::bfnvg::lat>(model_.lat())
-                               .set<&ss::bfnvg::lon>(model_.lon())
-                               .set<&ss::bfnvg::altitude_m>(std::max(0.0, water_depth_m - depth_))
-                               .set<&ss::bfnvg::depth_m>(depth_)
-                               .set<&ss::bfnvg::heading_deg>(h >= 360 ? 0.0 : h)
-                               .set<&ss::bfnvg::roll_deg>(model_.roll())
-                               .set<&ss::bfnvg::pitch_deg>(model_.pitch())
-                               .message(),
-                           now);
+    // A heading that the builder would round up to 360.0 (which the field refuses) is north.
+    const double h = model_.heading();
+    const auto rounded = nmea::decimal::from_double(
+        h, static_cast<unsigned>(nmea::precision_of<&ss::bfnvg::heading_deg>()));
+    (void)session_.publish(
+        nmea::builder<ss::bfnvg>{nvg}
+            .set<&ss::bfnvg::lat>(model_.lat())
+            .set<&ss::bfnvg::lon>(model_.lon())
+            .set<&ss::bfnvg::altitude_m>(std::max(0.0, water_depth_m - depth_))
+            .set<&ss::bfnvg::depth_m>(depth_)
+            .set<&ss::bfnvg::heading_deg>(
+                rounded && rounded.value.compare(nmea::decimal{360}) >= 0 ? 0.0 : h)
+            .set<&ss::bfnvg::roll_deg>(model_.roll())
+            .set<&ss::bfnvg::pitch_deg>(model_.pitch())
+            .message(),
+        now);
     ss::bfnvr nvr;
     nvr.timestamp = stamp;
     (void)session_.publish(nmea::builder<ss::bfnvr>{nvr}

@@ -381,7 +381,8 @@ int main() {
       "**Blank** says whether an empty field is accepted (it reads as `std::nullopt`).\n"
       "**Present** says when a field may be missing from the sentence altogether.\n"
       "**Precision** is the number of fraction digits `nmea::builder` rounds a\n"
-      "double to by default.\n\n");
+      "double to by default (its shortest decimal, halves away from zero: 1.005 at 2 is\n"
+      "1.01).\n\n");
   set("Kingfisher: vehicle to payload", "Kingfisher, from the vehicle.",
       of<kingfisher::from_vehicle>());
   set("Kingfisher: payload to vehicle", "Kingfisher, a command to the vehicle.",

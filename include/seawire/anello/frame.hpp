@@ -48,6 +48,7 @@
 #include "seawire/detail/bit_layout.hpp"
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
+#include "seawire/detail/rounding.hpp"
 #include "seawire/detail/same_member.hpp"
 #include "seawire/error.hpp"
 
@@ -164,23 +165,14 @@ struct member_type<M C::*> {
 template <auto Member>
 using member_type_t = typename member_type<std::remove_cv_t<decltype(Member)>>::type;
 
-// std::isfinite and std::round are not constexpr before C++23.
-[[nodiscard]] constexpr bool is_finite(double x) noexcept {
-  return x == x && x != std::numeric_limits<double>::infinity() &&
-         x != -std::numeric_limits<double>::infinity();
-}
-
-// Scaled values at or beyond this magnitude fit no field, and stay clear of int64 overflow below.
-inline constexpr double rounding_limit = 9.0e18;
-
-// Nearest integer, halves away from zero. Precondition: |x| < rounding_limit. Taking the fraction
-// by subtraction (exact for doubles) avoids the x + 0.5 trap at 0.49999999999999994.
-[[nodiscard]] constexpr std::int64_t round_half_away(double x) noexcept {
-  auto whole = static_cast<std::int64_t>(x);
-  const double fraction = x - static_cast<double>(whole);
-  if (fraction >= 0.5) ++whole;
-  if (fraction <= -0.5) --whole;
-  return whole;
+/// Fraction digits of a power-of-ten divisor (1 -> 0, 10 -> 1, 1'000'000 -> 6).
+[[nodiscard]] constexpr unsigned divisor_places(std::int64_t divisor) noexcept {
+  unsigned n = 0;
+  while (divisor > 1) {
+    divisor /= 10;
+    ++n;
+  }
+  return n;
 }
 
 }  // namespace detail
@@ -200,7 +192,7 @@ struct sensor_field {
   std::string_view name;  ///< snake_case; also the sensor_values member and the accessor
   /// The key in JSON; empty in a table row when it is the name (the table then fills it in).
   std::string_view json_key = {};
-  std::int64_t divisor = 1;  ///< wire counts per physical unit: physical = raw / divisor
+  std::int64_t divisor = 1;  ///< wire counts per physical unit, a power of ten: raw / divisor
   /// What the spec allows, in physical units; without it, whatever the wire type holds.
   std::optional<value_range> allowed = std::nullopt;
   /// A value read as "not available" besides the type's maximum.
@@ -262,10 +254,17 @@ struct sensor_field {
     if constexpr (std::is_same_v<value_type, time_ms>) {
       wire = value->time_since_epoch().count();
     } else if constexpr (std::is_same_v<value_type, double>) {
-      if (!detail::is_finite(*value)) return errc::not_finite;
-      const double scaled = *value * static_cast<double>(divisor);
-      if (!(scaled > -detail::rounding_limit && scaled < detail::rounding_limit)) return refusal();
-      wire = detail::round_half_away(scaled);
+      // seawire's one rule for doubles (nmea::decimal::from_double): the shortest decimal of
+      // the value, rounded half away from zero to the field's step (1.05 m/s is 11 tenths).
+      seawire::detail::rounded_double m;
+      const errc e = seawire::detail::round_double(
+          *value, 1, static_cast<int>(detail::divisor_places(divisor)), 1, m);
+      if (e == errc::not_finite) return e;
+      if (e != errc::ok ||
+          m.magnitude > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+        return refusal();
+      const auto mag = static_cast<std::int64_t>(m.magnitude);
+      wire = m.negative ? -mag : mag;
     } else {
       wire = static_cast<std::int64_t>(*value);
     }
@@ -470,7 +469,8 @@ template <auto ValueMember>
 }
 
 /// The frame a strict sender writes for `values`: each value rounded to its field's resolution
-/// (halves away from zero), nullopt as "not available". Refuses the first field (in table order)
+/// (its shortest decimal, halves away from zero, as nmea::decimal::from_double rounds: 1.05 m/s
+/// is 11 tenths), nullopt as "not available". Refuses the first field (in table order)
 /// whose value is NaN or infinite (not_finite), outside the spec's range (out_of_range: heading,
 /// course and wind directions 0..360, latitude +-90, longitude +-180, fix quality 0..8, motor and
 /// rudder +-100), or, for fields the spec gives no range, not carried by the wire type or equal

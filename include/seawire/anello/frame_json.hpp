@@ -46,16 +46,6 @@ inline constexpr std::string_view frame_json_type = "AB00";
 
 namespace detail {
 
-/// Fraction digits of a power-of-ten divisor (1 -> 0, 10 -> 1, 1'000'000 -> 6).
-[[nodiscard]] constexpr unsigned divisor_places(std::int64_t divisor) noexcept {
-  unsigned n = 0;
-  while (divisor > 1) {
-    divisor /= 10;
-    ++n;
-  }
-  return n;
-}
-
 /// A sensor field's raw wire value as the decimal it stands for (raw / divisor, exactly).
 template <class Field>
 [[nodiscard]] constexpr nmea::decimal raw_decimal(const Field& field,
@@ -166,21 +156,14 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
 }
 
 /// A decimal at `places` fraction digits as an integer: round(value * 10^places), halves away
-/// from zero. value_too_large when it does not fit 63 bits.
+/// from zero, exactly (the rounding of every wire number). value_too_large when it does not fit
+/// 63 bits.
 [[nodiscard]] constexpr errc scale_decimal(const nmea::decimal& d, unsigned places,
                                            std::int64_t& out) noexcept {
-  std::uint64_t m = d.mantissa;
-  if (d.places > places) {
-    const std::uint64_t div = seawire::detail::pow10_table[d.places - places];
-    m = m / div + (m % div >= div / 2 ? 1 : 0);
-  } else {
-    for (unsigned k = d.places; k < places; ++k) {
-      if (m > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()) / 10)
-        return errc::value_too_large;
-      m *= 10;
-    }
-  }
-  if (m > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+  std::uint64_t m = 0;
+  if (!seawire::detail::round_scaled(d.mantissa,
+                                     static_cast<int>(places) - static_cast<int>(d.places), 1, m) ||
+      m > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
     return errc::value_too_large;
   out = d.negative ? -static_cast<std::int64_t>(m) : static_cast<std::int64_t>(m);
   return errc::ok;

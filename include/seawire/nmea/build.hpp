@@ -10,16 +10,15 @@
 //
 // Each number or position field declares the fraction digits a double is rounded to
 // (nmea::precision in its description: what the spec or real senders write). A call may ask
-// for other places, or for nmea::shortest: the fewest digits that read back as the same double
-// (not in constant expressions). A value that cannot be written (NaN, infinite, outside the
-// field's range, too many digits) is refused there: the member keeps what it had, and result()
-// reports the first refusal with its field number, as encode() would have, once. Members of
-// other types (times, enums, text) are assigned directly.
+// for other places, or for nmea::shortest: the fewest digits that read back as the same double.
+// Rounding is seawire's one rule for doubles (decimal::from_double): the double's shortest
+// decimal, rounded half away from zero, so 1.005 at two places is 1.01. A value that cannot be
+// written (NaN, infinite, outside the field's range, too many digits) is refused there: the
+// member keeps what it had, and result() reports the first refusal with its field number, as
+// encode() would have, once. Members of other types (times, enums, text) are assigned directly.
 
-#include <charconv>
 #include <cstddef>
 #include <optional>
-#include <system_error>
 #include <type_traits>
 
 #include "seawire/error.hpp"
@@ -33,7 +32,7 @@ namespace seawire::nmea {
 struct places {
   unsigned n = 0;
 };
-/// The fewest fraction digits that read back as the same double (std::to_chars).
+/// The fewest fraction digits that read back as the same double (decimal::shortest).
 struct shortest_t {
   explicit constexpr shortest_t() = default;
 };
@@ -50,32 +49,14 @@ template <message_like T, std::size_t I>
   return static_cast<std::uint16_t>(n);
 }
 
-/// The shortest decimal that reads back as v (fixed notation: no exponent).
-[[nodiscard]] inline result<decimal> shortest_decimal(double v) noexcept {
-  result<decimal> r;
-  if (!(v == v) || v > 1.7976931348623157e308 || v < -1.7976931348623157e308) {
-    r.ec = errc::not_finite;
-    return r;
-  }
-  char buf[400];
-  const std::to_chars_result t = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
-  if (t.ec != std::errc{}) {
-    r.ec = errc::value_too_large;
-    return r;
-  }
-  r = decimal::parse(std::string_view(buf, static_cast<std::size_t>(t.ptr - buf)));
-  if (r.ec == errc::number_too_long) r.ec = errc::value_too_large;
-  return r;
-}
-
 /// The value of type V for v at `p` places (p < 0: shortest).
 template <class V>
 [[nodiscard]] constexpr result<V> from_double(double v, int p) noexcept {
   if constexpr (std::is_same_v<V, decimal>) {
-    if (p < 0) return shortest_decimal(v);  // only from set(v, shortest), not constexpr
+    if (p < 0) return decimal::shortest(v);
     return decimal::from_double(v, static_cast<unsigned>(p));
   } else {
-    if (p < 0) {  // only from set(v, shortest), not constexpr
+    if (p < 0) {
       if constexpr (std::is_same_v<V, latitude> || std::is_same_v<V, longitude>) {
         // The fewest minute digits whose position reads back as the same double.
         for (unsigned m = 1; m < 12; ++m) {
@@ -85,7 +66,7 @@ template <class V>
         return V::from_degrees(v, 12);
       } else {
         // Decimal degrees: the digits of the shortest decimal of the value.
-        const result<decimal> d = shortest_decimal(v);
+        const result<decimal> d = decimal::shortest(v);
         if (!d) return result<V>{{}, d.ec};
         p = d.value.places;
       }
@@ -117,7 +98,7 @@ class builder {
   }
   /// ... with the fewest digits that read back as the same double.
   template <auto M>
-  builder& set(double v, shortest_t) noexcept {
+  constexpr builder& set(double v, shortest_t) noexcept {
     return set_places<M>(v, -1);
   }
   /// Member M (optional) left blank.

@@ -13,6 +13,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/inline.hpp"
+#include "seawire/detail/rounding.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/codec.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -26,17 +27,6 @@ template <class I>
 concept whole_number = std::integral<I> && !std::is_same_v<I, bool> && !std::is_same_v<I, char> &&
                        !std::is_same_v<I, wchar_t> && !std::is_same_v<I, char8_t> &&
                        !std::is_same_v<I, char16_t> && !std::is_same_v<I, char32_t>;
-
-namespace detail {
-/// The integer nearest x >= 0 (halves up), for x below 2^64. Not static_cast(x + 0.5): that sum
-/// is itself rounded, so 0.49999999999999994 gave 1 and 2^52 + 1 gave 2^52 + 2. The fraction
-/// taken by subtraction is exact.
-[[nodiscard]] constexpr std::uint64_t round_nonnegative(double x) noexcept {
-  auto whole = static_cast<std::uint64_t>(x);
-  if (x - static_cast<double>(whole) >= 0.5) ++whole;
-  return whole;
-}
-}  // namespace detail
 
 namespace detail {
 /// Whether any of the arguments is floating-point: the value types below refuse such a call
@@ -91,28 +81,34 @@ struct decimal {
     return d;
   }
 
-  /// The value rounded to `places` fraction digits; refuses NaN/inf and what 19 digits cannot
-  /// hold.
+  /// `v` at `places` fraction digits (0 to 19), by seawire's one rule for doubles: the shortest
+  /// decimal that reads back as v, rounded half away from zero (1.005 -> 1.01, 2.675 -> 2.68,
+  /// -1.005 -> -1.01 at two places; see detail/rounding.hpp). A value that rounds to zero is
+  /// the plain zero ("0.00", never "-0.00"), as is -0.0. not_finite for NaN and infinities;
+  /// value_too_large past 19 places or 19 digits.
   [[nodiscard]] static constexpr result<decimal> from_double(double v, unsigned places) noexcept {
     result<decimal> r;
-    if (!(v == v) || v > std::numeric_limits<double>::max() ||
-        v < -std::numeric_limits<double>::max()) {
-      r.ec = errc::not_finite;
-      return r;
-    }
-    if (places > 18) {
+    seawire::detail::rounded_double m;
+    r.ec = seawire::detail::round_double(v, 1, static_cast<int>(places > 99 ? 99 : places), 1, m);
+    if (r && (places > seawire::detail::max_fraction_digits ||
+              m.magnitude > 9'999'999'999'999'999'999ULL))
       r.ec = errc::value_too_large;
-      return r;
-    }
-    const double mag = (v < 0 ? -v : v) * static_cast<double>(seawire::detail::pow10_table[places]);
-    if (mag >= 1e19) {
-      r.ec = errc::value_too_large;
-      return r;
-    }
-    r.value.mantissa = detail::round_nonnegative(mag);
+    if (!r) return r;
+    r.value.mantissa = m.magnitude;
     r.value.places = static_cast<std::uint8_t>(places);
-    r.value.negative = v < 0 && r.value.mantissa != 0;
+    r.value.negative = m.negative && m.magnitude != 0;
     return r;
+  }
+
+  /// `v` as its shortest decimal, with the fraction digits that takes ("0.30000000000000004"
+  /// for 0.1 + 0.2, "203.1" for 203.1, "0" for -0.0). not_finite for NaN and infinities;
+  /// value_too_large when that decimal has more than 19 digits or 19 places (1e-20, 1e19).
+  [[nodiscard]] static constexpr result<decimal> shortest(double v) noexcept {
+    seawire::detail::shortest_decimal s;
+    const errc e = seawire::detail::shortest(v, s);
+    if (e != errc::ok) return {decimal{}, e};
+    const unsigned places = s.exponent < 0 ? static_cast<unsigned>(-s.exponent) : 0U;
+    return from_double(v, places);  // at its own places, the rounding changes nothing
   }
 
   [[nodiscard]] constexpr double to_double() const noexcept {

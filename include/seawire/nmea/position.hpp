@@ -73,34 +73,30 @@ struct nmea_coordinate {
   /// received without a fraction is still decoded (as "4221.0": one fraction digit, zero),
   /// except under a strict policy (parse_policy::strict(), seawire-decode --strict), which
   /// refuses it; minutes given with no fraction digits are written with one ("4221.0").
+  /// The degrees are taken by the rule for every double (decimal::from_double): their shortest
+  /// decimal, here times 60 exactly, rounded half away from zero to the minute places, so
+  /// 59.99999' may carry into the next degree. A position that rounds to zero is N or E.
   [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
       double deg, unsigned minute_places = 4) noexcept {
     result<nmea_coordinate> r;
-    if (!(deg == deg) || deg > 1e300 || deg < -1e300) {
-      r.ec = errc::not_finite;
-      return r;
-    }
-    const double mag = deg < 0 ? -deg : deg;
-    if (mag > Axis::max_degrees || minute_places < 1 || minute_places > 12) {
+    const bool places_ok = minute_places >= 1 && minute_places <= 12;
+    // Minutes x 10^p in all (degrees x 60, rounded once), then split.
+    seawire::detail::rounded_double m;
+    r.ec = seawire::detail::round_double(deg, 60, places_ok ? static_cast<int>(minute_places) : 1,
+                                         1, m);
+    if (r.ec == errc::not_finite) return r;
+    const std::uint64_t total = m.magnitude;
+    const std::uint64_t per_degree =
+        60 * seawire::detail::pow10_table[places_ok ? minute_places : 1];
+    if (!r || !places_ok || total > Axis::max_degrees * per_degree) {
       r.ec = errc::out_of_range;
       return r;
     }
-    auto whole = static_cast<std::uint64_t>(mag);
-    const std::uint64_t scale = seawire::detail::pow10_table[minute_places];
-    auto m = detail::round_nonnegative((mag - static_cast<double>(whole)) * 60.0 *
-                                       static_cast<double>(scale));
-    if (m >= 60 * scale) {  // 59.99999 rounded up to 60: carry into the degrees
-      m -= 60 * scale;
-      ++whole;
-    }
-    if (whole > Axis::max_degrees || (whole == Axis::max_degrees && m != 0)) {
-      r.ec = errc::out_of_range;
-      return r;
-    }
-    r.value.whole_degrees = static_cast<std::uint16_t>(whole);
-    r.value.minutes.mantissa = m;
+    r.value.whole_degrees = static_cast<std::uint16_t>(total / per_degree);
+    r.value.minutes.mantissa = total % per_degree;
     r.value.minutes.places = static_cast<std::uint8_t>(minute_places);
-    r.value.hemi = static_cast<hemisphere>(deg < 0 ? Axis::negative : Axis::positive);
+    r.value.hemi =
+        static_cast<hemisphere>(m.negative && total != 0 ? Axis::negative : Axis::positive);
     return r;
   }
 
@@ -156,6 +152,8 @@ struct decimal_coordinate {
     const double v = value.to_double();
     return static_cast<char>(hemi) == Axis::negative ? -v : v;
   }
+  /// From signed decimal degrees rounded to `places` fraction digits by the rule for every
+  /// double (decimal::from_double). A position that rounds to zero is N or E.
   [[nodiscard]] static constexpr result<decimal_coordinate> from_degrees(
       double deg, unsigned places = 5) noexcept {
     result<decimal_coordinate> r;
@@ -169,7 +167,8 @@ struct decimal_coordinate {
       return r;
     }
     r.value.value = d.value;
-    r.value.hemi = static_cast<hemisphere>(deg < 0 ? Axis::negative : Axis::positive);
+    r.value.hemi =
+        static_cast<hemisphere>(deg < 0 && !d.value.is_zero() ? Axis::negative : Axis::positive);
     return r;
   }
   friend constexpr bool operator==(const decimal_coordinate&,
@@ -366,8 +365,10 @@ struct coordinate_traits<decimal_coordinate<A>> {
 /// Rounds a decimal to at most `places` fraction digits (halves away from zero).
 [[nodiscard]] constexpr decimal round_places(decimal d, unsigned places) noexcept {
   if (d.places <= places) return d;
-  const std::uint64_t div = seawire::detail::pow10_table[d.places - places];
-  d.mantissa = d.mantissa / div + (d.mantissa % div >= div / 2 ? 1 : 0);
+  std::uint64_t m = 0;  // fewer places: always fits
+  (void)seawire::detail::round_scaled(d.mantissa,
+                                      static_cast<int>(places) - static_cast<int>(d.places), 1, m);
+  d.mantissa = m;
   d.places = static_cast<std::uint8_t>(places);
   return d;
 }
@@ -450,8 +451,8 @@ template <class Coordinate>
 }  // namespace detail
 
 /// The NMEA position of signed decimal degrees given as written, exactly (no double):
-/// minutes rounded to `minute_places` digits (halves up), hemisphere from the sign (so -0.0 is
-/// S or W). minute_places < 0 picks the default: the fewest minute digits from which
+/// minutes rounded to `minute_places` digits (halves away from zero), hemisphere from the sign (so
+/// -0.0 is S or W). minute_places < 0 picks the default: the fewest minute digits from which
 /// to_decimal_degrees() writes exactly these degrees, so degrees that seawire wrote give back
 /// the wire's minutes digit for digit (up to 8 minute digits for longitudes, 9 for latitudes;
 /// past that the trailing zeros of the minutes may be lost). Degrees written otherwise get the

@@ -35,7 +35,8 @@ struct magnetic_variation {
     return direction == hemisphere::west ? -v : v;
   }
 
-  /// From signed degrees (west negative), rounded to `places` fraction digits (0 to 15).
+  /// From signed degrees (west negative), rounded to `places` fraction digits (0 to 15) by
+  /// the rule for every double (decimal::from_double); a variation that rounds to zero is east.
   /// variation_out_of_range beyond 180 degrees, not_finite for NaN and infinities.
   [[nodiscard]] static constexpr result<magnetic_variation> from_degrees(
       double deg, unsigned places = 1) noexcept {
@@ -54,7 +55,7 @@ struct magnetic_variation {
       return r;
     }
     r.value.value = d.value;
-    r.value.direction = deg < 0 ? hemisphere::west : hemisphere::east;
+    r.value.direction = deg < 0 && !d.value.is_zero() ? hemisphere::west : hemisphere::east;
     return r;
   }
 

@@ -45,6 +45,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/bit_layout.hpp"
+#include "seawire/detail/rounding.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/decimal.hpp"
 
@@ -117,63 +118,20 @@ template <resolution R>
   return d;
 }
 
-/// The raw value nearest d at resolution R (halves away from zero). False when it is beyond
-/// what 64 bits hold (the caller's range check then refuses it).
+/// The raw value nearest m x 10^t at resolution R, negated when `negative` (halves away from
+/// zero, exactly). False when it is beyond what 64 bits hold (the caller's range check then
+/// refuses it).
 template <resolution R>
-[[nodiscard]] constexpr bool raw_from_decimal(const nmea::decimal& d, std::int64_t& out) noexcept {
-  // raw = mantissa_d x 10^(-places_d - exponent) / R.mantissa
-  const int k = -static_cast<int>(d.places) - R.exponent;
-  std::uint64_t num = d.mantissa;
-  std::uint64_t den = static_cast<std::uint64_t>(R.mantissa);
-  if (k > 0) {
-    if (k > 19) return d.mantissa == 0 ? (out = 0, true) : false;
-    const std::uint64_t p = seawire::detail::pow10_table[k];
-    if (num > std::numeric_limits<std::uint64_t>::max() / p) return false;
-    num *= p;
-  } else if (k < 0) {
-    if (-k > 19) {
-      out = 0;  // below a millionth of a step of any resolution here
-      return true;
-    }
-    const std::uint64_t p = seawire::detail::pow10_table[-k];
-    if (den > std::numeric_limits<std::uint64_t>::max() / p) {
-      out = 0;
-      return true;
-    }
-    den *= p;
-  }
-  std::uint64_t q = num / den;
-  if (num % den >= den - num % den) ++q;  // remainder >= half of den, without overflow
-  if (q > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) return false;
-  out = d.negative ? -static_cast<std::int64_t>(q) : static_cast<std::int64_t>(q);
+[[nodiscard]] constexpr bool raw_from_scaled(std::uint64_t m, int t, bool negative,
+                                             std::int64_t& out) noexcept {
+  // raw = m x 10^(t - exponent) / mantissa
+  std::uint64_t q = 0;
+  if (!seawire::detail::round_scaled(m, t - R.exponent, static_cast<std::uint64_t>(R.mantissa),
+                                     q) ||
+      q > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+    return false;
+  out = negative ? -static_cast<std::int64_t>(q) : static_cast<std::int64_t>(q);
   return true;
-}
-
-/// The shortest decimal that reads back as v (what a person typing v meant), or an error for
-/// NaN, infinities and magnitudes no field carries.
-[[nodiscard]] inline errc decimal_from_double(double v, nmea::decimal& out) noexcept {
-  if (!(v == v) || v > std::numeric_limits<double>::max() ||
-      v < -std::numeric_limits<double>::max())
-    return errc::not_finite;
-  if (v >= 1e15 || v <= -1e15) return errc::out_of_range;
-  if (v < 1e-12 && v > -1e-12) {
-    out = nmea::decimal{};
-    return errc::ok;
-  }
-  char buf[64];
-  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
-  if (r.ec != std::errc{}) return errc::out_of_range;
-  const result<nmea::decimal> d = nmea::decimal::parse(std::string_view(buf, r.ptr));
-  if (!d) {
-    // More than 19 digits after the point: |v| < 1e-2, far below every resolution's half step
-    // that matters, so 18 places lose nothing the rounding to a step keeps.
-    const result<nmea::decimal> rounded = nmea::decimal::from_double(v, 18);
-    if (!rounded) return rounded.ec;
-    out = rounded.value;
-    return errc::ok;
-  }
-  out = d.value;
-  return errc::ok;
 }
 
 }  // namespace detail
@@ -219,24 +177,27 @@ class number {
   }
 
   /// The physical value `d` (in the field's unit), rounded to the nearest step (halves away from
-  /// zero). out_of_range when it is outside what the field carries as an ordinary value.
+  /// zero, exactly: 1.005 at 0.01 is raw 101). out_of_range when it is outside what the field
+  /// carries as an ordinary value.
   [[nodiscard]] static constexpr result<number> from(const nmea::decimal& d) noexcept {
-    result<number> r;
     std::int64_t raw = 0;
-    if (!detail::raw_from_decimal<Res>(d, raw) || raw < min_raw || raw > max_valid_raw) {
-      r.ec = errc::out_of_range;
-      return r;
-    }
-    r.value = from_raw(raw);
-    return r;
+    const bool fits =
+        detail::raw_from_scaled<Res>(d.mantissa, -static_cast<int>(d.places), d.negative, raw);
+    return checked(fits, raw);
   }
-  /// The physical value `v`, taken as the shortest decimal that reads back as v (so 363.15 K is
-  /// 363.15, not 363.149999...), then as from(decimal). not_finite for NaN and infinities.
-  [[nodiscard]] static result<number> from(double v) noexcept {
-    nmea::decimal d;
-    const errc e = detail::decimal_from_double(v, d);
-    if (e != errc::ok) return {number{}, e};
-    return from(d);
+  /// The physical value `v`, by seawire's one rule for doubles (decimal::from_double): its
+  /// shortest decimal (363.15 K is 363.15, not 363.149999...), rounded to the nearest step,
+  /// halves away from zero (1.005 at 0.01 is raw 101, -1.005 is -101). not_finite for NaN and
+  /// infinities, out_of_range as for a decimal.
+  [[nodiscard]] static constexpr result<number> from(double v) noexcept {
+    seawire::detail::rounded_double m;
+    const errc e = seawire::detail::round_double(v, 1, -Res.exponent,
+                                                 static_cast<std::uint64_t>(Res.mantissa), m);
+    if (e == errc::not_finite) return {number{}, e};
+    const bool fits = e == errc::ok && m.magnitude <= static_cast<std::uint64_t>(
+                                                          std::numeric_limits<std::int64_t>::max());
+    const auto mag = static_cast<std::int64_t>(fits ? m.magnitude : 0);
+    return checked(fits, m.negative ? -mag : mag);
   }
   template <nmea::whole_number I>
   [[nodiscard]] static constexpr result<number> from(I v) noexcept {
@@ -279,6 +240,11 @@ class number {
   [[nodiscard]] constexpr bool operator==(const number& o) const noexcept { return raw_ == o.raw_; }
 
  private:
+  [[nodiscard]] static constexpr result<number> checked(bool fits, std::int64_t raw) noexcept {
+    if (!fits || raw < min_raw || raw > max_valid_raw) return {number{}, errc::out_of_range};
+    return {from_raw(raw), errc::ok};
+  }
+
   std::int64_t raw_ = top_raw;
 };
 
