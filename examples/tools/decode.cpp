@@ -437,8 +437,8 @@ class decoder {
     if (r.ec == errc::empty_input || r.ok()) return;
     std::string detail;
     if (r.ec == errc::unknown_log_format) {
-      const std::string_view named =
-          nmea2000::detail::trim_line_end(text).substr(nmea2000::format_header_prefix.size());
+      std::string_view named = text.substr(nmea2000::format_header_prefix.size());
+      named = named.substr(0, named.find_last_not_of(" \t\r\n") + 1);
       detail = "the log's header names format \"" + std::string(named) + "\": " +
                (nmea2000::canboat_format_named(named) ? "a canboat format seawire does not read"
                                                       : "no canboat format has this name") +

@@ -327,5 +327,9 @@ int main() {
                                     "Why a fast-packet assembler dropped frames.", kind::value);
   table<nmea2000::log_format>("seawire::nmea2000::log_format", "nmea2000/log.hpp",
                               "The CAN log formats read and written.", kind::value);
+  table<nmea2000::canboat_format>(
+      "seawire::nmea2000::canboat_format", "nmea2000/log.hpp",
+      "The formats a canboat log's `# format=` header names; the first five are read.",
+      kind::value);
   return 0;
 }
