@@ -308,8 +308,9 @@ std::string n2k_form(std::string& step, std::string& range) {
     return "date, days since 1970-01-01, JSON `\"YYYY-MM-DD\"`";
   } else if constexpr (std::is_same_v<V, nmea2000::time_of_day>) {
     step = "0.0001 s";
-    range = "00:00:00.0000 to 24:00:01.0000 (a leap second); later times as sent, to "
-            "119:18:16.7292";
+    range =
+        "00:00:00.0000 to 24:00:01.0000 (a leap second); later times as sent, to "
+        "119:18:16.7292";
     return "UTC time of day, JSON `\"hh:mm:ss.ffff\"`";
   } else {
     static_assert(!sizeof(V), "messages_doc: say what this PGN field holds");
