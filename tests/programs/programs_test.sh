@@ -942,6 +942,18 @@ case_live() {
 }
 
 case_reasons() {
+  # An enum value in the other message's spelling is accepted and given in the message's own
+  # (docs/seawire-decode.md, docs/round-trip.md): RobotX's cruciform.
+  crlf "$(seal RXDOK,101218,161229,AUVSI,G,CRUCI)" "$(seal RXDEL,101218,161229,AUVSI,G,CRUC)" \
+    >"$work/in"
+  expect_rc "both cruciform spellings" 0 "$decode" <"$work/in"
+  expect_eq "JSON: each message's own spelling" '"shape":"CRUC" "shape":"CRUCI"' \
+    "$(grep -o '"shape":"[A-Z]*"' "$work/out" | tr '\n' ' ' | sed 's/ $//')"
+  expect_rc "both cruciform spellings, nmea" 0 "$decode" --format nmea <"$work/in"
+  expect_eq "nmea: each message's own spelling" \
+    "$(crlf "$(seal RXDOK,101218,161229,AUVSI,G,CRUC)" "$(seal RXDEL,101218,161229,AUVSI,G,CRUCI)")" \
+    "$(cat "$work/out")"
+
   # Each rejected line says which field, named for what it is, and what is wrong with its text.
   crlf "$(seal RXHRB,101218,161229,29.6412654321,,-82.3456789012,,GATOR,1,1)" \
     "$(seal RXHRB,101218,161229,29.6412654321,N,-82.3456789012,W,GATOR,1,1)" \

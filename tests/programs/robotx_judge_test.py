@@ -185,6 +185,19 @@ def case_reasons():
           in text, "the blank letter named and told:\n" + text)
     check("RXHRB field 5 (longitude): a sign is not allowed: the hemisphere letter carries it"
           in text, "the sign told:\n" + text)
+    j = Judge("--duration", "1.5", "--report", "json")
+    a = team_socket(j.port)
+    a.sendall(sentence("RXHRB,111221,161229,21.31198,,-157.88972,W,AUVSI,2,1").encode())
+    j.proc.wait(timeout=20)
+    a.close()
+    fields = {f.get("field"): f for f in j.findings()}
+    letter, number = fields.get(4, {}), fields.get(5, {})
+    check(letter.get("field_name") == "latitude" and letter.get("field_part") == "hemisphere letter"
+          and letter.get("error") == "hemisphere letter is missing (blank)",
+          "JSON: the blank letter: %r" % letter)
+    check(number.get("field_name") == "longitude" and "field_part" not in number and
+          number.get("error") == "a sign is not allowed: the hemisphere letter carries it",
+          "JSON: the sign: %r" % number)
 
 
 def case_usage():
