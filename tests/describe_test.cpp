@@ -154,6 +154,9 @@ TEST_CASE("describe: what is wrong with a refused position's text") {
   CHECK(
       told_sealed<kf>("GPRMC,134213.686,A,4221.7,N,0007105.4,W,0,0,291263,0,E") ==
       R"(GPRMC field 5 (longitude) "0007105.4": DDDMM.m has at most 3 degree digits before the minutes)");
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,000000000000000000004221.7,N,07105.4,W,0,0,291263,0,E") ==
+      R"(GPRMC field 3 (latitude) "000000000000000000004221.7": DDMM.m has at most 2 degree digits before the minutes)");
   CHECK(told_sealed<kf>("GPRMC,134213.686,A,4221.7.1,N,07105.4,W,0,0,291263,0,E") ==
         R"(GPRMC field 3 (latitude) "4221.7.1": DDMM.m holds only digits and one decimal point)");
   CHECK(

@@ -326,8 +326,8 @@ struct codec<nmea_coordinate<Axis>> {
     if (text[0] == '-' || text[0] == '+') return detail::signed_position;
     std::size_t i = 0;
     std::uint64_t ddmm = 0;
-    while (i < text.size() && seawire::detail::is_digit(text[i]) && i < 19)
-      ddmm = ddmm * 10 + static_cast<unsigned>(text[i++] - '0');
+    for (; i < text.size() && seawire::detail::is_digit(text[i]); ++i)
+      if (i < 19) ddmm = ddmm * 10 + static_cast<unsigned>(text[i] - '0');  // more: too many
     const std::size_t point = i;
     std::size_t places = 0;
     bool has_point = false;
