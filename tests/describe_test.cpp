@@ -7,6 +7,7 @@
 #include <string>
 
 #include "seawire/seawire.hpp"
+#include "support.hpp"
 
 namespace {
 using namespace seawire;
@@ -73,4 +74,145 @@ TEST_CASE("describe: a small buffer cuts the text and still ends it") {
   char none[1];
   CHECK(nmea::describe<kingfisher::to_vehicle>(none, r, line).empty());
   CHECK(none[0] == '\0');
+}
+
+namespace {
+using support::sealed;
+template <class Set>
+std::string told_sealed(std::string_view body, const nmea::parse_policy& p = {}) {
+  return told<Set>(sealed(body), p);
+}
+}  // namespace
+
+TEST_CASE("describe: a declaration's later wire fields are named for what they are") {
+  using rx = robotx::reports;
+  using kf = kingfisher::from_vehicle;
+  // A blank hemisphere letter: which letter, and that it is blank.
+  CHECK(told_sealed<rx>("RXHRB,101218,161229,29.6412654321,,-82.3456789012,,GATOR,1,1") ==
+        R"(RXHRB field 4 (latitude's hemisphere letter) "": hemisphere letter is missing (blank))");
+  CHECK(
+      told_sealed<rx>("RXHRB,101218,161229,29.6412654321,N,82.3456789012,,GATOR,1,1") ==
+      R"(RXHRB field 6 (longitude's hemisphere letter) "": hemisphere letter is missing (blank))");
+  CHECK(told_sealed<kf>("CPNVG,101218,4221.7,,07105.4,W,1,1,0,0,0,0,0,0,0") ==
+        R"(CPNVG field 3 (latitude's hemisphere letter) "": hemisphere letter is missing (blank))");
+  // A letter of the other axis: the letters this one allows.
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,4221.7,E,07105.4,W,0,0,291263,,") ==
+        R"(GPRMC field 4 (latitude's hemisphere letter) "E": hemisphere letter is not N or S)");
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,4221.7,N,07105.4,S,0,0,291263,,") ==
+        R"(GPRMC field 6 (longitude's hemisphere letter) "S": hemisphere letter is not E or W)");
+  // The magnetic variation's letter (the mode after it), and a unit letter.
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,4221.7,N,07105.4,W,0,0,291263,3.1,X,A") ==
+      R"(GPRMC field 11 (magnetic_variation's direction letter) "X": magnetic variation letter is not E or W)");
+  CHECK(
+      told_sealed<kf>("GPGGA,134213.686,4221.7,N,07105.4,W,1,08,0.9,545.4,F,46.9,M,,") ==
+      R"(GPGGA field 10 (altitude_m's unit letter) "F": unit letter is not the one this field requires: the unit is M)");
+  // field_about tells the parts apart; field_name stays the declared name.
+  const nmea::field_about lat = nmea::about_field<standard::rmc>(3);
+  const nmea::field_about ns = nmea::about_field<standard::rmc>(4);
+  CHECK(lat.name == "latitude");
+  CHECK(lat.part.empty());
+  CHECK(ns.name == "latitude");
+  CHECK(ns.part == "hemisphere letter");
+  CHECK(nmea::field_name<standard::rmc>(4) == "latitude");
+}
+
+TEST_CASE("describe: what is wrong with a refused position's text") {
+  using rx = robotx::reports;
+  using kf = kingfisher::from_vehicle;
+  // A sign where the letter carries it: decimal degrees and DDMM.m, either axis.
+  CHECK(
+      told_sealed<rx>("RXHRB,101218,161229,29.6412654321,N,-82.3456789012,W,GATOR,1,1") ==
+      R"(RXHRB field 5 (longitude) "-82.3456789012": a sign is not allowed: the hemisphere letter carries it)");
+  CHECK(
+      told_sealed<rx>("RXHRB,101218,161229,+29.6412654321,N,82.3456789012,W,GATOR,1,1") ==
+      R"(RXHRB field 3 (latitude) "+29.6412654321": a sign is not allowed: the hemisphere letter carries it)");
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,-4221.7,N,07105.4,W,0,0,291263,,") ==
+      R"(GPRMC field 3 (latitude) "-4221.7": a sign is not allowed: the hemisphere letter carries it)");
+  CHECK(
+      told_sealed<kf>("CPNVG,101218,4221.7,N,-07105.4,W,1,1,0,0,0,0,0,0,0") ==
+      R"(CPNVG field 4 (longitude) "-07105.4": a sign is not allowed: the hemisphere letter carries it)");
+  // DDMM.m without its minute digits before the point, whatever the value; decimal degrees in
+  // a DDMM.m field are the same mistake. The error stays bad_latitude / bad_longitude.
+  constexpr std::string_view ddmm =
+      "DDMM.m needs two minute digits and at least one degree digit before the point";
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,00.00,N,000.00,W,0,0,291263,0,E") ==
+        R"(GPRMC field 3 (latitude) "00.00": )" + std::string(ddmm));
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,0000.00,N,00.00,W,0,0,291263,0,E") ==
+        R"(GPRMC field 5 (longitude) "00.00": )" + std::string(ddmm));
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,37.352387,N,07105.4,W,0,0,291263,0,E") ==
+        R"(GPRMC field 3 (latitude) "37.352387": )" + std::string(ddmm));
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,.5,N,07105.4,W,0,0,291263,0,E") ==
+        R"(GPRMC field 3 (latitude) ".5": )" + std::string(ddmm));
+  const auto rmc = kf::decode(sealed("GPRMC,134213.686,A,00.00,N,000.00,W,0,0,291263,0,E"));
+  CHECK(rmc.ec == errc::bad_latitude);
+  // Too many degree digits, stray characters, too many fraction digits, beyond the axis.
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,004221.7,N,07105.4,W,0,0,291263,0,E") ==
+      R"(GPRMC field 3 (latitude) "004221.7": DDMM.m has at most 2 degree digits before the minutes)");
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,4221.7,N,0007105.4,W,0,0,291263,0,E") ==
+      R"(GPRMC field 5 (longitude) "0007105.4": DDDMM.m has at most 3 degree digits before the minutes)");
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,000000000000000000004221.7,N,07105.4,W,0,0,291263,0,E") ==
+      R"(GPRMC field 3 (latitude) "000000000000000000004221.7": DDMM.m has at most 2 degree digits before the minutes)");
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,4221.7.1,N,07105.4,W,0,0,291263,0,E") ==
+        R"(GPRMC field 3 (latitude) "4221.7.1": DDMM.m holds only digits and one decimal point)");
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,4221.1234567890123,N,07105.4,W,0,0,291263,0,E") ==
+      R"(GPRMC field 3 (latitude) "4221.1234567890123": more than 12 fraction digits of a minute)");
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,9000.1,N,07105.4,W,0,0,291263,0,E") ==
+        R"(GPRMC field 3 (latitude) "9000.1": beyond 90 degrees)");
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,4221.7,N,18000.01,W,0,0,291263,0,E") ==
+        R"(GPRMC field 5 (longitude) "18000.01": beyond 180 degrees)");
+  CHECK(told_sealed<rx>("RXHRB,101218,161229,90.5,N,82.3,W,GATOR,1,1") ==
+        R"(RXHRB field 3 (latitude) "90.5": beyond 90 degrees)");
+  CHECK(told_sealed<rx>("RXHRB,101218,161229,29.6,N,82.3.4,W,GATOR,1,1") ==
+        R"(RXHRB field 5 (longitude) "82.3.4": not a number of decimal degrees)");
+  // A fraction refused only by a strict policy.
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,4221,N,07105.4,W,0,0,291263,0,E",
+                      nmea::parse_policy::strict()) ==
+      R"(GPRMC field 3 (latitude) "4221": no fraction: DDMM.m is sent with at least one digit after the point)");
+  // Minutes of 60 keep their own error's words.
+  CHECK(told_sealed<kf>("GPRMC,134213.686,A,4261.7,N,07105.4,W,0,0,291263,0,E") ==
+        R"(GPRMC field 3 (latitude) "4261.7": minutes out of range (00-59))");
+  // A signed magnetic variation.
+  CHECK(
+      told_sealed<kf>("GPRMC,134213.686,A,4221.7,N,07105.4,W,0,0,291263,-3.1,E") ==
+      R"(GPRMC field 10 (magnetic_variation) "-3.1": a sign is not allowed: the E/W letter carries it)");
+}
+
+TEST_CASE("describe: a checksum as it was sent") {
+  using set = kingfisher::to_vehicle;
+  // Lower-case digits are echoed as sent.
+  CHECK(told<set>("$PYDIR,45,55*5a\r\n") ==
+        "checksum does not match the sentence (sent 5a, computed 57) at column 13");
+  // Digits that read in decimal as the computed checksum: the sender wrote it in decimal.
+  CHECK(told<set>("$PYDIR,45,55*87\r\n") ==
+        "checksum does not match the sentence (sent 87, computed 57: written in decimal?) at "
+        "column 13");
+  CHECK(told<set>("$PYDIR,45,55*86\r\n") ==
+        "checksum does not match the sentence (sent 86, computed 57) at column 13");
+  CHECK(nmea::written_in_decimal("82", 0x52));
+  CHECK(nmea::written_in_decimal("123", 123));
+  CHECK_FALSE(nmea::written_in_decimal("07", 7));  // reads the same in hex: a right checksum
+  CHECK_FALSE(nmea::written_in_decimal("8A", 0x52));
+  CHECK_FALSE(nmea::written_in_decimal("", 0x52));
+}
+
+TEST_CASE("describe: a text's declared length gives one error on both sides") {
+  using s = sandshark::to_vehicle;
+  CHECK(told<s>("$BPLOG,ACKS,ON\r\n") ==
+        R"(BPLOG field 1 (code) "ACKS": wrong length: exactly 3 characters)");
+  CHECK(told<s>("$BPLOG,AC,ON\r\n") ==
+        R"(BPLOG field 1 (code) "AC": wrong length: exactly 3 characters)");
+  CHECK(s::decode("$BPLOG,ACKS,ON\r\n").ec == errc::bad_length);
+  CHECK(s::decode("$BPLOG,AC,ON\r\n").ec == errc::bad_length);
+  using rx = robotx::reports;
+  CHECK(told_sealed<rx>("RXHRB,101218,161229,29.6,N,82.3,W,GATORS,1,1") ==
+        R"(RXHRB field 7 (team_id) "GATORS": wrong length: exactly 5 characters)");
+  CHECK(told_sealed<rx>("RXHRB,101218,161229,29.6,N,82.3,W,GATR,1,1") ==
+        R"(RXHRB field 7 (team_id) "GATR": wrong length: exactly 5 characters)");
 }

@@ -398,7 +398,7 @@ TEST_CASE("validator: the bad-on-purpose heartbeat, every error at once") {
                                           "checksum_lowercase RXHRB 0 ok",
                                           "unpadded RXHRB 1 bad_date",
                                           "unpadded RXHRB 2 bad_time",
-                                          "team_id RXHRB 7 text_too_long",
+                                          "team_id RXHRB 7 bad_length",
                                           "field RXHRB 8 bad_enum",
                                       });
   CHECK(verdict.findings[0].at == seed_utc);
@@ -525,7 +525,7 @@ TEST_CASE("validator: team ids") {
   const auto blank = v.check(sealed("RXHRB,101218,161229,,,,,,2,1"), seed_utc);
   CHECK(rules_of(blank.findings) == std::vector<std::string>{"team_id RXHRB 7 missing_field"});
   const auto six = v.check(sealed("RXDOK,101218,161229,AUVSI1,R,TRIAN"), seed_utc);
-  CHECK(rules_of(six.findings) == std::vector<std::string>{"team_id RXDOK 3 text_too_long"});
+  CHECK(rules_of(six.findings) == std::vector<std::string>{"team_id RXDOK 3 bad_length"});
 }
 
 TEST_CASE("validator: rate per message type, 1 Hz exactly at the boundary") {

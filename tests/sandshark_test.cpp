@@ -418,7 +418,7 @@ TEST_CASE("malformed BFSHT / BFVER / BFCTL") {
   const bad_case ver[] = {
       {"BFVER,081025.987", errc::too_few_fields, 2},
       {"BFVER,081025.987,", errc::missing_field, 2},
-      {"BFVER,081025.987,123456789012345678901234567890123", errc::text_too_long, 2},
+      {"BFVER,081025.987,123456789012345678901234567890123", errc::bad_length, 2},
   };
   for (const auto& c : ver) check_bad<bfver>(c, from_vehicle_policy);
   const bad_case ctl[] = {
@@ -469,7 +469,7 @@ TEST_CASE("malformed BFACK") {
       {"BFACK,081025.990,RMB,081025.950,99999999999,2,0,", errc::out_of_range, 4},
       {"BFACK,081025.990,RMB,081025.950,,2,x,", errc::bad_number, 6},
       {"BFACK,081025.990,RMB", errc::too_few_fields, 5},
-      {"BFACK,081025.990,ABCDEFGHIJKLMNOPQ,,,2,0,", errc::text_too_long, 2},
+      {"BFACK,081025.990,ABCDEFGHIJKLMNOPQ,,,2,0,", errc::bad_length, 2},
   };
   for (const auto& c : ack) check_bad<bfack>(c, from_vehicle_policy);
 }
@@ -500,7 +500,7 @@ TEST_CASE("variable-length text: long descriptions, details and log paths, a fil
 TEST_CASE("malformed BPLOG / BPSTS / BPVER") {
   const bad_case log[] = {
       {"BPLOG,NV,ON", errc::bad_length, 1},
-      {"BPLOG,NVGX,ON", errc::text_too_long, 1},
+      {"BPLOG,NVGX,ON", errc::bad_length, 1},
       {"BPLOG,,ON", errc::missing_field, 1},
       {"BPLOG,NVG,on", errc::bad_enum, 2},
       {"BPLOG,NVG,YES", errc::bad_enum, 2},

@@ -687,8 +687,10 @@ class decoder {
       ++reencode_failures_;
       std::string detail = std::string(s.address) + " cannot be re-encoded";
       if (r.field != 0) {
-        detail += ": field " + std::to_string(r.field) + " (" +
-                  std::string(all_messages::field_name(s.address, r.field, s.field_count)) + ")";
+        const nmea::field_about a = all_messages::about_field(s.address, r.field, s.field_count);
+        detail += ": field " + std::to_string(r.field) + " (" + std::string(a.name);
+        if (!a.part.empty()) detail += "'s " + std::string(a.part);
+        detail += ")";
       }
       detail += ": " + std::string(message(r.ec));
       reject(l.line, r.ec, r.field, detail, l.text);

@@ -186,9 +186,22 @@ class judge {
     for (const rx::finding& f : findings) {
       const std::string_view rule = name(f.broken);
       const std::string_view address = f.address.view();
-      const std::string_view field =
-          f.field != 0 ? rx::reports::field_name(address, f.field) : std::string_view{};
-      const std::string why = f.ec != errc::ok ? std::string(message(f.ec)) : std::string();
+      const nmea::field_about about =
+          f.field != 0 ? rx::reports::about_field(address, f.field) : nmea::field_about{};
+      const std::string_view field = about.name;
+      std::string why = f.ec != errc::ok ? std::string(message(f.ec)) : std::string();
+      if (f.field != 0 && about.explain != nullptr && !line.empty()) {
+        // What the field's text shows is wrong (a sign before a position, a blank letter).
+        nmea::parse_policy lax;
+        lax.checksum = nmea::checksum_policy::ignore;
+        lax.max_length = 0xFFFF;
+        const result<nmea::sentence_view> s = nmea::parse(line, lax);
+        if (s) {
+          const std::string_view explained =
+              about.explain(about.part_index, f.ec, s.value.field(f.field).text);
+          if (!explained.empty()) why = explained;
+        }
+      }
       const std::string team = link.team.empty() ? std::string("?") : link.team;
       if (o_.report == "json") {
         json j;
@@ -201,6 +214,7 @@ class judge {
         j["address"] = address;
         j["field"] = f.field;
         if (!field.empty()) j["field_name"] = field;
+        if (!about.part.empty()) j["field_part"] = about.part;
         if (!why.empty()) j["error"] = why;
         if (f.elapsed.count() != 0) j["elapsed_s"] = seconds(f.elapsed);
         if (!line.empty()) j["input"] = line;
@@ -211,7 +225,11 @@ class judge {
         if (!address.empty()) text += " " + std::string(address);
         if (f.field != 0) {
           text += " field " + std::to_string(f.field);
-          if (!field.empty()) text += " (" + std::string(field) + ")";
+          if (!field.empty()) {
+            text += " (" + std::string(field);
+            if (!about.part.empty()) text += "'s " + std::string(about.part);
+            text += ")";
+          }
         }
         if (!why.empty()) text += ": " + why;
         char secs[32];

@@ -41,13 +41,13 @@ enum class errc : std::uint8_t {
   day_out_of_range,     ///< day 0 or past the end of its month
   bad_latitude,         ///< latitude not DDMM.m..., or above 90 degrees
   bad_longitude,        ///< longitude not DDDMM.m..., or above 180 degrees
-  bad_hemisphere,       ///< hemisphere letter other than N/S (latitude) or E/W (longitude)
+  bad_hemisphere,       ///< hemisphere letter blank, or other than N/S (lat.) or E/W (long.)
   bad_enum,             ///< a letter or word that is not one of the field's values
   bad_flag,             ///< a flag that is not 0 or 1
   bad_unit,             ///< a unit letter other than the one the field requires
   bad_text,             ///< text with a character the field may not carry
-  text_too_long,        ///< text longer than the field's capacity
-  bad_length,           ///< a field or frame of the wrong length
+  text_too_long,        ///< text longer than the field's capacity (and no declared length)
+  bad_length,           ///< wrong length: a field or frame, or text outside its declared length
   // -- encoding --
   not_finite,        ///< NaN or infinity given to an encoder
   value_too_large,   ///< a value that does not fit its wire field

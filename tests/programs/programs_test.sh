@@ -153,7 +153,7 @@ case_bad() {
   local expected=(
     '2:checksum_mismatch:0' '3:checksum_mismatch:0' '4:checksum_mismatch:0'
     '5:minute_out_of_range:2' '6:too_few_fields:6' '7:missing_start:0' '8:bad_enum:1'
-    '9:out_of_range:1' '10:bad_character:0' '11:text_too_long:7' '12:truncated:0'
+    '9:out_of_range:1' '10:bad_character:0' '11:bad_length:7' '12:truncated:0'
     '13:bad_enum:2')
   expect_eq "bad.nmea: line, error and field of every rejected line" \
     "$(printf '%s\n' "${expected[@]}")" \
@@ -939,6 +939,50 @@ case_live() {
   expect_eq "the late LF was no blank line: the rejected sentence is on line 3" \
     '{"line":3,"error":"checksum_mismatch","field":0,"detail":"checksum does not match the sentence (sent 11, computed 17) at column 14","input":"$PAPGPSCTRL,7*11"}' \
     "$(line 3 "$work/out")"
+}
+
+case_reasons() {
+  # An enum value in the other message's spelling is accepted and given in the message's own
+  # (docs/seawire-decode.md, docs/round-trip.md): RobotX's cruciform.
+  crlf "$(seal RXDOK,101218,161229,AUVSI,G,CRUCI)" "$(seal RXDEL,101218,161229,AUVSI,G,CRUC)" \
+    >"$work/in"
+  expect_rc "both cruciform spellings" 0 "$decode" <"$work/in"
+  expect_eq "JSON: each message's own spelling" '"shape":"CRUC" "shape":"CRUCI"' \
+    "$(grep -o '"shape":"[A-Z]*"' "$work/out" | tr '\n' ' ' | sed 's/ $//')"
+  expect_rc "both cruciform spellings, nmea" 0 "$decode" --format nmea <"$work/in"
+  expect_eq "nmea: each message's own spelling" \
+    "$(crlf "$(seal RXDOK,101218,161229,AUVSI,G,CRUC)" "$(seal RXDEL,101218,161229,AUVSI,G,CRUCI)")" \
+    "$(cat "$work/out")"
+
+  # Each rejected line says which field, named for what it is, and what is wrong with its text.
+  crlf "$(seal RXHRB,101218,161229,29.6412654321,,-82.3456789012,,GATOR,1,1)" \
+    "$(seal RXHRB,101218,161229,29.6412654321,N,-82.3456789012,W,GATOR,1,1)" \
+    "$(seal GPRMC,134213.686,A,00.00,N,000.00,W,0,0,291263,0,E)" \
+    "$(seal GPRMC,134213.686,A,-4221.7,N,07105.4,W,0,0,291263,0,E)" \
+    "$(seal GPRMC,134213.686,A,37.352387,N,07105.4,W,0,0,291263,0,E)" \
+    "$(seal CPNVG,101218,4221.7,,07105.4,W,1,1,0,0,0,0,0,0,0)" \
+    '$GPRMC,134213.686,A,0000.00,N,00000.00,W,0,0,291263,0,E*0a' \
+    '$RXHRB,101218,161229,29.6412654321,N,82.3456789012,W,GATOR,1,1*42' \
+    "$(seal BPLOG,ACKS,ON)" "$(seal BPLOG,AC,ON)" >"$work/in"
+  expect_rc "refused fields" 1 "$decode" --format none <"$work/in"
+  expect_eq "the reasons" "$(
+    printf '%s\n' \
+      'seawire-decode: line 1: bad_hemisphere: RXHRB field 4 (latitude'"'"'s hemisphere letter) "": hemisphere letter is missing (blank)' \
+      'seawire-decode: line 2: bad_longitude: RXHRB field 5 (longitude) "-82.3456789012": a sign is not allowed: the hemisphere letter carries it' \
+      'seawire-decode: line 3: bad_latitude: GPRMC field 3 (latitude) "00.00": DDMM.m needs two minute digits and at least one degree digit before the point' \
+      'seawire-decode: line 4: bad_latitude: GPRMC field 3 (latitude) "-4221.7": a sign is not allowed: the hemisphere letter carries it' \
+      'seawire-decode: line 5: bad_latitude: GPRMC field 3 (latitude) "37.352387": DDMM.m needs two minute digits and at least one degree digit before the point' \
+      'seawire-decode: line 6: bad_hemisphere: CPNVG field 3 (latitude'"'"'s hemisphere letter) "": hemisphere letter is missing (blank)' \
+      'seawire-decode: line 7: checksum_mismatch: checksum does not match the sentence (sent 0a, computed 67) at column 56' \
+      'seawire-decode: line 8: checksum_mismatch: checksum does not match the sentence (sent 42, computed 2A: written in decimal?) at column 63' \
+      'seawire-decode: line 9: bad_length: BPLOG field 1 (code) "ACKS": wrong length: exactly 3 characters' \
+      'seawire-decode: line 10: bad_length: BPLOG field 1 (code) "AC": wrong length: exactly 3 characters'
+  )" "$(grep '^seawire-decode: line' "$work/err")"
+  # The JSON report carries the same words.
+  expect_rc "refused fields, JSON" 1 "$decode" <"$work/in"
+  expect_eq "JSON detail of the blank letter" \
+    '{"line":1,"error":"bad_hemisphere","field":4,"detail":"RXHRB field 4 (latitude'"'"'s hemisphere letter) \"\": hemisphere letter is missing (blank)","input":"'"$(seal RXHRB,101218,161229,29.6412654321,,-82.3456789012,,GATOR,1,1)"'"}' \
+    "$(line 1 "$work/out")"
 }
 
 "case_$case_name"

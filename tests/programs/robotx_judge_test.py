@@ -173,6 +173,33 @@ def case_heartbeat():
         check(not bad, "%s judge: the heartbeats are clean: %r" % (n, bad))
 
 
+def case_reasons():
+    # A refused field is named for what it is, with what is wrong with its text.
+    j = Judge("--duration", "1.5")
+    a = team_socket(j.port)
+    a.sendall(sentence("RXHRB,111221,161229,21.31198,,-157.88972,W,AUVSI,2,1").encode())
+    j.proc.wait(timeout=20)
+    a.close()
+    text = "\n".join(l for _, l in j.out)
+    check("RXHRB field 4 (latitude's hemisphere letter): hemisphere letter is missing (blank)"
+          in text, "the blank letter named and told:\n" + text)
+    check("RXHRB field 5 (longitude): a sign is not allowed: the hemisphere letter carries it"
+          in text, "the sign told:\n" + text)
+    j = Judge("--duration", "1.5", "--report", "json")
+    a = team_socket(j.port)
+    a.sendall(sentence("RXHRB,111221,161229,21.31198,,-157.88972,W,AUVSI,2,1").encode())
+    j.proc.wait(timeout=20)
+    a.close()
+    fields = {f.get("field"): f for f in j.findings()}
+    letter, number = fields.get(4, {}), fields.get(5, {})
+    check(letter.get("field_name") == "latitude" and letter.get("field_part") == "hemisphere letter"
+          and letter.get("error") == "hemisphere letter is missing (blank)",
+          "JSON: the blank letter: %r" % letter)
+    check(number.get("field_name") == "longitude" and "field_part" not in number and
+          number.get("error") == "a sign is not allowed: the hemisphere letter carries it",
+          "JSON: the sign: %r" % number)
+
+
 def case_usage():
     r = subprocess.run([JUDGE, "--help"], capture_output=True, timeout=20)
     check(r.returncode == 0 and b"--team" in r.stdout, "--help")
@@ -183,7 +210,8 @@ def case_usage():
         check(r.returncode != 0 and why in r.stderr, "%r refused: %r" % (args, r.stderr[-200:]))
 
 
-{"live": case_live, "text": case_text, "usage": case_usage, "heartbeat": case_heartbeat}[CASE]()
+{"live": case_live, "text": case_text, "usage": case_usage, "heartbeat": case_heartbeat,
+ "reasons": case_reasons}[CASE]()
 if failures:
     print("%d failure(s)" % len(failures))
     sys.exit(1)

@@ -45,4 +45,18 @@ inline std::uint8_t xor_bytes_simd(const char* p, std::size_t n) noexcept {
   return x;
 }
 
+/// Whether checksum digits as sent (the text after '*') are the XOR `computed` written in
+/// decimal: "82" for 0x52. Digits only, one to three; and not a checksum that reads the same in
+/// both (under 10: "06"), which is a right one.
+[[nodiscard]] constexpr bool written_in_decimal(std::string_view digits,
+                                                std::uint8_t computed) noexcept {
+  if (digits.empty() || digits.size() > 3 || computed < 10) return false;
+  unsigned d = 0;
+  for (const char c : digits) {
+    if (c < '0' || c > '9') return false;
+    d = d * 10 + static_cast<unsigned>(c - '0');
+  }
+  return d == computed;
+}
+
 }  // namespace seawire::nmea

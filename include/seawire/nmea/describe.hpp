@@ -7,10 +7,13 @@
 //   if (!r) std::puts(nmea::describe<kingfisher::to_vehicle>(why, r, line).data());
 //     // PYDIR field 1 (thrust_left) "150": value outside the range the spec allows: -100..100
 //     // checksum does not match the sentence (sent 11, computed 17) at column 14
+//     // RXHRB field 4 (latitude's hemisphere letter) "": hemisphere letter is missing (blank)
 //
-// Which sentence, which field by number and declared name, the text it held, why, and the
-// range or form the field allows where it has one. No allocation: the text is cut to the
-// buffer (and always terminated, so .data() is a C string).
+// Which sentence, which field by number and declared name (and which of a declaration's wire
+// fields: "latitude's hemisphere letter"), the text it held, why (what in the text is wrong,
+// where the field's codec can tell: a sign before a position, DDMM.m without its minute
+// digits), and the range or form the field allows where it has one. No allocation: the text is cut
+// to the buffer (and always terminated, so .data() is a C string).
 
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +22,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/json.hpp"
@@ -89,6 +93,25 @@ constexpr void describe_allowed(text_out& t, errc e, const field_options& o) noe
   }
 }
 
+/// " (sent 0a, computed 67)": the checksum as it was sent (its case kept), and the one the
+/// sentence has. Sent digits that read as a decimal number equal to the computed checksum were
+/// written in decimal by the sender, and are said to be.
+constexpr void describe_checksum(text_out& t, std::string_view line,
+                                 const sentence_view& s) noexcept {
+  const std::size_t star = line.find('*');
+  std::string_view sent =
+      star == std::string_view::npos ? std::string_view{} : line.substr(star + 1);
+  if (sent.size() > 2) sent = sent.substr(0, 2);
+  t.put(" (sent ");
+  if (sent.size() == 2)
+    t.put(sent);
+  else
+    t.hex(s.received_checksum);
+  t.put(", computed ").hex(s.computed_checksum);
+  if (written_in_decimal(sent, s.computed_checksum)) t.put(": written in decimal?");
+  t.put(")");
+}
+
 template <class About>
 constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint16_t field,
                                          std::uint16_t column, std::string_view line,
@@ -105,10 +128,7 @@ constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint1
   if (!framing && s && field == 0) return t.put(s.value.address).put(": ").put(message(e)).view();
   if (field == 0 || !s) {
     t.put(message(e));
-    if (e == errc::checksum_mismatch && s) {
-      t.put(" (sent ").hex(s.value.received_checksum).put(", computed ");
-      t.hex(s.value.computed_checksum).put(")");
-    }
+    if (e == errc::checksum_mismatch && s) describe_checksum(t, line, s.value);
     if (e == errc::trailing_characters && column < line.size()) {
       // What stands after the checksum, without the one line ending parse() takes off; bytes
       // that are not printable ASCII as \xHH.
@@ -130,9 +150,16 @@ constexpr std::string_view describe_with(std::span<char> out, errc e, std::uint1
   }
   const field_about a = about(s.value.address, field, s.value.field_count);
   t.put(s.value.address).put(" field ").put(std::uint64_t{field});
-  if (a.found) t.put(" (").put(a.name).put(")");
+  if (a.found) {
+    t.put(" (").put(a.name);
+    if (!a.part.empty()) t.put("'s ").put(a.part);
+    t.put(")");
+  }
   const field_token tok = s.value.field(field);
   if (tok.present) t.put(" \"").put(tok.text).put("\"");
+  // What the text shows is wrong, where the field's codec can tell; else the error's words.
+  const std::string_view why = a.explain != nullptr ? a.explain(a.part_index, e, tok.text) : "";
+  if (!why.empty()) return t.put(": ").put(why).view();
   t.put(": ").put(message(e));
   if (a.found) describe_allowed(t, e, a.opts);
   return t.view();

@@ -627,12 +627,42 @@ template <message_like T>
 }
 
 /// What a message's description says of wire field `n`: its declared name and options (found
-/// false when the message has no such field).
+/// false when the message has no such field). A declaration spanning several wire fields (a
+/// position and its hemisphere letter, a value and its unit letter) names each one after the
+/// first by `part` ("hemisphere letter", "unit letter"; empty for the first), so that a field
+/// is called what it is: "latitude's hemisphere letter". `explain`, when the field's codec has
+/// one, tells from a refused text what is wrong with it (see describe()).
 struct field_about {
   std::string_view name;
   field_options opts{};
   bool found = false;
+  std::string_view part;    ///< the wire field within the declaration, after its first
+  unsigned part_index = 0;  ///< 0 for the declaration's first wire field
+  /// codec<V>::explain(part_index, error, text): why `text` was refused, or "" when the text
+  /// shows nothing more than the error says.
+  std::string_view (*explain)(unsigned, errc, std::string_view) noexcept = nullptr;
 };
+
+namespace detail {
+/// field_about for wire field `k` (0-based) of declaration `d`.
+template <class D>
+[[nodiscard]] constexpr field_about about_part(const D& d, unsigned k) noexcept {
+  using V = typename D::value_type;
+  field_about a;
+  a.name = d.name;
+  a.opts = d.opts;
+  a.found = true;
+  a.part_index = k;
+  if (k >= codec<V>::width) {
+    a.part = "unit letter";  // the unit option's field follows the codec's
+  } else if constexpr (requires { codec<V>::part_name(k); }) {
+    a.part = codec<V>::part_name(k);
+  }
+  if constexpr (requires { codec<V>::explain(k, errc::ok, std::string_view{}); })
+    if (k < codec<V>::width) a.explain = &codec<V>::explain;
+  return a;
+}
+}  // namespace detail
 
 /// Wire field `n` of T (field_count as field_name's).
 template <message_like T>
@@ -643,14 +673,16 @@ template <message_like T>
   T::nmea.fields.apply([&](const auto&... d) {
     (void)(((d.opts.only_with_field_count != 0 && field_count < d.opts.only_with_field_count)
                 ? false
-                : (n >= first && n < first + d.width() ? (a = {d.name, d.opts, true}, true)
-                                                       : (first += d.width(), false))) ||
+                : (n >= first && n < first + d.width()
+                       ? (a = detail::about_part(d, static_cast<unsigned>(n - first)), true)
+                       : (first += d.width(), false))) ||
            ...);
   });
   return a;
 }
 
-/// The declared name of the field that holds wire field `n` (1-based), or "" if none.
+/// The declared name of the field that holds wire field `n` (1-based), or "" if none (a
+/// declaration's later wire fields have its name: about_field's `part` tells them apart).
 /// Numbered as in the longest form of the sentence; give the sentence's field count (e.g.
 /// sentence_view::field_count) to number a shorter form as it came: a five-field CPRBS has no
 /// battery id, so its field 2 is the stack voltage.

@@ -67,6 +67,18 @@ template <class T>
   }
 }
 
+/// A text longer than its member holds, in a field that declares its length (length_between,
+/// exact_length) no longer than that: it breaks the declared rule, and gets the error a text
+/// too short gets (bad_length), not text_too_long.
+template <class V>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc length_rule(errc e,
+                                                               const field_options& o) noexcept {
+  if constexpr (is_text_field<V>) {
+    if (e == errc::text_too_long && o.max_length <= V::capacity) return errc::bad_length;
+  }
+  return e;
+}
+
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc read_unit(field_reader& r,
                                                              const field_options& o,
                                                              bool value_present) noexcept {
@@ -163,7 +175,7 @@ template <class F, class T>
     }
     // Read in place: a value built on the side and copied in would be copied through the
     // stack in wide loads that wait on the narrow stores that just wrote it.
-    errc e = read_value<T>(r, m.emplace());
+    errc e = length_rule<V>(read_value<T>(r, m.emplace()), o);
     if (e == errc::ok) e = check_options(*m, o);
     if (e == errc::ok) e = read_unit(r, o, true);
     if (e != errc::ok) clear_optional(m);
@@ -178,7 +190,7 @@ template <class F, class T>
       (void)r.take();
       return errc::missing_field;
     }
-    errc e = read_value<T>(r, m);
+    errc e = length_rule<V>(read_value<T>(r, m), o);
     if (e == errc::ok) e = check_options(m, o);
     if (e == errc::ok) e = read_unit(r, o, true);
     return e;

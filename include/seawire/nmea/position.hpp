@@ -31,6 +31,21 @@ struct axis {
 };
 using lat_axis = axis<'N', 'S', 90, 2, errc::bad_latitude>;
 using lon_axis = axis<'E', 'W', 180, 3, errc::bad_longitude>;
+
+/// Why a position's hemisphere letter was refused, for describe().
+template <class Axis>
+[[nodiscard]] constexpr std::string_view explain_hemisphere(std::string_view text) noexcept {
+  if (text.empty()) return "hemisphere letter is missing (blank)";
+  return Axis::positive == 'N' ? "hemisphere letter is not N or S"
+                               : "hemisphere letter is not E or W";
+}
+/// A sign before a position whose letter says which side it is.
+inline constexpr std::string_view signed_position =
+    "a sign is not allowed: the hemisphere letter carries it";
+template <class Axis>
+[[nodiscard]] constexpr std::string_view beyond_degrees() noexcept {
+  return Axis::max_degrees == 90 ? "beyond 90 degrees" : "beyond 180 degrees";
+}
 }  // namespace detail
 
 /// A position in NMEA form: whole degrees, decimal minutes, hemisphere letter (two wire fields,
@@ -294,6 +309,51 @@ struct codec<nmea_coordinate<Axis>> {
     return e == errc::bad_hemisphere ? 1 : 0;
   }
 
+  /// The wire fields after the first, as about_field names them.
+  [[nodiscard]] static constexpr std::string_view part_name(unsigned k) noexcept {
+    return k == 1 ? "hemisphere letter" : "";
+  }
+  /// Why read() refused `text` (wire field `k` of the two), from the text itself: a sign, the
+  /// digits before the point that are not DDMM (two minute digits after one to Axis::width
+  /// degree digits: decimal degrees "37.352387" are not), a character that is no digit or
+  /// point, too many fraction digits, none (refused under a strict policy), degrees beyond the
+  /// axis; "" when the text shows nothing more than `e` says.
+  [[nodiscard]] static constexpr std::string_view explain(unsigned k, errc e,
+                                                          std::string_view text) noexcept {
+    if (k == 1) return e == errc::bad_hemisphere ? detail::explain_hemisphere<Axis>(text) : "";
+    if (e != Axis::error || text.empty()) return "";
+    if (text[0] == '-' || text[0] == '+') return detail::signed_position;
+    std::size_t i = 0;
+    std::uint64_t ddmm = 0;
+    for (; i < text.size() && seawire::detail::is_digit(text[i]); ++i)
+      if (i < 19) ddmm = ddmm * 10 + static_cast<unsigned>(text[i] - '0');  // more: too many
+    const std::size_t point = i;
+    std::size_t places = 0;
+    bool has_point = false;
+    bool fraction = false;  // a digit after the point other than 0
+    if (i < text.size() && text[i] == '.') {
+      has_point = true;
+      for (++i; i < text.size() && seawire::detail::is_digit(text[i]); ++i) {
+        fraction = fraction || text[i] != '0';
+        ++places;
+      }
+    }
+    if (i != text.size()) return "DDMM.m holds only digits and one decimal point";
+    if (point < 3)
+      return "DDMM.m needs two minute digits and at least one degree digit before the point";
+    if (point - 2 > Axis::width)
+      return Axis::width == 2 ? "DDMM.m has at most 2 degree digits before the minutes"
+                              : "DDDMM.m has at most 3 degree digits before the minutes";
+    if (places > 12) return "more than 12 fraction digits of a minute";
+    if (places == 0)
+      return has_point ? "no digit after the point: DDMM.m is sent with at least one"
+                       : "no fraction: DDMM.m is sent with at least one digit after the point";
+    if (ddmm / 100 > Axis::max_degrees ||
+        (ddmm / 100 == Axis::max_degrees && (ddmm % 100 != 0 || fraction)))
+      return detail::beyond_degrees<Axis>();
+    return "";
+  }
+
   template <class A>
   static constexpr errc read_hemisphere(field_reader& r, hemisphere& h) noexcept {
     const field_token t = r.take();
@@ -337,6 +397,21 @@ struct codec<decimal_coordinate<Axis>> {
     return nmea::template check_hemisphere<Axis>(v.hemi);
   }
   static constexpr unsigned error_offset(errc e) noexcept { return nmea::error_offset(e); }
+  [[nodiscard]] static constexpr std::string_view part_name(unsigned k) noexcept {
+    return nmea::part_name(k);
+  }
+  /// Why read() refused `text`: a sign, no decimal number, degrees beyond the axis (see the
+  /// DDMM.m codec's explain).
+  [[nodiscard]] static constexpr std::string_view explain(unsigned k, errc e,
+                                                          std::string_view text) noexcept {
+    if (k == 1) return e == errc::bad_hemisphere ? detail::explain_hemisphere<Axis>(text) : "";
+    if (e != Axis::error || text.empty()) return "";
+    if (text[0] == '-' || text[0] == '+') return detail::signed_position;
+    decimal d;
+    if (detail::parse_decimal(text, false, d) != errc::ok) return "not a number of decimal degrees";
+    if (d.compare(decimal(Axis::max_degrees)) > 0) return detail::beyond_degrees<Axis>();
+    return "";
+  }
   static constexpr void write(writer& w, const value_type& v) noexcept {
     detail::write_decimal(w, v.value);
     w.next_field();

@@ -124,6 +124,19 @@ struct codec<magnetic_variation> {
   static constexpr unsigned error_offset(errc e) noexcept {
     return e == errc::bad_variation_direction ? 1 : 0;
   }
+  /// The wire fields after the first, as about_field names them.
+  [[nodiscard]] static constexpr std::string_view part_name(unsigned k) noexcept {
+    return k == 1 ? "direction letter" : "";
+  }
+  /// Why read() refused `text` (wire field `k` of the two): a sign, a blank letter.
+  [[nodiscard]] static constexpr std::string_view explain(unsigned k, errc e,
+                                                          std::string_view text) noexcept {
+    if (k == 1 && e == errc::bad_variation_direction && text.empty())
+      return "magnetic variation letter is missing (blank)";
+    if (k == 0 && e == errc::bad_variation && !text.empty() && (text[0] == '-' || text[0] == '+'))
+      return "a sign is not allowed: the E/W letter carries it";
+    return "";
+  }
   static constexpr void write(writer& w, const magnetic_variation& v) noexcept {
     if (v.value) detail::write_decimal(w, *v.value);
     w.next_field();

@@ -40,6 +40,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
@@ -470,7 +471,7 @@ class validator {
 
     // Checksum.
     if (!digits.empty()) {
-      if (decimal_checksum(digits, sv.computed_checksum))
+      if (nmea::written_in_decimal(digits, sv.computed_checksum))
         add(rule::checksum_decimal, 0, errc::bad_checksum_format);
       else
         add(rule::checksum, 0, checksum_error);  // malformed, or characters after it
@@ -480,7 +481,8 @@ class validator {
     } else {
       const std::string_view hex = line.substr(detail::star_of(line) + 1);
       if (sv.checksum == nmea::checksum_state::mismatch)
-        add(decimal_checksum(hex, sv.computed_checksum) ? rule::checksum_decimal : rule::checksum,
+        add(nmea::written_in_decimal(hex, sv.computed_checksum) ? rule::checksum_decimal
+                                                                : rule::checksum,
             0, errc::checksum_mismatch);
       if (config_.flag_lowercase_checksum && has_lowercase(hex))
         add(rule::checksum_lowercase, 0, errc::ok);
@@ -518,18 +520,6 @@ class validator {
       if (c >= 'a' && c <= 'f') return true;
     return false;
   }
-  /// Digits that, read as a decimal number, give the XOR (and not also as hex: "06" is fine).
-  [[nodiscard]] static constexpr bool decimal_checksum(std::string_view digits,
-                                                       std::uint8_t computed) noexcept {
-    if (digits.empty() || digits.size() > 3) return false;
-    unsigned d = 0;
-    for (char c : digits) {
-      if (!seawire::detail::is_digit(c)) return false;
-      d = d * 10 + static_cast<unsigned>(c - '0');
-    }
-    return d == computed && computed >= 10;
-  }
-
   validator_config config_;
   validator_totals totals_;
   std::array<std::optional<instant>, report_type_count> last_seen_{};
