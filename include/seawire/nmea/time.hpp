@@ -176,13 +176,23 @@ struct codec<time_of_day> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 16;  // hhmmss.fffffffff
   static constexpr bool allows_blank = false;
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
-    return read_form<false>(r, v);
-  }
-  /// read(), and second 60 with a fraction of zeros at any minute (number_forms::rounded_seconds).
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read_rounded_seconds(field_reader& r,
-                                                                   time_of_day& v) noexcept {
-    return read_form<true>(r, v);
+
+  // The templates come first: clang (14) cannot evaluate, in a constant expression, a member
+  // template of this explicit specialization that is defined after the function calling it.
+
+  /// check(), and with RoundedSeconds second 60 with a fraction of zeros at any minute.
+  template <bool RoundedSeconds>
+  SEAWIRE_ALWAYS_INLINE static constexpr errc check_form(const time_of_day& v) noexcept {
+    if (v.hour > 23) [[unlikely]]
+      return errc::hour_out_of_range;
+    if (v.minute > 59) [[unlikely]]
+      return errc::minute_out_of_range;
+    if (v.second > 60 || (v.second == 60 && !(v.hour == 23 && v.minute == 59) &&
+                          !(RoundedSeconds && v.fraction == 0)))
+      return errc::second_out_of_range;
+    if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places]) [[unlikely]]
+      return errc::bad_time;
+    return errc::ok;
   }
   template <bool RoundedSeconds>
   SEAWIRE_ALWAYS_INLINE static constexpr errc read_form(field_reader& r, time_of_day& v) noexcept {
@@ -205,22 +215,17 @@ struct codec<time_of_day> {
          static_cast<std::uint8_t>(two[2]), frac, static_cast<std::uint8_t>(places)};
     return check_form<RoundedSeconds>(v);
   }
+
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
+    return read_form<false>(r, v);
+  }
+  /// read(), and second 60 with a fraction of zeros at any minute (number_forms::rounded_seconds).
+  SEAWIRE_ALWAYS_INLINE static constexpr errc read_rounded_seconds(field_reader& r,
+                                                                   time_of_day& v) noexcept {
+    return read_form<true>(r, v);
+  }
   SEAWIRE_ALWAYS_INLINE static constexpr errc check(const time_of_day& v) noexcept {
     return check_form<false>(v);
-  }
-  /// check(), and with RoundedSeconds second 60 with a fraction of zeros at any minute.
-  template <bool RoundedSeconds>
-  SEAWIRE_ALWAYS_INLINE static constexpr errc check_form(const time_of_day& v) noexcept {
-    if (v.hour > 23) [[unlikely]]
-      return errc::hour_out_of_range;
-    if (v.minute > 59) [[unlikely]]
-      return errc::minute_out_of_range;
-    if (v.second > 60 || (v.second == 60 && !(v.hour == 23 && v.minute == 59) &&
-                          !(RoundedSeconds && v.fraction == 0)))
-      return errc::second_out_of_range;
-    if (v.places > 9 || v.fraction >= seawire::detail::pow10_table[v.places]) [[unlikely]]
-      return errc::bad_time;
-    return errc::ok;
   }
   static constexpr void write(writer& w, const time_of_day& v) noexcept {
     w.put_uint(v.hour, 2);
