@@ -322,7 +322,7 @@ struct number_forms {
   /// A DDMM.m position printed as the number degrees * 100 + minutes, unpadded: under one
   /// degree it has at most two digits before the point, all of them minutes ("22.2,W" is
   /// 0 deg 22.2 min W, "44.598,S" 0 deg 44.598 min S, "0,S" and "00.00,N" zero). Decoded as
-  /// zero degrees and written back as it came (latitude::degree_digits 0).
+  /// zero degrees and written back as it came (nmea_coordinate::unpadded).
   bool unpadded_positions = false;
   /// "nan", in any case and with or without a sign (what printf writes for a value the sender
   /// does not have), in an optional number field: not available (nullopt), and the rest of the

@@ -220,7 +220,7 @@ struct codec<nmea_coordinate<Axis>> {
   }
   /// read(), and also the unpadded form of a sender that prints degrees * 100 + minutes as a
   /// number (number_forms::unpadded_positions): one or two digits before the point are minutes
-  /// of zero degrees ("22.2" is 0 deg 22.2 min), kept as written (degree_digits 0, the minutes'
+  /// of zero degrees ("22.2" is 0 deg 22.2 min), kept as written (unpadded set, the minutes'
   /// int_width the digits they had).
   SEAWIRE_ALWAYS_INLINE static constexpr errc read_unpadded(field_reader& r,
                                                             value_type& v) noexcept {
