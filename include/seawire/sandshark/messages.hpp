@@ -353,10 +353,7 @@ inline constexpr nmea::parse_policy from_vehicle_policy{.checksum = nmea::checks
 inline constexpr nmea::parse_policy to_vehicle_policy{
     .checksum = nmea::checksum_policy::verify_if_present, .spaced_numbers = true};
 
-// The role decoders below are function templates of nothing (`template <int N = 0>`, their
-// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
-// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
-// as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode a line the vehicle sent; an address the set does not know is unknown_sentence.
 template <int N = 0>
 [[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
