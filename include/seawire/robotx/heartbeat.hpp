@@ -92,8 +92,7 @@ class scheduler {
   /// The heartbeat content, once status() has been given.
   [[nodiscard]] constexpr const std::optional<rxhrb>& status() const noexcept { return heartbeat_; }
 
-  // status(), submit() and poll() are function templates of nothing, like the role decoders:
-  // the encoders they run are compiled only where they are called. Call them as plain functions.
+  // status(), submit() and poll() are templates of nothing, like the role decoders (nmea::lazy).
   template <int N = 0>
   [[nodiscard]] constexpr submit_result submit(const rxgat& m, instant now) noexcept {
     return submit_one<nmea::lazy<rxgat, N>>(m, now);

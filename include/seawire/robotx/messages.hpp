@@ -83,8 +83,7 @@ struct light_pattern {
   std::array<color, 3> colors{};
 
   /// From text such as "RGB": bad_length unless three letters, bad_enum for any other than R/B/G.
-  /// (A function template of nothing, so that color's letters are read only where it is used;
-  /// call it as a plain function.)
+  /// (A template of nothing: color's letters are read only where it is used.)
   template <int N = 0>
   [[nodiscard]] static constexpr result<light_pattern> from(std::string_view s) noexcept {
     result<light_pattern> r;
@@ -285,10 +284,7 @@ inline constexpr report_type report_type_of = report_traits<M>::type;
   return std::nullopt;
 }
 
-// The role decoders below are function templates of nothing (`template <int N = 0>`, their
-// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
-// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
-// as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode one line into whichever report it is, under the judges' policy by default. A
 /// well-formed sentence with another address gives unknown_sentence (not an error).
 template <int N = 0>

@@ -241,8 +241,7 @@ class validator {
   }
 
   /// Judge one received line (with or without its line ending) that arrived at `at`. (A
-  /// function template of nothing, like the role decoders: the decoders it runs are compiled
-  /// only where it is called. Call it as a plain function.)
+  /// template of nothing, like the role decoders: nmea::lazy.)
   template <int N = 0>
   [[nodiscard]] constexpr verdict check(std::string_view line, instant at) noexcept {
     verdict v;
