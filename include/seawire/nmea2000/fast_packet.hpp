@@ -4,8 +4,8 @@
 // Byte 0 of each frame: sequence counter (bits 7-5, per packet, modulo 8) and frame number (bits
 // 4-0); frame 0 has the length in byte 1 and payload bytes 0-5, frame k >= 1 bytes
 // 6 + 7(k-1) .. 6 + 7k - 1; the last frame padded with 0xFF or shortened. The assembler takes
-// interleaved sources and PGNs, frames in any order except frame 0 after all the others, in fixed slots,
-// and accounts for every frame: frames_in() == frames_assembled() + frames_dropped() +
+// interleaved sources and PGNs in fixed slots, frames in any order except frame 0 after all the
+// others, and accounts for every frame: frames_in() == frames_assembled() + frames_dropped() +
 // frames_pending(). Drop reasons and the ordering rule: docs/nmea2000.md.
 
 #include <algorithm>
