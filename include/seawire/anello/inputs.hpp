@@ -48,9 +48,7 @@ inline constexpr nmea::parse_policy input_policy{
 /// feeds the vehicle's own navigation).
 inline constexpr nmea::parse_policy output_policy = input_policy;
 
-// The role decoders below are function templates of nothing (see nmea::lazy): a file that
-// includes this header compiles a role's decoder only if it calls it, which keeps including
-// seawire/seawire.hpp cheap. Call them as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode one line as the INS would. Sentences it does not take come back as unknown_sentence,
 /// not as an error.
 template <int N = 0>
