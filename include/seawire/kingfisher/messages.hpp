@@ -26,12 +26,9 @@ namespace seawire::kingfisher {
 // ---------------------------------------------------------------------------------------------
 // from the vehicle
 
-/// How the Clearpath vehicle prints its numbers (a C float format, not NMEA 0183): positions as
-/// degrees * 100 + minutes without padding, so within one degree of the equator or the prime
-/// meridian "22.2,W" (0 deg 22.2 min W) and at 0,0 "0,S,0,W"; and "nan" for a value it does not
-/// have (velocities when nearly stopped), read as not available with the rest of the sentence
-/// kept; and seconds rounded up to "60.000" ("%06.3f" of hh:mm:59.9995). Every CP* sentence
-/// declares them; the relayed GPRMC/GPGGA do not.
+/// How the Clearpath vehicle prints its numbers (a C float format): unpadded positions ("22.2,W"
+/// is 0 deg 22.2 min W), "nan" for no value, seconds rounded up to "60.000"
+/// (docs/parse-policy.md). Every CP* sentence declares them; the relayed GPRMC/GPGGA do not.
 inline constexpr nmea::number_forms vehicle_numbers{
     .unpadded_positions = true, .nan_as_blank = true, .rounded_seconds = true};
 
@@ -169,12 +166,8 @@ struct cpalt {
 };
 
 // ---------------------------------------------------------------------------------------------
-// to the vehicle
-//
-// The helpers below build a command from doubles, rounding each number to `places` fraction
-// digits (decimal::from_double: NaN and infinities give errc::not_finite with the field
-// number). They do not check the spec's ranges: encode does, once, from the description, and
-// names the field it refused.
+// to the vehicle. The helpers below round doubles (decimal::from_double: not_finite names the
+// field); the spec's ranges are checked by encode, once, from the description.
 
 namespace detail {
 template <class T>
@@ -305,10 +298,8 @@ using from_vehicle =
 /// What a vehicle hears: the PY* commands.
 using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
 
-/// How a payload reads the vehicle: "sentences sent FROM the vehicle will always include a
-/// checksum", so one is required; the vehicle writes every field (a blank one is "no data",
-/// spec 2.4), so a sentence that stops early is too_few_fields. Otherwise the common liberal
-/// defaults.
+/// How a payload reads the vehicle: a checksum required (the vehicle always sends one) and every
+/// field (a sentence that stops early is too_few_fields; a blank one is "no data", spec 2.4).
 [[nodiscard]] constexpr nmea::parse_policy payload_policy() noexcept {
   nmea::parse_policy p;
   p.checksum = nmea::checksum_policy::required;
@@ -316,9 +307,8 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
   return p;
 }
 
-/// How a vehicle reads payloads: "sentences sent TO the vehicle may or may not include a
-/// checksum"; one that is present must match. Without one, "the carriage return and linefeed
-/// must immediately follow the * character", so a bare '*' is read as no checksum.
+/// How a vehicle reads payloads: a checksum is optional but must match; a bare '*' before CR LF
+/// is no checksum, as the spec writes one.
 [[nodiscard]] constexpr nmea::parse_policy vehicle_policy() noexcept {
   nmea::parse_policy p;
   p.checksum = nmea::checksum_policy::verify_if_present;
@@ -326,10 +316,7 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
   return p;
 }
 
-// The role decoders below are function templates of nothing (`template <int N = 0>`, their
-// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
-// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
-// as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Payload side: one line from the vehicle. Addresses outside `from_vehicle` (PY*, other
 /// GPS sentences) give unknown_sentence, which views into `line`.
 template <int N = 0>
