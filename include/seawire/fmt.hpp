@@ -99,16 +99,21 @@ concept fmt_value = std::is_same_v<T, nmea::decimal> || std::is_same_v<T, nmea::
 
 }  // namespace seawire::detail
 
-/// Messages: "{}" is TYPE{field=value, ...}; "{:j}" one JSON object.
-template <seawire::nmea::message_like T>
-struct fmt::formatter<T> : seawire::detail::fmt_spec {
+/// Messages of every wire (a sentence, a PGN, the 0xAB00 frame): "{}" is TYPE{field=value, ...};
+/// "{:j}" one JSON object (a PGN's without the frame's header: nmea2000::write_json(sink, msg)).
+template <seawire::walkable M>
+struct fmt::formatter<M> : seawire::detail::fmt_spec {
   template <class FormatContext>
-  auto format(const T& msg, FormatContext& ctx) const {
+  auto format(const M& msg, FormatContext& ctx) const {
     seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
-    if (json) {
-      seawire::nmea::write_json(s, msg);
-    } else {
+    if (!json) {
       seawire::detail::write_plain(s, msg);
+    } else if constexpr (seawire::nmea::message_like<M>) {
+      seawire::nmea::write_json(s, msg);
+    } else if constexpr (seawire::nmea2000::pgn_like<M>) {
+      seawire::nmea2000::write_json(s, msg);
+    } else {
+      seawire::anello::write_json(s, msg);
     }
     return s.out;
   }
@@ -155,37 +160,6 @@ struct fmt::formatter<seawire::nmea::text<N>> : seawire::detail::fmt_spec {
       seawire::nmea::write_json_value(s, v);
     } else {
       s.put(v.view());
-    }
-    return s.out;
-  }
-};
-
-/// NMEA 2000 messages: "{}" is PGN<n>{field=value, ...}; "{:j}" one JSON object without the
-/// frame's header (nmea2000::write_json(sink, msg)).
-template <seawire::nmea2000::pgn_like P>
-struct fmt::formatter<P> : seawire::detail::fmt_spec {
-  template <class FormatContext>
-  auto format(const P& msg, FormatContext& ctx) const {
-    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
-    if (json) {
-      seawire::nmea2000::write_json(s, msg);
-    } else {
-      seawire::detail::write_plain(s, msg);
-    }
-    return s.out;
-  }
-};
-
-/// The ANELLO 0xAB00 frame: "{}" is AB00{heading_deg=89, ...}; "{:j}" anello::write_json's object.
-template <>
-struct fmt::formatter<seawire::anello::sensor_frame_raw> : seawire::detail::fmt_spec {
-  template <class FormatContext>
-  auto format(const seawire::anello::sensor_frame_raw& frame, FormatContext& ctx) const {
-    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
-    if (json) {
-      seawire::anello::write_json(s, frame);
-    } else {
-      seawire::detail::write_plain(s, frame);
     }
     return s.out;
   }

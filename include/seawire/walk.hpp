@@ -65,6 +65,18 @@ enum class position_axis : std::uint8_t { none, latitude, longitude };
 using field_state = nmea2000::field_state;
 
 namespace detail {
+/// What a field of a binary wire (a PGN's, the frame's) is on the wire: row I (numbered from 1)
+/// of a table whose rows follow each other, at `Offset` bits, `Bits` wide, in byte order `Order`.
+template <wire_kind Kind, byte_order Order, std::size_t I, unsigned Offset, unsigned Bits>
+struct binary_field {
+  static constexpr wire_kind kind = Kind;
+  static constexpr std::uint16_t number = static_cast<std::uint16_t>(I + 1);
+  static constexpr unsigned wire_fields = 1;
+  static constexpr unsigned bit_offset = Offset;
+  static constexpr unsigned bits = Bits;
+  static constexpr byte_order order = Order;
+};
+
 /// The unit a field's name ends with, by seawire's naming rule (speed_water_mps, heading_deg,
 /// altitude_m); "" for a name that ends with no unit.
 [[nodiscard]] constexpr std::string_view unit_of_name(std::string_view name) noexcept {
@@ -202,20 +214,17 @@ struct row_value<Row, true> {
 
 /// Row I of PGN P's table, for the walk (walk.hpp).
 template <class P, std::size_t I>
-struct walk_field {
-  using rows = std::remove_cvref_t<decltype(P::n2k.fields)>;
-  using row_type = std::tuple_element_t<I, rows>;
+struct walk_field
+    : seawire::detail::binary_field<
+          wire_kind::nmea2000, byte_order::little_endian, I,
+          detail::row_offset<std::remove_cvref_t<decltype(P::n2k.fields)>, I>(),
+          std::tuple_element_t<I, std::remove_cvref_t<decltype(P::n2k.fields)>>::bits> {
+  using row_type = std::tuple_element_t<I, std::remove_cvref_t<decltype(P::n2k.fields)>>;
   static constexpr const auto& desc = std::get<I>(P::n2k.fields);
   using value_type = typename detail::row_value<row_type>::type;
   static constexpr bool by_value = false;
-  static constexpr wire_kind kind = wire_kind::nmea2000;
   static constexpr std::string_view name = desc.name;
   static constexpr std::string_view key = desc.name;
-  static constexpr std::uint16_t number = static_cast<std::uint16_t>(I + 1);
-  static constexpr unsigned wire_fields = 1;
-  static constexpr unsigned bit_offset = detail::row_offset<rows, I>();
-  static constexpr unsigned bits = row_type::bits;
-  static constexpr byte_order order = byte_order::little_endian;
   static constexpr position_axis axis = position_axis::none;
   static constexpr bool reserved = row_type::is_reserved;
 
@@ -255,20 +264,17 @@ struct frame_value {
 
 /// Field I of the frame's table (anello::sensor_fields), for the walk (walk.hpp).
 template <std::size_t I>
-struct walk_field {
+struct walk_field : seawire::detail::binary_field<
+                        wire_kind::anello_frame, byte_order::big_endian, I,
+                        8 * static_cast<unsigned>(std::get<I>(sensor_fields).offset),
+                        std::remove_cvref_t<decltype(std::get<I>(sensor_fields))>::bits> {
   static constexpr const auto& desc = std::get<I>(sensor_fields);
   using desc_type = std::remove_cvref_t<decltype(desc)>;
   using value_type = frame_value<typename desc_type::raw_type, detail::divisor_places(desc.divisor),
                                  std::is_same_v<typename desc_type::value_type, time_ms>>;
   static constexpr bool by_value = true;
-  static constexpr wire_kind kind = wire_kind::anello_frame;
   static constexpr std::string_view name = desc.name;
   static constexpr std::string_view key = desc.json_key;
-  static constexpr std::uint16_t number = static_cast<std::uint16_t>(I + 1);
-  static constexpr unsigned wire_fields = 1;
-  static constexpr unsigned bit_offset = 8 * static_cast<unsigned>(desc.offset);
-  static constexpr unsigned bits = desc_type::bits;
-  static constexpr byte_order order = byte_order::big_endian;
   static constexpr position_axis axis =
       seawire::detail::same_member<desc_type::value_member, &sensor_values::latitude_deg>
           ? position_axis::latitude
