@@ -12,7 +12,9 @@
 // signed decimal degrees, times "hh:mm:ss.sss", dates "YYYY-MM-DD", enums their wire spelling,
 // flags true/false. A blank or not-available field is an empty cell (so is blank text), which
 // pandas reads as NaN and R as NA. No "type" column: a table holds one type (its file name or
-// the caller says which).
+// the caller says which). The header and the rows of every wire's tables (PGNs, the 0xAB00 frame
+// too) are seawire::write_csv_columns and write_csv_cells, loops over the walk (walk.hpp); each
+// wire gives its cells' text (put_csv_value).
 
 #include <string_view>
 #include <type_traits>

@@ -29,6 +29,12 @@
 //   std::optional     null when blank or absent on the wire
 //   anything else     with a codec: its wire text as a string (RobotX light pattern: "RGB")
 //
+// Every message of every wire (sentences here, NMEA 2000 PGNs in nmea2000/json.hpp, the 0xAB00
+// frame in anello/frame_json.hpp) is written by one loop over the walk of its fields (walk.hpp):
+// seawire::write_json_object writes the wire's head, then `,"key":value` per field
+// (write_json_fields, keys made at compile time), then '}'; each wire gives only its head and its
+// values' text (put_field_value). write_plain_fields is the same loop for fmt's "{}".
+//
 // Reading (read_json<T>): each field from a json_value (kind + text, strings unescaped); absent
 // or null is "blank" (nullopt; an error for a required field except text, where it is ""). Numbers
 // may also come as strings, booleans as 0/1, times also as "hhmmss.sss", dates as "ddmmyy". The
