@@ -585,9 +585,11 @@ class decoder {
     nmea::json_buffer<16> type_buf;
     if (!opt_.types.empty() && !wanted(type_of(s, msg, type_buf))) return;
     if (opt_.fmt == format::nmea && !reencode(l, s, msg)) return;
-    // The type names tables and tracks; JSON has it from the message itself.
+    // The type names tables and tracks; the other formats have no use for it.
     std::string_view type = type_buf.view();
-    if (type.empty() && opt_.fmt != format::json) type = type_of(s, msg, type_buf);
+    if (type.empty() &&
+        (opt_.fmt == format::csv || opt_.fmt == format::geojson || opt_.fmt == format::svg))
+      type = type_of(s, msg, type_buf);
     deliver(type, s.address, msg, nullptr);
   }
 
