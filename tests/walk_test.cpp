@@ -70,6 +70,31 @@ std::vector<seen> layout() {
   return out;
 }
 
+// The walk and the writers over it are constant expressions.
+constexpr std::size_t available(const anello::sensor_frame_raw& f) {
+  std::size_t n = 0;
+  visit_fields(f, [&](const auto& v) {
+    if (v.has_value()) ++n;
+  });
+  return n;
+}
+static_assert(available(anello::sensor_frame_raw{}) == 0);
+static_assert([] {
+  anello::sensor_frame_raw f;
+  f.heading = 1;
+  f.pressure = 1013;
+  return available(f);
+}() == 2);
+static_assert([] {
+  nmea::json_buffer<256> out;
+  nmea2000::speed_water_referenced m;
+  m.sid = nmea2000::unsigned_number<8>::from_raw(3);
+  nmea2000::write_json(out, m);
+  return out.view() ==
+         "{\"type\":\"PGN128259\",\"sid\":3,\"speed_water_mps\":null,\"speed_ground_mps\":null,"
+         "\"speed_type\":null,\"speed_direction\":null}";
+}());
+
 }  // namespace
 
 TEST_CASE("walk: a sentence's fields in wire order, with wire field numbers and states") {
