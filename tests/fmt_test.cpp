@@ -131,14 +131,13 @@ TEST_CASE("NMEA 2000 messages and field values") {
 }
 
 TEST_CASE("the ANELLO 0xAB00 frame: plain and JSON") {
-  anello::sensor_frame_raw f;
-  f.heading = 89;
-  f.lat = 32828671;
-  f.lon = -117229926;
-  f.sog = 0;
-  f.gps_time_ms = 0x00000190794363D0;
-  f.gga_quality = 4;
-  f.air_temp = 215;
+  const anello::sensor_frame_raw f{.heading = 89,
+                                   .lat = 32828671,
+                                   .lon = -117229926,
+                                   .sog = 0,
+                                   .gps_time_ms = 0x00000190794363D0,
+                                   .gga_quality = 4,
+                                   .air_temp = 215};
   const std::string plain = fmt::format("{}", f);
   CHECK(
       plain.starts_with("AB00{heading_deg=89, latitude_deg=32.828671, longitude_deg=-117.229926, "
