@@ -48,17 +48,6 @@ inline constexpr std::string_view frame_json_type = "AB00";
 
 namespace detail {
 
-/// A sensor field's raw wire value as the decimal it stands for (raw / divisor, exactly).
-template <class Field>
-[[nodiscard]] constexpr nmea::decimal raw_decimal(const Field& field,
-                                                  typename Field::raw_type raw) noexcept {
-  nmea::decimal d;
-  d.negative = raw < 0;
-  d.mantissa = seawire::detail::magnitude(raw);
-  d.places = static_cast<std::uint8_t>(divisor_places(field.divisor));
-  return d;
-}
-
 // Civil date of days since 1970-01-01 (proleptic Gregorian; Howard Hinnant's algorithm).
 struct civil {
   std::int64_t year;
@@ -211,12 +200,10 @@ constexpr std::string_view describe(std::span<char> out, const result<sensor_fra
   nmea::detail::text_out t(out);
   if (r) return t.put("ok").view();
   t.put(frame_json_type).put(" field ").put(std::uint64_t{r.field});
-  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
-    if (n != r.field) return true;
-    using field_type = std::remove_cvref_t<decltype(field)>;
-    t.put(" (").put(field.json_key).put(") ");
-    t.put(detail::raw_decimal(field, frame.*field_type::raw_member));
-    return false;
+  visit_fields(frame, [&](const auto& f) {
+    if (f.number != r.field) return;
+    t.put(" (").put(f.key).put(") ");
+    t.put(f.value.exact());
   });
   return t.put(": ").put(message(r.ec)).view();
 }

@@ -125,6 +125,28 @@ constexpr void quote(Sink& s) noexcept {
   if constexpr (Style == nmea::json_style::json) s.put('"');
 }
 
+/// The names of the flags set in `v` (a set bit without a name as "bit_N"), quoted in JSON,
+/// `sep` between them. Returns whether any flag is set.
+template <nmea::json_style Style, json_sink Sink, class T>
+constexpr bool flag_names(Sink& s, const T& v, char sep) noexcept {
+  bool any = false;
+  for (unsigned bit = 0; bit < T::bits; ++bit) {
+    if (!v.test_bit(bit)) continue;
+    if (any) s.put(sep);
+    any = true;
+    quote<Style>(s);
+    const std::string_view n = enum_name<typename enum_of<T>::type>(bit);
+    if (n.empty()) {
+      s.put("bit_");
+      nmea::detail::json_uint(s, bit);
+    } else {
+      s.put(n);
+    }
+    quote<Style>(s);
+  }
+  return any;
+}
+
 }  // namespace detail
 
 /// One field value by the conventions at the top of this file.
@@ -132,27 +154,12 @@ template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, field
 constexpr void write_json_value(Sink& s, const T& v) noexcept {
   using nmea::detail::json_uint;
   if constexpr (detail::is_flags<T>::value) {
-    using E = typename detail::enum_of<T>::type;
     if (!v.has_value()) {  // not sent: not the same as [] (sent, no flag set)
       s.put("null");
       return;
     }
     s.put('[');
-    bool first = true;
-    for (unsigned bit = 0; bit < T::bits; ++bit) {
-      if (!v.test_bit(bit)) continue;
-      if (!first) s.put(',');
-      first = false;
-      detail::quote<Style>(s);
-      const std::string_view n = nmea2000::detail::enum_name<E>(bit);
-      if (n.empty()) {
-        s.put("bit_");
-        json_uint(s, bit);
-      } else {
-        s.put(n);
-      }
-      detail::quote<Style>(s);
-    }
+    detail::flag_names<Style>(s, v, ',');
     s.put(']');
     return;
   } else {
@@ -231,21 +238,8 @@ requires(Info::kind ==
                                                            const field_view<Info>& f) noexcept {
   using V = typename Info::value_type;
   if constexpr (detail::is_flags<V>::value) {
-    if (!f.value.has_value()) return;
-    bool any = false;
-    for (unsigned bit = 0; bit < V::bits; ++bit) {
-      if (!f.value.test_bit(bit)) continue;
-      if (any) s.put(';');
-      any = true;
-      const std::string_view n = detail::enum_name<typename detail::enum_of<V>::type>(bit);
-      if (n.empty()) {
-        s.put("bit_");
-        nmea::detail::json_uint(s, bit);
-      } else {
-        s.put(n);
-      }
-    }
-    if (!any) s.put("none");
+    if (f.value.has_value() && !detail::flag_names<nmea::json_style::plain>(s, f.value, ';'))
+      s.put("none");
   } else if (f.state != field_state::not_available) {
     write_json_value<nmea::json_style::plain>(s, f.value);
   }
