@@ -13,18 +13,12 @@ import socket
 import subprocess
 import sys
 import tempfile
-import termios
 import time
 import tty
 
+from harness import check, refusals, run_case
+
 FEED, DECODE, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what, flush=True)
 
 
 def decode(data):
@@ -148,23 +142,15 @@ def case_signal():
 
 
 def case_usage():
-    r = subprocess.run([FEED, "--help"], capture_output=True, timeout=20)
-    check(r.returncode == 0 and b"--device" in r.stdout, "--help")
-    for args, why, rc in ((["--baud", "12345"], b"not a serial speed", None),
-                          (["--device", "/nonexistent/tty"], b"No such file", 1),
-                          (["--device", "/dev/null"], b"not a terminal", 1),
-                          (["--device", "x", "--udp", "127.0.0.1:9"], b"excludes", None),
-                          (["--read-rmc"], b"requires", None),
-                          (["--udp", "127.0.0.1"], b"expected HOST:PORT", 1),
-                          (["--input", "/nonexistent"], b"cannot be read", 2)):
-        r = subprocess.run([FEED, *args, "--seconds", "0.1"], capture_output=True, timeout=20)
-        check(r.returncode != 0 and (rc is None or r.returncode == rc) and why in r.stderr,
-              "%r refused: %d %r" % (args, r.returncode, r.stderr[-200:]))
+    refusals(FEED, b"--device",
+             ((["--baud", "12345"], b"not a serial speed"),
+              (["--device", "/nonexistent/tty"], b"No such file", 1),
+              (["--device", "/dev/null"], b"not a terminal", 1),
+              (["--device", "x", "--udp", "127.0.0.1:9"], b"excludes"),
+              (["--read-rmc"], b"requires"),
+              (["--udp", "127.0.0.1"], b"expected HOST:PORT", 1),
+              (["--input", "/nonexistent"], b"cannot be read", 2)), extra=["--seconds", "0.1"])
 
 
-{"pty": case_pty, "udp": case_udp, "input": case_input, "usage": case_usage,
- "signal": case_signal}[CASE]()
-if failures:
-    print("%d failure(s)" % len(failures))
-    sys.exit(1)
-print("ok")
+run_case({"pty": case_pty, "udp": case_udp, "input": case_input, "usage": case_usage,
+          "signal": case_signal}, CASE)

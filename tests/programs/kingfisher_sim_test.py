@@ -8,7 +8,6 @@ CASE is one of: stream, commands, load, churn, gpsd, signals, usage. Every case 
 time and count; the simulator only ever listens on 127.0.0.1.
 """
 
-import functools
 import json
 import os
 import random
@@ -22,29 +21,10 @@ import sys
 import tempfile
 import time
 
+from harness import Server, check, checksum_ok, refusals, run_case, seal
+
 SIM, DECODE, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 PAYLOAD = sys.argv[4] if len(sys.argv) > 4 else None  # the payload example, for case payload
-failures = []
-LOGS = []  # the simulators' stderr files, kept when a case fails
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what, flush=True)
-
-
-def checksum_ok(line):
-    m = re.fullmatch(r"\$([^*]*)\*([0-9A-F]{2})", line)
-    if not m:
-        return False
-    x = functools.reduce(lambda a, c: a ^ ord(c), m.group(1), 0)
-    return x == int(m.group(2), 16)
-
-
-def with_checksum(body):
-    x = functools.reduce(lambda a, c: a ^ ord(c), body, 0)
-    return "$%s*%02X\r\n" % (body, x)
 
 
 def seconds(stamp):
@@ -58,50 +38,14 @@ def ddmm(value, hemi):
     return -deg if hemi in "SW" else deg
 
 
-class Sim:
+class Sim(Server):
     def __init__(self, *args):
-        # The program appends to its log file (O_APPEND): reading it from here never moves the
-        # offset the program writes at.
-        fd, self.err_path = tempfile.mkstemp(prefix="seawire-sim-", suffix=".log")
-        os.close(fd)
-        LOGS.append(self.err_path)
-        self.err = open(self.err_path, "ab")
         # Under AddressSanitizer, freed memory is held in a quarantine (256 MB by default) and
         # shows as resident: keep it small so RSS says what the program itself keeps.
         env = dict(os.environ)
         env["ASAN_OPTIONS"] = ":".join(filter(None, [env.get("ASAN_OPTIONS"),
                                                       "quarantine_size_mb=4"]))
-        self.proc = subprocess.Popen(
-            [SIM, "--listen", "127.0.0.1:0", *args],
-            stdout=subprocess.DEVNULL,
-            stderr=self.err,
-            env=env,
-        )
-        deadline = time.monotonic() + 20
-        self.port = None
-        while time.monotonic() < deadline and self.port is None:
-            first = self.log().split("\n")[0] + "\n"
-            m = re.fullmatch(r"listening on 127\.0\.0\.1:(\d+)\n", first)
-            if m:
-                self.port = int(m.group(1))
-            elif self.proc.poll() is not None:
-                break
-            else:
-                time.sleep(0.02)
-        if self.port is None:
-            raise SystemExit("simulator did not say where it listens: %r" % self.log())
-
-    def log(self):
-        with open(self.err_path, encoding="ascii", errors="replace") as f:
-            return f.read()
-
-    def wait_log(self, pattern, timeout=10):
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            if re.search(pattern, self.log()):
-                return True
-            time.sleep(0.05)
-        return False
+        super().__init__(SIM, *args, env=env)
 
     def rss_kib(self):
         with open("/proc/%d/status" % self.proc.pid) as f:
@@ -109,17 +53,6 @@ class Sim:
                 if line.startswith("VmRSS:"):
                     return int(line.split()[1])
         return 0
-
-    def stop(self, sig=signal.SIGTERM, timeout=20):
-        if self.proc.poll() is None:
-            self.proc.send_signal(sig)
-        try:
-            return self.proc.wait(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-            self.proc.wait()
-            check(False, "simulator did not exit within %ds of signal %d" % (timeout, sig))
-            return None
 
 
 class Client:
@@ -235,7 +168,7 @@ def case_commands():
 
     # PYDEV: hold heading 90 at 1.5 m/s (commands repeated, as a payload does, under the watchdog).
     for _ in range(25):
-        c.send(with_checksum("PYDEV,90,1.5"))
+        c.send(seal("PYDEV,90,1.5"))
         pump_all([c], 0.2)
     heading, speed_e = latest("CPNVG", 9), latest("CPNVR", 2)
     check(abs(heading - 90) < 3, "PYDEV 90: heading %.2f" % heading)
@@ -254,17 +187,17 @@ def case_commands():
     check(latest("CPNVR", 7) > 20, "PYDIR 100,-100: yaw rate %.2f deg/s" % latest("CPNVR", 7))
     # PYDEP in deg/s (as the Clearpath vehicle reads it), counter-clockwise.
     for _ in range(13):
-        c.send(with_checksum("PYDEP,-10,50"))
+        c.send(seal("PYDEP,-10,50"))
         pump_all([c], 0.2)
     check(abs(latest("CPNVR", 7) + 10) < 1.5, "PYDEP -10 deg/s: yaw rate %.2f" % latest("CPNVR", 7))
     # PYCLT: lights, reported in CPALT.
     check(c.of("CPALT")[-1][2] == "0", "lights off at start")
-    c.send(with_checksum("PYCLT,1"))
+    c.send(seal("PYCLT,1"))
     pump_all([c], 1.2)
     check(c.of("CPALT")[-1][2] == "1", "PYCLT 1: CPALT reports lights on")
     # Refused commands change nothing and are logged with the field.
     # (the first three per client are logged).
-    c.send(with_checksum("PYDIR,150,0") + "$PYDIR,0,-150*\r\n" + "$PYDIR,10,10*00\r\n" +
+    c.send(seal("PYDIR,150,0") + "$PYDIR,0,-150*\r\n" + "$PYDIR,10,10*00\r\n" +
            "$PYXYZ,1*00\r\n")
     pump_all([c], 0.3)
     # The watchdog: no command for 1 s stops the thrusters; the vehicle coasts to a stop.
@@ -306,7 +239,7 @@ def case_load():
         half.send("$PYDIR,10,1")
         half.close()
     commander = readers[0]
-    commander.send(with_checksum("PYCLT,1"))
+    commander.send(seal("PYCLT,1"))
     pump_all(readers + [flood], 4)
     rss_after = sim.rss_kib()
     for c in readers + [flood, sleeper]:
@@ -462,7 +395,7 @@ def case_north():
     sim = Sim("--nav-rate", "20", "--time", "2026-11-25T12:00:00Z", "--seed", "5")
     c = Client(sim.port)
     for _ in range(30):
-        c.send(with_checksum("PYDEV,0,0.5"))
+        c.send(seal("PYDEV,0,0.5"))
         pump_all([c], 0.2)
     # Half close: the lines already queued still arrive, then the simulator closes.
     c.sock.shutdown(socket.SHUT_WR)
@@ -495,17 +428,14 @@ def case_linger():
 
 
 def case_usage():
-    r = subprocess.run([SIM, "--help"], capture_output=True, timeout=20)
-    check(r.returncode == 0 and b"--listen" in r.stdout and b"--watchdog" in r.stdout, "--help")
-    for args, why in ((["--listen", "localhost"], b"expected ADDR:PORT"),
-                      (["--listen", "127.0.0.1:99999"], b"expected ADDR:PORT"),
-                      (["--listen", "not-an-address:0"], b"--listen"),
-                      (["--start", "95,0", "--listen", "127.0.0.1:0"], b"--start"),
-                      (["--time", "yesterday", "--listen", "127.0.0.1:0"], b"--time"),
-                      (["--nav-rate", "0", "--listen", "127.0.0.1:0"], b"nav-rate"),
-                      (["--status-rate", "20", "--listen", "127.0.0.1:0"], b"above --nav-rate")):
-        r = subprocess.run([SIM, *args], capture_output=True, timeout=20)
-        check(r.returncode != 0 and why in r.stderr, "%r refused: %r" % (args, r.stderr[-200:]))
+    refusals(SIM, (b"--listen", b"--watchdog"),
+             ((["--listen", "localhost"], b"expected ADDR:PORT"),
+              (["--listen", "127.0.0.1:99999"], b"expected ADDR:PORT"),
+              (["--listen", "not-an-address:0"], b"--listen"),
+              (["--start", "95,0", "--listen", "127.0.0.1:0"], b"--start"),
+              (["--time", "yesterday", "--listen", "127.0.0.1:0"], b"--time"),
+              (["--nav-rate", "0", "--listen", "127.0.0.1:0"], b"nav-rate"),
+              (["--status-rate", "20", "--listen", "127.0.0.1:0"], b"above --nav-rate")))
     # A port in use is an error, not a hang.
     s = socket.socket()
     s.bind(("127.0.0.1", 0))
@@ -516,13 +446,6 @@ def case_usage():
     check(r.returncode == 1 and b"in use" in r.stderr, "port in use: %r" % r.stderr[-200:])
 
 
-CASES = {"stream": case_stream, "commands": case_commands, "load": case_load, "churn": case_churn,
-         "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload, "north": case_north,
-         "linger": case_linger}
-CASES[CASE]()
-if failures:
-    print("%d failure(s); the simulator's logs: %s" % (len(failures), " ".join(LOGS)))
-    sys.exit(1)
-for path in LOGS:
-    os.remove(path)
-print("ok")
+run_case({"stream": case_stream, "commands": case_commands, "load": case_load, "churn": case_churn,
+          "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload,
+          "north": case_north, "linger": case_linger}, CASE)

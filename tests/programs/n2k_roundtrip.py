@@ -15,22 +15,17 @@ import glob
 import json
 import os
 import random
-import subprocess
 import sys
+
+import harness
+from harness import check
 
 DECODE, ENCODE, DATA = sys.argv[1], sys.argv[2], sys.argv[3]
 FORMATS = ["candump_log", "candump", "canboat", "yd_raw"]
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what, file=sys.stderr)
 
 
 def run(prog, args, data):
-    return subprocess.run([prog] + args, input=data, capture_output=True, timeout=60)
+    return harness.run([prog, *args], data)
 
 
 def comparable(obj, fmt):
@@ -152,7 +147,4 @@ for fmt in FORMATS:
     bad = [(a, b) for a, b in zip(msgs, again) if comparable(a, fmt)[0] != comparable(b, "")[0]]
     check(not bad, f"random -> {fmt}: {len(bad)} messages changed, e.g. {bad[:1]}")
 
-if failures:
-    print(f"{len(failures)} failure(s)", file=sys.stderr)
-    sys.exit(1)
-print("ok")
+harness.finish()

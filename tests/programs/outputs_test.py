@@ -22,27 +22,19 @@ import sys
 import tempfile
 import zlib
 
+import harness
+from harness import check, run_case, seal
+
 DECODE, DATA, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 RSVG = sys.argv[4] if len(sys.argv) > 4 else None
 FAMILIES = ["kingfisher", "sandshark", "robotx", "anello", "anello_mixed", "standard"]
 # NMEA 2000 CAN logs (candump, plain/fast, YD raw), beside the tests that use them.
 N2K = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "n2k")
 N2K_LOGS = sorted(f for f in os.listdir(N2K) if f.endswith(".in"))
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what, file=sys.stderr)
 
 
 def run(args, data, want_rc=None):
-    p = subprocess.run([DECODE] + args, input=data, capture_output=True, timeout=60)
-    if want_rc is not None:
-        check(p.returncode == want_rc,
-              f"{args}: exit status {p.returncode}, expected {want_rc}: {p.stderr[:300]!r}")
-    return p
+    return harness.run([DECODE, *args], data, want_rc)
 
 
 def read(name):
@@ -71,13 +63,6 @@ def cell(v):
     if v is False:
         return "false"
     return v
-
-
-def seal(body):
-    x = 0
-    for c in body.encode():
-        x ^= c
-    return f"${body}*{x:02X}\r\n".encode()
 
 
 # ---------------------------------------------------------------------------------------------
@@ -144,7 +129,7 @@ def case_csv():
         check(os.path.getsize(os.path.join(d, "GPRMC.csv")) > 0, "other tables still written")
 
     # Text with a quote is quoted with the quote doubled; the csv module reads it back.
-    data = seal('BFMIS,231121.30,dive1.xml,Aborted,said "too deep" twice')
+    data = seal('BFMIS,231121.30,dive1.xml,Aborted,said "too deep" twice').encode()
     p = run(["--format", "csv", "--type", "BFMIS"], data, 0)
     rows = list(csv.reader(io.StringIO(p.stdout.decode(), newline="")))
     check(rows == [["timestamp", "dive_file", "status", "details"],
@@ -188,7 +173,7 @@ def case_csv():
                                                 if m["type"] == "GPRMC"), "csv rows of bad.nmea")
     # Sentences no message describes are counted, not silently lost.
     with tempfile.TemporaryDirectory() as tmp:
-        p = run(["--format", "csv", "--output-dir", tmp], seal("GPGSV,1,1,01,01,40,083,46"), 0)
+        p = run(["--format", "csv", "--output-dir", tmp], seal("GPGSV,1,1,01,01,40,083,46").encode(), 0)
         check(b"1 GPGSV sentence left out" in p.stderr, f"unknown types: {p.stderr!r}")
         check(os.listdir(tmp) == [], f"no table for unknown types: {os.listdir(tmp)}")
     run(["--format", "csv", "--type", "GPGSV"], b"", 2)
@@ -277,7 +262,7 @@ def case_geojson():
         rfc7946(doc, log)
         check(doc == {"type": "FeatureCollection", "features": []}, f"{log}: {p.stdout[:200]!r}")
     # Events: a RobotX heartbeat whose mode changes is a Point where it changed.
-    hb = [seal(f"RXHRB,101218,1612{s:02d},21.31{s:03d},N,157.88972,W,AUVSI,{mode},1")
+    hb = [seal(f"RXHRB,101218,1612{s:02d},21.31{s:03d},N,157.88972,W,AUVSI,{mode},1").encode()
           for s, mode in ((29, 2), (30, 2), (31, 1), (32, 1))]
     p = run(["--format", "geojson"], b"".join(hb), 0)
     doc = exact(p.stdout.decode())
@@ -290,7 +275,7 @@ def case_geojson():
               e["properties"]["previous"] == {"system_mode": "2"} and
               e["properties"]["system_mode"] == "1", f"event properties {e['properties']}")
     # No positions: an empty collection, still valid.
-    p = run(["--format", "geojson"], seal("BPLOG,ALL,ON"), 0)
+    p = run(["--format", "geojson"], seal("BPLOG,ALL,ON").encode(), 0)
     check(json.loads(p.stdout) == {"type": "FeatureCollection", "features": []},
           f"no positions: {p.stdout!r}")
 
@@ -412,7 +397,7 @@ def case_svg():
             if all(x > 120 or y > 120 for x, y in xy):
                 check(rows[100][60] == (255, 255, 255), f"{t}: background {rows[100][60]}")
         # Text from the input is escaped for XML: a team id with '&' and '<' renders.
-        data = seal("RXHRB,101218,161229,21.31198,N,157.88972,W,A&<B>,2,1")
+        data = seal("RXHRB,101218,161229,21.31198,N,157.88972,W,A&<B>,2,1").encode()
         svg = run(["--format", "svg"], data, 0).stdout
         check(b"A&amp;&lt;B&gt;" in svg, f"XML escapes: {svg[:200]!r}")
         p = os.path.join(tmp, "esc.svg")
@@ -467,7 +452,7 @@ def case_progress():
         # A rejected line: the progress line is erased before the report, which starts a line.
         bad_path = os.path.join(tmp, "bad.nmea")
         with open(bad_path, "wb") as f:
-            f.write(read("kingfisher") * 50 + seal("CPNVG,164959.034,4261.81092,N") +
+            f.write(read("kingfisher") * 50 + seal("CPNVG,164959.034,4261.81092,N").encode() +
                     read("kingfisher") * 50)
         master, slave = pty.openpty()
         with open(bad_path, "rb") as stdin:
@@ -506,8 +491,4 @@ def case_progress():
         check(err == b"", f"stdin a pipe: {err[:200]!r}")
 
 
-{"csv": case_csv, "geojson": case_geojson, "svg": case_svg, "progress": case_progress}[CASE]()
-if failures:
-    print(f"{len(failures)} failure(s)", file=sys.stderr)
-    sys.exit(1)
-print(f"{CASE}: ok")
+run_case({"csv": case_csv, "geojson": case_geojson, "svg": case_svg, "progress": case_progress}, CASE)

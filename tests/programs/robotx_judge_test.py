@@ -5,7 +5,6 @@
     robotx_judge_test.py JUDGE CASE      CASE: live, text, usage
 """
 
-import functools
 import json
 import re
 import signal
@@ -15,20 +14,10 @@ import sys
 import threading
 import time
 
+from harness import Server, check, refusals, run_case, seal
+
 JUDGE, CASE = sys.argv[1], sys.argv[2]
 HEARTBEAT = sys.argv[3] if len(sys.argv) > 3 else None  # the heartbeat example, for its case
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what, flush=True)
-
-
-def sentence(body, lower=False, ending="\r\n"):
-    x = functools.reduce(lambda a, c: a ^ ord(c), body, 0)
-    return ("$%s*%02" + ("x" if lower else "X") + "%s") % (body, x, ending)
 
 
 def hst_now():
@@ -38,31 +27,21 @@ def hst_now():
 
 def hrb(team="AUVSI"):
     d, t = hst_now()
-    return sentence("RXHRB,%s,%s,21.31198,N,157.88972,W,%s,2,1" % (d, t, team))
+    return seal("RXHRB,%s,%s,21.31198,N,157.88972,W,%s,2,1" % (d, t, team))
 
 
-class Judge:
+class Judge(Server):
     def __init__(self, *args, listen="127.0.0.1:0"):
-        self.proc = subprocess.Popen([JUDGE, "--listen", listen, *args],
-                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-        first = self.proc.stderr.readline().decode()
-        m = re.fullmatch(r"listening on 127\.0\.0\.1:(\d+)\n", first)
-        if not m:
-            raise SystemExit("judge did not say where it listens: %r" % first)
-        self.port = int(m.group(1))
+        super().__init__(JUDGE, *args, listen=listen, stdout=subprocess.PIPE)
         self.out = []  # (arrival time, line)
-        self.err = []
-        threading.Thread(target=self._read, args=(self.proc.stdout, self.out), daemon=True).start()
-        threading.Thread(target=self._read, args=(self.proc.stderr, self.err), daemon=True).start()
+        threading.Thread(target=self._read, daemon=True).start()
 
-    @staticmethod
-    def _read(stream, into):
-        for line in stream:
-            into.append((time.monotonic(), line.decode().rstrip("\n")))
+    def _read(self):
+        for line in self.proc.stdout:
+            self.out.append((time.monotonic(), line.decode().rstrip("\n")))
 
     def stop(self, sig=signal.SIGTERM):
-        self.proc.send_signal(sig)
-        rc = self.proc.wait(timeout=20)
+        rc = super().stop(sig)
         time.sleep(0.2)
         return rc
 
@@ -83,14 +62,14 @@ def case_live():
     time.sleep(1.0)
     a.sendall(hrb().encode())
     d, t = hst_now()
-    cod = sentence("RXCOD,%s,%s,AUVSI,RGB" % (d, t))
+    cod = seal("RXCOD,%s,%s,AUVSI,RGB" % (d, t))
     a.sendall(cod.encode())
     a.settimeout(10)
     echo = a.recv(200).decode()
     check(echo == cod, "RXCOD echoed back as sent: %r, sent %r" % (echo, cod))
-    gat = sentence("RXGAT,%s,%s,AUVSI,1,2,Y,RGB" % (d, t))
+    gat = seal("RXGAT,%s,%s,AUVSI,1,2,Y,RGB" % (d, t))
     # A lower-case checksum shows only with a hex letter in it: pick an RXDOK that has one.
-    dok = next(x for x in (sentence("RXDOK,%s,%s,AUVSI,%s,%s" % (d, t, c, shape), lower=True,
+    dok = next(x for x in (seal("RXDOK,%s,%s,AUVSI,%s,%s" % (d, t, c, shape), lower=True,
                                     ending="\n")
                            for c in "RGB" for shape in ("CRUCI", "TRIAN", "CIRCL"))
                if re.search(r"[a-f]", x[-3:-1]))
@@ -126,7 +105,7 @@ def case_live():
     check(auvsi.get("reports", {}).get("RXHRB") == 3 and auvsi.get("reports", {}).get("RXCOD") == 1,
           "AUVSI's accepted reports counted: %r" % auvsi)
     check(auvsi.get("findings", {}).get("rate", 0) >= 1, "AUVSI's rate finding summed")
-    log = "\n".join(l for _, l in j.err)
+    log = j.log()
     check(log.count(" connected (") == 2 and log.count("disconnected:") == 2,
           "connection events logged:\n" + log)
 
@@ -134,7 +113,7 @@ def case_live():
 def case_text():
     j = Judge("--duration", "1.5")
     a = team_socket(j.port)
-    a.sendall(hrb().encode() + sentence("RXHRB,111221,161229,21.31198,N,157.88972,W,AUVSI,7,1").encode())
+    a.sendall(hrb().encode() + seal("RXHRB,111221,161229,21.31198,N,157.88972,W,AUVSI,7,1").encode())
     # A report ended by a lone CR is judged as it arrives, not when the next bytes come.
     a.sendall(hrb().encode().replace(b"\r\n", b"\r"))
     time.sleep(0.5)
@@ -177,7 +156,7 @@ def case_reasons():
     # A refused field is named for what it is, with what is wrong with its text.
     j = Judge("--duration", "1.5")
     a = team_socket(j.port)
-    a.sendall(sentence("RXHRB,111221,161229,21.31198,,-157.88972,W,AUVSI,2,1").encode())
+    a.sendall(seal("RXHRB,111221,161229,21.31198,,-157.88972,W,AUVSI,2,1").encode())
     j.proc.wait(timeout=20)
     a.close()
     text = "\n".join(l for _, l in j.out)
@@ -187,7 +166,7 @@ def case_reasons():
           in text, "the sign told:\n" + text)
     j = Judge("--duration", "1.5", "--report", "json")
     a = team_socket(j.port)
-    a.sendall(sentence("RXHRB,111221,161229,21.31198,,-157.88972,W,AUVSI,2,1").encode())
+    a.sendall(seal("RXHRB,111221,161229,21.31198,,-157.88972,W,AUVSI,2,1").encode())
     j.proc.wait(timeout=20)
     a.close()
     fields = {f.get("field"): f for f in j.findings()}
@@ -201,18 +180,11 @@ def case_reasons():
 
 
 def case_usage():
-    r = subprocess.run([JUDGE, "--help"], capture_output=True, timeout=20)
-    check(r.returncode == 0 and b"--team" in r.stdout, "--help")
-    for args, why in ((["--listen", "nowhere"], b"expected ADDR:PORT"),
-                      (["--team", "AB", "--listen", "127.0.0.1:0"], b"5 characters"),
-                      (["--report", "xml", "--listen", "127.0.0.1:0"], b"report")):
-        r = subprocess.run([JUDGE, *args], capture_output=True, timeout=20)
-        check(r.returncode != 0 and why in r.stderr, "%r refused: %r" % (args, r.stderr[-200:]))
+    refusals(JUDGE, b"--team",
+             ((["--listen", "nowhere"], b"expected ADDR:PORT"),
+              (["--team", "AB", "--listen", "127.0.0.1:0"], b"5 characters"),
+              (["--report", "xml", "--listen", "127.0.0.1:0"], b"report")))
 
 
-{"live": case_live, "text": case_text, "usage": case_usage, "heartbeat": case_heartbeat,
- "reasons": case_reasons}[CASE]()
-if failures:
-    print("%d failure(s)" % len(failures))
-    sys.exit(1)
-print("ok")
+run_case({"live": case_live, "text": case_text, "usage": case_usage, "heartbeat": case_heartbeat,
+          "reasons": case_reasons}, CASE)

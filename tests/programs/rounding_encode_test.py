@@ -11,23 +11,17 @@ module computes from the same text (ROUND_HALF_UP); values past a field's range 
 """
 
 import json
-import subprocess
 import sys
 from decimal import ROUND_HALF_UP, Decimal
 
+import harness
+from harness import check
+
 DECODE, ENCODE = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL:", what, file=sys.stderr)
-    return ok
 
 
 def run(exe, data, args=()):
-    return subprocess.run([exe, *args], input=data, capture_output=True, timeout=60)
+    return harness.run([exe, *args], data)
 
 
 def step_round(text, step):
@@ -96,7 +90,4 @@ for deg, places in [("42.000175", 3), ("-42.000175", 3), ("0.000125", 3), ("10.9
     sentence = enc.stdout.decode()
     check("," + want + "," in sentence, f"CPNVG latitude {deg} at {places}: {sentence!r}, want {want}")
 
-if failures:
-    print(f"{len(failures)} failure(s)", file=sys.stderr)
-    sys.exit(1)
-print("ok")
+harness.finish()

@@ -7,7 +7,6 @@
 Every step is checked from both sides: what the payload receives and what the simulator logs.
 """
 
-import functools
 import os
 import re
 import signal
@@ -17,20 +16,10 @@ import sys
 import tempfile
 import time
 
+from harness import Server, check, checksum_ok, refusals, run_case, seal
+
 SIM, CASE = sys.argv[1], sys.argv[2]
 BACKSEAT = sys.argv[3] if len(sys.argv) > 3 else None  # the backseat example, for its case
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what, flush=True)
-
-
-def sentence(body):
-    x = functools.reduce(lambda a, c: a ^ ord(c), body, 0)
-    return "$%s*%02X\r\n" % (body, x)
 
 
 def stamp():
@@ -50,42 +39,6 @@ def day_offset(a, b):
 
 def wall_seconds_of_day():
     return time.time() % 86400
-
-
-def checksum_ok(line):
-    m = re.fullmatch(r"\$([^*]*)\*([0-9A-F]{2})", line)
-    return bool(m) and functools.reduce(lambda a, c: a ^ ord(c), m.group(1), 0) == int(m.group(2), 16)
-
-
-class Sim:
-    def __init__(self, *args):
-        fd, self.log_path = tempfile.mkstemp(prefix="seawire-sandshark-", suffix=".log")
-        os.close(fd)
-        self.proc = subprocess.Popen([SIM, "--listen", "127.0.0.1:0", *args],
-                                     stderr=open(self.log_path, "ab"))
-        deadline = time.monotonic() + 20
-        self.port = None
-        while self.port is None and time.monotonic() < deadline:
-            m = re.match(r"listening on 127\.0\.0\.1:(\d+)\n", self.log())
-            if m:
-                self.port = int(m.group(1))
-            elif self.proc.poll() is not None:
-                break
-            time.sleep(0.02)
-        if self.port is None:
-            raise SystemExit("no 'listening on': %r" % self.log())
-
-    def log(self):
-        with open(self.log_path) as f:
-            return f.read()
-
-    def wait_log(self, pattern, timeout=10):
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            if re.search(pattern, self.log()):
-                return True
-            time.sleep(0.05)
-        return False
 
 
 class Payload:
@@ -129,7 +82,7 @@ class Payload:
         return None
 
     def send(self, body):
-        self.sock.sendall(sentence(body).encode())
+        self.sock.sendall(seal(body).encode())
 
     def of(self, address):
         return [l.split("*")[0].split(",") for _, l in self.lines if l[1:6] == address]
@@ -151,7 +104,7 @@ def case_session():
     fd, mission = tempfile.mkstemp(suffix=".mission")
     os.write(fd, TIMELINE.encode())
     os.close(fd)
-    sim = Sim("--mission", mission, "--nav-rate", "10", "--client", "backseat=127.0.0.1",
+    sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--client", "backseat=127.0.0.1",
               "--shutdown-wait", "1")
     p = Payload(sim.port)
     # Handshake: BFVER at once; nothing else before BPLOG.
@@ -243,7 +196,7 @@ def case_backseat():
     fd, mission = tempfile.mkstemp(suffix=".mission")
     os.write(fd, b"0 mission Running dive1.xml\n0.5 control on\n")
     os.close(fd)
-    sim = Sim("--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
+    sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
     watcher = Payload(sim.port)
     watcher.send("BPLOG,NVG,ON")
     started = wall_seconds_of_day()
@@ -291,30 +244,22 @@ def case_backseat():
     check(all(day_offset(b, a) > 0 for a, b in zip(times, times[1:])),
           "the stamps sent increase: %r" % [st for _, st in sent][:20])
     watcher.close()
-    sim.proc.send_signal(signal.SIGTERM)
-    check(sim.proc.wait(timeout=10) == 0, "exit 0")
+    check(sim.stop(timeout=10) == 0, "exit 0")
     os.remove(mission)
 
 
 def case_usage():
-    r = subprocess.run([SIM, "--help"], capture_output=True, timeout=20)
-    check(r.returncode == 0 and b"--mission" in r.stdout, "--help")
     fd, bad = tempfile.mkstemp(suffix=".mission")
     os.write(fd, b"0 mission Waiting\n2 launch now\n")
     os.close(fd)
-    for args, why in ((["--listen", "x"], b"expected ADDR:PORT"),
-                      (["--client", "backseat=nowhere"], b"not an IP address"),
-                      (["--mission", bad], b":2: expected"),
-                      (["--mission", "/nonexistent"], b"cannot be read"),
-                      (["--pending", "ABT,XYZ"], b"XYZ is none of"),
-                      (["--version-text", "1,0"], b"at most 32 printable")):
-        r = subprocess.run([SIM, *args], capture_output=True, timeout=20)
-        check(r.returncode == 2 and why in r.stderr, "%r refused: %r" % (args, r.stderr))
+    refusals(SIM, b"--mission",
+             ((["--listen", "x"], b"expected ADDR:PORT"),
+              (["--client", "backseat=nowhere"], b"not an IP address"),
+              (["--mission", bad], b":2: expected"),
+              (["--mission", "/nonexistent"], b"cannot be read"),
+              (["--pending", "ABT,XYZ"], b"XYZ is none of"),
+              (["--version-text", "1,0"], b"at most 32 printable")), rc=2)
     os.remove(bad)
 
 
-{"session": case_session, "usage": case_usage, "backseat": case_backseat}[CASE]()
-if failures:
-    print("%d failure(s)" % len(failures))
-    sys.exit(1)
-print("ok")
+run_case({"session": case_session, "usage": case_usage, "backseat": case_backseat}, CASE)

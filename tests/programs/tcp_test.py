@@ -5,22 +5,15 @@
     tcp_test.py TCP CASE      CASE: framing, send, reconnect, errors
 """
 
-import os
 import signal
 import socket
 import subprocess
 import sys
-import threading
 import time
 
+from harness import check, run_case
+
 TCP, CASE = sys.argv[1], sys.argv[2]
-failures = []
-
-
-def check(cond, what):
-    if not cond:
-        failures.append(what)
-        print("FAIL:", what, flush=True)
 
 
 def listener(port=0):
@@ -154,9 +147,5 @@ def case_errors():
     check(r.returncode == 0 and b"--reconnect" in r.stdout, "--help")
 
 
-{"framing": case_framing, "send": case_send, "reconnect": case_reconnect,
- "errors": case_errors}[CASE]()
-if failures:
-    print("%d failure(s)" % len(failures))
-    sys.exit(1)
-print("ok")
+run_case({"framing": case_framing, "send": case_send, "reconnect": case_reconnect,
+          "errors": case_errors}, CASE)
