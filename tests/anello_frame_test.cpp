@@ -20,6 +20,7 @@
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
 
+#include "anello_seed.hpp"
 #include "support.hpp"
 
 namespace {
@@ -29,35 +30,9 @@ using namespace support;
 using namespace seawire::anello;
 using seawire::errc;
 
-// Spec 002 section 2.2.1, "mix of valid and invalid data"; its CRC is right.
-constexpr std::string_view seed_hex =
-    "AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF00000000000200"
-    "6C0003005AFFFFFFFF";
-
-constexpr int hex_nibble(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
-
-constexpr frame_bytes frame_from_hex(std::string_view hex) {
-  frame_bytes out{};
-  for (std::size_t i = 0; i < out.size() && 2 * i + 1 < hex.size(); ++i) {
-    out[i] = static_cast<std::uint8_t>(hex_nibble(hex[2 * i]) * 16 + hex_nibble(hex[2 * i + 1]));
-  }
-  return out;
-}
-
-constexpr frame_bytes seed = frame_from_hex(seed_hex);
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr sensor_frame_raw seed_frame = decode_frame(seed).value;
-
-// Gives a test frame a correct CRC after its payload was changed.
-void seal(std::span<std::uint8_t> frame) {
-  seawire::detail::store_be(frame, 4, seawire::crc32(frame.subspan(header_size, payload_size)));
-}
 
 constexpr time_ms utc(int y, unsigned mo, unsigned d, int h, int mi, int s, int ms) {
   using namespace std::chrono;

@@ -23,6 +23,7 @@
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
 
+#include "anello_seed.hpp"
 #include "support.hpp"
 
 namespace {
@@ -38,36 +39,8 @@ constexpr std::string_view vbw_line = "$VMVBW,0.0,0.0,A,0.0,0.0,A*58"sv;
 constexpr std::string_view gpsctrl_line = "$PAPGPSCTRL,1*11"sv;
 constexpr std::string_view ais_line = "!AIVDM,1,1,,B,15M67FC000G?ufbE`vJ8?wv4R0<4,0*10"sv;
 
-// Spec 002 section 2.2.1; also tests/data/anello_seed_frame.hex.
-constexpr std::string_view seed_hex =
-    "AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF00000000000200"
-    "6C0003005AFFFFFFFF";
-
-constexpr int hex_nibble(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
-
-constexpr frame_bytes frame_from_hex(std::string_view hex) {
-  frame_bytes out{};
-  for (std::size_t i = 0; i < out.size() && 2 * i + 1 < hex.size(); ++i) {
-    out[i] = static_cast<std::uint8_t>(hex_nibble(hex[2 * i]) * 16 + hex_nibble(hex[2 * i + 1]));
-  }
-  return out;
-}
-
-constexpr frame_bytes seed = frame_from_hex(seed_hex);
-
 std::string str(std::span<const std::uint8_t> bytes) {
   return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-}
-
-// Gives a frame a correct CRC after its payload was changed.
-frame_bytes sealed(frame_bytes f) {
-  seawire::detail::store_be(f, 4, seawire::crc32(std::span(f).subspan(header_size, payload_size)));
-  return f;
 }
 
 // An item that owns its text, so it outlives the reader's next call.
@@ -197,25 +170,6 @@ outcome read_bytewise(std::string_view stream, bool drops = false) {
 outcome without_drops(outcome o) {
   std::erase_if(o.items, [](const rec& r) { return r.kind == stream_item_kind::dropped; });
   return o;
-}
-
-// Splits `s` into chunks of 1..max_chunk bytes.
-std::vector<std::string_view> chop(std::string_view s, prng& r, std::size_t max_chunk) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    const std::size_t n = std::min(s.size() - i, 1 + r.below(max_chunk));
-    out.push_back(s.substr(i, n));
-    i += n;
-  }
-  return out;
-}
-
-// A maximum chunk size spread over 1..4096 roughly log-uniformly, so tiny chunks get their share.
-std::size_t pick_max_chunk(prng& r) {
-  const std::size_t bits = r.below(13);  // 2^0 .. 2^12
-  const std::size_t base = std::size_t{1} << bits;
-  return std::min<std::size_t>(4096, base + r.below(base));
 }
 
 // Bytes that matter to the reader come often, so random data exercises every rule.

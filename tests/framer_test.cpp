@@ -106,25 +106,6 @@ void check_accounting(std::string_view stream, const std::vector<rec>& lines,
   CHECK(st.sentences == lines.size());
 }
 
-// Splits `s` into chunks of 1..max_chunk bytes.
-std::vector<std::string_view> chop(std::string_view s, prng& r, std::size_t max_chunk) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    const std::size_t n = std::min(s.size() - i, 1 + r.below(max_chunk));
-    out.push_back(s.substr(i, n));
-    i += n;
-  }
-  return out;
-}
-
-// A maximum chunk size spread over 1..4096 roughly log-uniformly, so tiny chunks get their share.
-std::size_t pick_max_chunk(prng& r) {
-  const std::size_t bits = r.below(13);  // 2^0 .. 2^12
-  const std::size_t base = std::size_t{1} << bits;
-  return std::min<std::size_t>(4096, base + r.below(base));
-}
-
 // The framer's contract written as the plainest byte-at-a-time loop over a whole stream, for
 // differential tests. It may peek ahead, so it never needs the framer's chunk-boundary states.
 struct reference_result {

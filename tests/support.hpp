@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // What many tests need: a sentence sealed with its right checksum, a deterministic random number
-// generator, and the check of a table of malformed sentences (each with the errc and the field
-// number decode must report).
+// generator, a stream cut into random chunks, and the check of a table of malformed sentences
+// (each with the errc and the field number decode must report).
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "seawire/error.hpp"
 #include "seawire/nmea/message.hpp"
@@ -62,6 +64,25 @@ struct prng {
     return static_cast<std::int64_t>(static_cast<std::uint64_t>(lo) + next() % (span + 1));
   }
 };
+
+/// Splits `s` into chunks of 1..max_chunk bytes, as reads from a socket or a port may come.
+inline std::vector<std::string_view> chop(std::string_view s, prng& r, std::size_t max_chunk) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const std::size_t n = std::min(s.size() - i, 1 + r.below(max_chunk));
+    out.push_back(s.substr(i, n));
+    i += n;
+  }
+  return out;
+}
+
+/// A maximum chunk size spread over 1..4096 roughly log-uniformly, so tiny chunks get their share.
+inline std::size_t pick_max_chunk(prng& r) {
+  const std::size_t bits = r.below(13);  // 2^0 .. 2^12
+  const std::size_t base = std::size_t{1} << bits;
+  return std::min<std::size_t>(4096, base + r.below(base));
+}
 
 /// A malformed sentence and what decode must say of it.
 struct bad_case {
