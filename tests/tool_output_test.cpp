@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "../examples/tools/io.hpp"
 #include "support.hpp"
@@ -28,11 +29,6 @@ std::string read_back(std::FILE* f) {
 }
 
 }  // namespace
-
-TEST_CASE("copy_short copies exactly n bytes, for every n up to 32") {
-  support::check_copies_exactly(
-      [](char* out, const char* in, std::size_t n) { seawire::tools::copy_short(out, in, n); }, 32);
-}
 
 TEST_CASE("output writes every piece in order, across its flushes") {
   support::prng g{43};
@@ -62,4 +58,35 @@ TEST_CASE("output writes every piece in order, across its flushes") {
     CHECK(read_back(f) == want);
     std::fclose(f);
   }
+}
+
+TEST_CASE("for_each_line gives every line whole, across the reader's chunks") {
+  // Lines of every length around the 64 KiB chunk, CR LF and LF endings, an empty line, and a
+  // last line without an ending.
+  support::prng g{44};
+  std::vector<std::string> want;
+  std::string text;
+  while (text.size() < 3 * seawire::tools::read_chunk) {
+    const std::size_t n = g.below(8) == 0 ? g.below(seawire::tools::read_chunk + 100) : g.below(90);
+    std::string l(n, 'x');
+    for (char& c : l) c = static_cast<char>('a' + g.below(26));
+    if (g.coin()) l += '\r';
+    if (g.below(20) == 0) l.clear();
+    text += l;
+    text += '\n';
+    want.push_back(l);
+  }
+  text += "last";
+  want.emplace_back("last");
+  std::FILE* f = std::tmpfile();
+  REQUIRE(f != nullptr);
+  REQUIRE(std::fwrite(text.data(), 1, text.size(), f) == text.size());
+  REQUIRE(std::fflush(f) == 0);
+  std::rewind(f);
+  seawire::tools::chunk_reader in(fileno(f));
+  std::vector<std::string> got;
+  seawire::tools::for_each_line(in, [&](std::string_view l) { got.emplace_back(l); });
+  CHECK_FALSE(in.failed());
+  CHECK(got == want);
+  std::fclose(f);
 }

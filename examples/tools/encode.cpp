@@ -691,26 +691,7 @@ class encoder {
 int run(const options& o) {
   encoder e(o);
   tools::chunk_reader in(0);
-  std::string carry;  // a line cut by the chunk boundary
-  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
-    while (!chunk.empty()) {
-      const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
-      if (nl == nullptr) {
-        carry.append(chunk);
-        break;
-      }
-      const auto n = static_cast<std::size_t>(static_cast<const char*>(nl) - chunk.data());
-      if (carry.empty()) {
-        e.line(chunk.substr(0, n));
-      } else {
-        carry.append(chunk.substr(0, n));
-        e.line(carry);
-        carry.clear();
-      }
-      chunk.remove_prefix(n + 1);
-    }
-  }
-  if (!carry.empty()) e.line(carry);
+  tools::for_each_line(in, [&](std::string_view l) { e.line(l); });
   e.finish();
   if (in.failed()) {
     std::perror("seawire-encode: reading stdin");

@@ -12,8 +12,11 @@
 #include <cstring>
 #include <string>
 #include <string_view>
-#include <type_traits>
 #include <vector>
+
+// The library's copy of short pieces, without a call (an internal header: the programs use its
+// public API otherwise).
+#include "seawire/detail/copy.hpp"
 
 namespace seawire::tools {
 
@@ -53,6 +56,33 @@ class chunk_reader {
   bool failed_ = false;
 };
 
+/// Calls f(line) for each line of `in` to its end, without its '\n' (a CR before it is kept), a
+/// line cut by a chunk boundary joined first; the last line too if it has no '\n' (and is not
+/// empty).
+template <class F>
+void for_each_line(chunk_reader& in, F&& f) {
+  std::string carry;  // a line cut by the chunk boundary
+  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
+    while (!chunk.empty()) {
+      const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
+      if (nl == nullptr) {
+        carry.append(chunk);
+        break;
+      }
+      const auto n = static_cast<std::size_t>(static_cast<const char*>(nl) - chunk.data());
+      if (carry.empty()) {
+        f(chunk.substr(0, n));
+      } else {
+        carry.append(chunk.substr(0, n));
+        f(std::string_view(carry));
+        carry.clear();
+      }
+      chunk.remove_prefix(n + 1);
+    }
+  }
+  if (!carry.empty()) f(std::string_view(carry));
+}
+
 /// `s` made safe for a terminal: control bytes (NUL included) and DEL as \xNN, the rest as is.
 inline std::string printable(std::string_view s) {
   std::string out;
@@ -68,37 +98,6 @@ inline std::string printable(std::string_view s) {
     }
   }
   return out;
-}
-
-/// Copies n <= 32 bytes: JSON comes in short pieces (a key, a number), for which a call to
-/// memcpy, or a loop a byte at a time, costs more than the bytes. Two fixed-size copies that
-/// meet or overlap in the middle (the first and the last 16, 8 or 4 bytes; for 1 to 3, the
-/// first, middle and last byte) cover every length with no loop; a fixed-size memcpy compiles to
-/// one load and one store. (The library has the same for its own buffers; the programs use its
-/// public API only, so they keep their copy.)
-[[gnu::always_inline]] inline void copy_short(char* out, const char* in, std::size_t n) noexcept {
-  const auto two = [&]<std::size_t K>(std::integral_constant<std::size_t, K>) {
-    char a[K];
-    char b[K];
-    std::memcpy(a, in, K);
-    std::memcpy(b, in + n - K, K);
-    std::memcpy(out, a, K);
-    std::memcpy(out + n - K, b, K);
-  };
-  if (n >= 16) {
-    two(std::integral_constant<std::size_t, 16>{});
-  } else if (n >= 8) {
-    two(std::integral_constant<std::size_t, 8>{});
-  } else if (n >= 4) {
-    two(std::integral_constant<std::size_t, 4>{});
-  } else if (n > 0) {
-    const char first = in[0];
-    const char middle = in[n / 2];
-    const char last = in[n - 1];
-    out[0] = first;
-    out[n / 2] = middle;
-    out[n - 1] = last;
-  }
 }
 
 /// A large output buffer in front of a FILE*. put() never fails; flush() reports write errors.
@@ -117,7 +116,7 @@ class output {
   // rest, and every piece near the end of the buffer, goes out of line.
   [[gnu::always_inline]] void put(std::string_view s) {
     if (s.size() <= 32 && buf_.size() - size_ >= 32) [[likely]] {
-      copy_short(buf_.data() + size_, s.data(), s.size());
+      seawire::detail::copy_bytes(buf_.data() + size_, s.data(), s.size());
       size_ += s.size();
       return;
     }

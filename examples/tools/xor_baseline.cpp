@@ -36,32 +36,13 @@ bool check(std::string_view line) {
 
 int main() {
   seawire::tools::chunk_reader in(0);
-  std::string carry;  // a line cut by the chunk boundary
   std::uint64_t good = 0;
   std::uint64_t bad = 0;
   const auto line = [&](std::string_view l) {
     if (l.empty() || l == "\r") return;
     (check(l) ? good : bad) += 1;
   };
-  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
-    while (!chunk.empty()) {
-      const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
-      if (nl == nullptr) {
-        carry.append(chunk);
-        break;
-      }
-      const auto n = static_cast<std::size_t>(static_cast<const char*>(nl) - chunk.data());
-      if (carry.empty()) {
-        line(chunk.substr(0, n));
-      } else {
-        carry.append(chunk.substr(0, n));
-        line(carry);
-        carry.clear();
-      }
-      chunk.remove_prefix(n + 1);
-    }
-  }
-  line(carry);
+  seawire::tools::for_each_line(in, line);
   std::printf("%llu good, %llu bad\n", static_cast<unsigned long long>(good),
               static_cast<unsigned long long>(bad));
   return bad == 0 ? 0 : 1;
