@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
-// The bench binary's global operator new: every allocation anywhere in the process is counted,
-// so a benchmark can report how many happened inside its timed loop (allocs_per_msg, which must
-// be 0 for every seawire decode and encode path).
+// The global operator new of the bench binary and of tests/alloc_test: every allocation anywhere
+// in the process is counted, so a benchmark can report how many happened inside its timed loop
+// (allocs_per_msg, which must be 0 for every seawire decode and encode path), and the test how
+// many happened in a region it measures.
 
 #include <atomic>
 #include <cstddef>
@@ -9,16 +10,25 @@
 #include <cstdlib>
 #include <new>
 
-#include "support.hpp"
+#include "alloc_count.hpp"
 
 namespace {
 
 std::atomic<std::uint64_t> allocations{0};
 
+// Without exceptions (the tests' build) there is no bad_alloc to throw.
+[[noreturn]] void out_of_memory() {
+#if defined(__cpp_exceptions)
+  throw std::bad_alloc();
+#else
+  std::abort();
+#endif
+}
+
 void* counted_alloc(std::size_t size) {
   allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
+  out_of_memory();
 }
 
 void* counted_alloc(std::size_t size, std::align_val_t align) {
@@ -27,7 +37,7 @@ void* counted_alloc(std::size_t size, std::align_val_t align) {
   // aligned_alloc wants a size that is a multiple of the alignment.
   const std::size_t rounded = (size + a - 1) / a * a;
   if (void* p = std::aligned_alloc(a, rounded == 0 ? a : rounded)) return p;
-  throw std::bad_alloc();
+  out_of_memory();
 }
 
 }  // namespace

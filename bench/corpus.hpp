@@ -691,6 +691,14 @@ inline family_corpus<rmc_gga_set> rmc_gga_corpus(std::size_t n, std::uint64_t se
   return family_corpus_from<rmc_gga_set>(n, {0, 1}, 0.5, seed);
 }
 
+/// Every family's sets at once: the decoder of a receiver that takes anything seawire knows.
+using every_message = nmea::merge_sets<
+#if SEAWIRE_BENCH_HAS_KINGFISHER
+    kingfisher::from_vehicle, kingfisher::to_vehicle,
+#endif
+    sandshark::from_vehicle, sandshark::to_vehicle, robotx::reports, anello::nmea_inputs,
+    anello::nmea_outputs, rmc_gga_set>::type;
+
 /// The sentences the ANELLO INS takes for speed aiding: the rates a USV computer sends them.
 inline family_corpus<anello::nmea_inputs> anello_inputs_corpus(std::size_t n,
                                                                std::uint64_t seed = 1) {

@@ -13,15 +13,12 @@
 #include <string_view>
 #include <type_traits>
 
+#include "alloc_count.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/variation.hpp"
 
 namespace seawire::bench {
-
-/// Heap allocations so far in this process (the bench binary replaces operator new to count
-/// them; see alloc_count.cpp).
-[[nodiscard]] std::uint64_t allocation_count() noexcept;
 
 // ---------------------------------------------------------------------------------------------
 // the baseline: frame, verify the XOR checksum, split the fields -- and nothing else

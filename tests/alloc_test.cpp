@@ -1,19 +1,17 @@
 // SPDX-License-Identifier: BSL-1.0
-// No heap allocation anywhere on a decode or encode path. This program replaces the global
-// operator new with one that counts while a region is being measured (Catch itself allocates,
-// so only the measured regions count), then runs every message type of every family through
-// decode (by type, through its family's set, into a variant and through visit) and encode (into
-// a span and by value), the framer over a byte stream, and the binary frame both ways. The
-// inputs come from the benchmark corpus generator (bench/corpus.hpp) and are built before
-// counting starts.
+// No heap allocation anywhere on a decode or encode path. This program is linked with the
+// benchmarks' global operator new, which counts every allocation (bench/alloc_count.cpp); Catch
+// itself allocates, so only the allocations within a measured region count. It runs every
+// message type of every family through decode (by type, through its family's set, into a variant
+// and through visit) and encode (into a span and by value), the framer over a byte stream, and the
+// binary frame both ways. The inputs come from the benchmark corpus generator (bench/corpus.hpp)
+// and are built before counting starts.
 
 #include <array>
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -21,6 +19,7 @@
 #include <variant>
 #include <vector>
 
+#include "../bench/alloc_count.hpp"
 #include "../bench/corpus.hpp"
 #include "seawire/anello/frame.hpp"
 #include "seawire/nmea/dispatch.hpp"
@@ -30,63 +29,18 @@
 
 namespace {
 
-bool counting = false;
-std::uint64_t allocations = 0;
-
-void* allocate(std::size_t size) noexcept {
-  if (counting) ++allocations;
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr) std::abort();  // built without exceptions: no bad_alloc to throw
-  return p;
-}
-
-void* allocate_aligned(std::size_t size, std::align_val_t align) noexcept {
-  if (counting) ++allocations;
-  const auto a = static_cast<std::size_t>(align);
-  void* p = std::aligned_alloc(a, (size + a - 1) / a * a + (size == 0 ? a : 0));
-  if (p == nullptr) std::abort();
-  return p;
-}
-
 /// Heap allocations made while `f` runs.
 template <class F>
 std::uint64_t allocations_in(F&& f) {
-  allocations = 0;
-  counting = true;
+  const std::uint64_t before = seawire::bench::allocation_count();
   f();
-  counting = false;
-  return allocations;
+  return seawire::bench::allocation_count() - before;
 }
-
-}  // namespace
-
-void* operator new(std::size_t size) { return allocate(size); }
-void* operator new[](std::size_t size) { return allocate(size); }
-void* operator new(std::size_t size, std::align_val_t a) { return allocate_aligned(size, a); }
-void* operator new[](std::size_t size, std::align_val_t a) { return allocate_aligned(size, a); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-
-namespace {
 
 using namespace seawire;
 namespace sb = seawire::bench;
 
-/// Every message of every family, as one set: the decoder of a receiver that takes anything.
-using every_message = nmea::merge_sets<
-#if SEAWIRE_BENCH_HAS_KINGFISHER
-    kingfisher::from_vehicle, kingfisher::to_vehicle,
-#endif
-    sandshark::from_vehicle, sandshark::to_vehicle, robotx::reports, anello::nmea_inputs,
-    anello::nmea_outputs, sb::rmc_gga_set>::type;
+using sb::every_message;
 
 constexpr std::size_t lines_per_type = 64;
 
