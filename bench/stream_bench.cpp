@@ -168,45 +168,42 @@ const std::vector<std::uint8_t>& frames() {
   return f;
 }
 
-void frame_decode(benchmark::State& state) {
+// Decodes every frame of the corpus, each pass; `use` takes each result.
+template <class Use>
+void run_frame_decode(benchmark::State& state, Use&& use) {
   const std::span<const std::uint8_t> all = frames();
-  sb::sink s;
   std::size_t bad = 0;
   const std::uint64_t before = sb::allocation_count();
   for (auto _ : state) {
     for (std::size_t at = 0; at < all.size(); at += anello::frame_size) {
       const result<anello::sensor_frame_raw> r = anello::decode_frame(all.subspan(at));
       if (!r) ++bad;
-      anello::for_each_field(r.value, [&s](std::string_view, const auto& v) {
-        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(v)>, std::optional<double>>) {
-          s.sum += v.value_or(0);
-        } else {
-          s.bits += v.has_value() ? 1U : 0U;
-        }
-      });
-      benchmark::DoNotOptimize(s);
+      use(r);
     }
   }
   const std::uint64_t allocations = sb::allocation_count() - before;
   if (bad != 0) state.SkipWithError("frame: a frame did not decode");
   sb::report(state, corpus_size, all.size(), allocations);
 }
+
+void frame_decode(benchmark::State& state) {
+  sb::sink s;
+  run_frame_decode(state, [&s](const result<anello::sensor_frame_raw>& r) {
+    anello::for_each_field(r.value, [&s](std::string_view, const auto& v) {
+      if constexpr (std::is_same_v<std::remove_cvref_t<decltype(v)>, std::optional<double>>) {
+        s.sum += v.value_or(0);
+      } else {
+        s.bits += v.has_value() ? 1U : 0U;
+      }
+    });
+    benchmark::DoNotOptimize(s);
+  });
+}
 BENCHMARK(frame_decode)->Name("frame/decode+values");
 
 void frame_decode_raw(benchmark::State& state) {
-  const std::span<const std::uint8_t> all = frames();
-  std::size_t bad = 0;
-  const std::uint64_t before = sb::allocation_count();
-  for (auto _ : state) {
-    for (std::size_t at = 0; at < all.size(); at += anello::frame_size) {
-      const result<anello::sensor_frame_raw> r = anello::decode_frame(all.subspan(at));
-      if (!r) ++bad;
-      benchmark::DoNotOptimize(r);
-    }
-  }
-  const std::uint64_t allocations = sb::allocation_count() - before;
-  if (bad != 0) state.SkipWithError("frame: a frame did not decode");
-  sb::report(state, corpus_size, all.size(), allocations);
+  run_frame_decode(state,
+                   [](const result<anello::sensor_frame_raw>& r) { benchmark::DoNotOptimize(r); });
 }
 BENCHMARK(frame_decode_raw)->Name("frame/decode");
 
