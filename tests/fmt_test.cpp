@@ -20,24 +20,14 @@
 #include "seawire/robotx/messages.hpp"
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/standard/rmc.hpp"
+#include "support.hpp"
 
 using namespace seawire;
 using namespace seawire::nmea;
+using support::must_decode;
+using support::string_sink;
 
 namespace {
-template <class T>
-T must_decode(std::string_view line) {
-  const auto r = decode<T>(line);
-  REQUIRE(r);
-  return r.value;
-}
-
-struct string_sink {
-  std::string s;
-  void put(char c) { s += c; }
-  void put(std::string_view v) { s += v; }
-};
-
 constexpr std::string_view kNvg =
     "$CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,-6.796959,-1.706798,"
     "164959.006*78";

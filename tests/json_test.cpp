@@ -27,6 +27,7 @@
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/standard/gga.hpp"
 #include "seawire/standard/rmc.hpp"
+#include "support.hpp"
 
 #if SEAWIRE_HAS_NLOHMANN_JSON
 #include <nlohmann/json.hpp>
@@ -34,14 +35,10 @@
 
 using namespace seawire;
 using namespace seawire::nmea;
+using support::must_decode;
+using support::string_sink;
 
 namespace {
-
-struct string_sink {
-  std::string s;
-  void put(char c) { s += c; }
-  void put(std::string_view v) { s += v; }
-};
 
 template <class T>
 std::string value_json(const T& v) {
@@ -63,13 +60,6 @@ bool valid_json(const std::string& s) {
 #else
   return !s.empty();
 #endif
-}
-
-template <class T>
-T must_decode(std::string_view line) {
-  const auto r = decode<T>(line);
-  REQUIRE(r);
-  return r.value;
 }
 
 // A JSON object as read_json sees it: key -> (kind, text), plus a "precision" object.

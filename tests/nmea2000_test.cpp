@@ -17,9 +17,11 @@
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/nmea2000/pgns.hpp"
 #include "seawire/nmea2000/reader.hpp"
+#include "support.hpp"
 
 namespace n2k = seawire::nmea2000;
 using seawire::errc;
+using support::hex_of;
 
 namespace {
 
@@ -31,15 +33,6 @@ std::vector<std::uint8_t> hex_bytes(std::string_view hex) {
       continue;
     }
     out.push_back(static_cast<std::uint8_t>(std::stoi(std::string(hex.substr(i, 2)), nullptr, 16)));
-  }
-  return out;
-}
-
-std::string hex_of(const std::vector<std::uint8_t>& bytes) {
-  std::string out;
-  for (const std::uint8_t b : bytes) {
-    out += "0123456789ABCDEF"[b >> 4U];
-    out += "0123456789ABCDEF"[b & 15U];
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -82,6 +83,31 @@ inline std::size_t pick_max_chunk(prng& r) {
   const std::size_t bits = r.below(13);  // 2^0 .. 2^12
   const std::size_t base = std::size_t{1} << bits;
   return std::min<std::size_t>(4096, base + r.below(base));
+}
+
+/// Bytes as upper-case hex, two digits each, nothing between.
+inline std::string hex_of(std::span<const std::uint8_t> bytes) {
+  std::string out;
+  for (const std::uint8_t b : bytes) {
+    out += "0123456789ABCDEF"[b >> 4U];
+    out += "0123456789ABCDEF"[b & 15U];
+  }
+  return out;
+}
+
+/// A sink for the text writers (JSON, CSV): what they put, kept as a string.
+struct string_sink {
+  std::string s;
+  void put(char c) { s += c; }
+  void put(std::string_view v) { s += v; }
+};
+
+/// decode<T>(line), which must succeed (the test case stops here if not).
+template <class T>
+T must_decode(std::string_view line) {
+  const auto r = seawire::nmea::decode<T>(line);
+  REQUIRE(r);
+  return r.value;
 }
 
 /// A malformed sentence and what decode must say of it.
