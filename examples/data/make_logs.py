@@ -43,24 +43,25 @@ def hms(t, places):
     return s + ("." + str(frac).zfill(places) if places else "")
 
 
-def nmea_lat(deg, places, pad=True):
-    hemi = "N" if deg >= 0 else "S"
+def nmea_angle(deg, places, width, letters, pad):
+    """An angle as the wire writes it: degrees (`width` digits when padded) and minutes with
+    `places` fraction digits, then the hemisphere letter (letters[0] when positive)."""
+    hemi = letters[0] if deg >= 0 else letters[1]
     deg = abs(deg)
     d = int(deg)
-    m = (deg - d) * 60
-    mtxt = ("%0" + str(3 + places) + "." + str(places) + "f") % m
-    if mtxt.startswith("60"):
-        d, mtxt = d + 1, ("%0" + str(3 + places) + "." + str(places) + "f") % 0
-    return ("%02d" % d if pad else "%d" % d) + mtxt, hemi
+    minutes = ("%0" + str(3 + places) + "." + str(places) + "f")
+    mtxt = minutes % ((deg - d) * 60)
+    if mtxt.startswith("60"):  # rounded up to a whole degree
+        d, mtxt = d + 1, minutes % 0
+    return ("%0*d" % (width, d) if pad else "%d" % d) + mtxt, hemi
+
+
+def nmea_lat(deg, places, pad=True):
+    return nmea_angle(deg, places, 2, "NS", pad)
 
 
 def nmea_lon(deg, places, pad=True):
-    hemi = "E" if deg >= 0 else "W"
-    deg = abs(deg)
-    d = int(deg)
-    m = (deg - d) * 60
-    mtxt = ("%0" + str(3 + places) + "." + str(places) + "f") % m
-    return ("%03d" % d if pad else "%d" % d) + mtxt, hemi
+    return nmea_angle(deg, places, 3, "EW", pad)
 
 
 def f(x, places):
