@@ -173,21 +173,7 @@ TEST_CASE("the spec's example frame decodes to the spec's values", "[anello][fra
 }
 
 TEST_CASE("tests/data holds the spec's example frame", "[anello][frame]") {
-#ifdef SEAWIRE_TEST_DATA_DIR
-  const std::string path = std::string(SEAWIRE_TEST_DATA_DIR) + "/anello_seed_frame.hex";
-#else
-  std::string path = __FILE__;
-  path = path.substr(0, path.find_last_of('/') + 1) + "data/anello_seed_frame.hex";
-#endif
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  INFO(path);
-  REQUIRE(file != nullptr);
-  std::string text;
-  for (int c = std::fgetc(file); c != EOF; c = std::fgetc(file)) {
-    if (hex_nibble(static_cast<char>(c)) >= 0) text.push_back(static_cast<char>(c));
-  }
-  std::fclose(file);
-  CHECK(text == seed_hex);
+  CHECK(seed_hex_from_file() == seed_hex);
 }
 
 TEST_CASE("every single-bit error is detected", "[anello][frame]") {

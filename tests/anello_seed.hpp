@@ -3,9 +3,12 @@
 // The ANELLO 0xAB00 frame the frame and stream tests start from, and the CRC made right again
 // after a test changed a frame's payload.
 
+#include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "seawire/anello/frame.hpp"
@@ -38,6 +41,26 @@ constexpr seawire::anello::frame_bytes frame_from_hex(std::string_view hex) {
 }
 
 inline constexpr seawire::anello::frame_bytes seed = frame_from_hex(seed_hex);
+
+/// The hex digits of tests/data/anello_seed_frame.hex (what else the file holds left out); the
+/// test stops if it cannot be read.
+inline std::string seed_hex_from_file() {
+#ifdef SEAWIRE_TEST_DATA_DIR
+  const std::string path = std::string(SEAWIRE_TEST_DATA_DIR) + "/anello_seed_frame.hex";
+#else
+  std::string path = __FILE__;
+  path = path.substr(0, path.find_last_of('/') + 1) + "data/anello_seed_frame.hex";
+#endif
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  INFO(path);
+  REQUIRE(file != nullptr);
+  std::string hex;
+  for (int c = std::fgetc(file); c != EOF; c = std::fgetc(file)) {
+    if (hex_nibble(static_cast<char>(c)) >= 0) hex.push_back(static_cast<char>(c));
+  }
+  std::fclose(file);
+  return hex;
+}
 
 /// Gives a test frame a correct CRC after its payload was changed.
 inline void seal(std::span<std::uint8_t> frame) {

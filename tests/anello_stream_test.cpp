@@ -55,16 +55,6 @@ struct rec {
   friend bool operator==(const rec&, const rec&) = default;
 };
 
-const char* ending_name(line_ending e) {
-  switch (e) {
-    case line_ending::none: return "none";
-    case line_ending::lf: return "lf";
-    case line_ending::cr: return "cr";
-    case line_ending::crlf: return "crlf";
-  }
-  return "?";
-}
-
 std::ostream& operator<<(std::ostream& os, const rec& r) {
   switch (r.kind) {
     case stream_item_kind::sentence: os << "{sentence"; break;
@@ -76,18 +66,8 @@ std::ostream& operator<<(std::ostream& os, const rec& r) {
     os << " line " << r.line << ' ' << ending_name(r.ending);
   }
   if (r.kind == stream_item_kind::dropped) os << " line " << r.line;
-  os << " \"";
-  for (const char c : r.text.substr(0, 60)) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u >= 0x20 && u < 0x7F) {
-      os << c;
-    } else {
-      os << "\\x"
-         << "0123456789abcdef"[u >> 4] << "0123456789abcdef"[u & 15];
-    }
-  }
-  if (r.text.size() > 60) os << "...(" << r.text.size() << ")";
-  return os << "\"}";
+  os << ' ';
+  return quote_text(os, r.text) << '}';
 }
 
 rec sentence(std::string_view text, std::uint64_t offset, line_ending e, std::uint64_t line) {
@@ -567,20 +547,7 @@ TEST_CASE("the spec's example frame", "[anello][stream]") {
 }
 
 TEST_CASE("the spec's example frame from tests/data, between two sentences", "[anello][stream]") {
-#ifdef SEAWIRE_TEST_DATA_DIR
-  const std::string path = std::string(SEAWIRE_TEST_DATA_DIR) + "/anello_seed_frame.hex";
-#else
-  std::string path = __FILE__;
-  path = path.substr(0, path.find_last_of('/') + 1) + "data/anello_seed_frame.hex";
-#endif
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  INFO(path);
-  REQUIRE(file != nullptr);
-  std::string hex;
-  for (int c = std::fgetc(file); c != EOF; c = std::fgetc(file)) {
-    if (hex_nibble(static_cast<char>(c)) >= 0) hex.push_back(static_cast<char>(c));
-  }
-  std::fclose(file);
+  const std::string hex = seed_hex_from_file();
   REQUIRE(hex.size() == 2 * frame_size);
   const frame_bytes from_file = frame_from_hex(hex);
   CHECK(from_file == seed);

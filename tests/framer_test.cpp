@@ -31,29 +31,9 @@ struct rec {
   friend bool operator==(const rec&, const rec&) = default;
 };
 
-const char* ending_name(line_ending e) {
-  switch (e) {
-    case line_ending::none: return "none";
-    case line_ending::lf: return "lf";
-    case line_ending::cr: return "cr";
-    case line_ending::crlf: return "crlf";
-  }
-  return "?";
-}
-
 std::ostream& operator<<(std::ostream& os, const rec& r) {
-  os << '{' << r.line << ' ' << ending_name(r.ending) << " \"";
-  for (const char c : r.text.substr(0, 60)) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u >= 0x20 && u < 0x7F) {
-      os << c;
-    } else {
-      os << "\\x"
-         << "0123456789abcdef"[u >> 4] << "0123456789abcdef"[u & 15];
-    }
-  }
-  if (r.text.size() > 60) os << "...(" << r.text.size() << ")";
-  return os << "\"}";
+  os << '{' << r.line << ' ' << ending_name(r.ending) << ' ';
+  return quote_text(os, r.text) << '}';
 }
 
 rec own(const framed_line& l) { return {std::string(l.text), l.ending, l.line}; }

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <ostream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -16,6 +17,7 @@
 
 #include "seawire/error.hpp"
 #include "seawire/nmea/message.hpp"
+#include "seawire/nmea/stream.hpp"
 
 namespace support {
 
@@ -83,6 +85,34 @@ inline std::size_t pick_max_chunk(prng& r) {
   const std::size_t bits = r.below(13);  // 2^0 .. 2^12
   const std::size_t base = std::size_t{1} << bits;
   return std::min<std::size_t>(4096, base + r.below(base));
+}
+
+/// `text` quoted for a failure message: printable ASCII as is, other bytes as \xNN, cut after 60
+/// bytes (then its size).
+inline std::ostream& quote_text(std::ostream& os, std::string_view text) {
+  os << '"';
+  for (const char c : text.substr(0, 60)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7F) {
+      os << c;
+    } else {
+      os << "\\x"
+         << "0123456789abcdef"[u >> 4] << "0123456789abcdef"[u & 15];
+    }
+  }
+  if (text.size() > 60) os << "...(" << text.size() << ")";
+  return os << '"';
+}
+
+/// A line ending's name, for failure messages.
+inline const char* ending_name(seawire::nmea::line_ending e) {
+  switch (e) {
+    case seawire::nmea::line_ending::none: return "none";
+    case seawire::nmea::line_ending::lf: return "lf";
+    case seawire::nmea::line_ending::cr: return "cr";
+    case seawire::nmea::line_ending::crlf: return "crlf";
+  }
+  return "?";
 }
 
 /// Bytes as upper-case hex, two digits each, nothing between.
