@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli.hpp"
 #include "io.hpp"
 #include "messages.hpp"
 #include "seawire/anello/frame.hpp"
@@ -742,16 +743,7 @@ int main(int argc, char** argv) {
                  "canplayer -I - vcan0=can0)")
       ->check(CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw"}));
   app.set_version_flag("--version", "seawire-encode (seawire " SEAWIRE_VERSION_STRING ")");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    (void)app.exit(e);
-    return 2;
-  }
+  if (const auto status = tools::parse_command_line(app, argc, argv)) return *status;
   o.log = *nmea2000::log_format_named(log);
   return run(o);
 }
