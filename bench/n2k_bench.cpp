@@ -114,6 +114,10 @@ const std::vector<frame>& frames_127489() {
       m.fuel_rate_lph = some_value<decltype(m.fuel_rate_lph)>(r, 0, 400);
       m.total_engine_hours_s =
           decltype(m.total_engine_hours_s)::from_raw(static_cast<std::int64_t>(3'600'000 + i));
+      // No alarm: the flag words are sent, all clear (a field after a flag word that is not
+      // available is refused).
+      m.discrete_status_1 = decltype(m.discrete_status_1)::from_raw(0);
+      m.discrete_status_2 = decltype(m.discrete_status_2)::from_raw(0);
       m.engine_load_pct = some_value<decltype(m.engine_load_pct)>(r, 0, 100);
       const auto e = n2k::encode(m);
       const auto split = n2k::split_fast_packet(e.value, static_cast<std::uint8_t>(i % 8));
