@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli.hpp"
 #include "io.hpp"
 #include "messages.hpp"
 #include "seawire/anello/frame.hpp"
@@ -948,16 +949,7 @@ int main(int argc, char** argv) {
                "for speed); a sentence ended by CR alone is let out once the input has been "
                "quiet for 50 ms (e.g. nc vehicle 29500 | seawire-decode --line-buffered)");
   app.set_version_flag("--version", "seawire-decode (seawire " SEAWIRE_VERSION_STRING ")");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    (void)app.exit(e);
-    return 2;
-  }
+  if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
   o.fmt = fmt == "nmea"      ? format::nmea
           : fmt == "none"    ? format::none
           : fmt == "csv"     ? format::csv
