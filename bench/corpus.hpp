@@ -485,18 +485,10 @@ class generator {
     return m;
   }
   robotx::rxdok rxdok() noexcept {
-    robotx::rxdok m;
-    stamp(m);
-    m.shape_color = robotx::color::red;
-    m.shape = robotx::dock_shape::triangle;
-    return m;
+    return shape_report<robotx::rxdok>(robotx::color::red, robotx::dock_shape::triangle);
   }
   robotx::rxdel rxdel() noexcept {
-    robotx::rxdel m;
-    stamp(m);
-    m.shape_color = robotx::color::blue;
-    m.shape = robotx::deliver_shape::circle;
-    return m;
+    return shape_report<robotx::rxdel>(robotx::color::blue, robotx::deliver_shape::circle);
   }
 
  private:
@@ -514,6 +506,15 @@ class generator {
     m.date = date_of(v_);
     m.time = tod(std::floor(v_.seconds), 0);
     m.team_id = "AUVSI";
+  }
+  /// An RXDOK or RXDEL: stamped, the shape's colour and the shape.
+  template <class M, class Shape>
+  M shape_report(robotx::color color, Shape shape) noexcept {
+    M m;
+    stamp(m);
+    m.shape_color = color;
+    m.shape = shape;
+    return m;
   }
   robotx::light_pattern pattern() noexcept {
     static constexpr std::array<std::string_view, 6> p{"RGB", "RBG", "GRB", "GBR", "BRG", "BGR"};
