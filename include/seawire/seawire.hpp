@@ -32,6 +32,9 @@
 //                                                  packets, CAN log formats, JSON, log reader
 //   shared layouts      seawire/bluefin/           seawire::bluefin -- the NVG/NVR layout that
 //                                                  Sandshark and Kingfisher both use
+//   every message       seawire/registry.hpp       seawire::registry -- each family's sets with
+//                                                  the policy of the role receiving them, every
+//                                                  sentence, every PGN, the frame, as type lists
 //
 // Not included here: seawire/fmt.hpp (fmt::formatter for every message; needs {fmt}).
 
@@ -90,3 +93,6 @@
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/nmea2000/pgns.hpp"
 #include "seawire/nmea2000/reader.hpp"
+
+// every message
+#include "seawire/registry.hpp"
