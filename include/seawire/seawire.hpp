@@ -17,8 +17,9 @@
 //                                                  message descriptions, dispatch by address,
 //                                                  builder (messages from doubles), describe
 //                                                  (errors for people), to_chars (json.hpp)
-//   standard sentences  seawire/standard/          seawire::standard -- NMEA 0183 RMC, GGA,
-//                                                  RPM, RSA, VHW, VBW, VWR, any talker
+//   standard sentences  seawire/standard/          seawire::standard -- NMEA 0183 sentences
+//                                                  from any talker, one header each (listed in
+//                                                  registry::standard_sentences)
 //   kingfisher          seawire/kingfisher/        seawire::kingfisher -- Clearpath CP* / PY*
 //   sandshark           seawire/sandshark/         seawire::sandshark -- Bluefin SPI BF* / BP*,
 //                                                  payload and vehicle session state machines
@@ -57,14 +58,7 @@
 #include "seawire/nmea/variation.hpp"
 #include "seawire/nmea/writer.hpp"
 
-// standard sentences
-#include "seawire/standard/gga.hpp"
-#include "seawire/standard/rmc.hpp"
-#include "seawire/standard/rpm.hpp"
-#include "seawire/standard/rsa.hpp"
-#include "seawire/standard/vbw.hpp"
-#include "seawire/standard/vhw.hpp"
-#include "seawire/standard/vwr.hpp"
+// standard sentences: every one, through seawire/registry.hpp below
 
 // kingfisher
 #include "seawire/kingfisher/messages.hpp"
