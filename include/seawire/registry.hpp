@@ -25,6 +25,7 @@
 #include "seawire/robotx/messages.hpp"
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/standard/gga.hpp"
+#include "seawire/standard/hdt.hpp"
 #include "seawire/standard/rmc.hpp"
 #include "seawire/standard/rpm.hpp"
 #include "seawire/standard/rsa.hpp"
@@ -97,7 +98,7 @@ struct role {
 /// The standard NMEA 0183 sentences, from any talker.
 using standard_sentences =
     nmea::message_set<standard::rmc, standard::gga, standard::rpm, standard::rsa, standard::vhw,
-                      standard::vbw, standard::vwr>;
+                      standard::vbw, standard::vwr, standard::hdt>;
 
 inline constexpr role<standard_sentences> standard_nmea{
     "Standard NMEA 0183 sentences", "Standard NMEA 0183 sentence.", nmea::parse_policy{}};

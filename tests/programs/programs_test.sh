@@ -144,6 +144,9 @@ case_json() {
     "$(line 4 "$n" | grep -o '"magnetic_variation".*')"
   expect_eq "RMC 4.1 from GN" '"mode":"A","navigational_status":"V"}' \
     "$(grep -m1 '"GNRMC"' "$n" | grep -o '"mode".*')"
+  expect_eq "HDT from a settling gyrocompass, then with a heading" \
+    '{"type":"HEHDT","heading_true_deg":null}
+{"type":"HEHDT","heading_true_deg":309.79}' "$(grep -m2 '"HEHDT"' "$n")"
 }
 
 case_bad() {
