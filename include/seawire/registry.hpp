@@ -148,8 +148,18 @@ struct sets_of<std::tuple<R...>> {
 /// Every sentence of every role, once (RMC is in several).
 using sentences = detail::sets_of<std::remove_cvref_t<decltype(roles)>>::type;
 
-/// Every NMEA 2000 PGN declared: decoded and encoded by name ("type":"PGN128259").
-using pgns = nmea2000::ins_input_pgns;
+namespace detail {
+template <class List, class... More>
+struct append_pgns;
+template <class... P, class... More>
+struct append_pgns<nmea2000::pgn_list<P...>, More...> {
+  using type = nmea2000::pgn_list<P..., More...>;
+};
+}  // namespace detail
+
+/// Every NMEA 2000 PGN declared: decoded and encoded by name ("type":"PGN128259"). The ANELLO
+/// INS's inputs, then the others.
+using pgns = detail::append_pgns<nmea2000::ins_input_pgns, nmea2000::vessel_heading>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

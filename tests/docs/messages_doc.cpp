@@ -341,7 +341,7 @@ void pgn() {
 template <class... P>
 void pgns(nmea2000::pgn_list<P...>*) {
   std::printf(
-      "## NMEA 2000: inputs to the INS\n\n"
+      "## NMEA 2000 PGNs\n\n"
       "Fields are little-endian and packed least significant bit first from the bit offset. A\n"
       "number's physical value is its raw value times the step, in the unit its name ends with.\n"
       "The highest raw values of a field are not values: in a number of 8 bits or more the top\n"
