@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "seawire/anello/frame.hpp"
+#include "seawire/anello/frame_json.hpp"
 #include "seawire/fmt.hpp"
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/json.hpp"
@@ -126,6 +128,27 @@ TEST_CASE("NMEA 2000 messages and field values") {
   log.date = n2k::date::from_raw(17'000);
   log.time = n2k::time_of_day::from_raw(453'251'234);
   CHECK(fmt::format("{} {}", log.date, log.time) == "2016-07-18 12:35:25.1234");
+}
+
+TEST_CASE("the ANELLO 0xAB00 frame: plain and JSON") {
+  const anello::sensor_frame_raw f{.heading = 89,
+                                   .lat = 32828671,
+                                   .lon = -117229926,
+                                   .sog = 0,
+                                   .gps_time_ms = 0x00000190794363D0,
+                                   .gga_quality = 4,
+                                   .air_temp = 215};
+  const std::string plain = fmt::format("{}", f);
+  CHECK(
+      plain.starts_with("AB00{heading_deg=89, latitude_deg=32.828671, longitude_deg=-117.229926, "
+                        "sog_mps=0.0, cog_deg=null, gps_time=2024-07-03T15:42:58.000Z, "));
+  CHECK(plain.find(", fix_quality=4, ") != std::string::npos);
+  CHECK(plain.ends_with(", air_temp_c=21.5, pressure_hpa=null}"));
+  // {:j} is anello::write_json, byte for byte.
+  string_sink k;
+  anello::write_json(k, f);
+  CHECK(k.s.starts_with(R"({"type":"AB00","heading_deg":89,"latitude":32.828671,)"));
+  CHECK(fmt::format("{:j}", f) == k.s);
 }
 
 #else

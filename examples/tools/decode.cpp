@@ -3,9 +3,10 @@
 // of NMEA 2000 frames, on stdin -> one JSON object per message (or re-encoded messages, CSV tables,
 // a GeoJSON or SVG track, or nothing but a verdict). A thin program over the library:
 // anello::stream_reader cuts the stream into sentences and frames, message_set::visit decodes each
-// sentence by its address, nmea/json.hpp, nmea/csv.hpp and anello/frame_json.hpp write them;
-// track.hpp gathers positions. A CAN log goes through nmea2000::log_reader (lines, fast packets)
-// and nmea2000/json.hpp. See --help, and docs/seawire-decode.md for the manual.
+// sentence by its address; a CAN log goes through nmea2000::log_reader (lines, fast packets).
+// Every message, of every wire, goes out through one place (decoder::deliver): the library's JSON
+// and CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp, which gathers
+// positions from the same walk. See --help, and docs/seawire-decode.md for the manual.
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -47,6 +48,7 @@
 #include "seawire/nmea2000/pgns.hpp"
 #include "seawire/nmea2000/reader.hpp"
 #include "seawire/version.hpp"
+#include "seawire/walk.hpp"
 #include "track.hpp"
 
 namespace {
@@ -88,26 +90,30 @@ struct options {
   std::string output_dir;          // --format csv: one <TYPE>.csv per type here
 };
 
-// Whether a message type has a position: fields called "latitude" and "longitude", as in JSON.
+// A message of a PGN without a description: its payload, written as its bytes.
+struct raw_pgn {
+  std::span<const std::uint8_t> payload;
+};
+
+// The CSV table of a message type of any wire: its header row, and a message's row. A PGN's table
+// begins with the columns of the CAN frame's header (nmea2000::write_csv_header); every other
+// table is the message's fields alone.
 template <class M>
-constexpr bool has_position() {
-  if constexpr (nmea::message_like<M>) {
-    bool lat = false, lon = false;
-    M::nmea.fields.apply([&](const auto&... d) {
-      ((lat = lat || d.name == "latitude", lon = lon || d.name == "longitude"), ...);
-    });
-    return lat && lon;
+void csv_header(tools::output& out) {
+  if constexpr (nmea2000::pgn_like<M>) {
+    nmea2000::write_csv_header<M>(out);
   } else {
-    return false;
+    write_csv_columns<M>(out);
   }
 }
-
-// Whether a field's values are states (enums and flags) whose changes along a track are events.
-template <class V>
-struct is_state : std::bool_constant<std::is_same_v<V, bool> || nmea::char_enum_like<V> ||
-                                     nmea::word_enum_like<V>> {};
-template <class V>
-struct is_state<std::optional<V>> : is_state<V> {};
+template <class M>
+void csv_row(tools::output& out, const M& msg, const nmea2000::message_header* head) {
+  if constexpr (nmea2000::pgn_like<M>) {
+    nmea2000::write_csv(out, *head, msg);
+  } else {
+    write_csv_cells(out, msg);
+  }
+}
 
 // Writes the CSV header of the type JSON calls `type` (GPRMC, CPNVG, AB00); false when no
 // message of the set, nor the frame, has that type.
@@ -117,7 +123,7 @@ template <class... Ms>
 struct csv_headers<nmea::message_set<Ms...>> {
   static bool write(std::string_view type, tools::output& out) {
     if (type == anello::frame_json_type) {
-      anello::write_csv_header(out);
+      csv_header<anello::sensor_frame_raw>(out);
       return true;
     }
     if (const auto pgn = nmea2000::pgn_of_type(type)) {
@@ -125,12 +131,12 @@ struct csv_headers<nmea::message_set<Ms...>> {
       n2k_pgns::for_each_type([&](const auto& tag) {
         using P = std::remove_cvref_t<decltype(tag)>;
         if (P::n2k.info.pgn != *pgn) return;
-        nmea2000::write_csv_header<P>(out);
+        csv_header<P>(out);
         found = true;
       });
       return found;
     }
-    return ((Ms::nmea.matches(type) ? (nmea::write_csv_header<Ms>(out), true) : false) || ...);
+    return ((Ms::nmea.matches(type) ? (csv_header<Ms>(out), true) : false) || ...);
   }
   static bool knows(std::string_view type) {
     if (const auto pgn = nmea2000::pgn_of_type(type)) return n2k_pgns::knows(*pgn);
@@ -464,35 +470,9 @@ class decoder {
         std::snprintf(type_buf, sizeof type_buf, "PGN%u", static_cast<unsigned>(h.id.pgn));
     const std::string_view type(type_buf, static_cast<std::size_t>(n));
     if (!wanted(type)) return;
-    const bool known = n2k_pgns::visit(h.id.pgn, payload, [&](const auto& msg) {
-      using P = std::remove_cvref_t<decltype(msg)>;
-      switch (opt_.fmt) {
-        case format::json:
-          nmea2000::write_json(out_, h, msg);
-          out_.put('\n');
-          break;
-        case format::csv:
-          if (csv_table* t = table(type)) {
-            if (!t->header) nmea2000::write_csv_header<P>(*t->out);
-            t->header = true;
-            nmea2000::write_csv(*t->out, h, msg);
-            if (opt_.line_buffered) t->out->flush();
-          }
-          break;
-        default: break;  // none; no PGN here has a position for geojson or svg
-      }
-    });
-    if (!known) {
-      if (opt_.fmt == format::json) {
-        nmea2000::write_json_raw(out_, h, payload);
-        out_.put('\n');
-      } else if (opt_.fmt == format::csv) {
-        ++not_tabled_[std::string(type)];
-      }
-    }
-    ++decoded_;
-    if (opt_.stats) ++by_type_[std::string(type)];
-    if (opt_.line_buffered) out_.flush();
+    const bool known =
+        n2k_pgns::visit(h.id.pgn, payload, [&](const auto& msg) { deliver(type, type, msg, &h); });
+    if (!known) deliver(type, type, raw_pgn{payload}, &h);
   }
 
   void handle(const anello::stream_item& item) {
@@ -514,41 +494,11 @@ class decoder {
       return;
     }
     if (!wanted(anello::frame_json_type)) return;
-    switch (opt_.fmt) {
-      case format::json:
-        anello::write_json(out_, item.frame);
-        out_.put('\n');
-        break;
-      case format::nmea: {
-        const anello::frame_bytes bytes = anello::encode_frame(item.frame);
-        out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-        break;
-      }
-      case format::none: break;
-      case format::csv:
-        if (csv_table* t = table(anello::frame_json_type)) {
-          if (!t->header) anello::write_csv_header(*t->out);
-          t->header = true;
-          anello::write_csv(*t->out, item.frame);
-          if (opt_.line_buffered) t->out->flush();
-        }
-        break;
-      case format::geojson:
-      case format::svg: {
-        nmea::json_buffer<2048> json;
-        anello::write_json(json, item.frame);
-        if (tools::split_json_object(json.view(), fields_)) {
-          // The frame's codes (fix quality) are its states.
-          for (std::size_t i = 1; i < fields_.size(); ++i)
-            fields_[i].state = anello::about_sensor_field(static_cast<std::uint16_t>(i)).is_code;
-          tracks_.add(fields_);
-        }
-        break;
-      }
+    if (opt_.fmt == format::nmea) {
+      const anello::frame_bytes bytes = anello::encode_frame(item.frame);
+      out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
     }
-    ++decoded_;
-    if (opt_.stats) ++by_type_[std::string(anello::frame_json_type)];
-    if (opt_.line_buffered) out_.flush();
+    deliver(anello::frame_json_type, anello::frame_json_type, item.frame, nullptr);
   }
 
   // "AB00 field 1 (heading_deg) 361: value outside the range the spec allows", the value as
@@ -634,35 +584,58 @@ class decoder {
   void emit(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
     nmea::json_buffer<16> type_buf;
     if (!opt_.types.empty() && !wanted(type_of(s, msg, type_buf))) return;
+    if (opt_.fmt == format::nmea && !reencode(l, s, msg)) return;
+    // The type names tables and tracks; the other formats have no use for it.
+    std::string_view type = type_buf.view();
+    if (type.empty() &&
+        (opt_.fmt == format::csv || opt_.fmt == format::geojson || opt_.fmt == format::svg))
+      type = type_of(s, msg, type_buf);
+    deliver(type, s.address, msg, nullptr);
+  }
+
+  // ---- every message, of every wire ----
+
+  // A message decoded (a sentence, known or not; a PGN, described or not; a frame) in the format
+  // asked for, the one place the formats are told apart (--format nmea is the caller's: it
+  // re-encodes by the wire). `type` is its JSON "type", `counted` what --stats counts it under,
+  // `head` the CAN frame's header of a PGN (nullptr for the others).
+  template <class M>
+  void deliver(std::string_view type, std::string_view counted, const M& msg,
+               const nmea2000::message_header* head) {
     switch (opt_.fmt) {
       case format::json:
-        nmea::write_json(out_, msg);
+        if constexpr (nmea2000::pgn_like<M>) {
+          nmea2000::write_json(out_, *head, msg);
+        } else if constexpr (std::is_same_v<M, raw_pgn>) {
+          nmea2000::write_json_raw(out_, *head, msg.payload);
+        } else if constexpr (std::is_same_v<M, anello::sensor_frame_raw>) {
+          anello::write_json(out_, msg);
+        } else {
+          nmea::write_json(out_, msg);
+        }
         out_.put('\n');
         break;
-      case format::nmea:
-        if (!reencode(l, s, msg)) return;
-        break;
-      case format::none: break;
       case format::csv:
-        if constexpr (nmea::message_like<M>) {
-          if (type_buf.view().empty()) nmea::write_type(type_buf, msg);
-          if (csv_table* t = table(type_buf.view())) {
-            if (!t->header) nmea::write_csv_header<M>(*t->out);
+        if constexpr (walkable<M>) {
+          if (csv_table* t = table(type)) {
+            if (!t->header) csv_header<M>(*t->out);
             t->header = true;
-            nmea::write_csv(*t->out, msg);
+            csv_row(*t->out, msg, head);
             if (opt_.line_buffered) t->out->flush();
           }
         } else {
-          ++not_tabled_[std::string(s.address)];
+          ++not_tabled_[std::string(type)];
         }
         break;
       case format::geojson:
       case format::svg:
-        if constexpr (has_position<M>()) track(msg);
+        if constexpr (walkable<M>) tracks_.add(type, msg);
         break;
+      case format::nmea:
+      case format::none: break;
     }
     ++decoded_;
-    if (opt_.stats) ++by_type_[std::string(s.address)];
+    if (opt_.stats) ++by_type_[std::string(counted)];
     if (opt_.line_buffered) out_.flush();
   }
 
@@ -737,21 +710,6 @@ class decoder {
       t->out = std::make_unique<tools::output>(t->file, 16 * 1024);
     }
     return tables_.emplace(std::string(type), std::move(t)).first->second.get();
-  }
-
-  // A message with a position, to its source's track: its JSON members, states marked.
-  template <class M>
-  void track(const M& msg) {
-    nmea::json_buffer<4096> json;
-    nmea::write_json(json, msg);
-    if (json.overflow() || !tools::split_json_object(json.view(), fields_)) return;
-    std::size_t i = 1;  // fields_[0] is "type"
-    nmea::for_each_field(msg, [&](std::string_view, const auto& value) {
-      if (i < fields_.size())
-        fields_[i].state = is_state<std::remove_cvref_t<decltype(value)>>::value;
-      ++i;
-    });
-    tracks_.add(fields_);
   }
 
   // ---- errors ----
@@ -870,7 +828,6 @@ class decoder {
   std::uint64_t table_failures_ = 0;
   csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
   tools::tracks tracks_;
-  std::vector<tools::json_field> fields_;
 };
 
 int run(const options& o) {

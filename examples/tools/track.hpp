@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Tracks for seawire-decode --format geojson and --format svg: every message that carries a
-// position ("latitude" and "longitude" in its JSON form) adds a vertex to the track of its
-// source; the track is written at the end, as GeoJSON (RFC 7946) or as an SVG picture.
+// position (a latitude and a longitude field, as the walk over its fields says: walk.hpp) adds a
+// vertex to the track of its source; the track is written at the end, as GeoJSON (RFC 7946) or as
+// an SVG picture. Each field's value is its JSON text.
 //
 // A source is the message type ("CPNVG", "GPRMC", "AB00"), or type and team for messages that
 // name one ("RXHRB AUVSI"). A change of state between consecutive positions of a source (an enum
@@ -16,55 +17,53 @@
 #include <cstddef>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "io.hpp"
+#include "seawire/anello/frame_json.hpp"
+#include "seawire/nmea/json.hpp"
+#include "seawire/nmea2000/json.hpp"
+#include "seawire/walk.hpp"
 
 namespace seawire::tools {
 
-/// One field of a message as its JSON object has it: key, value text, and whether it is a
-/// state (an enum, a flag or a code) whose changes are events.
+/// One field of a message as its JSON object has it: key, value text, whether it is a state
+/// (an enum, a flag or a code) whose changes are events, and which axis of a position it holds.
 struct json_field {
   std::string_view key;
   std::string_view value;
   bool state = false;
+  position_axis axis = position_axis::none;
 };
 
-/// Splits a flat JSON object as the library's write_json writes it ({"type":"X","k":v,...}:
-/// keys without escapes, values numbers, literals or strings) into its members, "type" first.
-/// Returns false when the text is not such an object.
-inline bool split_json_object(std::string_view text, std::vector<json_field>& out) {
-  out.clear();
-  std::size_t i = 0;
-  if (text.empty() || text[i++] != '{') return false;
-  while (i < text.size() && text[i] == '"') {
-    const std::size_t key_end = text.find('"', i + 1);
-    if (key_end == std::string_view::npos || key_end + 1 >= text.size() || text[key_end + 1] != ':')
-      return false;
-    json_field f;
-    f.key = text.substr(i + 1, key_end - i - 1);
-    std::size_t v = key_end + 2;
-    std::size_t end = v;
-    if (v < text.size() && text[v] == '"') {
-      for (end = v + 1; end < text.size() && text[end] != '"'; ++end)
-        if (text[end] == '\\') ++end;
-      if (end >= text.size()) return false;
-      ++end;
-    } else {
-      while (end < text.size() && text[end] != ',' && text[end] != '}') ++end;
-    }
-    f.value = text.substr(v, end - v);
-    out.push_back(f);
-    if (end >= text.size()) return false;
-    if (text[end] == '}') return end + 1 == text.size();
-    i = end + 1;
+namespace detail {
+// Whether a field's values are states whose changes along a track are events: enums and flags
+// of a sentence, lookups and flag sets of a PGN, the frame's codes (fix quality).
+template <class V>
+struct is_state : std::bool_constant<std::is_same_v<V, bool> || nmea::char_enum_like<V> ||
+                                     nmea::word_enum_like<V>> {};
+template <class V>
+struct is_state<std::optional<V>> : is_state<V> {};
+template <class E, unsigned B>
+struct is_state<nmea2000::lookup<E, B>> : std::true_type {};
+template <class E, unsigned B>
+struct is_state<nmea2000::flags<E, B>> : std::true_type {};
+
+template <class View>
+constexpr bool state_field() {
+  if constexpr (View::kind == wire_kind::anello_frame) {
+    return std::is_integral_v<typename std::remove_cvref_t<decltype(View::desc)>::value_type>;
+  } else {
+    return is_state<typename View::value_type>::value;
   }
-  return false;
 }
+}  // namespace detail
 
 /// A JSON string's content without its quotes, still escaped (as it goes back into JSON).
 inline std::string_view unquoted(std::string_view v) {
@@ -102,17 +101,54 @@ inline std::string unescaped(std::string_view v) {
 
 class tracks {
  public:
-  /// Adds a message given as its JSON members (split_json_object's output, "type" first).
-  /// Messages without a position (or with a blank one) are not part of any track.
-  void add(std::span<const json_field> fields) {
+  /// Whether messages of type M carry a position: a latitude and a longitude field.
+  template <class M>
+  static constexpr bool has_position = [] {
+    bool lat = false;
+    bool lon = false;
+    visit_layout<M>([&](auto f) {
+      lat = lat || f.axis == position_axis::latitude;
+      lon = lon || f.axis == position_axis::longitude;
+    });
+    return lat && lon;
+  }();
+
+  /// Adds a message of any wire, of JSON type `type` ("CPNVG", "GPRMC", "AB00"): its fields as
+  /// the walk gives them (walk.hpp), each value as its JSON text. Messages without a position
+  /// (or with a blank one) are not part of any track.
+  template <class M>
+  void add(std::string_view type, const M& msg) {
+    if constexpr (has_position<M>) {
+      text_.clear();
+      ends_.clear();
+      fields_.clear();
+      visit_fields(msg, [&](const auto& f) {
+        put_field_value<nmea::json_style::json>(*this, f);
+        ends_.push_back(text_.size());
+        fields_.push_back(
+            {f.key, {}, detail::state_field<std::remove_cvref_t<decltype(f)>>(), f.axis});
+      });
+      std::size_t start = 0;
+      for (std::size_t i = 0; i < fields_.size(); ++i) {
+        fields_[i].value = std::string_view(text_).substr(start, ends_[i] - start);
+        start = ends_[i];
+      }
+      add_fields(type, fields_);
+    }
+  }
+
+  /// The sink the values are written to (for add).
+  void put(char c) { text_ += c; }
+  void put(std::string_view v) { text_ += v; }
+
+  /// Adds a message given as its fields' JSON text (the position's by their axis).
+  void add_fields(std::string_view type, std::span<const json_field> fields) {
     const json_field* lat = nullptr;
     const json_field* lon = nullptr;
-    std::string_view type;
     std::string_view team;
     for (const json_field& f : fields) {
-      if (f.key == "latitude") lat = &f;
-      if (f.key == "longitude") lon = &f;
-      if (f.key == "type") type = unquoted(f.value);
+      if (f.axis == position_axis::latitude && lat == nullptr) lat = &f;
+      if (f.axis == position_axis::longitude && lon == nullptr) lon = &f;
       if (f.key == "team_id") team = unquoted(f.value);
     }
     if (lat == nullptr || lon == nullptr || lat->value == "null" || lon->value == "null") return;
@@ -134,7 +170,7 @@ class tracks {
     std::string changes;
     std::string previous;
     for (const json_field& f : fields) {
-      if (&f == lat || &f == lon || f.key == "type") continue;
+      if (&f == lat || &f == lon) continue;
       if (k == s.columns.size()) s.columns.push_back({std::string(f.key), {}, {}});
       column& c = s.columns[k++];
       if (!c.values.empty()) c.values += ',';
@@ -158,7 +194,7 @@ class tracks {
       e.append("\"source\":\"").append(name).append("\",\"event\":\"state change\",\"changed\":[");
       e.append(changes).append("],\"previous\":{").append(previous).append("}");
       for (const json_field& f : fields) {
-        if (f.key == "type" || &f == lat || &f == lon) continue;
+        if (&f == lat || &f == lon) continue;
         e.append(",\"").append(f.key).append("\":").append(f.value);
       }
       e.append("}}");
@@ -371,7 +407,10 @@ class tracks {
   }
 
   std::map<std::string, source, std::less<>> sources_;
-  std::string events_;  // ",\n{Feature}" per event
+  std::string text_;                // add's values, one after the other
+  std::vector<std::size_t> ends_;   // where each ends in text_
+  std::vector<json_field> fields_;  // add's fields
+  std::string events_;              // ",\n{Feature}" per event
 };
 
 }  // namespace seawire::tools

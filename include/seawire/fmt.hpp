@@ -21,12 +21,15 @@
 //
 // The JSON form of a message has no frame header (priority, source, time): it is
 // nmea2000::write_json(sink, msg). Flag sets are arrays of names: [check_engine,over_temperature].
+// The ANELLO 0xAB00 frame likewise: AB00{heading_deg=89, latitude_deg=32.828671, ...}, and {:j}
+// is anello::write_json. Every message is written by one loop over its fields (walk.hpp).
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <string_view>
 
+#include "seawire/anello/frame_json.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/json.hpp"
@@ -66,20 +69,11 @@ struct fmt_spec {
   }
 };
 
-/// TYPE{name=value, ...} with plain values.
+/// TYPE{name=value, ...} with plain values: the type as JSON's "type" has it, then the fields.
 template <class Sink, nmea::message_like T>
 constexpr void write_plain(Sink& s, const T& msg) {
   nmea::write_type(s, msg);
-  s.put('{');
-  bool first = true;
-  nmea::for_each_field(msg, [&](std::string_view name, const auto& value) {
-    if (!first) s.put(", ");
-    first = false;
-    s.put(name);
-    s.put('=');
-    nmea::write_json_value<nmea::json_style::plain>(s, value);
-  });
-  s.put('}');
+  write_plain_fields(s, msg);
 }
 
 /// PGN<n>{name=value, ...} with plain values, reserved bits left out.
@@ -87,19 +81,14 @@ template <class Sink, nmea2000::pgn_like P>
 constexpr void write_plain(Sink& s, const P& msg) {
   s.put("PGN");
   nmea::detail::json_uint(s, P::n2k.info.pgn);
-  s.put('{');
-  bool first = true;
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved) {
-      if (!first) s.put(", ");
-      first = false;
-      s.put(f.name);
-      s.put('=');
-      nmea2000::write_json_value<nmea::json_style::plain>(s, msg.*F::member);
-    }
-  });
-  s.put('}');
+  write_plain_fields(s, msg);
+}
+
+/// AB00{name=value, ...} with plain values (gps_time ISO 8601, unquoted).
+template <class Sink>
+constexpr void write_plain(Sink& s, const anello::sensor_frame_raw& frame) {
+  s.put(anello::frame_json_type);
+  write_plain_fields(s, frame);
 }
 
 /// Value types with a formatter of their own (messages and optionals are not among them).
@@ -110,16 +99,21 @@ concept fmt_value = std::is_same_v<T, nmea::decimal> || std::is_same_v<T, nmea::
 
 }  // namespace seawire::detail
 
-/// Messages: "{}" is TYPE{field=value, ...}; "{:j}" one JSON object.
-template <seawire::nmea::message_like T>
-struct fmt::formatter<T> : seawire::detail::fmt_spec {
+/// Messages of every wire (a sentence, a PGN, the 0xAB00 frame): "{}" is TYPE{field=value, ...};
+/// "{:j}" one JSON object (a PGN's without the frame's header: nmea2000::write_json(sink, msg)).
+template <seawire::walkable M>
+struct fmt::formatter<M> : seawire::detail::fmt_spec {
   template <class FormatContext>
-  auto format(const T& msg, FormatContext& ctx) const {
+  auto format(const M& msg, FormatContext& ctx) const {
     seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
-    if (json) {
-      seawire::nmea::write_json(s, msg);
-    } else {
+    if (!json) {
       seawire::detail::write_plain(s, msg);
+    } else if constexpr (seawire::nmea::message_like<M>) {
+      seawire::nmea::write_json(s, msg);
+    } else if constexpr (seawire::nmea2000::pgn_like<M>) {
+      seawire::nmea2000::write_json(s, msg);
+    } else {
+      seawire::anello::write_json(s, msg);
     }
     return s.out;
   }
@@ -166,22 +160,6 @@ struct fmt::formatter<seawire::nmea::text<N>> : seawire::detail::fmt_spec {
       seawire::nmea::write_json_value(s, v);
     } else {
       s.put(v.view());
-    }
-    return s.out;
-  }
-};
-
-/// NMEA 2000 messages: "{}" is PGN<n>{field=value, ...}; "{:j}" one JSON object without the
-/// frame's header (nmea2000::write_json(sink, msg)).
-template <seawire::nmea2000::pgn_like P>
-struct fmt::formatter<P> : seawire::detail::fmt_spec {
-  template <class FormatContext>
-  auto format(const P& msg, FormatContext& ctx) const {
-    seawire::detail::fmt_sink<decltype(ctx.out())> s{ctx.out()};
-    if (json) {
-      seawire::nmea2000::write_json(s, msg);
-    } else {
-      seawire::detail::write_plain(s, msg);
     }
     return s.out;
   }

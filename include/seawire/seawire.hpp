@@ -1,43 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// seawire: codecs for the wire protocols spoken between marine vehicles and their payloads.
-// Including this header gives you all of it; each part below can also be included on its own.
-//
-// Contract, for every part: header-only C++20; no exceptions, no RTTI, no heap, no I/O, no
-// clock (time is passed in). Decoders take bytes and return result<T>: the value, or an errc
-// with the field number and byte column where the input went wrong. Encoders write strictly
-// (uppercase checksum, CR LF, only printable text) and refuse what the spec forbids.
-//
-// Contents
-//   errors              seawire/error.hpp          errc, name(), message(), result<T>
-//                       seawire/version.hpp        version, SEAWIRE_VERSION_*
-//   nmea wire layer     seawire/nmea/              seawire::nmea -- what every NMEA-style
-//                                                  protocol shares: checksum, sentence_view and
-//                                                  parse_policy, framer, writer, field codecs,
-//                                                  message descriptions, dispatch by address,
-//                                                  builder (messages from doubles), describe
-//                                                  (errors for people), to_chars (json.hpp)
-//   standard sentences  seawire/standard/          seawire::standard -- NMEA 0183 sentences
-//                                                  from any talker, one header each (listed in
-//                                                  registry::standard_sentences)
-//   kingfisher          seawire/kingfisher/        seawire::kingfisher -- Clearpath CP* / PY*
-//   sandshark           seawire/sandshark/         seawire::sandshark -- Bluefin SPI BF* / BP*,
-//                                                  payload and vehicle session state machines
-//   robotx              seawire/robotx/            seawire::robotx -- RobotX RX* reports and
-//                                                  the heartbeat scheduler
-//   anello              seawire/anello/            seawire::anello -- ANELLO INS inputs:
-//                                                  PAPGPSCTRL, the 0xAB00 binary frame, mixed
-//                                                  NMEA + binary streams
-//   nmea2000            seawire/nmea2000/          seawire::nmea2000 -- CAN identifier, PGN
-//                                                  descriptions, the ANELLO input PGNs, fast
-//                                                  packets, CAN log formats, JSON, log reader
-//   shared layouts      seawire/bluefin/           seawire::bluefin -- the NVG/NVR layout that
-//                                                  Sandshark and Kingfisher both use
-//   every message       seawire/registry.hpp       seawire::registry -- each family's sets with
-//                                                  the policy of the role receiving them, every
-//                                                  sentence, every PGN, the frame, as type lists
-//
-// Not included here: seawire/fmt.hpp (fmt::formatter for every message; needs {fmt}).
+// seawire: codecs for the wire protocols spoken between marine vehicles and their payloads. This
+// header includes all of it but seawire/fmt.hpp (which needs {fmt}); each part may be included on
+// its own. The parts: docs/api.md. Contract, for every part: no exceptions, RTTI, heap, I/O or
+// clock; decoders return result<T> (the value, or an errc with the field and column); encoders
+// write strictly and refuse what the spec forbids.
 
 // One include per line, one block per section of the contents (clang-format sorts each block).
 

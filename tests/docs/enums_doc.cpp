@@ -411,5 +411,11 @@ int main() {
       "seawire::nmea2000::canboat_format", "nmea2000/log.hpp",
       "The formats a canboat log's `# format=` header names; the first five are read.",
       kind::value);
+  table<wire_kind>("seawire::wire_kind", "walk.hpp", "Which wire a walked field is of.",
+                   kind::value);
+  table<byte_order>("seawire::byte_order", "walk.hpp", "How a walked field's bytes are laid out.",
+                    kind::value);
+  table<position_axis>("seawire::position_axis", "walk.hpp", "What a position-typed field holds.",
+                       kind::value);
   return 0;
 }

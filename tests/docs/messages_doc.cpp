@@ -17,6 +17,7 @@
 
 #include "seawire/anello/frame_json.hpp"
 #include "seawire/seawire.hpp"
+#include "seawire/walk.hpp"
 
 namespace {
 
@@ -125,50 +126,105 @@ std::string allowed(const nmea::field_options& o) {
   return s;
 }
 
+// ---------------------------------------------------------------------------------------------
+// One row of a message's table, from the walk's layout of the field (walk.hpp): the columns of
+// its wire. A sentence's rows also extend the sentence's pattern ("$CPNVG,timestamp,...").
+
+struct table_context {
+  std::string pattern;  // a sentence's "$ADDR,field,N/S,..."
+  bool hawaii = false;  // RobotX: dates and times on the Hawaii clock
+};
+
+template <class V>
+std::string n2k_form(std::string& step, std::string& range);
+
+template <class Raw>
+std::string wire_type() {
+  return std::string(std::is_signed_v<Raw> ? "int" : "uint") + std::to_string(8 * sizeof(Raw));
+}
+
+template <class F>
+std::string sentence_row(F, table_context& c) {
+  constexpr const auto& field = F::desc;
+  using D = std::remove_cvref_t<decltype(field)>;
+  using V = typename D::value_type;
+  constexpr unsigned first = F::number;
+  constexpr unsigned last = first + F::wire_fields - 1;
+  const std::string numbers =
+      first == last ? std::to_string(first) : std::to_string(first) + "-" + std::to_string(last);
+  c.pattern += "," + std::string(F::name);
+  if constexpr (nmea::codec<V>::width == 2) {
+    c.pattern += F::axis == position_axis::latitude ? ",N/S" : ",E/W";
+  }
+  if (field.opts.unit != 0) c.pattern += "," + std::string(1, field.opts.unit);
+  std::string when;
+  if (field.opts.only_with_field_count != 0)
+    when = "only in the " + std::to_string(field.opts.only_with_field_count) + "-field form";
+  else if (field.opts.may_be_absent)
+    when = "may be left out";
+  std::string precision = field.opts.precision >= 0 ? std::to_string(field.opts.precision) : "";
+  if (field.opts.precision >= 0 && nmea::is_ddmm_position<V>) precision += " (minutes)";
+  std::string form = form_of<V>(field.opts);
+  // RobotX dates and times are read on the Hawaii clock, not UTC.
+  if (c.hawaii && form.starts_with("UTC time"))
+    form = "HST time (Hawaii, UTC-10, no daylight saving)" + form.substr(8);
+  if (c.hawaii && form.starts_with("date")) form = "HST date" + form.substr(4);
+  return "| " + numbers + " | " + quoted(member_name<D::member>()) + " | " + quoted(F::key) +
+         " | " + form + " | " + allowed(field.opts) + " | " + (D::is_optional ? "yes" : "no") +
+         " | " + when + " | " + precision + " |\n";
+}
+
+template <class F>
+std::string frame_row(F) {
+  constexpr const auto& field = F::desc;
+  using raw = typename std::remove_cvref_t<decltype(field)>::raw_type;
+  std::string allowed;
+  if (field.allowed)
+    allowed = std::to_string(field.allowed->lo) + " to " + std::to_string(field.allowed->hi);
+  if (field.also_not_available)
+    allowed += std::string(allowed.empty() ? "" : "; ") +
+               "also not available: " + std::to_string(*field.also_not_available);
+  char line[256];
+  std::snprintf(line, sizeof line, "| %u | `%s` | `%s` | %zu | %s | %lld | %s |\n",
+                unsigned{F::number}, std::string(F::name).c_str(), std::string(F::key).c_str(),
+                static_cast<std::size_t>(F::bit_offset / 8), wire_type<raw>().c_str(),
+                static_cast<long long>(field.divisor), allowed.c_str());
+  return line;
+}
+
+template <class F>
+std::string pgn_row(F) {
+  std::string holds = "reserved: sent as ones, ignored when received";
+  std::string step;
+  std::string values;
+  if constexpr (!F::reserved) holds = n2k_form<typename F::value_type>(step, values);
+  return "| " + std::to_string(F::number) + " | " + (F::reserved ? "" : quoted(F::name)) + " | " +
+         std::string(F::desc.title) + " | " + std::to_string(F::bit_offset) + " | " +
+         std::to_string(F::bits) + " | " + holds + " | " + step + " | " + values + " |\n";
+}
+
+// The rows of M's table, whatever its wire: one loop over the walk's layout, reserved bits too.
+template <class M>
+std::string rows_of(table_context& c) {
+  std::string rows;
+  visit_rows<M>([&](auto f) {
+    using F = decltype(f);
+    if constexpr (F::kind == wire_kind::nmea0183) {
+      rows += sentence_row(f, c);
+    } else if constexpr (F::kind == wire_kind::nmea2000) {
+      rows += pgn_row(f);
+    } else {
+      rows += frame_row(f);
+    }
+  });
+  return rows;
+}
+
 template <class M>
 void message(std::string_view section) {
   constexpr auto& d = M::nmea;
-  std::string wire = "$" + std::string(d.address);
-  const bool hawaii = section.starts_with("RobotX");
-  std::string rows;
-  unsigned first = 1;
-  d.fields.apply([&](const auto&... f) {
-    (
-        [&](const auto& field) {
-          using F = std::remove_cvref_t<decltype(field)>;
-          using V = typename F::value_type;
-          const unsigned last = first + field.width() - 1;
-          const std::string numbers = first == last
-                                          ? std::to_string(first)
-                                          : std::to_string(first) + "-" + std::to_string(last);
-          wire += "," + std::string(field.name);
-          if constexpr (nmea::codec<V>::width == 2) {
-            wire += std::is_same_v<V, nmea::latitude> || std::is_same_v<V, nmea::decimal_latitude>
-                        ? ",N/S"
-                        : ",E/W";
-          }
-          if (field.opts.unit != 0) wire += "," + std::string(1, field.opts.unit);
-          std::string when;
-          if (field.opts.only_with_field_count != 0)
-            when =
-                "only in the " + std::to_string(field.opts.only_with_field_count) + "-field form";
-          else if (field.opts.may_be_absent)
-            when = "may be left out";
-          std::string precision =
-              field.opts.precision >= 0 ? std::to_string(field.opts.precision) : "";
-          if (field.opts.precision >= 0 && nmea::is_ddmm_position<V>) precision += " (minutes)";
-          std::string form = form_of<V>(field.opts);
-          // RobotX dates and times are read on the Hawaii clock, not UTC.
-          if (hawaii && form.starts_with("UTC time"))
-            form = "HST time (Hawaii, UTC-10, no daylight saving)" + form.substr(8);
-          if (hawaii && form.starts_with("date")) form = "HST date" + form.substr(4);
-          rows += "| " + numbers + " | " + quoted(member_name<F::member>()) + " | " +
-                  quoted(field.name) + " | " + form + " | " + allowed(field.opts) + " | " +
-                  (F::is_optional ? "yes" : "no") + " | " + when + " | " + precision + " |\n";
-          first = last + 1;
-        }(f),
-        ...);
-  });
+  table_context c{"$" + std::string(d.address), section.starts_with("RobotX")};
+  const std::string rows = rows_of<M>(c);
   std::printf("### %s\n\n", std::string(d.address).c_str());
   std::printf("%s", std::string(section).c_str());
   if (d.any_talker) std::printf(" Any talker: `--` stands for GP, GN, II, ...");
@@ -178,7 +234,7 @@ void message(std::string_view section) {
       forms += (forms.empty() ? "" : " or ") + std::to_string(count);
     std::printf(" Standard forms: %s fields.", forms.c_str());
   }
-  std::printf("\n\n```\n%s*hh\n```\n\n", wire.c_str());
+  std::printf("\n\n```\n%s*hh\n```\n\n", c.pattern.c_str());
   std::printf(
       "| Field | C++ member | JSON key | Wire form | Allowed | Blank | Present | Precision |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n%s\n", rows.c_str());
@@ -202,11 +258,6 @@ void set(std::string_view title, std::string_view section, nmea::message_set<Ms.
       ...);
 }
 
-template <class Raw>
-std::string wire_type() {
-  return std::string(std::is_signed_v<Raw> ? "int" : "uint") + std::to_string(8 * sizeof(Raw));
-}
-
 // The 0xAB00 frame, from anello::sensor_fields.
 void frame() {
   std::printf(
@@ -217,30 +268,8 @@ void frame() {
       "wire value / divisor.\n\n"
       "| Field | Name | JSON key | Offset | Wire type | Divisor | Allowed |\n"
       "|---|---|---|---|---|---|---|\n");
-  std::uint16_t n = 0;
-  std::apply(
-      [&](const auto&... field) {
-        (
-            [&] {
-              ++n;
-              using raw = typename std::remove_cvref_t<decltype(field)>::raw_type;
-              std::string allowed;
-              if (field.allowed)
-                allowed =
-                    std::to_string(field.allowed->lo) + " to " + std::to_string(field.allowed->hi);
-              if (field.also_not_available)
-                allowed += std::string(allowed.empty() ? "" : "; ") +
-                           "also not available: " + std::to_string(*field.also_not_available);
-              std::printf("| %u | `%s` | `%s` | %zu | %s | %lld | %s |\n", unsigned{n},
-                          std::string(field.name).c_str(),
-                          std::string(anello::about_sensor_field(n).json_key).c_str(), field.offset,
-                          wire_type<raw>().c_str(), static_cast<long long>(field.divisor),
-                          allowed.c_str());
-            }(),
-            ...);
-      },
-      anello::sensor_fields);
-  std::printf("\n");
+  table_context c;
+  std::printf("%s\n", rows_of<anello::sensor_frame_raw>(c).c_str());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -325,17 +354,8 @@ void pgn() {
   std::printf(
       "| Field | Name (JSON key) | Standard name | Bit offset | Bits | Holds | Step | Values |\n"
       "|---|---|---|---|---|---|---|---|\n");
-  d.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    std::string holds = "reserved: sent as ones, ignored when received";
-    std::string step;
-    std::string values;
-    if constexpr (!F::is_reserved) holds = n2k_form<typename F::value_type>(step, values);
-    std::printf("| %u | %s | %s | %u | %u | %s | %s | %s |\n", unsigned{n},
-                F::is_reserved ? "" : quoted(f.name).c_str(), std::string(f.title).c_str(), offset,
-                F::bits, holds.c_str(), step.c_str(), values.c_str());
-  });
-  std::printf("\n");
+  table_context c;
+  std::printf("%s\n", rows_of<P>(c).c_str());
 }
 
 template <class... P>

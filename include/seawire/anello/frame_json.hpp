@@ -35,9 +35,11 @@
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/copy.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/json.hpp"
+#include "seawire/walk.hpp"
 
 namespace seawire::anello {
 
@@ -45,17 +47,6 @@ namespace seawire::anello {
 inline constexpr std::string_view frame_json_type = "AB00";
 
 namespace detail {
-
-/// A sensor field's raw wire value as the decimal it stands for (raw / divisor, exactly).
-template <class Field>
-[[nodiscard]] constexpr nmea::decimal raw_decimal(const Field& field,
-                                                  typename Field::raw_type raw) noexcept {
-  nmea::decimal d;
-  d.negative = raw < 0;
-  d.mantissa = seawire::detail::magnitude(raw);
-  d.places = static_cast<std::uint8_t>(divisor_places(field.divisor));
-  return d;
-}
 
 // Civil date of days since 1970-01-01 (proleptic Gregorian; Howard Hinnant's algorithm).
 struct civil {
@@ -169,19 +160,6 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   return errc::ok;
 }
 
-/// A field's value (one that is available) as JSON writes it, or plain: ISO time unquoted.
-template <nmea::json_style Style = nmea::json_style::json, nmea::json_sink Sink, class Field>
-constexpr void write_field_value(Sink& s, const Field& field,
-                                 const sensor_frame_raw& frame) noexcept {
-  const typename Field::raw_type raw = frame.*Field::raw_member;
-  if constexpr (std::is_same_v<typename Field::value_type, time_ms>) {
-    write_time_ms<Style>(s, static_cast<std::uint64_t>(raw));
-  } else {
-    // The wire's integer with the row's fraction digits (a constant where the row is known).
-    const nmea::decimal d = raw_decimal(field, raw);
-    seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
-  }
-}
 }  // namespace detail
 
 /// Whether `key` is a JSON key of the frame (for reporting unknown keys).
@@ -222,43 +200,47 @@ constexpr std::string_view describe(std::span<char> out, const result<sensor_fra
   nmea::detail::text_out t(out);
   if (r) return t.put("ok").view();
   t.put(frame_json_type).put(" field ").put(std::uint64_t{r.field});
-  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
-    if (n != r.field) return true;
-    using field_type = std::remove_cvref_t<decltype(field)>;
-    t.put(" (").put(field.json_key).put(") ");
-    t.put(detail::raw_decimal(field, frame.*field_type::raw_member));
-    return false;
+  visit_fields(frame, [&](const auto& f) {
+    if (f.number != r.field) return;
+    t.put(" (").put(f.key).put(") ");
+    t.put(f.value.exact());
   });
   return t.put(": ").put(message(r.ec)).view();
 }
 
-namespace detail {
-// What goes before field I's value, `,"key":` (the first after `{"type":"AB00"`), made once at
-// compile time as the messages' keys are.
-template <std::size_t I>
-struct frame_member_key {
-  static constexpr void to(auto& s) noexcept {
-    if constexpr (I == 0) {
-      s.put("{\"type\":\"");
-      s.put(frame_json_type);
-      s.put('"');
-    }
-    s.put(",\"");
-    nmea::detail::json_escape(s, std::get<I>(sensor_fields).json_key);
-    s.put("\":");
+/// A field's value (the walk's per-wire value text: see seawire::write_json_fields): null when
+/// not available, else the wire's integer with the row's fraction digits, or the ISO time.
+template <nmea::json_style Style, nmea::json_sink Sink, class Info>
+requires(Info::kind == wire_kind::anello_frame) constexpr void put_field_value(
+    Sink& s, const field_view<Info>& f) noexcept {
+  if (!f.has_value()) {
+    s.put("null");
+  } else if constexpr (Info::value_type::is_time) {
+    detail::write_time_ms<Style>(s, static_cast<std::uint64_t>(f.value.raw));
+  } else {
+    const nmea::decimal d = f.value.exact();  // a constant number of places per row
+    seawire::detail::put_fixed(s, d.mantissa, d.places, d.negative);
   }
-};
-template <std::size_t I>
-inline constexpr const auto& frame_json_key = nmea::detail::static_text<frame_member_key<I>>;
+}
 
-// The longest a frame's JSON can be: every key, each value at its longest (a number as
+/// A field as a CSV cell: the value unquoted, empty when not available.
+template <nmea::json_sink Sink, class Info>
+requires(Info::kind ==
+         wire_kind::anello_frame) constexpr void put_csv_value(Sink& s,
+                                                               const field_view<Info>& f) noexcept {
+  if (f.has_value()) put_field_value<nmea::json_style::plain>(s, f);
+}
+
+namespace detail {
+// The longest a frame's JSON can be: the head, every key, each value at its longest (a number as
 // put_fixed writes it at most; a time, 26 characters, is shorter), the '}'.
 inline constexpr std::size_t frame_json_max_size = [] {
-  std::size_t n = 1;
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    ((n += frame_json_key<I>.size() + seawire::detail::max_fixed_chars), ...);
-  }
-  (std::make_index_sequence<sensor_field_count>{});
+  std::size_t n = 1 + 9 + frame_json_type.size() + 1;
+  visit_layout<sensor_frame_raw>([&](auto f) {
+    using info = typename decltype(f)::info;
+    n += nmea::detail::static_text<seawire::detail::json_member_key_of<info>>.size() +
+         seawire::detail::max_fixed_chars;
+  });
   return n;
 }();
 
@@ -279,22 +261,11 @@ template <nmea::json_sink Sink>
 constexpr void write_json(Sink& sink, const sensor_frame_raw& frame) noexcept {
   char text[detail::frame_json_max_size];
   detail::frame_text s{text};
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (
-        [&] {
-          constexpr const auto& field = std::get<I>(sensor_fields);
-          using field_type = std::remove_cvref_t<decltype(field)>;
-          nmea::detail::put_array(s, detail::frame_json_key<I>);
-          if (field.not_available(frame.*field_type::raw_member)) {
-            s.put("null");
-          } else {
-            detail::write_field_value(s, field, frame);
-          }
-        }(),
-        ...);
-  }
-  (std::make_index_sequence<sensor_field_count>{});
-  s.put('}');
+  write_json_object(s, frame, [](detail::frame_text& out) {
+    out.put("{\"type\":\"");
+    out.put(frame_json_type);
+    out.put('"');
+  });
   sink.put(std::string_view(text, s.size));
 }
 
@@ -302,26 +273,14 @@ constexpr void write_json(Sink& sink, const sensor_frame_raw& frame) noexcept {
 /// nmea/csv.hpp writes tables of messages.
 template <nmea::json_sink Sink>
 constexpr void write_csv_header(Sink& s) noexcept {
-  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
-    if (n != 1) s.put(',');
-    s.put(field.json_key);
-    return true;
-  });
-  s.put('\n');
+  write_csv_columns<sensor_frame_raw>(s);
 }
 
 /// A frame as one CSV row (with its LF): the values write_json writes, unquoted (gps_time
 /// "2024-07-03T15:42:58.000Z"), an empty cell for "not available".
 template <nmea::json_sink Sink>
 constexpr void write_csv(Sink& s, const sensor_frame_raw& frame) noexcept {
-  detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
-    using field_type = std::remove_cvref_t<decltype(field)>;
-    if (n != 1) s.put(',');
-    if (!field.not_available(frame.*field_type::raw_member))
-      detail::write_field_value<nmea::json_style::plain>(s, field, frame);
-    return true;
-  });
-  s.put('\n');
+  write_csv_cells(s, frame);
 }
 
 /// Reads a frame from a JSON object: `lookup(object, key)` as for nmea::read_json (only

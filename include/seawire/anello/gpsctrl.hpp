@@ -1,13 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// $PAPGPSCTRL: tell the ANELLO Maritime INS whether to use GPS (proprietary: P, maker AP, GPSCTRL).
-//
-//   $PAPGPSCTRL,1*11
-//               1
-//
-// The spec defines 1 (use GPS, the default) and 0 (ignore GPS). ANELLO's own scripts also send
-// 2, which turns the INS's internal GPS off; receivers must understand it, and a sender may
-// write it, so it is one of the values. Anything else, or a blank, is refused: a GPS switch
+// $PAPGPSCTRL,1*11: tell the ANELLO Maritime INS whether to use GPS (proprietary: P, maker AP).
+// The spec defines 1 (use GPS, the default) and 0 (ignore); ANELLO's own scripts also send 2
+// (internal GPS off), so it is a value too. Anything else, or a blank, is refused: a GPS switch
 // should not be guessed.
 
 #include <string_view>

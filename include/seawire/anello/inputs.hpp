@@ -1,17 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The NMEA 0183 side of the ANELLO Maritime INS: the sentences a USV computer sends it for
-// speed aiding (RS-232-2; ANELLO's scripts send the same lines as UDP datagrams to port 19551),
-// and the RMC it sends back (RS-232-1).
-//
-//   anello::vhw_si si;                            // from the vehicle's own units
-//   si.heading_true_deg = 87.3;                   // degrees true
-//   si.speed_mps = 2.4;                           // through the water
-//   auto vhw = anello::make_vhw(si);              // result<standard::vhw>
-//   auto line = nmea::encode(vhw.value);          // "$VWVHW,87.3,T,,M,4.67,N,8.64,K*49\r\n"
-//   auto in = anello::decode_input(line.view());  // what the INS reads: a variant
-//
-// The binary 0xAB00 frame is in frame.hpp.
+// The NMEA 0183 side of the ANELLO Maritime INS: the sentences a USV computer sends it for speed
+// aiding (RS-232-2, or UDP datagrams to port 19551 as ANELLO's scripts send them), make_vhw /
+// make_vbw to build two of them from SI values, and the RMC it sends back (RS-232-1). The 0xAB00
+// binary frame is in frame.hpp.
 
 #include <cstdint>
 #include <limits>
@@ -56,9 +48,7 @@ inline constexpr nmea::parse_policy input_policy{
 /// feeds the vehicle's own navigation).
 inline constexpr nmea::parse_policy output_policy = input_policy;
 
-// The role decoders below are function templates of nothing (see nmea::lazy): a file that
-// includes this header compiles a role's decoder only if it calls it, which keeps including
-// seawire/seawire.hpp cheap. Call them as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode one line as the INS would. Sentences it does not take come back as unknown_sentence,
 /// not as an error.
 template <int N = 0>

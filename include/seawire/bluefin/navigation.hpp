@@ -14,9 +14,7 @@
 namespace seawire::bluefin {
 
 /// Navigation update: pose and position from the vehicle's filter.
-///
 ///   $BFNVG,081025.987,4221.81092,N,07106.84603,W,1,45.3,20.1,203.1,-3.4,4.5,081025.980*4E
-///          1          2          3 4           5 6 7    8    9     10   11  12
 template <seawire::detail::fixed_string Address, nmea::number_forms Numbers = nmea::number_forms{}>
 struct nav_update {
   nmea::time_of_day timestamp;  // 1  [Timestamp] when the sentence was made
@@ -61,9 +59,7 @@ struct nav_update {
 };
 
 /// Velocity and rate update.
-///
 ///   $CPNVR,164959.063,0.02941,-0.068552,0,0.060938,0,-0.061132*59
-///          1          2       3         4 5        6 7
 template <seawire::detail::fixed_string Address, nmea::number_forms Numbers = nmea::number_forms{}>
 struct velocity_update {
   nmea::time_of_day timestamp;                  // 1 [Timestamp]

@@ -1,14 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// SEAWIRE_ALWAYS_INLINE, for the functions on the decode path that their callers must see
-// through: the field reader, read_field with its checks, and the codecs' read(). Inlined where a
-// message's field table is walked, a field's options are constants, the checks it does not have
-// compile away and the reader's state stays in registers; left to itself GCC -O2 keeps them out
-// of line and tests every option at run time. SEAWIRE_NOINLINE keeps rare paths (a field reader
-// moving to its next 64-byte window) out of the code they would otherwise bloat.
-// SEAWIRE_FLATTEN inlines everything a function calls into it: the framer's next(), which would
-// otherwise call the stream reader's item-returning steps out of line and copy each item only
-// to cut it down to a line (the reader with frames is faster left to the compiler).
+// SEAWIRE_ALWAYS_INLINE: decode-path functions (field reader, read_field, codecs' read()) that
+// must be inlined where a field table is walked, so options are constants, absent checks compile
+// away and the reader stays in registers (GCC -O2 keeps them out of line otherwise).
+// SEAWIRE_NOINLINE keeps rare paths out; SEAWIRE_FLATTEN inlines the framer's next() whole.
 
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE__)
 // Unoptimized builds (debug, sanitizers): forced inlining there only makes huge functions that

@@ -11,12 +11,9 @@
 // from_degrees, nmea::builder, nmea2000::number::from and the ANELLO frame's to_wire), and every
 // path from decimal text through round_scaled, the same exact halves-away-from-zero arithmetic.
 //
-// shortest() is hand-written so that it is constexpr (std::to_chars is not): the exact interval
-// of decimals that read back as v, in big integers, and its digits generated until one of the
-// interval's ends is reached (Steele & White's free-format method as Burger & Dybvig state it).
-// round_double needs those digits only when a tie lies within that interval: otherwise every
-// decimal there, the shortest too, rounds as the double's exact value does, which 128-bit
-// integers give in a few nanoseconds.
+// shortest() is hand-written to be constexpr (std::to_chars is not): Steele & White's
+// free-format digits, as Burger & Dybvig state them, in big integers. round_double needs them only
+// when a tie lies within the double's interval; otherwise 128-bit integers round its exact value.
 
 #include <bit>
 #include <cstdint>

@@ -1,14 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Sixteen bytes at a time (internal). The byte searches, the checksum and the sentence scan are
-// written once against the few operations below, which map to SSE2 on x86-64 and to NEON
-// (Advanced SIMD) on 64-bit ARM, the Raspberry Pi 3/4/5 and Jetson boards these vehicles carry.
-// Every 64-bit ARM core has NEON, as every x86-64 has SSE2, so neither needs a run-time check.
-//
-// SEAWIRE_SIMD is 1 where one of them is compiled. Elsewhere, and where SEAWIRE_NO_SIMD is
-// defined before seawire is included, the callers use their portable forms (eight bytes at a time
-// in a 64-bit word, and byte by byte), which are also what constant evaluation runs and how the
-// tests check those forms on any machine.
+// Sixteen bytes at a time (internal): the few operations the byte searches, the checksum and the
+// sentence scan are written against, SSE2 on x86-64 and NEON on 64-bit ARM (both always present,
+// so no run-time check). SEAWIRE_SIMD is 1 where one is compiled; elsewhere, or with
+// SEAWIRE_NO_SIMD, callers use their portable forms, which constant evaluation also runs.
 
 #if !defined(SEAWIRE_NO_SIMD) && defined(__SSE2__) && (defined(__x86_64__) || defined(_M_X64))
 #define SEAWIRE_SSE2 1

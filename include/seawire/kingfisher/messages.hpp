@@ -1,30 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Clearpath Kingfisher USV payload interface: CP* sentences from the vehicle, PY* commands to it.
-// The vehicle is a TCP server (port 29500, many clients, any client may command).
-//
-//   from the vehicle                              to the vehicle
-//   CPNVG  navigation update (Bluefin layout)     PYDEP  desired yaw rate + thrust
-//   CPNVR  velocity and rates (Bluefin layout)    PYDEV  desired heading + speed
-//   CPRCM  raw compass                            PYDIR  thrust per motor
-//   CPRBS  battery bank                           PYCLT  lights on/off (not in the spec)
-//   CPIMU  raw IMU
-//   CPALT  lights state (not in the spec)
-//   GPRMC, GPGGA relayed from the GPS receiver (seawire::standard::rmc / gga)
-//
-// Roles: a payload reads what the vehicle sends with `decode_from_vehicle` (checksum required:
-// the vehicle always sends one); a vehicle, or a simulator of one, reads commands with
-// `decode_to_vehicle` (the spec lets payloads leave the checksum out: "$PYDIR,12.5,-3*" and
-// "$PYDIR,12.5,-3" are accepted, a wrong checksum never). Addresses outside a role's set come
-// back as nmea::unknown_sentence, which the spec asks clients to ignore, not as errors.
-//
-// PYDEP's yaw rate has two units in the field: the spec says rad/s, the Clearpath vehicle code
-// reads deg/s, clockwise positive. seawire carries the number as written and converts nothing;
-// find out which one your vehicle runs before sending a non-zero rate.
-//
-// Encoding refuses what the spec forbids (thrust outside -100..100, a negative speed, a desired
-// heading outside [0, 360)) with errc::out_of_range and the field number. Signs: a '+' is
-// accepted on receive (the spec allows it) and never written.
+// Clearpath Kingfisher USV payload interface (vehicle: TCP server, port 29500, any client may
+// command): CP* sentences and relayed GPRMC/GPGGA from the vehicle, PY* commands to it. Payloads
+// read with decode_from_vehicle (checksum required), vehicles with decode_to_vehicle (checksum
+// optional, a wrong one never accepted); unknown addresses are nmea::unknown_sentence, not
+// errors. PYDEP's yaw rate is rad/s in the spec but deg/s clockwise in Clearpath's vehicle code:
+// carried as written. Encode refuses what the spec forbids (out_of_range, with the field).
 
 #include <cstdint>
 #include <optional>
@@ -45,12 +26,9 @@ namespace seawire::kingfisher {
 // ---------------------------------------------------------------------------------------------
 // from the vehicle
 
-/// How the Clearpath vehicle prints its numbers (a C float format, not NMEA 0183): positions as
-/// degrees * 100 + minutes without padding, so within one degree of the equator or the prime
-/// meridian "22.2,W" (0 deg 22.2 min W) and at 0,0 "0,S,0,W"; and "nan" for a value it does not
-/// have (velocities when nearly stopped), read as not available with the rest of the sentence
-/// kept; and seconds rounded up to "60.000" ("%06.3f" of hh:mm:59.9995). Every CP* sentence
-/// declares them; the relayed GPRMC/GPGGA do not.
+/// How the Clearpath vehicle prints its numbers (a C float format): unpadded positions ("22.2,W"
+/// is 0 deg 22.2 min W), "nan" for no value, seconds rounded up to "60.000"
+/// (docs/parse-policy.md). Every CP* sentence declares them; the relayed GPRMC/GPGGA do not.
 inline constexpr nmea::number_forms vehicle_numbers{
     .unpadded_positions = true, .nan_as_blank = true, .rounded_seconds = true};
 
@@ -58,23 +36,17 @@ inline constexpr nmea::number_forms vehicle_numbers{
 /// blank, for altitude and depth; both are kept as sent. `effective_nav_timestamp()` applies
 /// the spec's "blank field 12 means field 1". (The spec's example is a BFNVG line; under CPNVG
 /// its checksum would be *58, not *5B.)
-///
 ///   $CPNVG,081025.987,4221.81092,N,7106.84603,W,1,0,0,203.1,-3.4,4.5,081025.980*68
-///          1          2          3 4          5 6 7 8 9     10   11  12
 using cpnvg = bluefin::nav_update<"CPNVG", vehicle_numbers>;
 
 /// Velocity and rate update (m/s east/north/down, deg/s pitch/roll/yaw).
-///
 ///   $CPNVR,164959.063,0.02941,-0.068552,0,0.060938,0,-0.061132*59
-///          1          2       3         4 5        6 7
 using cpnvr = bluefin::velocity_update<"CPNVR", vehicle_numbers>;
 
 /// Raw compass reading, repackaged by the vehicle. The real vehicle reports compass id 0 (the
 /// spec numbers compasses from 1). Any field after the timestamp may be blank, "no data" (spec
 /// 2.4), which reads as nullopt.
-///
 ///   $CPRCM,164959.065,0,234.326694,-1.655603,-6.628557,164959.060*62
-///          1          2 3          4         5         6
 struct cprcm {
   nmea::time_of_day timestamp;  // 1 [Timestamp] when the sentence was made
   std::optional<nmea::integer<std::uint16_t>> compass_id = 0;  // 2 [ID_Compass] which compass
@@ -110,11 +82,8 @@ struct cprcm {
 /// field count. Member comments number the spec's six fields; errors report the position on
 /// the wire, so in the five-field form the stack voltage is field 2. A blank measurement is
 /// "no data" (spec 2.4) and reads as nullopt.
-///
 ///   $CPRBS,105707.24,1,15.2,15.1,15.3,0*67                  spec form, 6 fields
-///          1         2 3    4    5    6
 ///   $CPRBS,172909.322,15.121597,15.121597,15.121597,0*76   real vehicle, 5 fields (no id)
-///          1          2         3         4         5
 struct cprbs {
   nmea::time_of_day timestamp;  // 1 [Timestamp] when the sentence was made
   // 2 [ID_Battery] banks numbered from 1; only in the six-field form, nullopt writes the
@@ -147,9 +116,7 @@ struct cprbs {
 /// nav timestamp; nullopt writes that form, and an eighth field that came blank is written back
 /// blank (wire_fields). (The spec's sentence id is garbled; it is CPIMU.) A blank rate or
 /// acceleration is "no data" (spec 2.4) and reads as nullopt.
-///
 ///   $CPIMU,164958.858,-0.061035,-0.000097,-0.061035,-0.026916,0.104533,-0.932172*57
-///          1          2         3         4         5         6        7         [8]
 struct cpimu {
   nmea::time_of_day timestamp;                // 1 [Timestamp] when the sentence was made
   std::optional<nmea::decimal> rate_x_dps;    // 2 [AngularRate_X] deg/s about x (roll)
@@ -186,9 +153,7 @@ struct cpimu {
 };
 
 /// Lights state. Not in the spec; real vehicles send it (PYCLT switches the lights).
-///
 ///   $CPALT,164959.100,1*62
-///          1          2
 struct cpalt {
   nmea::time_of_day timestamp;  // 1 when the sentence was made
   bool lights_on = false;       // 2 1 = lights on, 0 = off
@@ -201,12 +166,8 @@ struct cpalt {
 };
 
 // ---------------------------------------------------------------------------------------------
-// to the vehicle
-//
-// The helpers below build a command from doubles, rounding each number to `places` fraction
-// digits (decimal::from_double: NaN and infinities give errc::not_finite with the field
-// number). They do not check the spec's ranges: encode does, once, from the description, and
-// names the field it refused.
+// to the vehicle. The helpers below round doubles (decimal::from_double: not_finite names the
+// field); the spec's ranges are checked by encode, once, from the description.
 
 namespace detail {
 template <class T>
@@ -225,9 +186,7 @@ template <class T>
 }  // namespace detail
 
 /// Desired yaw rate and thrust.
-///
 ///   $PYDEP,-10,50*71
-///          1   2
 struct pydep {
   nmea::decimal
       yaw_rate;          // 1 [DesYawRate] desired rate of yaw. UNIT CONFLICT: the spec says rad/s;
@@ -254,9 +213,7 @@ struct pydep {
 };
 
 /// Desired heading and speed; the vehicle's own controllers hold them.
-///
 ///   $PYDEV,90,1.5*7D
-///          1  2
 struct pydev {
   nmea::decimal
       heading_deg;  // 1 [DesHeading] degrees clockwise from true north, [0, 360). The spec
@@ -296,9 +253,7 @@ struct pydev {
 };
 
 /// Thrust for each motor of the differential drive.
-///
 ///   $PYDIR,45,55*57
-///          1  2
 struct pydir {
   nmea::decimal thrust_left;   // 1 [DesThrustPct_L] percent of thrust, port motor
   nmea::decimal thrust_right;  // 2 [DesThrustPct_R] percent of thrust, starboard motor
@@ -325,9 +280,7 @@ struct pydir {
 };
 
 /// Lights control. Not in the spec; real vehicles accept it and report the state in CPALT.
-///
 ///   $PYCLT,1*4F
-///          1
 struct pyclt {
   bool lights_on = false;  // 1 1 = switch the lights on, 0 = off
 
@@ -345,10 +298,8 @@ using from_vehicle =
 /// What a vehicle hears: the PY* commands.
 using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
 
-/// How a payload reads the vehicle: "sentences sent FROM the vehicle will always include a
-/// checksum", so one is required; the vehicle writes every field (a blank one is "no data",
-/// spec 2.4), so a sentence that stops early is too_few_fields. Otherwise the common liberal
-/// defaults.
+/// How a payload reads the vehicle: a checksum required (the vehicle always sends one) and every
+/// field (a sentence that stops early is too_few_fields; a blank one is "no data", spec 2.4).
 [[nodiscard]] constexpr nmea::parse_policy payload_policy() noexcept {
   nmea::parse_policy p;
   p.checksum = nmea::checksum_policy::required;
@@ -356,9 +307,8 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
   return p;
 }
 
-/// How a vehicle reads payloads: "sentences sent TO the vehicle may or may not include a
-/// checksum"; one that is present must match. Without one, "the carriage return and linefeed
-/// must immediately follow the * character", so a bare '*' is read as no checksum.
+/// How a vehicle reads payloads: a checksum is optional but must match; a bare '*' before CR LF
+/// is no checksum, as the spec writes one.
 [[nodiscard]] constexpr nmea::parse_policy vehicle_policy() noexcept {
   nmea::parse_policy p;
   p.checksum = nmea::checksum_policy::verify_if_present;
@@ -366,10 +316,7 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
   return p;
 }
 
-// The role decoders below are function templates of nothing (`template <int N = 0>`, their
-// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
-// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
-// as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Payload side: one line from the vehicle. Addresses outside `from_vehicle` (PY*, other
 /// GPS sentences) give unknown_sentence, which views into `line`.
 template <int N = 0>

@@ -1,21 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// nmea::builder: a message filled from the doubles a program has, one line per field.
-//
-//   auto cmd = nmea::builder<kingfisher::pydev>{}
-//                  .set<&kingfisher::pydev::heading_deg>(heading)   // 1 place, as declared
-//                  .set<&kingfisher::pydev::speed_mps>(speed, nmea::places{2})
-//                  .result();                                        // result<pydev>
-//   if (!cmd) // cmd.ec, cmd.field: the first value refused, named once
-//
-// Each number or position field declares the fraction digits a double is rounded to
-// (nmea::precision in its description: what the spec or real senders write). A call may ask
-// for other places, or for nmea::shortest: the fewest digits that read back as the same double.
-// Rounding is seawire's one rule for doubles (decimal::from_double): the double's shortest
-// decimal, rounded half away from zero, so 1.005 at two places is 1.01. A value that cannot be
-// written (NaN, infinite, outside the field's range, too many digits) is refused there: the
-// member keeps what it had, and result() reports the first refusal with its field number, as
-// encode() would have, once. Members of other types (times, enums, text) are assigned directly.
+// nmea::builder: a message filled from doubles, one set<&M::member>(v) per field, then result().
+// Each number or position is rounded to its declared nmea::precision, or to nmea::places{n} or
+// nmea::shortest when the call says so, by seawire's one rule for doubles (decimal::from_double).
+// A value that cannot be written (NaN, infinite, out of range, too many digits) is refused there:
+// the member keeps what it had and result() reports the first refusal with its field number, as
+// encode() would have. Members of other types are assigned directly.
 
 #include <cstddef>
 #include <optional>

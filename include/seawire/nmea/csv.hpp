@@ -12,7 +12,9 @@
 // signed decimal degrees, times "hh:mm:ss.sss", dates "YYYY-MM-DD", enums their wire spelling,
 // flags true/false. A blank or not-available field is an empty cell (so is blank text), which
 // pandas reads as NaN and R as NA. No "type" column: a table holds one type (its file name or
-// the caller says which).
+// the caller says which). The header and the rows of every wire's tables (PGNs, the 0xAB00 frame
+// too) are seawire::write_csv_columns and write_csv_cells, loops over the walk (walk.hpp); each
+// wire gives its cells' text (put_csv_value).
 
 #include <string_view>
 #include <type_traits>
@@ -61,26 +63,56 @@ constexpr void write_csv_value(Sink& s, const T& v) noexcept {
   }
 }
 
+/// A field as a CSV cell (the walk's per-wire value text: see seawire::write_csv_cells).
+template <json_sink Sink, class Info>
+requires(Info::kind ==
+         wire_kind::nmea0183) constexpr void put_csv_value(Sink& s,
+                                                           const field_view<Info>& f) noexcept {
+  write_csv_value(s, f.value);
+}
+
+}  // namespace seawire::nmea
+
+namespace seawire {
+
+/// The JSON keys of M's fields as CSV header cells, in wire order, then LF; `first` false puts a
+/// comma before the first (after columns of the caller's own).
+template <walkable M, nmea::json_sink Sink>
+constexpr void write_csv_columns(Sink& s, bool first = true) noexcept {
+  visit_layout<M>([&](auto f) {
+    if (!first) s.put(',');
+    first = false;
+    nmea::write_csv_text(s, f.key);
+  });
+  s.put('\n');
+}
+
+/// Every field of `msg` as a CSV cell, in wire order, then LF (`first` as write_csv_columns'). A
+/// cell's text is its wire's (put_csv_value, found with the field).
+template <nmea::json_sink Sink, walkable M>
+constexpr void write_csv_cells(Sink& s, const M& msg, bool first = true) noexcept {
+  visit_fields(msg, [&](const auto& f) {
+    if (!first) s.put(',');
+    first = false;
+    put_csv_value(s, f);
+  });
+  s.put('\n');
+}
+
+}  // namespace seawire
+
+namespace seawire::nmea {
+
 /// The header row of T's table (with its LF): the field names in wire order.
 template <message_like T, json_sink Sink>
 constexpr void write_csv_header(Sink& s) noexcept {
-  bool first = true;
-  T::nmea.fields.apply([&](const auto&... d) {
-    ((first ? void(first = false) : s.put(','), write_csv_text(s, d.name)), ...);
-  });
-  s.put('\n');
+  write_csv_columns<T>(s);
 }
 
 /// A message as one row of its type's table (with its LF): each field in wire order.
 template <json_sink Sink, message_like T>
 constexpr void write_csv(Sink& s, const T& msg) noexcept {
-  bool first = true;
-  for_each_field(msg, [&](std::string_view, const auto& value) {
-    if (!first) s.put(',');
-    first = false;
-    write_csv_value(s, value);
-  });
-  s.put('\n');
+  write_csv_cells(s, msg);
 }
 
 }  // namespace seawire::nmea

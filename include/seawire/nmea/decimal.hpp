@@ -52,9 +52,8 @@ struct decimal {
   // NOLINTNEXTLINE(google-explicit-constructor): decimal{45} and in_range(-100, 100) read well.
   constexpr decimal(I integer) noexcept
       : mantissa(seawire::detail::magnitude(integer)), negative(integer < 0) {}
-  /// A floating-point value is never taken silently: 1.5 would have to be cut to some number of
-  /// places, and a speed or depth command cut to an integer is a different command. Say how many
-  /// places: decimal::from_double(1.5, 1), decimal::parse("1.5"), or the literal 1.5_dec.
+  /// A floating-point value is never taken silently (a speed cut to an integer is another
+  /// command): say how many places, decimal::from_double(1.5, 1), parse("1.5") or 1.5_dec.
   template <std::floating_point F>
   decimal(F) = delete;  // use decimal::from_double(v, places), decimal::parse("1.5") or 1.5_dec
 
@@ -81,11 +80,9 @@ struct decimal {
     return d;
   }
 
-  /// `v` at `places` fraction digits (0 to 19), by seawire's one rule for doubles: the shortest
-  /// decimal that reads back as v, rounded half away from zero (1.005 -> 1.01, 2.675 -> 2.68,
-  /// -1.005 -> -1.01 at two places; see detail/rounding.hpp). A value that rounds to zero is
-  /// the plain zero ("0.00", never "-0.00"), as is -0.0. not_finite for NaN and infinities;
-  /// value_too_large past 19 places or 19 digits.
+  /// `v` at `places` fraction digits (0 to 19) by seawire's one rule for doubles
+  /// (detail/rounding.hpp): 1.005 -> 1.01 at two places; a value that rounds to zero is "0.00",
+  /// never "-0.00". not_finite for NaN and infinities; value_too_large past 19 places or digits.
   [[nodiscard]] static constexpr result<decimal> from_double(double v, unsigned places) noexcept {
     result<decimal> r;
     seawire::detail::rounded_double m;
@@ -234,11 +231,9 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
 
 [[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
 
-/// Parse [sign] digits [. digits] with the leniencies of a receive policy: a '+' unless
-/// strict_values, spaces before and after the number when spaced_numbers too (receivers accept
-/// them, senders never write them). No exponent, no spaces inside. The policy is consulted
-/// only for a sign or a bad byte, so the common number does not work its rules out.
-/// `end`: as for read_digits (a field reader's end_of_field()).
+/// Parse [sign] digits [. digits] with a receive policy's leniencies: '+' unless strict_values,
+/// spaces around the number with spaced_numbers. No exponent. The policy is consulted only for a
+/// sign or a bad byte. `end`: as for read_digits.
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(
     std::string_view s, const parse_policy& p, decimal& out,
     field_end end = field_end::unknown) noexcept {

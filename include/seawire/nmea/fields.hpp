@@ -1,12 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Field values as the wire has them, and the codec that reads and writes each one: one header
-// per kind of value.
-//
-// Every value type keeps enough of the text to write it back exactly ("4.50" stays "4.50", an
-// unpadded longitude stays unpadded) and rejects values outside its domain. A codec reads
-// `width` wire fields from a field_reader and writes them to a writer; the message layer
-// (message.hpp) handles blanks, optionals, units and ranges around it.
+// Field values as the wire has them, one header per kind: each keeps enough of the text to write
+// it back exactly ("4.50", an unpadded longitude) and refuses values outside its domain; its
+// codec reads and writes `width` wire fields (blanks, optionals, units, ranges: message.hpp).
 
 #include "seawire/nmea/codec.hpp"     // codec<T>, has_codec
 #include "seawire/nmea/decimal.hpp"   // decimal, integers, 0/1 flags

@@ -1,31 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// nmea::framer: cuts a byte stream (TCP, serial, a log file) into complete candidate sentences,
-// and only those. It is nmea::stream_reader without frames and without drop reports, seen
-// through a smaller interface: lines come out as framed_line, and what was dropped is counted
-// in framer_stats. To hear about each drop in stream order (where, why, which bytes), read
-// through nmea::stream_reader<Capacity> with report_drops(true) instead: the same rules cut the
-// same lines.
-//
-// Contract, in the order a byte meets it (the full rules are stream_reader's):
-// - A sentence starts at '$', or at '!' (NMEA 0183 encapsulation sentences: !AIVDM, !AIVDO).
-//   Bytes outside a sentence are noise; CR and LF are line breaks, not noise. A line ends at LF,
-//   CR, or CR LF (one ending, one line).
-// - A '$' inside a sentence starts anew at that '$'. The sentence before it comes out (ending
-//   none) if it ends in a complete "*hh" checksum, as a sender that omits line endings writes
-//   it; else it is abandoned (interrupted), since its tail may be lost. A '!' inside a sentence
-//   is text: it starts a sentence only where a '$' would start one
-//   without interrupting anything (between sentences, in noise), so a text field holding '!'
-//   ("Mission done!") is never cut.
-// - A sentence is dropped, and everything up to its line ending or the next '$' discarded, on the
-//   first of: a byte outside 0x20..0x7E (invalid_bytes), or a byte past `Capacity` (overlong).
-//   A '!' in the discarded rest is discarded with it: it does not end the discard.
-// - Nothing else is checked: checksum and fields are sentence_view's business.
-// - A line lying wholly inside the chunk being read is yielded as a view into that chunk. Only a
-//   line cut by a chunk boundary -- or one whose CR is the chunk's last byte, since the next chunk
-//   decides between CR and CR LF -- is copied into the fixed buffer. Memory never grows.
-// - Stats account for every byte: fed = yielded text + noise_bytes + dropped_bytes + CR/LF bytes.
-//
+// nmea::framer: nmea::stream_reader without frames or drop reports: a byte stream cut into
+// candidate sentences (framed_line), drops only counted (framer_stats). The same rules cut the
+// same lines (docs/streams.md); read through stream_reader<Capacity> with report_drops(true) to
+// hear about each drop. Use: feed(chunk), next() until nullopt; finish() at end of stream.
 // Use: feed(chunk), then next() until nullopt, then the next chunk; finish() at end of stream.
 
 #include <cassert>
@@ -79,11 +57,8 @@ class framer {
     return line_of(reader_.next());
   }
 
-  /// The link has gone quiet (a read timed out, a live stream paused): a sentence whose CR was
-  /// the last byte fed, held back to tell CR from CR LF, is yielded now, as ended by CR; an LF
-  /// that arrives next completes that line break (it counts no new line). A sentence without
-  /// its line ending keeps waiting (finish() ends it). So a sender that ends lines with CR alone
-  /// is not one sentence late. Precondition: the current chunk is drained.
+  /// The link has gone quiet: yields a sentence whose CR was the last byte fed (held back to tell
+  /// CR from CR LF) as ended by CR. Precondition: the current chunk is drained.
   [[nodiscard]] constexpr std::optional<framed_line> flush() noexcept {
     return line_of(reader_.flush());
   }

@@ -1,19 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Whole-number fields (a satellite count, an engine number, a battery id) and their codec.
-//
-// A message's whole-number member is an nmea::integer<T>, not a plain T, so that what is assigned
-// to it cannot silently become another number: a plain `std::uint8_t satellites` takes 7.9 as 7
-// and 300 as 44 without a word from the compiler, and the sentence then says something the code
-// did not mean. integer<T>:
-//   - takes any integer, implicitly (`gga.satellites = 7;`, `= count;`), and keeps it whole;
-//   - refuses a floating-point value at compile time (round it first, as the code means it:
-//     `= static_cast<int>(std::lround(x))`);
-//   - reads back exactly as value(), or as T by an explicit conversion (never implicitly: a
-//     value assigned outside T would read back wrapped);
-//   - is checked against T's range when the message is encoded: 300 in a std::uint8_t field is
-//     out_of_range, naming the field, instead of going out as 44.
-// Decoded values are always within T's range.
+// Whole-number fields (a satellite count, an engine number) and their codec. A member is an
+// nmea::integer<T>, not a plain T, which would take 7.9 as 7 and 300 as 44 without a word:
+// integer<T> takes any integer implicitly and keeps it whole, refuses a floating-point value at
+// compile time, converts to T only explicitly, and is checked against T's range on encode
+// (out_of_range, naming the field). Decoded values are always within T's range.
 
 #include <compare>
 #include <concepts>

@@ -29,6 +29,12 @@
 //   std::optional     null when blank or absent on the wire
 //   anything else     with a codec: its wire text as a string (RobotX light pattern: "RGB")
 //
+// Every message of every wire (sentences here, NMEA 2000 PGNs in nmea2000/json.hpp, the 0xAB00
+// frame in anello/frame_json.hpp) is written by one loop over the walk of its fields (walk.hpp):
+// seawire::write_json_object writes the wire's head, then `,"key":value` per field
+// (write_json_fields, keys made at compile time), then '}'; each wire gives only its head and its
+// values' text (put_field_value). write_plain_fields is the same loop for fmt's "{}".
+//
 // Reading (read_json<T>): each field from a json_value (kind + text, strings unescaped); absent
 // or null is "blank" (nullopt; an error for a required field except text, where it is ""). Numbers
 // may also come as strings, booleans as 0/1, times also as "hhmmss.sss", dates as "ddmmyy". The
@@ -48,6 +54,7 @@
 #include <utility>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -55,6 +62,7 @@
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/variation.hpp"
 #include "seawire/nmea/writer.hpp"
+#include "seawire/walk.hpp"
 
 namespace seawire::nmea {
 
@@ -356,18 +364,6 @@ inline constexpr auto static_text = [] {
   return a.text;
 }();
 
-// What goes before field I's value: `,"name":`, escaped.
-template <class T, std::size_t I>
-struct json_member_key {
-  static constexpr void to(auto& s) noexcept {
-    s.put(",\"");
-    json_escape(s, field_at<I>(T::nmea.fields).name);
-    s.put("\":");
-  }
-};
-template <class T, std::size_t I>
-inline constexpr const auto& json_key = static_text<json_member_key<T, I>>;
-
 // `{"type":"ADDR"` for a message with a fixed address.
 template <class T>
 struct json_fixed_head {
@@ -386,25 +382,95 @@ constexpr void put_array(Sink& s, const std::array<char, N>& a) noexcept {
 }
 }  // namespace detail
 
+}  // namespace seawire::nmea
+
+// ---------------------------------------------------------------------------------------------
+// every message of every wire, through the walk (walk.hpp)
+
+namespace seawire {
+
+namespace detail {
+// `,"key":` of a field, escaped: made once at compile time.
+template <class Info>
+struct json_member_key_of {
+  static constexpr void to(auto& s) noexcept {
+    s.put(",\"");
+    nmea::detail::json_escape(s, Info::key);
+    s.put("\":");
+  }
+};
+}  // namespace detail
+
+namespace detail {
+// write_json_fields' loop body (a function object: its call is inlined, as a lambda's may not be).
+template <class Sink>
+struct json_field_writer {
+  Sink& s;
+  template <class View>
+  SEAWIRE_ALWAYS_INLINE constexpr void operator()(const View& f) const noexcept {
+    nmea::detail::put_array(s, nmea::detail::static_text<json_member_key_of<typename View::info>>);
+    put_field_value<nmea::json_style::json>(s, f);
+  }
+};
+}  // namespace detail
+
+/// `,"key":value` for every field of `msg` in wire order: the members of any message's JSON
+/// object after its head. A value's text is its wire's (put_field_value, found with the field).
+template <nmea::json_sink Sink, walkable M>
+SEAWIRE_ALWAYS_INLINE constexpr void write_json_fields(Sink& s, const M& msg) noexcept {
+  visit_fields(msg, detail::json_field_writer<Sink>{s});
+}
+
+/// A message of any wire as one JSON object (no newline): head(s) writes `{"type":...` and what
+/// else the wire puts first, then every field, then '}'. Every write_json is this.
+template <nmea::json_sink Sink, walkable M, class Head>
+constexpr void write_json_object(Sink& s, const M& msg, Head&& head) noexcept {
+  head(s);
+  write_json_fields(s, msg);
+  s.put('}');
+}
+
+/// `{name=value, ...}` with values as people read them (json_style::plain): fmt's "{}" of a
+/// message of any wire, after its type.
+template <nmea::json_sink Sink, walkable M>
+constexpr void write_plain_fields(Sink& s, const M& msg) noexcept {
+  s.put('{');
+  bool first = true;
+  visit_fields(msg, [&](const auto& f) {
+    if (!first) s.put(", ");
+    first = false;
+    s.put(f.name);
+    s.put('=');
+    put_field_value<nmea::json_style::plain>(s, f);
+  });
+  s.put('}');
+}
+
+}  // namespace seawire
+
+namespace seawire::nmea {
+
+/// A field's value, by the conventions at the top of this file (the walk's per-wire value text:
+/// see seawire::write_json_fields).
+template <json_style Style, json_sink Sink, class Info>
+requires(Info::kind ==
+         wire_kind::nmea0183) constexpr void put_field_value(Sink& s,
+                                                             const field_view<Info>& f) noexcept {
+  write_json_value<Style>(s, f.value);
+}
+
 /// A message as one JSON object (no newline): "type", then each field in wire order.
 template <json_sink Sink, message_like T>
 constexpr void write_json(Sink& s, const T& msg) noexcept {
-  if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
-    s.put("{\"type\":\"");
-    write_type(s, msg);
-    s.put('"');
-  } else {
-    detail::put_array(s, detail::json_head<T>);
-  }
-  constexpr std::size_t n = std::remove_cvref_t<decltype(T::nmea.fields)>::size;
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    ((detail::put_array(s, detail::json_key<T, I>),
-      write_json_value(s,
-                       msg.*(std::remove_cvref_t<decltype(field_at<I>(T::nmea.fields))>::member))),
-     ...);
-  }
-  (std::make_index_sequence<n>{});
-  s.put('}');
+  write_json_object(s, msg, [&](Sink& out) {
+    if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
+      out.put("{\"type\":\"");
+      write_type(out, msg);
+      out.put('"');
+    } else {
+      detail::put_array(out, detail::json_head<T>);
+    }
+  });
 }
 
 /// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}. A '!'

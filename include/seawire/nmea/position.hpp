@@ -58,11 +58,9 @@ struct nmea_coordinate {
   decimal minutes;  ///< 0 <= minutes < 60, never negative
   hemisphere hemi = static_cast<hemisphere>(Axis::positive);
   std::uint8_t degree_digits = Axis::width;  ///< digits the degrees were written with
-  /// The unpadded form of a sender that prints degrees * 100 + minutes as a number, under one
-  /// degree: no degree digits, the minutes with the integer digits they had (minutes.int_width 1
-  /// or 2: "5.5", "22.2", "05.5"). Set by decode in a message whose sender writes it
-  /// (number_forms::unpadded_positions), where encode writes it back; encode refuses it in any
-  /// other message, and with whole degrees.
+  /// The unpadded form under one degree ("5.5", "22.2": minutes only, docs/parse-policy.md), set
+  /// by decode in a message that declares number_forms::unpadded_positions and written back
+  /// there; encode refuses it in any other message, and with whole degrees.
   bool unpadded = false;
 
   constexpr nmea_coordinate() noexcept = default;
@@ -82,15 +80,10 @@ struct nmea_coordinate {
     return static_cast<char>(hemi) == Axis::negative ? -v : v;
   }
 
-  /// From signed decimal degrees, minutes rounded to `minute_places` digits, 1 to 12: every
-  /// spec writes DDMM.m with at least one digit after the point, and receivers rely on it (gpsd
-  /// drops a fix whose position reads "4221,N"), so 0 places is out_of_range. A position
-  /// received without a fraction is still decoded (as "4221.0": one fraction digit, zero),
-  /// except under a strict policy (parse_policy::strict(), seawire-decode --strict), which
-  /// refuses it; minutes given with no fraction digits are written with one ("4221.0").
-  /// The degrees are taken by the rule for every double (decimal::from_double): their shortest
-  /// decimal, here times 60 exactly, rounded half away from zero to the minute places, so
-  /// 59.99999' may carry into the next degree. A position that rounds to zero is N or E.
+  /// From signed decimal degrees, minutes rounded to `minute_places` digits, 1 to 12 (0 is
+  /// out_of_range: receivers such as gpsd drop a fix written "4221,N"), by the rule for every
+  /// double (decimal::from_double), times 60 exactly; 59.99999' may carry into the next degree.
+  /// A position that rounds to zero is N or E.
   [[nodiscard]] static constexpr result<nmea_coordinate> from_degrees(
       double deg, unsigned minute_places = 4) noexcept {
     result<nmea_coordinate> r;
@@ -451,8 +444,7 @@ struct coordinate_traits<decimal_coordinate<A>> {
 }  // namespace detail
 
 /// The fraction digits a position may be written with (a "precision"): minutes of a DDMM.mmm
-/// field (at least one digit after the point, as every spec writes it; gpsd and others drop a
-/// fix written "4221,N"), degrees of a decimal-degree field.
+/// field (at least one), degrees of a decimal-degree field.
 inline constexpr unsigned min_minute_places = 1;
 inline constexpr unsigned max_minute_places = 12;
 inline constexpr unsigned max_degree_places = 18;
@@ -525,15 +517,12 @@ template <class Coordinate>
 }
 }  // namespace detail
 
-/// The NMEA position of signed decimal degrees given as written, exactly (no double):
-/// minutes rounded to `minute_places` digits (halves away from zero), hemisphere from the sign (so
-/// -0.0 is S or W). minute_places < 0 picks the default: the fewest minute digits from which
-/// to_decimal_degrees() writes exactly these degrees, so degrees that seawire wrote give back
-/// the wire's minutes digit for digit (up to 8 minute digits for longitudes, 9 for latitudes;
-/// past that the trailing zeros of the minutes may be lost). Degrees written otherwise get the
-/// number's fraction digits - 2, or 4 (0.0001' = 0.19 m) when it has fewer than 3 fraction
-/// digits. out_of_range for minute places outside 1..12 (gpsd and others drop a fix written
-/// "4221,N"); bad_latitude/bad_longitude beyond 90/180 degrees.
+/// The NMEA position of signed decimal degrees given as written, exactly (no double): minutes
+/// rounded half away from zero to `minute_places` digits (1..12, else out_of_range), hemisphere
+/// from the sign (-0.0 is S or W); bad_latitude/bad_longitude beyond 90/180. minute_places < 0:
+/// the fewest digits from which to_decimal_degrees() gives these degrees back, so what seawire
+/// wrote returns digit for digit (up to 8 minute digits for longitudes, 9 for latitudes); other
+/// degrees get their fraction digits - 2, at least 4 (0.0001' = 0.19 m).
 template <class Coordinate>
 [[nodiscard]] constexpr result<Coordinate> from_decimal_degrees(decimal deg,
                                                                 int minute_places) noexcept {

@@ -32,7 +32,8 @@ enum class checksum_policy : std::uint8_t {
   ignore,             ///< neither checked nor required (the state is still reported)
 };
 
-/// How liberal a receiver is. Each protocol role starts from its spec's defaults.
+/// How liberal a receiver is (docs/parse-policy.md). Each protocol role starts from its spec's
+/// defaults.
 struct parse_policy {
   checksum_policy checksum = checksum_policy::verify_if_present;
   bool lowercase_hex = true;      ///< accept "*4e" as well as "*4E"
@@ -40,21 +41,14 @@ struct parse_policy {
   bool require_crlf = false;      ///< otherwise CR LF, LF, CR or no ending at all are accepted
   bool strict_values = false;     ///< send-side value rules: no '+' signs, no reserved text
   std::size_t max_length = 1024;  ///< bytes from '$' or '!' to the checksum's end (65535 at most)
-  /// Spaces before and after a number (" -5.0"): SPI 4.2 says the minus sign is "the first
-  /// non-whitespace character" of a number, so the Sandshark roles take them. Off by default:
-  /// NMEA 0183 has none. strict_values refuses them whatever this says.
+  /// Spaces around a number (" -5.0", SPI 4.2); strict_values refuses them whatever this says.
   bool spaced_numbers = false;
-  /// A sentence that stops before optional fields reads them as blank, if its checksum is there
-  /// and right (the liberal default: senders drop trailing empty fields). Without a checksum
-  /// nothing says the sender meant to stop there (a line cut off mid-write, as a log's last line
-  /// often is), so such a sentence must reach its message's shortest form (too_few_fields, naming
-  /// the first missing field). Off: only fields declared droppable (may_be_absent,
-  /// only_with_field_count) may be missing, whatever the checksum, for links whose senders always
-  /// write every field (Kingfisher's vehicle). strict_values implies off.
+  /// Optional fields a sentence stops before read as blank, only when a valid checksum vouches
+  /// for where it ends (else too_few_fields). Off: only may_be_absent / only_with_field_count
+  /// fields may be missing. strict_values implies off.
   bool absent_as_blank = true;
-  /// A '*' with nothing after it reads as "no checksum". Off by default: it is a checksum cut
-  /// off (bad_checksum_format, under every checksum_policy). Kingfisher's commands to the vehicle
-  /// may end "*" CR LF when they carry no checksum, so kingfisher::vehicle_policy() turns it on.
+  /// A '*' with nothing after it reads as "no checksum" (Kingfisher commands); off, it is
+  /// bad_checksum_format.
   bool empty_checksum = false;
 
   /// The rules seawire follows when it writes, applied to input: what `--strict` checks.
@@ -385,10 +379,8 @@ namespace detail {
 
 }  // namespace detail
 
-/// Walks the fields of a sentence in order, remembering where it is for error reports.
-///
-/// It finds the commas 64 bytes at a time, as a bit mask (16-byte compares where the target has
-/// them), so that each field costs a bit scan instead of a search through its text.
+/// Walks the fields of a sentence in order, remembering where it is for error reports. The commas
+/// are found 64 bytes at a time as a bit mask, so each field costs a bit scan.
 class field_reader {
  public:
   SEAWIRE_ALWAYS_INLINE constexpr field_reader(const sentence_view& s,

@@ -1,73 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// nmea::stream_reader: cuts a byte stream (TCP, serial, a log file) into NMEA 0183 sentences, and
-// into the binary frames of one recognizer when the link also carries those, in the order they
-// were sent, from chunks of any size. Every drop can be reported in stream order too.
-//
-//   nmea::stream_reader<> reader;              // sentences only; stream_reader<1024, F> also
-//   reader.feed(chunk);                        //   cuts out F's binary frames
-//   while (auto item = reader.next()) {
-//     if (item->is_sentence()) use(item->sentence.text);  // "$GPRMC,...*70": decode it
-//     else if (item->is_frame()) use(item->frame);        // F::value_type, check passed
-//   }
-//   ...
-//   while (auto item = reader.finish()) ...;   // end of stream: what is left, then nullopt
-//
-// nmea::framer is this reader without frames, for programs that want only the sentences.
-//
-// The rules, in the order a byte meets them:
-// - Between items, '$' or '!' starts a sentence (NMEA 0183 encapsulation: !AIVDM, !AIVDO), and a
-//   recognizer's first header byte (0xAB for the ANELLO frame) a frame candidate; CR and LF are
-//   line breaks; every other byte is noise.
-// - A candidate must go on with the recognizer's header, checked byte by byte. The header's first
-//   byte followed by anything but its second is one noise byte. A mismatch later in the header
-//   (the length, for the ANELLO frame) is a bad_length drop: a length is never believed, so a
-//   lying one cannot make the reader wait. The byte that broke the pattern is read again as a
-//   new start.
-// - A candidate with a good header takes the bytes up to the recognizer's size whatever they are
-//   ('$', CR, LF, the sync byte are payload there), then the recognizer checks it (the CRC). A
-//   frame that passes is yielded.
-// - A candidate that fails the check (bad_crc), or one cut short by finish() (truncated_frame),
-//   is not a frame: its first byte is dropped and the bytes after it are read again from the
-//   "between items" state, so a sentence or a real frame that a false header swallowed still
-//   comes out. The reader keeps those bytes itself (they are the candidate's buffer), so this
-//   works across any chunking. Each re-read is shorter than the one before, so it ends.
-// - A sentence ends at LF, CR or CR LF. A '$' inside a sentence starts anew there; so does a
-//   recognizer's first header byte (sentences are printable ASCII, so that byte belongs to what
-//   comes next). The sentence before it is yielded, with line_ending::none, if it ends in a
-//   complete "*hh" checksum: only its line ending is missing ("$A,1*57$B,2*55\r\n" is two
-//   sentences). Otherwise it is dropped (interrupted): its tail may be lost. A '!' inside a
-//   sentence is text (a status message may say "done!"): it interrupts nothing. Any other byte
-//   outside 0x20..0x7E drops the sentence (invalid_byte) and the rest of its line; so does a
-//   sentence longer than Capacity (overlong). A '$' or a frame's first byte in the dropped rest
-//   starts a new item; a '!' there is dropped with the rest.
-// - Nothing else is checked: checksums and fields are sentence_view's business.
-//
-// A line lying wholly inside the chunk being read is yielded as a view into that chunk. Only a
-// line cut by a chunk boundary -- or one whose CR is the chunk's last byte, since the next chunk
-// decides between CR and CR LF -- is copied into the fixed buffer. Every item depends only on the
-// byte stream, never on how it was cut into chunks. What a false frame sync costs: the items
-// inside its bytes come out once its last byte has arrived (or at finish()), not before; nothing
-// is lost and the order is kept.
-//
-// Accounting: every byte fed ends in exactly one bucket once finish() has returned nullopt:
-//   fed = sum of yielded sentence text + frame size * frames + noise_bytes + dropped_bytes
-//         + line_break_bytes.
-// A rejected candidate contributes its first byte to dropped_bytes; its other bytes land wherever
-// their re-read puts them (mostly noise_bytes).
-//
-// Drop reports: with report_drops(true), each event behind those counters also comes out as an
-// item of kind dropped, in stream order among the sentences and frames: a run of noise bytes, a
-// dropped line (invalid byte, overlong), an interrupted sentence, a rejected frame candidate.
-// The item says where (offset, line), why, how many bytes, and shows the first of them, so a
-// program can tell its user exactly what was lost instead of only counting it:
-//   reader.report_drops(true);
-//   ... if (item->is_drop()) warn(item->line, name(item->drop.reason), item->drop.size);
-// Their sizes add up to noise_bytes + dropped_bytes.
-//
-// Memory is fixed: Capacity bytes for a sentence cut by a chunk boundary, a frame's size for a
-// candidate and one less to re-read, 256 to show a drop; no heap, noexcept, usable in constant
-// expressions (the std::span feed() excepted: it has to reinterpret the bytes as chars).
+// nmea::stream_reader: a byte stream (TCP, serial, a log file) cut into NMEA 0183 sentences, and
+// the binary frames of one recognizer F, in stream order, from chunks of any size, with every
+// dropped byte accounted for. The rules (what starts, ends, interrupts and drops an item), the
+// byte accounting and the memory used: docs/streams.md.
 
 #include <algorithm>
 #include <array>
@@ -237,9 +173,8 @@ struct stream_item {
   /// Line number of the item's first byte: line breaks before it, plus one (CR LF is one break;
   /// CR and LF inside frames are none). For a sentence, the same as sentence.line.
   std::uint64_t line = 1;
-  /// kind == sentence: the line from its '$' or '!' up to its line ending, the ending, and the line
-  /// number (line breaks before it, plus one; CR and LF inside frames are not line breaks). The
-  /// text is valid until the next call of next(), feed() or finish(). Empty for a frame.
+  /// kind == sentence: the line up to its line ending, the ending and the line number. The text
+  /// is valid until the next call of next(), feed() or finish().
   nmea::framed_line sentence{};
   /// kind == frame: the frame's bytes as received (owned, unlike the sentence text).
   [[no_unique_address]] frame_bytes bytes{};
@@ -260,7 +195,7 @@ struct stream_item {
 };
 
 /// What a stream_reader has seen. Items, rejected frames and dropped lines are counted once;
-/// bytes as the accounting rule in the header comment says.
+/// bytes as docs/streams.md's accounting rule says.
 struct stream_stats {
   std::uint64_t sentences = 0;          ///< sentences yielded
   std::uint64_t frames = 0;             ///< frames yielded
@@ -353,12 +288,9 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     return next();
   }
 
-  /// The link has gone quiet (a read timed out, a live stream paused): a sentence whose CR was
-  /// the last byte fed, held back to tell CR from CR LF, is yielded now, as ended by CR; an LF
-  /// that arrives next completes that line break (it counts no new line). Nothing else is
-  /// released: a sentence without its line ending, a frame candidate or an open drop report
-  /// waits for more bytes (finish() ends them). So a sender that ends lines with CR alone is
-  /// not one sentence late. Precondition: the current chunk is drained.
+  /// The link has gone quiet: yields a sentence whose CR was the last byte fed (held back to tell
+  /// CR from CR LF) as ended by CR; an LF arriving next completes that line break. Nothing else
+  /// is released. Precondition: the current chunk is drained.
   [[nodiscard]] constexpr std::optional<item> flush() noexcept {
     assert(drained() && "stream_reader::flush: current chunk not drained by next()");
     if (state_ != state::held) return std::nullopt;
@@ -375,12 +307,9 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
 
   [[nodiscard]] constexpr const stream_stats& stats() const noexcept { return stats_; }
 
-  /// With `on`, next() and finish() also yield a stream_item of kind dropped for each run of bytes
-  /// the reader gives up on, in stream order among the other items (off by default: only
-  /// sentences and frames, and the counters). A report comes once its run has ended: a noise run
-  /// at the next '$', line break or frame sync and id (a lone sync is noise in the run), a dropped
-  /// line at its end, so it does not depend on how the stream is chunked either. Keep the setting
-  /// the same for a whole stream (turned off while a run is open, that run is not reported).
+  /// With `on`, next() and finish() also yield a dropped item for each run of bytes given up on,
+  /// in stream order, once the run has ended (off by default). Keep it the same for a whole
+  /// stream: a run open when it is turned off is not reported.
   constexpr void report_drops(bool on) noexcept { report_drops_ = on; }
   [[nodiscard]] constexpr bool reports_drops() const noexcept { return report_drops_; }
 

@@ -1,14 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The 29-bit CAN identifier of an NMEA 2000 frame (ISO 11783 / SAE J1939 layout):
-//
-//   28 27 26 | 25  | 24 | 23 ...... 16 | 15 ...... 8 | 7 ....... 0
-//   priority | EDP | DP |  PDU format  | PDU specific|   source
-//
-// PGN = EDP:DP:PF:PS when PF >= 240 (PDU2, broadcast: PS is the group extension, part of the
-// PGN) and EDP:DP:PF:00 when PF < 240 (PDU1, addressed: PS is the destination, 255 = everyone).
-// Priority 0 is the most urgent. Every PGN this library describes is PDU2. SocketCAN sets bit 31
-// (CAN_EFF_FLAG) on extended identifiers; parse_can_id takes the 29 bits without it.
+// The 29-bit CAN identifier of an NMEA 2000 frame (ISO 11783 / J1939): priority (3 bits, 0 most
+// urgent), EDP, DP, PDU format, PDU specific, source. PF >= 240: PDU2, PS part of the PGN; else
+// PDU1, PS the destination (255 = all). Bit 31 (SocketCAN's CAN_EFF_FLAG) is not part of it.
 
 #include <cstdint>
 

@@ -1,47 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// NMEA 2000 fast packets: a payload of up to 223 bytes carried by up to 32 CAN frames of one PGN
-// from one source. Byte 0 of every frame holds a sequence counter (bits 7-5, the same in every
-// frame of one packet, incremented per packet modulo 8 by the sender) and the frame's number
-// (bits 4-0). Frame 0 carries the payload's length in byte 1 and payload bytes 0-5; frame k >= 1
-// carries bytes 6 + 7(k-1) .. 6 + 7k - 1. A sender pads the last frame with 0xFF or shortens it.
-// Whether a PGN travels as fast packet is a property of the PGN (pgn_info::transport), not of
-// the bytes.
-//
-// Sending: split_fast_packet() cuts a payload into frames; fast_packet_sequencer keeps the
-// sequence counter of each (PGN, source).
-//
-// Receiving: fast_packet_assembler<Slots> rebuilds packets from frames of any number of sources
-// and PGNs interleaved, in `Slots` fixed buffers (about 270 bytes each; 16 slots, about 4.3 KiB, by
-// default), one per (source, PGN, destination). A packet is the frames of one key with one
-// sequence counter. Its frames may come in any order (some gateways swap them), with one limit
-// canboat's analyzer has too: frames held before a frame 0 that would complete its packet at once
-// are taken for the rest of an earlier packet whose frame 0 was lost (which a sender that keeps
-// one sequence counter for every packet makes look the same), so frame 0 may come after some of
-// its packet's frames, never after all of them. A payload may be as long as frame 0 says, up to
-// 223 bytes, whatever the PGN's known length: a newer sender may append fields, which a decoder
-// of the known ones ignores. What cannot be assembled is dropped and counted by reason:
-//
-//   missing_frame     a packet given up with frames missing: a new frame 0 of the same sequence
-//                     counter came while it had frame 0 and more, or the log ended (flush)
-//   repeated_frame    a frame number the unfinished packet already holds (a retransmission, or
-//                     the next packet of a sender that does not change the sequence counter):
-//                     the unfinished packet is dropped and the frame begins the next one
-//   sequence_changed  a frame of another sequence counter came while a packet was unfinished:
-//                     the unfinished packet is dropped and the frame begins the next one
-//   too_long          frame 0 announcing more than 223 bytes (this frame only)
-//   short_frame       an empty frame, a frame 0 without its length byte (these frames only), or
-//                     a packet one of whose frames carries fewer bytes than its place in the
-//                     payload needs (only the last frame may be shortened rather than padded)
-//   orphan_frame      frames that belong to no packet: held without their frame 0 when the
-//                     frame 0 that came would complete the packet without them or does not
-//                     reach their numbers, held without a frame 0 at the end of the log, or a
-//                     frame numbered past the frame count its packet's frame 0 announced
-//   evicted           every slot busy with an unfinished packet when a new one began: the one
-//                     touched longest ago is dropped to make room
-//
-// Every frame fed is accounted for: frames_in() == frames_assembled() + frames_dropped() +
-// frames_pending(). A dropped packet never blocks the next one.
+// NMEA 2000 fast packets: up to 223 bytes in up to 32 CAN frames of one PGN from one source.
+// Byte 0 of each frame: sequence counter (bits 7-5, per packet, modulo 8) and frame number (bits
+// 4-0); frame 0 has the length in byte 1 and payload bytes 0-5, frame k >= 1 bytes
+// 6 + 7(k-1) .. 6 + 7k - 1; the last frame padded with 0xFF or shortened. The assembler takes
+// interleaved sources and PGNs in fixed slots, frames in any order except frame 0 after all the
+// others, and accounts for every frame: frames_in() == frames_assembled() + frames_dropped() +
+// frames_pending(). Drop reasons and the ordering rule: docs/nmea2000.md.
 
 #include <algorithm>
 #include <array>

@@ -38,6 +38,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/error.hpp"
+#include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea2000/field.hpp"
 #include "seawire/nmea2000/log.hpp"
@@ -124,6 +125,28 @@ constexpr void quote(Sink& s) noexcept {
   if constexpr (Style == nmea::json_style::json) s.put('"');
 }
 
+/// The names of the flags set in `v` (a set bit without a name as "bit_N"), quoted in JSON,
+/// `sep` between them. Returns whether any flag is set.
+template <nmea::json_style Style, json_sink Sink, class T>
+constexpr bool flag_names(Sink& s, const T& v, char sep) noexcept {
+  bool any = false;
+  for (unsigned bit = 0; bit < T::bits; ++bit) {
+    if (!v.test_bit(bit)) continue;
+    if (any) s.put(sep);
+    any = true;
+    quote<Style>(s);
+    const std::string_view n = enum_name<typename enum_of<T>::type>(bit);
+    if (n.empty()) {
+      s.put("bit_");
+      nmea::detail::json_uint(s, bit);
+    } else {
+      s.put(n);
+    }
+    quote<Style>(s);
+  }
+  return any;
+}
+
 }  // namespace detail
 
 /// One field value by the conventions at the top of this file.
@@ -131,27 +154,12 @@ template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, field
 constexpr void write_json_value(Sink& s, const T& v) noexcept {
   using nmea::detail::json_uint;
   if constexpr (detail::is_flags<T>::value) {
-    using E = typename detail::enum_of<T>::type;
     if (!v.has_value()) {  // not sent: not the same as [] (sent, no flag set)
       s.put("null");
       return;
     }
     s.put('[');
-    bool first = true;
-    for (unsigned bit = 0; bit < T::bits; ++bit) {
-      if (!v.test_bit(bit)) continue;
-      if (!first) s.put(',');
-      first = false;
-      detail::quote<Style>(s);
-      const std::string_view n = nmea2000::detail::enum_name<E>(bit);
-      if (n.empty()) {
-        s.put("bit_");
-        json_uint(s, bit);
-      } else {
-        s.put(n);
-      }
-      detail::quote<Style>(s);
-    }
+    detail::flag_names<Style>(s, v, ',');
     s.put(']');
     return;
   } else {
@@ -214,39 +222,44 @@ constexpr void write_json_header(Sink& s, const message_header& h) noexcept {
   json_uint(s, h.id.destination);
 }
 
-namespace detail {
-/// `,"name":value` for every field of msg's table, reserved bits left out.
-template <json_sink Sink, pgn_like P>
-constexpr void json_fields(Sink& s, const P& msg) noexcept {
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved) {
-      s.put(",\"");
-      s.put(f.name);
-      s.put("\":");
-      write_json_value(s, msg.*F::member);
-    }
-  });
+/// A field's value (the walk's per-wire value text: see seawire::write_json_fields).
+template <nmea::json_style Style, json_sink Sink, class Info>
+requires(Info::kind ==
+         wire_kind::nmea2000) constexpr void put_field_value(Sink& s,
+                                                             const field_view<Info>& f) noexcept {
+  write_json_value<Style>(s, f.value);
 }
-}  // namespace detail
+
+/// A field as a CSV cell: empty when not available, flags joined by ';' ("none" when the word
+/// was sent with no flag set), else the value as plain text.
+template <json_sink Sink, class Info>
+requires(Info::kind ==
+         wire_kind::nmea2000) constexpr void put_csv_value(Sink& s,
+                                                           const field_view<Info>& f) noexcept {
+  using V = typename Info::value_type;
+  if constexpr (detail::is_flags<V>::value) {
+    if (f.value.has_value() && !detail::flag_names<nmea::json_style::plain>(s, f.value, ';'))
+      s.put("none");
+  } else if (f.state != field_state::not_available) {
+    write_json_value<nmea::json_style::plain>(s, f.value);
+  }
+}
 
 /// A message of a described PGN as one JSON object (no newline).
 template <json_sink Sink, pgn_like P>
 constexpr void write_json(Sink& s, const message_header& h, const P& msg) noexcept {
-  write_json_header(s, h);
-  detail::json_fields(s, msg);
-  s.put('}');
+  write_json_object(s, msg, [&](Sink& out) { write_json_header(out, h); });
 }
 
 /// A message without the header of its frame: `{"type":"PGN<n>"` and the fields, nothing of
 /// priority, source or time (for a message built in code rather than read from a bus).
 template <json_sink Sink, pgn_like P>
 constexpr void write_json(Sink& s, const P& msg) noexcept {
-  s.put("{\"type\":\"PGN");
-  nmea::detail::json_uint(s, P::n2k.info.pgn);
-  s.put('"');
-  detail::json_fields(s, msg);
-  s.put('}');
+  write_json_object(s, msg, [](Sink& out) {
+    out.put("{\"type\":\"PGN");
+    nmea::detail::json_uint(out, P::n2k.info.pgn);
+    out.put('"');
+  });
 }
 
 /// A message of a PGN without a description: its bytes in "data" (hex, upper case).
@@ -527,13 +540,7 @@ template <class Lookup>
 template <pgn_like P, json_sink Sink>
 constexpr void write_csv_header(Sink& s) noexcept {
   s.put("time_s,prio,src,dst");
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
-    if constexpr (!std::remove_cvref_t<decltype(f)>::is_reserved) {
-      s.put(',');
-      s.put(f.name);
-    }
-  });
-  s.put('\n');
+  write_csv_columns<P>(s, false);
 }
 
 /// One row of P's table, ending in LF.
@@ -547,26 +554,7 @@ constexpr void write_csv(Sink& s, const message_header& h, const P& msg) noexcep
   json_uint(s, h.id.source);
   s.put(',');
   json_uint(s, h.id.destination);
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved) {
-      s.put(',');
-      const auto& v = msg.*F::member;
-      if constexpr (detail::is_flags<typename F::value_type>::value) {
-        if (v.has_value()) {
-          nmea::json_buffer<512> cell;
-          write_json_value<nmea::json_style::plain>(cell, v);
-          std::string_view c = cell.view();  // [a,b]
-          c = c.substr(1, c.size() - 2);
-          if (c.empty()) s.put("none");
-          for (const char ch : c) s.put(ch == ',' ? ';' : ch);
-        }
-      } else if (v.state() != field_state::not_available) {
-        write_json_value<nmea::json_style::plain>(s, v);
-      }
-    }
-  });
-  s.put('\n');
+  write_csv_cells(s, msg, false);
 }
 
 }  // namespace seawire::nmea2000

@@ -1,36 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Text logs of NMEA 2000 traffic: read a line of any of these formats, write any of them.
-//
-//   candump_log    (1700000000.123456) can0 09F50323#FF0000FFFF03FFFF
-//                  can-utils' `candump -L` / `-l` and what `canplayer` reads; a trailing
-//                  direction token (` R`, ` T`) of newer can-utils is accepted
-//   candump        can0  09F50323   [8]  FF 00 00 FF FF 03 FF FF
-//                  can-utils' `candump` screen output, optionally led by a (timestamp)
-//   canboat        2020-08-22T13:52:55.194Z,2,128259,35,255,8,ff,00,00,ff,ff,03,ff,ff
-//                  canboat's PLAIN (len <= 8: one CAN frame as it was on the bus) and FAST
-//                  (len > 8: a fast packet's whole payload) lines, what actisense-serial writes
-//                  and canboat's analyzer reads
-//   yd_raw         21:55:35.925 R 19F51323 20 0E FF FF FF FF FF FF
-//                  Yacht Devices gateways' RAW format; R = received from the bus, T = sent
-//
-// parse_log_line() tells the formats apart by their shape ('#' for candump_log, '[' for
-// candump, ',' for canboat, hh:mm:ss first for yd_raw). A malformed line is an error with the
-// token it concerns (`field`, see log_field_name) and its byte column; a caller reading a file
-// reports it and goes on with the next line.
-//
-// A CAN frame carries 0 to 8 data bytes, and every format reads a frame of any of these lengths
-// (a frame without data is a legal frame: its PGN's fields are all not available). A line whose
-// first character is '#' is a comment (is_log_comment): canboat skips them, and the header
-// `# format=NAME` its loggers write first says how the lines after it are to be read
-// (canboat_format, parse_format_header; log_reader follows it). A canboat line is one frame in
-// a PLAIN log and one whole message in a FAST log, whatever its length.
-//
-// Timestamps are kept in microseconds: of Unix time (UTC) for candump and canboat lines, of the
-// day for yd_raw lines (the gateway's clock: UTC once it has seen the time on the bus, time since
-// power-up before). canboat's timestamp is free text to canboat; the forms it writes
-// (2016-04-09T16:41:39.628Z, 2011-04-25-10:16:42.094, an offset such as -07:00) are read, with
-// no zone taken as UTC; any other text leaves the time empty.
+// Text logs of NMEA 2000 traffic, each read and written: candump -L (candump_log), candump's
+// screen output, canboat PLAIN/FAST lines, Yacht Devices RAW (yd_raw); parse_log_line() tells
+// them apart by their shape. A frame of 0 to 8 data bytes; '#' lines are comments, canboat's
+// `# format=NAME` header included. Timestamps in microseconds: Unix time (UTC), or of the day for
+// yd_raw. Examples, the timestamp forms read and the canboat rules: docs/nmea2000.md.
 
 #include <array>
 #include <chrono>

@@ -1,20 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// NMEA 2000 PGNs: the ones the ANELLO Maritime INS takes as sensor input (engine, speed through
-// the water, distance log, environment and speed components) and the vessel heading. Each
-// struct is one PGN: its members in wire order, then its table (field.hpp says how the table is
-// read). Physical values are SI, as on the wire: pressures in Pa, temperatures in K, speeds in
-// m/s, angles in radians, plus rpm, L/h, % and seconds where the standard uses them.
-//
-// Where ANELLO's field lists differ from what devices send, these follow the wire:
-// - 128259's last byte and a half ("Reserved Bits" in ANELLO's list) start with a 4-bit speed
-//   direction; the remaining 12 bits are reserved.
-// - 130311's "Temperature Instance" and "Humidity Instance" are the temperature and humidity
-//   *source* lookups (6 and 2 bits of one byte).
-// - 127489's field 10 ("Not Available") is a reserved byte.
-// - Resolutions and signedness are the standard's: 127488 boost pressure is unsigned at 100 Pa,
-//   127489 oil and coolant pressures 100 Pa (fuel pressure 1 kPa), engine load and torque signed,
-//   128259 speeds unsigned, 130311 temperature unsigned and humidity signed at 0.004 %.
+// The NMEA 2000 PGNs the ANELLO Maritime INS takes as sensor input, and the vessel heading; each
+// struct is one PGN, its members in wire order, then its table (field.hpp). Values are SI as on
+// the wire (Pa, K, m/s, rad, plus rpm, L/h, %, s). Where ANELLO's field lists differ from what
+// devices send (128259's speed direction, 130311's source lookups, 127489's reserved byte), these
+// follow the wire: docs/nmea2000.md.
 
 #include <array>
 #include <cstddef>

@@ -1,18 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// From CAN log lines to NMEA 2000 messages: each line parsed (log.hpp), frames of fast-packet PGNs
-// assembled (fast_packet.hpp), and every complete message handed to a callback with its header
-// and payload. Which PGNs travel as fast packets comes from the PGN set (`Pgns`, the ANELLO
-// inputs by default); frames of any other PGN are passed on one by one as single-frame messages.
-// A fast packet may be longer than its PGN's known layout (up to 223 bytes): the fields past it
-// are a newer sender's, which decode ignores, as it does for a canboat FAST line.
-//
-// canboat lines: a `# format=NAME` header fixes how the lines after it are read (FAST: each is a
-// whole message, whatever its length; PLAIN: each is one frame; PLAIN_OR_FAST, PLAIN_MIX_FAST;
-// YDWG02: Yacht Devices RAW lines); a later header replaces it. Without one, the reader does what
-// canboat's analyzer does: a log whose first canboat line has more than 8 bytes is FAST, any
-// other is PLAIN_OR_FAST. Other comment lines ('#' first) are skipped.
-// Fixed memory: the assembler's slots (Slots x about 270 bytes) and one parsed line.
+// From CAN log lines to NMEA 2000 messages: each line parsed (log.hpp), fast-packet PGNs (those
+// of `Pgns`) assembled, every complete message handed to a callback with its header and payload;
+// canboat `# format=` headers followed, else canboat's own FAST detection (docs/nmea2000.md).
+// Fixed memory: the assembler's slots and one parsed line.
 
 #include <cstddef>
 #include <cstdint>

@@ -1,34 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// robotx::scheduler: when the vehicle may send what, without doing any I/O or reading a clock.
-//
-// The spec asks for an RXHRB every second and for no message type more often than once a
-// second. The scheduler keeps both rules for you: give it the heartbeat's content once
-// (status()), hand it task reports as they come (submit()), and call poll(now) -- at
-// next_due(), or whenever your loop wakes -- sending every sentence it returns:
-//
-//   robotx::scheduler s;
-//   if (!s.status(hrb)) ...;                    // position, team, mode, AUV status
-//   const auto r = s.submit(cod, now);          // a task report, whenever it is ready
-//   while (auto out = s.poll(now)) send(out->sentence.view());
-//   sleep_until(s.next_due());
-//
-// Rules, all measured on the `now` you pass to poll():
-// - A heartbeat goes out on the first poll after status() is given, then on the first poll at
-//   least `heartbeat_period` after the previous one went out. Measuring from when it went out,
-//   not from when it was due, means a late wake-up delays the next heartbeat instead of letting
-//   two go out less than a second apart: the rate rule wins over the cadence.
-// - A task report goes out no sooner than `min_interval` after the last report of its type.
-//   One that comes too soon is held (the default) or refused, as `when_too_soon` says:
-//   * hold: the report waits in its type's slot and goes out when its second is up. A newer
-//     report of the same type replaces a waiting one (status `replaced`): the judges care about
-//     the vehicle's latest answer, and one slot per type keeps memory fixed.
-//   * refuse: submit() returns `refused` and when the report could go; nothing is kept beyond
-//     one report ready to go. For callers that want to decide themselves (resend, re-detect).
-// - When several sentences are due at once, the heartbeat goes first, then reports in the
-//   order they became due (submission order on a tie). poll() returns one at a time.
-// - With `stamp_reports` (the default) every sentence gets the HST date and time of the poll
-//   that releases it, so a held report is not stamped earlier than it is sent.
+// robotx::scheduler: when the vehicle may send what (RXHRB every heartbeat_period, each report
+// type at most once per min_interval), without I/O or a clock: status() the heartbeat's content,
+// submit() reports, poll(now) until nullopt. A heartbeat period runs from when the last one went
+// out, so a late wake-up never sends two less than a second apart. Too-soon reports held (one
+// slot per type, newest wins) or refused; order and stamping: docs/robotx.md.
 
 #include <array>
 #include <chrono>
@@ -116,8 +92,7 @@ class scheduler {
   /// The heartbeat content, once status() has been given.
   [[nodiscard]] constexpr const std::optional<rxhrb>& status() const noexcept { return heartbeat_; }
 
-  // status(), submit() and poll() are function templates of nothing, like the role decoders:
-  // the encoders they run are compiled only where they are called. Call them as plain functions.
+  // status(), submit() and poll() are templates of nothing, like the role decoders (nmea::lazy).
   template <int N = 0>
   [[nodiscard]] constexpr submit_result submit(const rxgat& m, instant now) noexcept {
     return submit_one<nmea::lazy<rxgat, N>>(m, now);

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Hawaii Standard Time, the clock every RobotX date and time field is read on: UTC-10 all year
-// (Hawaii keeps no daylight saving), so the conversion is a fixed offset and needs no time zone
-// database. The library never reads a clock: pass it system_clock::now() or a simulated time.
-//
-// system_clock counts no leap seconds, so a stamp made here never reads hh:mm:60.
+// Hawaii Standard Time, the clock of every RobotX date and time: UTC-10 all year (no daylight
+// saving), a fixed offset. The caller passes the time in; system_clock has no leap seconds, so
+// a stamp never reads hh:mm:60.
 
 #include <chrono>
 #include <cstdint>

@@ -1,19 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The 2018 Maritime RobotX Challenge reports: what a team's vehicle (the AMS) sends to the
-// Technical Director's server over TCP. RXHRB is the 1 Hz heartbeat; RXGAT, RXCOD, RXDOK and
-// RXDEL report one task each. Dates and times are Hawaii Standard Time (see hst.hpp), whole
-// seconds.
-//
-// Blanks: the spec lets any field be blank "where data is unavailable". Date, time and team id
-// are required here (a report without them cannot be judged) and so is the system mode (the
-// AMS always knows it); position, AUV status and every task answer may be blank (no fix yet, no
-// AUV, a light buoy that is off has no pattern) and are std::optional.
-//
-// Cruciform: RXDOK's table spells it CRUC, RXDEL's CRUCI. Each message has its own shape type
-// (dock_shape, deliver_shape) that accepts both spellings and writes its own table's, so a
-// message read and written back keeps its spec's spelling. Both types list the same shapes in
-// the same order; as_deliver_shape()/as_dock_shape() convert.
+// The 2018 Maritime RobotX Challenge reports a team's vehicle sends to the Technical Director's
+// server: RXHRB (1 Hz heartbeat), RXGAT, RXCOD, RXDOK, RXDEL. Times are HST (hst.hpp), whole
+// seconds. Date, time, team id and mode are required; the rest may be blank (std::optional).
+// RXDOK spells the cross CRUC, RXDEL CRUCI: each has its own shape type accepting both and
+// writing its own (docs/robotx.md).
 
 #include <array>
 #include <cstddef>
@@ -92,8 +83,7 @@ struct light_pattern {
   std::array<color, 3> colors{};
 
   /// From text such as "RGB": bad_length unless three letters, bad_enum for any other than R/B/G.
-  /// (A function template of nothing, so that color's letters are read only where it is used;
-  /// call it as a plain function.)
+  /// (A template of nothing: color's letters are read only where it is used.)
   template <int N = 0>
   [[nodiscard]] static constexpr result<light_pattern> from(std::string_view s) noexcept {
     result<light_pattern> r;
@@ -148,9 +138,7 @@ namespace seawire::robotx {
 // messages
 
 /// Heartbeat, 1 Hz, always.
-///
 ///   $RXHRB,101218,161229,21.31198,N,157.88972,W,AUVSI,2,1*06
-///          1      2      3        4 5         6 7     8 9
 struct rxhrb {
   nmea::date date;                             // 1   [HST Date] ddmmyy
   nmea::time_of_day time;                      // 2   [HST Time] hhmmss, 24 h
@@ -173,9 +161,7 @@ struct rxhrb {
 };
 
 /// Entrance and Exit Gates: the gates in which the AMS detected an active beacon.
-///
 ///   $RXGAT,101218,161229,AUVSI,1,2,Y,RGB*25
-///          1      2      3     4 5 6 7
 struct rxgat {
   nmea::date date;                                     // 1 [HST date] ddmmyy
   nmea::time_of_day time;                              // 2 [HST time] hhmmss
@@ -197,9 +183,7 @@ struct rxgat {
 };
 
 /// Scan the Code: the light bar's pattern. The TD echoes it back.
-///
 ///   $RXCOD,101218,161229,AUVSI,RGB*49
-///          1      2      3     4
 struct rxcod {
   nmea::date date;                                     // 1 [HST date] ddmmyy
   nmea::time_of_day time;                              // 2 [HST time] hhmmss
@@ -215,9 +199,7 @@ struct rxcod {
 };
 
 /// Identify Symbols and Dock: colour and shape of the bay the AMS will dock in. Echoed.
-///
 ///   $RXDOK,101218,161229,AUVSI,R,TRIAN*28
-///          1      2      3     4 5
 struct rxdok {
   nmea::date date;                   // 1 [HST date] ddmmyy
   nmea::time_of_day time;            // 2 [HST time] hhmmss
@@ -234,9 +216,7 @@ struct rxdok {
 };
 
 /// Detect and Deliver: colour and shape of the face the AMS will deliver into. Echoed.
-///
 ///   $RXDEL,101218,161229,AUVSI,R,CIRCL*32
-///          1      2      3     4 5
 struct rxdel {
   nmea::date date;                     // 1 [HST date] ddmmyy
   nmea::time_of_day time;              // 2 [HST time] hhmmss
@@ -304,10 +284,7 @@ inline constexpr report_type report_type_of = report_traits<M>::type;
   return std::nullopt;
 }
 
-// The role decoders below are function templates of nothing (`template <int N = 0>`, their
-// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
-// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
-// as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode one line into whichever report it is, under the judges' policy by default. A
 /// well-formed sentence with another address gives unknown_sentence (not an error).
 template <int N = 0>

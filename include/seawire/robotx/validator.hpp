@@ -1,34 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// robotx::validator: the judges' view of a team's link, for test tools and for teams checking
-// themselves before an event. Feed it every line received, with the time it arrived; it says
-// whether the judges' decoder (judge_policy) accepts the line and lists every rule the line
-// breaks -- all of them, not the first: each field is checked on its own, from the same message
-// declaration the decoder uses.
-//
-//   robotx::validator v({.expected_team = robotx::team("AUVSI")});
-//   for (auto [line, t] : received) {
-//     const auto verdict = v.check(line, t);
-//     for (const auto& f : verdict.findings) log(name(f.broken), f.address, f.field, f.ec);
-//   }
-//   v.finish(end_time);   // a heartbeat gap still open at the end
-//
-// What is a finding (see `rule`). Some lines the judges' decoder accepts still get findings:
-// the rule is the spec (and NMEA), the decoder is liberal about what teams send in practice.
-// - lower-case checksum hex: accepted, flagged (NMEA and every seawire encoder write upper case);
-// - a checksum written in decimal ("*40" for 0x28): reported as such, not only as a mismatch;
-// - a date or time without its leading zeros ("29620" for 290620): reported as `unpadded`;
-// - extra trailing fields: accepted, flagged as field_count / too_many_fields;
-// - a line ending other than CR LF, when the line has one (lines given without any ending, as a
-//   framer hands them out, are not judged on it).
-// Rate and gap rules are about arrival times:
-// - rate: a sentence with the same address as one less than `min_interval` before it. Every
-//   sentence of the five reports counts, even a rejected one: it was transmitted. Exactly
-//   min_interval apart is allowed (1 Hz).
-// - heartbeat gap: more than `heartbeat_gap_limit` between two accepted RXHRB (or from the
-//   first line seen, or start(), to the first RXHRB). Reported once per gap: when the heartbeat
-//   that ends it arrives, or earlier by advance()/finish() for a live tool with a timer.
-// Arrival times must not go backwards.
+// robotx::validator: the judges' view of a team's link. Fed every line with its arrival time
+// (never going backwards), it says whether judge_policy accepts the line and lists every rule
+// the line breaks, each field checked on its own; some lines the liberal decoder accepts still
+// get findings (lower-case hex, extra fields, no CR LF). Rate and heartbeat-gap rules:
+// docs/robotx.md.
 
 #include <array>
 #include <chrono>
@@ -265,8 +241,7 @@ class validator {
   }
 
   /// Judge one received line (with or without its line ending) that arrived at `at`. (A
-  /// function template of nothing, like the role decoders: the decoders it runs are compiled
-  /// only where it is called. Call it as a plain function.)
+  /// template of nothing, like the role decoders: nmea::lazy.)
   template <int N = 0>
   [[nodiscard]] constexpr verdict check(std::string_view line, instant at) noexcept {
     verdict v;

@@ -30,9 +30,7 @@ namespace seawire::sandshark {
 // from the vehicle: commands (SPI 5), always sent
 
 /// BFSHT: the payload loses power in one minute or more; clean up now.
-///
 ///   $BFSHT,081025.987*hh
-///          1
 struct bfsht {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
 
@@ -42,9 +40,7 @@ struct bfsht {
 };
 
 /// BFVER: the SPI version the vehicle speaks; sent at the start of communications.
-///
 ///   $BFVER,081025.987,1.0*hh
-///          1          2
 struct bfver {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   nmea::text<32> version;       // 2 [v-v] Version number
@@ -88,9 +84,7 @@ enum class mission_state : std::uint8_t {
 };
 
 /// BFMIS: mission status, sent when it changes.
-///
 ///   $BFMIS,081025.987,dive1.xml,Running /var/log/mission_12,*hh
-///          1          2         3                           4
 struct bfmis {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   // Variable-length text (SPI table 1): room for what real vehicles send, log paths included.
@@ -146,9 +140,7 @@ enum class ack_status : char {
 };
 
 /// BFACK: acknowledgement of a payload message (only after BPLOG,ACK,ON).
-///
 ///   $BFACK,081025.990,RMB,081025.950,,2,0,,*1E     the spec's form: 8 fields, field 8 empty
-///          1          2   3          4 5 6 7 8
 ///   $BFACK,081025.990,RMB,081025.950,,2,0,*32      Goby's: 7 fields, no field 8
 ///   $BFACK,081025.990,RMB,081025.950,,2,0*1E       also seen: no description at all
 ///
@@ -190,9 +182,7 @@ struct bfack {
 
 /// BFCTL: backseat control handed over (1) or taken back (0). The SPI prints its format line
 /// with the BFVER address by mistake.
-///
 ///   $BFCTL,081025.987,1*78
-///          1          2
 struct bfctl {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   bool control = false;         // 2 [c] 1 = the payload (backseat) has control, 0 = it has not
@@ -212,9 +202,7 @@ constexpr std::array<std::string_view, 2> enum_words(log_state) noexcept { retur
 
 /// BPLOG: turn one status message (or ALL of them) on or off for this payload. No timestamp.
 /// ALL never includes ACK, which must be asked for by name.
-///
 ///   $BPLOG,ACK,ON*1E
-///          1   2
 struct bplog {
   nmea::text<3> code;               // 1 [rrr] 3-letter message id (NVG, NVR, MIS, CTL, ACK) or ALL
   log_state state = log_state::on;  // 2 [a-a] ON or OFF
@@ -229,9 +217,7 @@ struct bplog {
 };
 
 /// BPSTS: payload status (the payload's heartbeat).
-///
 ///   $BPSTS,231133.12,1,BWSI Autonomy OK*46
-///          1         2 3
 struct bpsts {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   bool all_ok = true;           // 2 [f] Status flag: 1 = all OK, 0 = failed
@@ -254,9 +240,7 @@ enum class horizontal_mode : char { heading = '0', rudder = '1' };
 /// BPRMB: modify the current behaviour. Blank fields leave that aspect as the mission has it.
 /// Must be repeated at least every 5 s, or the vehicle takes control back. The meaning (and unit)
 /// of fields 2, 3 and 5 comes from the mode fields, so no range is imposed on them here.
-///
 ///   $BPRMB,231204.72,-15,,,750,0,1*54
-///          1         2   3 4 5   6 7
 struct bprmb {
   nmea::time_of_day timestamp;           // 1 [hhmmss.ss] Timestamp
   std::optional<nmea::decimal> heading;  // 2 [h.h] heading deg true, or rudder deg (field 7)
@@ -321,9 +305,7 @@ struct bprmb {
 enum class abort_reason : char { success = '0', with_errors = '1' };
 
 /// BPABT: end the mission and run its wrap-up (e.g. a powered ascent).
-///
 ///   $BPABT,081025.987,leak detected,1*hh
-///          1          2             3
 struct bpabt {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp (when sent)
   nmea::text<128> message;      // 2 [c--c] shown to the operator to explain the abort
@@ -342,9 +324,7 @@ struct bpabt {
 };
 
 /// BPVER: the SPI version the payload speaks; the payload must send it first.
-///
 ///   $BPVER,081025.987,1.0*hh
-///          1          2
 struct bpver {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   nmea::text<32> version;       // 2 [v-v] Version number
@@ -373,10 +353,7 @@ inline constexpr nmea::parse_policy from_vehicle_policy{.checksum = nmea::checks
 inline constexpr nmea::parse_policy to_vehicle_policy{
     .checksum = nmea::checksum_policy::verify_if_present, .spaced_numbers = true};
 
-// The role decoders below are function templates of nothing (`template <int N = 0>`, their
-// set named as `nmea::lazy<Set, N>`): a file that includes this header then compiles a role's
-// decoders only if it calls them, which keeps including seawire/seawire.hpp cheap. Call them
-// as plain functions.
+// The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode a line the vehicle sent; an address the set does not know is unknown_sentence.
 template <int N = 0>
 [[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(

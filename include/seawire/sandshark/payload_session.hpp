@@ -1,47 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The payload (backseat) side of a Sandshark SPI session, sans I/O: it is fed what the vehicle
-// sent and the current time, and hands back sentences to send and events. Nothing here reads a
-// socket or a clock; the caller does, and calls tick() when no input arrives (next_deadline()
-// says when the session next needs one). `now` is always steady time; the session is built with
-// a utc_clock, which ties it to UTC for the timestamps it writes (see session_common.hpp).
-//
-//   payload_session<> s(utc_clock(steady_clock::now(), system_clock::now()));
-//   s.start(now);                      // BPVER, then BPLOG,ACK,ON (acks wanted by default)
-//   (void)s.subscribe("NVG", now);     // queued behind ACK ON, each awaits its ack in turn
-//   loop:
-//     (void)s.receive(line, now);      // decode a vehicle line and act on it
-//     s.tick(now);                     // timers: resends, ack timeouts, heartbeat, keep-alive
-//     while (auto out = s.poll_send()) write(out->view());
-//     while (auto e = s.poll_event()) react(*e);
-//
-// What it carries:
-// - Commands (send(), subscribe()) go through a FIFO; with acks on, one command at a time awaits
-//   its BFACK. Acks are matched by command name AND the command's timestamp (the session stamps
-//   each message it sends with a distinct UTC time, see utc_clock), never by name alone, since
-//   acks arrive interleaved with other traffic. Each stamp is the UTC clock's time, or 1 ms after
-//   the previous stamp when the clock has not moved past it (two sentences in one millisecond,
-//   or a re-anchor from the vehicle a little behind): stamps increase. Set back further than
-//   max_stamp_lead (a vehicle clock far from the payload's), the stamps follow the clock at
-//   once, kept apart from the stamps still awaiting an ack, rather than counting 1 ms a sentence
-//   until the clock catches up. A pending (3) ack must be followed by the final one within
-//   pending_timeout (2 s) or ack_timeout is reported. No ack at all within
-//   resend_after (5 s): the identical sentence (same timestamp, so an ack of either copy
-//   matches) is sent again, up to max_resends times (3), then command_failed_after_retries.
-//   BPLOG has no timestamp, so its acks are matched by name.
-// - abort() sends BPABT at once, ahead of the queue, and tracks it like a command.
-// - A BPSTS heartbeat every heartbeat_period once started (set_status() sets its content).
-// - A behaviour request (set_request()): while backseat control is held (BFCTL 1), the current
-//   BPRMB is sent at once and then again, with a fresh timestamp, request_timeout -
-//   keep_alive_margin (4 s) after the previous one. It is never sent before that. Heartbeats and
-//   requests are not resent or queued; their acks are matched quietly, and failed or invalid
-//   ones are reported (the vehicle refuses BPRMB when dynamic requests are not allowed).
-// - Backseat control ends on BFCTL 0 or on a BFMIS whose status does not start with "Running";
-//   the keep-alive stops and the request is dropped (a later BFCTL 1 does not revive it).
-// - BFSHT is reported as a shutdown event.
-// Full queues are reported, never silent: send() refuses a command when the queue is full
-// (buffer_too_small), an outgoing sentence that does not fit the outbox raises outbox_overflow,
-// and lost events are counted in an events_lost event.
+// The payload (backseat) side of a Sandshark SPI session, sans I/O: fed the vehicle's lines and
+// steady time `now`, it hands back sentences and events; tick() when no input arrives,
+// next_deadline() says when. Handshake, acks matched by name and timestamp, resends, heartbeat,
+// BPRMB keep-alive and control: docs/sessions.md.
 
 #include <algorithm>
 #include <array>

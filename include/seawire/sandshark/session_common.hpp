@@ -1,18 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// What the Sandshark payload and vehicle sessions share: how time is passed in, the SPI's
-// timing rules, a UTC time-of-day clock driven by that time, the BPLOG subscription rules, and
-// the fixed-capacity queues the sessions fill and the caller drains.
-//
-// Time: two clocks, told apart by their types. Every session call takes `now`, a
-// std::chrono::steady_clock::time_point the caller reads (or simulates: tests use
-// time_point{} + 5s), for the session's timers; sessions never read a clock. A `now` earlier
-// than one already seen is taken as the later one, so time never runs backwards. The wire's
-// timestamps are UTC times of day: a utc_clock, which every session is built with, ties one
-// steady time to the UTC time (a std::chrono::system_clock time) at that moment and advances
-// the UTC time with the steady clock from there. steady_clock counts from an arbitrary epoch
-// (often the machine's boot), never from midnight UTC: a steady time where a UTC time is expected
-// does not compile.
+// What the Sandshark sessions share: time passed in as steady_clock `now` (never read here, never
+// running backwards), the SPI's timing rules, utc_clock (UTC time of day driven by steady time;
+// a steady time given as UTC does not compile), the BPLOG subscription rules and the
+// fixed-capacity queues. docs/sessions.md.
 
 #include <array>
 #include <chrono>
@@ -64,15 +55,9 @@ inline constexpr milliseconds resend_after{5000};
 inline constexpr time_point::duration just_after{1};
 }  // namespace timing
 
-/// UTC time of day as a function of steady time: at the steady time `anchor` it was `anchor_ms`
-/// ms after midnight UTC. Built from a steady time and the UTC time at that moment, read once
-/// from both clocks:
-///
-///   utc_clock clock(std::chrono::steady_clock::now(), std::chrono::system_clock::now());
-///
-/// and from there advanced by the steady time passed in (so a step of the system clock does not
-/// move it; set() re-anchors it). Counts on past midnight (ms_at() exceeds one day) so
-/// timestamps made from it stay ordered; to_time_of_day() folds them back into a day.
+/// UTC time of day as a function of steady time, anchored once from both clocks
+/// (utc_clock(steady_clock::now(), system_clock::now())) and advanced by the steady time passed
+/// in; set() re-anchors it. ms_at() counts on past midnight so stamps stay ordered.
 class utc_clock {
  public:
   static constexpr std::int64_t day_ms = 86'400'000;

@@ -1,38 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The vehicle (BAM) side of a Sandshark SPI session, sans I/O: what a simulator or a test
-// double of the vehicle needs. It is fed the payload clients' raw lines and the current time,
-// and hands back sentences for each client and events. `now` is always steady time; the session
-// is built with a utc_clock, which ties it to UTC for the timestamps it writes (see
-// session_common.hpp).
-//
-//   vehicle_session<> v(utc_clock(steady_clock::now(), system_clock::now()));
-//   auto c = v.connect(now);              // BFVER to the new client
-//   (void)v.receive(*c, line, now);       // BPLOG/BPSTS/BPRMB/BPABT/BPVER: state + BFACK
-//   if (v.should_send(*c, "NVG")) ...     // or v.publish(bfnvg{...}, now) to every subscriber
-//   v.set_control(true, now);             // BFCTL 1: dynamic requests allowed
-//   v.tick(now);                          // BPRMB timeout, pending acks completed
-//   while (auto out = v.poll_send()) write(out->client, out->view());
-//
-// What it carries:
-// - BPLOG per client (subscription_set): codes, ALL, and ACK, which ALL never includes. Command
-//   messages (BFSHT, BFVER) go to every client whatever it asked for.
-// - A BFACK for every line, once the client sent BPLOG,ACK,ON: invalid (0) for an unknown
-//   address or a line that does not decode (the sentence, or failing that its address, is
-//   enough to name the command; a line without even that is not acked), failed (1) when the
-//   command cannot be carried out (BPRMB while dynamic requests are not allowed, a full
-//   subscription table), ok (2) otherwise. BPLOG takes effect before its ack, so ACK ON is
-//   acknowledged and ACK OFF is not. Commands chosen in vehicle_config::pending get a pending (3)
-//   ack at once and the final one from complete(), or automatically after
-//   complete_pending_after. Their effect is applied on receipt; only the ack waits.
-// - Dynamic requests: set_control() sends BFCTL to subscribed clients. An accepted BPRMB holds
-//   the vehicle's behaviour for request_timeout (5 s): the payload "must send it at least every
-//   5 seconds" (SPI 7.3), so a BPRMB 5.000 s after the previous one keeps the request; 5 s and
-//   one tick of time_point later the request has expired (request_expired) and the vehicle has
-//   control back.
-// - The mission status: the last BFMIS published. A BPABT while a mission waits, is ready, runs
-//   or wraps up moves it to "Aborting" and publishes that BFMIS (after the BPABT's ack); the
-//   caller publishes "Aborted" when the vehicle has stopped.
+// The vehicle (BAM) side of a Sandshark SPI session, sans I/O, for simulators and test doubles:
+// fed each payload client's lines and steady time `now`, it hands back sentences per client and
+// events. Subscriptions, acks (invalid, failed, ok, pending), BPRMB timeout and mission status:
+// docs/sessions.md.
 
 #include <array>
 #include <cstddef>

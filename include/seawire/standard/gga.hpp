@@ -3,7 +3,6 @@
 // $--GGA: GPS fix data, from any talker.
 //
 //   $GPGGA,164959.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,M,-33.2,M,,*5C
-//          1         2          3 4           5 6 7  8    9    10 11  12 13 14
 //
 // Fields 9-10 and 11-12 are value + unit letter pairs ('M'): one declaration each.
 

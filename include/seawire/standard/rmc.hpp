@@ -3,7 +3,6 @@
 // $--RMC: recommended minimum navigation information, from any talker.
 //
 //   $GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70
-//          1         2 3          4 5           6 7     8      9      10,11 12 [13]
 //
 // 11 fields in NMEA 0183 before 2.3; 2.3 adds the mode indicator (12), 4.1 the navigational
 // status (13). All three forms are accepted and each is written back in the form it came in.

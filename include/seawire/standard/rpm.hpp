@@ -3,7 +3,6 @@
 // $--RPM: revolutions of a shaft or engine, from any talker.
 //
 //   $IIRPM,S,1,1200.5,12.5,A*40
-//          1 2 3      4    5
 //
 // Source and number say which shaft or engine the speed belongs to, so both are required: a
 // speed that cannot be attributed is of no use to a twin-screw vessel's speed aiding. Speed,

@@ -3,7 +3,6 @@
 // $--RSA: rudder sensor angle, from any talker.
 //
 //   $AGRSA,-5.2,A,-4.8,A*4D
-//          1    2 3    4
 //
 // A single-rudder vessel fills fields 1-2 and leaves 3-4 blank (or writes V in 4). NMEA calls the
 // value a relative measure, proportional to the rudder angle but not necessarily in degrees;

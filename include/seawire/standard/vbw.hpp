@@ -3,7 +3,6 @@
 // $--VBW: dual ground/water speed along and across the hull, knots, from any talker.
 //
 //   $VDVBW,4.91,-0.12,A,5.02,0.08,A*7C
-//          1    2     3 4    5    6   [7 8 9 10]
 //
 // Fields 1-6 are the sentence as the ANELLO spec (and NMEA 0183 before 3.0) has it. NMEA 3.0
 // adds stern transverse speeds, water (7, status 8) and ground (9, status 10); a Doppler log

@@ -3,7 +3,6 @@
 // $--VHW: heading and speed through the water, from any talker.
 //
 //   $VWVHW,045.0,T,031.3,M,5.20,N,9.63,K*5F
-//          1     2 3     4 5    6 7    8
 //
 // Four value + unit letter pairs, one declaration each. A speed log without a compass sends
 // blank headings ("$IIVHW,,T,,M,5.2,N,9.6,K"); some senders blank the unit letters too. Every

@@ -3,7 +3,6 @@
 // $--VWR: relative (apparent) wind speed and angle, from any talker.
 //
 //   $WIVWR,045.0,L,12.6,N,6.5,M,23.3,K*4C
-//          1     2 3    4 5   6 7    8
 //
 // The angle is a magnitude, 0-180 degrees off the bow, and field 2 says to which side. The
 // three speeds are value + unit letter pairs, one declaration each; senders often fill only

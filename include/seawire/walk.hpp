@@ -1,0 +1,390 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// One walk over the fields of a message of any wire: an NMEA 0183 sentence (a message_like
+// struct), an NMEA 2000 PGN (a pgn_like struct) or ANELLO's 0xAB00 frame (sensor_frame_raw).
+// Each wire keeps its own description and codec (text fields; little-endian bit fields;
+// big-endian frame fields); what sits above them, JSON, CSV, fmt and the documentation, walks the
+// fields through this one vocabulary:
+//
+//   seawire::visit_fields(msg, [](const auto& f) { ... f.name, f.key, f.value, f.state ... });
+//   seawire::visit_layout<M>([](auto f) { ... the same without a value ... });
+//
+// fn is called once per field in wire order (a PGN's reserved bits are no field: visit_rows
+// gives them too). What a view knows of its field is a compile-time constant, a static member of
+// its type, so a writer can make text from it once (a JSON key with its quotes):
+//
+//   kind        wire_kind::nmea0183, nmea2000 or anello_frame
+//   name        the declared name ("speed_water_mps", "latitude_deg")
+//   key         the JSON key: the name, but "latitude"/"longitude" for the frame's position
+//   unit        the unit the name ends with ("mps", "deg", "m"; "" when it ends with none)
+//   number      a sentence's first wire field of the field (1-based, longest form); a PGN's row
+//               (reserved rows counted); the frame's field number (heading 1 .. pressure 19)
+//   wire_fields how many wire fields a sentence's field spans (a position and its letter: 2)
+//   bit_offset, bits, order   where a binary field is: its first bit (the frame's from the
+//               frame's first byte) and width, and the byte order (text for sentences)
+//   axis        position_axis::latitude / longitude for a position-typed field, else none
+//   reserved    a PGN's reserved bits (visit_rows only)
+//   desc        the description's own row (field_desc, field_entry, sensor_field)
+//   value       (visit_fields) the member as the message holds it: the sentence's member
+//               (std::optional where it may be blank), the PGN's number / lookup / flags /
+//               date / time_of_day, the frame's raw integer with its scale (frame_value)
+//   state       (visit_fields) value; not_available for a blank optional, a variation without a
+//               value, a PGN field not available, a frame field "not available"; out_of_range
+//               and reserved for a PGN's sentinels of those names
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "seawire/anello/frame.hpp"
+#include "seawire/detail/inline.hpp"
+#include "seawire/detail/same_member.hpp"
+#include "seawire/nmea/decimal.hpp"
+#include "seawire/nmea/description.hpp"
+#include "seawire/nmea/variation.hpp"
+#include "seawire/nmea2000/field.hpp"
+
+namespace seawire {
+
+/// Which wire a field is of.
+enum class wire_kind : std::uint8_t { nmea0183, nmea2000, anello_frame };
+
+/// How a field's bytes are laid out: as text between commas, or as a binary field of either
+/// byte order.
+enum class byte_order : std::uint8_t { text, little_endian, big_endian };
+
+/// What a position-typed field holds.
+enum class position_axis : std::uint8_t { none, latitude, longitude };
+
+/// What a field's value means, on every wire (nmea2000::field_state): a value, or blank / not
+/// available, or one of the sentinels a PGN field has for out of range and reserved.
+using field_state = nmea2000::field_state;
+
+namespace detail {
+/// What a field of a binary wire (a PGN's, the frame's) is on the wire: row I (numbered from 1)
+/// of a table whose rows follow each other, at `Offset` bits, `Bits` wide, in byte order `Order`.
+template <wire_kind Kind, byte_order Order, std::size_t I, unsigned Offset, unsigned Bits>
+struct binary_field {
+  static constexpr wire_kind kind = Kind;
+  static constexpr std::uint16_t number = static_cast<std::uint16_t>(I + 1);
+  static constexpr unsigned wire_fields = 1;
+  static constexpr unsigned bit_offset = Offset;
+  static constexpr unsigned bits = Bits;
+  static constexpr byte_order order = Order;
+};
+
+/// The unit a field's name ends with, by seawire's naming rule (speed_water_mps, heading_deg,
+/// altitude_m); "" for a name that ends with no unit.
+[[nodiscard]] constexpr std::string_view unit_of_name(std::string_view name) noexcept {
+  constexpr std::string_view units[] = {"deg",  "mps", "m",   "pct", "hpa", "c",     "k",
+                                        "rpm",  "pa",  "s",   "v",   "a",   "knots", "kmh",
+                                        "degs", "rad", "kpa", "l",   "lph", "hz",    "ms"};
+  const std::size_t at = name.rfind('_');
+  if (at == std::string_view::npos) return {};
+  const std::string_view last = name.substr(at + 1);
+  for (const std::string_view u : units)
+    if (u == last) return u;
+  return {};
+}
+}  // namespace detail
+
+/// A field of a message type, without a message: what visit_layout gives. Every member is a
+/// compile-time constant (see the top of this file); Info is the wire's walk_field.
+template <class Info>
+struct field_layout {
+  using info = Info;
+  using value_type = typename Info::value_type;
+  static constexpr wire_kind kind = Info::kind;
+  static constexpr std::string_view name = Info::name;
+  static constexpr std::string_view key = Info::key;
+  static constexpr std::string_view unit = detail::unit_of_name(Info::name);
+  static constexpr std::uint16_t number = Info::number;
+  static constexpr unsigned wire_fields = Info::wire_fields;
+  static constexpr unsigned bit_offset = Info::bit_offset;
+  static constexpr unsigned bits = Info::bits;
+  static constexpr byte_order order = Info::order;
+  static constexpr position_axis axis = Info::axis;
+  static constexpr bool reserved = Info::reserved;
+  static constexpr const auto& desc = Info::desc;
+};
+
+/// A field of a message: its layout, and its value and state (what visit_fields gives). The
+/// value is a reference into the message, except the frame's (a frame_value, made from the raw
+/// member).
+template <class Info>
+struct field_view : field_layout<Info> {
+  using held = std::conditional_t<Info::by_value, typename Info::value_type,
+                                  const typename Info::value_type&>;
+  held value;
+  field_state state = field_state::value;
+
+  [[nodiscard]] constexpr bool has_value() const noexcept { return state == field_state::value; }
+};
+
+}  // namespace seawire
+
+// ---------------------------------------------------------------------------------------------
+// the wires' fields
+
+namespace seawire::nmea {
+
+namespace detail {
+template <class V>
+[[nodiscard]] consteval position_axis axis_of() noexcept {
+  if constexpr (std::is_same_v<V, latitude> || std::is_same_v<V, decimal_latitude>) {
+    return position_axis::latitude;
+  } else if constexpr (std::is_same_v<V, longitude> || std::is_same_v<V, decimal_longitude>) {
+    return position_axis::longitude;
+  } else {
+    return position_axis::none;
+  }
+}
+
+// The first wire field (1-based) of descriptor I of T, in the longest form.
+template <class T, std::size_t I>
+[[nodiscard]] consteval std::uint16_t first_wire_field() noexcept {
+  unsigned n = 1;
+  std::size_t i = 0;
+  T::nmea.fields.apply([&](const auto&... d) { ((n += i++ < I ? d.width() : 0U), ...); });
+  return static_cast<std::uint16_t>(n);
+}
+}  // namespace detail
+
+/// Field I of sentence T, for the walk (walk.hpp).
+template <class T, std::size_t I>
+struct walk_field {
+  static constexpr const auto& desc = field_at<I>(T::nmea.fields);
+  using desc_type = std::remove_cvref_t<decltype(desc)>;
+  using value_type = typename desc_type::member_type;
+  static constexpr bool by_value = false;
+  static constexpr wire_kind kind = wire_kind::nmea0183;
+  static constexpr std::string_view name = desc.name;
+  static constexpr std::string_view key = desc.name;
+  static constexpr std::uint16_t number = detail::first_wire_field<T, I>();
+  static constexpr unsigned wire_fields = desc.width();
+  static constexpr unsigned bit_offset = 0;
+  static constexpr unsigned bits = 0;
+  static constexpr byte_order order = byte_order::text;
+  static constexpr position_axis axis = detail::axis_of<typename desc_type::value_type>();
+  static constexpr bool reserved = false;
+
+  [[nodiscard]] static constexpr const value_type& value(const T& msg) noexcept {
+    return msg.*desc_type::member;
+  }
+  [[nodiscard]] static constexpr field_state state(const value_type& v) noexcept {
+    if constexpr (desc_type::is_optional) {
+      if (!v.has_value()) return field_state::not_available;
+    }
+    if constexpr (std::is_same_v<typename desc_type::value_type, magnetic_variation>) {
+      if constexpr (desc_type::is_optional) {
+        if (!v->value) return field_state::not_available;
+      } else {
+        if (!v.value) return field_state::not_available;
+      }
+    }
+    return field_state::value;
+  }
+};
+
+}  // namespace seawire::nmea
+
+namespace seawire::nmea2000 {
+
+namespace detail {
+template <class Rows, std::size_t I>
+[[nodiscard]] consteval unsigned row_offset() noexcept {
+  return [&]<std::size_t... J>(std::index_sequence<J...>) {
+    return (0U + ... + static_cast<unsigned>(std::tuple_element_t<J, Rows>::bits));
+  }
+  (std::make_index_sequence<I>{});
+}
+template <class Row, bool Reserved = Row::is_reserved>
+struct row_value {
+  using type = typename Row::value_type;
+};
+template <class Row>
+struct row_value<Row, true> {
+  using type = void;
+};
+}  // namespace detail
+
+/// Row I of PGN P's table, for the walk (walk.hpp).
+template <class P, std::size_t I>
+struct walk_field
+    : seawire::detail::binary_field<
+          wire_kind::nmea2000, byte_order::little_endian, I,
+          detail::row_offset<std::remove_cvref_t<decltype(P::n2k.fields)>, I>(),
+          std::tuple_element_t<I, std::remove_cvref_t<decltype(P::n2k.fields)>>::bits> {
+  using row_type = std::tuple_element_t<I, std::remove_cvref_t<decltype(P::n2k.fields)>>;
+  static constexpr const auto& desc = std::get<I>(P::n2k.fields);
+  using value_type = typename detail::row_value<row_type>::type;
+  static constexpr bool by_value = false;
+  static constexpr std::string_view name = desc.name;
+  static constexpr std::string_view key = desc.name;
+  static constexpr position_axis axis = position_axis::none;
+  static constexpr bool reserved = row_type::is_reserved;
+
+  // (Templates, since a reserved row has neither.)
+  template <class Msg>
+  [[nodiscard]] static constexpr const auto& value(const Msg& msg) noexcept {
+    return msg.*row_type::member;
+  }
+  template <class V>
+  [[nodiscard]] static constexpr field_state state(const V& v) noexcept {
+    return v.state();
+  }
+};
+
+}  // namespace seawire::nmea2000
+
+namespace seawire::anello {
+
+/// A frame field's value as the walk gives it: the wire's integer and its scale (physical value =
+/// raw / 10^places), or milliseconds of Unix time for gps_time.
+template <class Raw, unsigned Places, bool Time>
+struct frame_value {
+  using raw_type = Raw;
+  static constexpr unsigned places = Places;
+  static constexpr bool is_time = Time;
+  Raw raw{};
+
+  /// The value as the decimal it stands for, exactly (raw 893 at one place is 89.3).
+  [[nodiscard]] constexpr nmea::decimal exact() const noexcept {
+    nmea::decimal d;
+    d.negative = raw < 0;
+    d.mantissa = seawire::detail::magnitude(raw);
+    d.places = static_cast<std::uint8_t>(Places);
+    return d;
+  }
+};
+
+/// Field I of the frame's table (anello::sensor_fields), for the walk (walk.hpp).
+template <std::size_t I>
+struct walk_field : seawire::detail::binary_field<
+                        wire_kind::anello_frame, byte_order::big_endian, I,
+                        8 * static_cast<unsigned>(std::get<I>(sensor_fields).offset),
+                        std::remove_cvref_t<decltype(std::get<I>(sensor_fields))>::bits> {
+  static constexpr const auto& desc = std::get<I>(sensor_fields);
+  using desc_type = std::remove_cvref_t<decltype(desc)>;
+  using value_type = frame_value<typename desc_type::raw_type, detail::divisor_places(desc.divisor),
+                                 std::is_same_v<typename desc_type::value_type, time_ms>>;
+  static constexpr bool by_value = true;
+  static constexpr std::string_view name = desc.name;
+  static constexpr std::string_view key = desc.json_key;
+  static constexpr position_axis axis =
+      seawire::detail::same_member<desc_type::value_member, &sensor_values::latitude_deg>
+          ? position_axis::latitude
+      : seawire::detail::same_member<desc_type::value_member, &sensor_values::longitude_deg>
+          ? position_axis::longitude
+          : position_axis::none;
+  static constexpr bool reserved = false;
+
+  [[nodiscard]] static constexpr value_type value(const sensor_frame_raw& frame) noexcept {
+    return {frame.*desc_type::raw_member};
+  }
+  [[nodiscard]] static constexpr field_state state(const value_type& v) noexcept {
+    return desc.not_available(v.raw) ? field_state::not_available : field_state::value;
+  }
+};
+
+}  // namespace seawire::anello
+
+namespace seawire {
+
+namespace detail {
+/// How the walk sees a message type: its number of rows and row I's walk_field.
+template <class M>
+struct walk_of;
+
+template <class T>
+requires nmea::message_like<T>
+struct walk_of<T> {
+  static constexpr std::size_t size = std::remove_cvref_t<decltype(T::nmea.fields)>::size;
+  template <std::size_t I>
+  using field = nmea::walk_field<T, I>;
+};
+
+template <class P>
+requires nmea2000::pgn_like<P>
+struct walk_of<P> {
+  static constexpr std::size_t size = nmea2000::description_of<P>::field_count;
+  template <std::size_t I>
+  using field = nmea2000::walk_field<P, I>;
+};
+
+template <>
+struct walk_of<anello::sensor_frame_raw> {
+  static constexpr std::size_t size = anello::sensor_field_count;
+  template <std::size_t I>
+  using field = anello::walk_field<I>;
+};
+}  // namespace detail
+
+/// A message type the walk knows: a sentence, a PGN or the 0xAB00 frame.
+template <class M>
+concept walkable = requires {
+  detail::walk_of<M>::size;
+};
+
+/// fn(field_layout) for every row of M's description in wire order, a PGN's reserved bits too
+/// (layout.reserved says which).
+template <walkable M, class Fn>
+constexpr void visit_rows(Fn&& fn) {
+  using W = detail::walk_of<M>;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (fn(field_layout<typename W::template field<I>>{}), ...);
+  }
+  (std::make_index_sequence<W::size>{});
+}
+
+namespace detail {
+// One row of the walks below (a function, not a lambda in the pack expansion: clang 14 fails on
+// that).
+template <class F, class Fn>
+constexpr void walk_layout_row(Fn& fn) {
+  if constexpr (!F::reserved) fn(field_layout<F>{});
+}
+template <class F, class M, class Fn>
+SEAWIRE_ALWAYS_INLINE constexpr void walk_field_row(const M& msg, Fn& fn) {
+  if constexpr (!F::reserved) {
+    const auto& value = F::value(msg);
+    const field_view<F> view{{}, value, F::state(value)};
+    fn(view);
+  }
+}
+template <class W, class M, class Fn, std::size_t... I>
+SEAWIRE_ALWAYS_INLINE constexpr void walk_fields(const M& msg, Fn& fn, std::index_sequence<I...>) {
+  (walk_field_row<typename W::template field<I>>(msg, fn), ...);
+}
+}  // namespace detail
+
+/// fn(field_layout) for every field of M in wire order: for headers, documentation, schemas.
+template <walkable M, class Fn>
+constexpr void visit_layout(Fn&& fn) {
+  using W = detail::walk_of<M>;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (detail::walk_layout_row<typename W::template field<I>>(fn), ...);
+  }
+  (std::make_index_sequence<W::size>{});
+}
+
+/// fn(field_view) for every field of `msg` in wire order, once each.
+template <walkable M, class Fn>
+SEAWIRE_ALWAYS_INLINE constexpr void visit_fields(const M& msg, Fn&& fn) {
+  using W = detail::walk_of<M>;
+  detail::walk_fields<W>(msg, fn, std::make_index_sequence<W::size>{});
+}
+
+/// The number of fields visit_fields gives for M.
+template <walkable M>
+inline constexpr std::size_t field_count_of = [] {
+  std::size_t n = 0;
+  visit_layout<M>([&](auto) { ++n; });
+  return n;
+}();
+
+}  // namespace seawire
