@@ -28,22 +28,8 @@
 #include "seawire/anello/frame.hpp"
 #include "seawire/detail/crc32.hpp"
 
+namespace seawire::fuzz {
 namespace {
-
-namespace anello = seawire::anello;
-using seawire::errc;
-using seawire::name;
-using seawire::fuzz::byte_source;
-using seawire::fuzz::number;
-
-std::string_view hex_of(std::span<const std::uint8_t> bytes, std::string& out) {
-  out.clear();
-  for (const std::uint8_t b : bytes) {
-    out += "0123456789ABCDEF"[b >> 4U];
-    out += "0123456789ABCDEF"[b & 15U];
-  }
-  return out;
-}
 
 // The errc and column decode_frame must give, read straight from the contract.
 std::pair<errc, std::size_t> expected_error(std::span<const std::uint8_t> b) {
@@ -60,18 +46,17 @@ std::pair<errc, std::size_t> expected_error(std::span<const std::uint8_t> b) {
 }
 
 void check_decode(std::span<const std::uint8_t> bytes) {
-  std::string hex;
   const seawire::result<anello::sensor_frame_raw> r = anello::decode_frame(bytes);
   const auto [ec, column] = expected_error(bytes);
   SEAWIRE_FUZZ_CHECK(r.ec == ec && (ec == errc::ok || r.column == column),
-                     "decode_frame broke its contract", hex_of(bytes, hex), name(r.ec), name(ec));
+                     "decode_frame broke its contract", hex_of(bytes), name(r.ec), name(ec));
   if (!r) {
     SEAWIRE_FUZZ_CHECK(r.value == anello::sensor_frame_raw{}, "a failed decode left values");
     return;
   }
   const anello::frame_bytes again = anello::encode_frame(r.value);
   SEAWIRE_FUZZ_CHECK(std::equal(again.begin(), again.end(), bytes.begin()),
-                     "decode -> encode is not bit-exact", hex_of(bytes, hex));
+                     "decode -> encode is not bit-exact", hex_of(bytes));
 
   const anello::sensor_values values = anello::to_values(r.value);
   // Accessors and for_each_field read the same table.
@@ -80,7 +65,7 @@ void check_decode(std::span<const std::uint8_t> bytes) {
                          values.fix_quality == r.value.fix_quality() &&
                          values.air_temp_c == r.value.air_temp_c() &&
                          values.pressure_hpa == r.value.pressure_hpa(),
-                     hex_of(bytes, hex));
+                     hex_of(bytes));
   std::size_t fields = 0;
   anello::for_each_field(r.value, [&](std::string_view field_name, const auto&) {
     SEAWIRE_FUZZ_CHECK(!field_name.empty());
@@ -98,23 +83,23 @@ void check_decode(std::span<const std::uint8_t> bytes) {
     // The same frame, except that a "not available" written another way than the type's
     // maximum (air temperature 0xFFFF) comes back as the maximum.
     SEAWIRE_FUZZ_CHECK(rebuilt.ok(), "build_frame refused the values of a valid frame",
-                       hex_of(bytes, hex), name(rebuilt.ec), number(rebuilt.field));
-    SEAWIRE_FUZZ_CHECK(anello::to_values(rebuilt.value) == values, hex_of(bytes, hex));
+                       hex_of(bytes), name(rebuilt.ec), number(rebuilt.field));
+    SEAWIRE_FUZZ_CHECK(anello::to_values(rebuilt.value) == values, hex_of(bytes));
     anello::detail::visit_sensor_fields([&](std::uint16_t n, const auto& field) {
       using field_type = std::remove_cvref_t<decltype(field)>;
       const auto was = as_read.*field_type::raw_member;
       const auto now = rebuilt.value.*field_type::raw_member;
       SEAWIRE_FUZZ_CHECK(was == now || (field.not_available(was) && field.not_available(now)),
-                         "build_frame(to_values(f)) != f for a valid frame", hex_of(bytes, hex),
+                         "build_frame(to_values(f)) != f for a valid frame", hex_of(bytes),
                          number(n));
       return true;
     });
   } else {
     SEAWIRE_FUZZ_CHECK(valid.field >= 1 && valid.field <= anello::sensor_field_count &&
                            (valid.ec == errc::out_of_range || valid.ec == errc::value_too_large),
-                       hex_of(bytes, hex), name(valid.ec));
+                       hex_of(bytes), name(valid.ec));
     SEAWIRE_FUZZ_CHECK(!rebuilt.ok() && rebuilt.field == valid.field && rebuilt.ec == valid.ec,
-                       "build_frame sends a value validate refuses", hex_of(bytes, hex),
+                       "build_frame sends a value validate refuses", hex_of(bytes),
                        name(rebuilt.ec), number(rebuilt.field), number(valid.field));
   }
 }
@@ -229,10 +214,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fixed[1] = 0x00;
   fixed[2] = 0x00;
   fixed[3] = 0x30;
-  seawire::fuzz::fix_frame_crc(fixed);
+  fix_frame_crc(fixed);
   check_decode(fixed);
 
   byte_source src(input);
   check_build(src);
   return 0;
 }
+
+}  // namespace seawire::fuzz

@@ -6,16 +6,10 @@
 #include <cstdint>
 
 #include "fuzz_common.hpp"
-#include "seawire/anello/inputs.hpp"
-#include "seawire/nmea/dispatch.hpp"
-
-namespace {
-namespace anello = seawire::anello;
-using both_ways = seawire::nmea::merge_sets<anello::nmea_inputs, anello::nmea_outputs>::type;
-}  // namespace
+#include "seawire/registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  seawire::fuzz::check_sentence_input<both_ways>(data, size,
-                                                 {anello::input_policy, anello::output_policy});
+  namespace registry = seawire::registry;
+  seawire::fuzz::check_roles(data, size, registry::anello_inputs, registry::anello_outputs);
   return 0;
 }

@@ -49,6 +49,7 @@
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/variation.hpp"
 #include "seawire/nmea/writer.hpp"
+#include "seawire/registry.hpp"
 
 namespace seawire::fuzz {
 
@@ -93,6 +94,16 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) noex
 }
 
 inline std::string number(std::uint64_t v) { return std::to_string(v); }
+
+/// Bytes as upper-case hex digits, for failure reports.
+inline std::string hex_of(std::span<const std::uint8_t> bytes) {
+  std::string out;
+  for (const std::uint8_t b : bytes) {
+    out += "0123456789ABCDEF"[b >> 4U];
+    out += "0123456789ABCDEF"[b & 15U];
+  }
+  return out;
+}
 
 // ---------------------------------------------------------------------------------------------
 // integrity fix-ups
@@ -566,6 +577,13 @@ void check_sentence_input(const std::uint8_t* data, std::size_t size,
   check_line<Set>(raw, roles);
   const std::string fixed = with_good_checksum(raw);
   if (fixed != raw) check_line<Set>(fixed, roles);
+}
+
+/// A family's decoder target: check_sentence_input over the union of the roles' sets (see
+/// seawire/registry.hpp), under each role's policy.
+template <class... Sets>
+void check_roles(const std::uint8_t* data, std::size_t size, const registry::role<Sets>&... roles) {
+  check_sentence_input<typename nmea::merge_sets<Sets...>::type>(data, size, {roles.policy...});
 }
 
 /// An encoder target's property: a message built from the bytes either is refused or writes a

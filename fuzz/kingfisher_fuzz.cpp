@@ -7,16 +7,13 @@
 
 #include "fuzz_common.hpp"
 #include "seawire/kingfisher/messages.hpp"
-#include "seawire/nmea/dispatch.hpp"
-
-namespace {
-namespace kingfisher = seawire::kingfisher;
-using both_ways = seawire::nmea::merge_sets<kingfisher::from_vehicle, kingfisher::to_vehicle>::type;
-}  // namespace
+#include "seawire/registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  seawire::fuzz::check_sentence_input<both_ways>(
-      data, size, {kingfisher::payload_policy(), kingfisher::vehicle_policy()});
+  namespace kingfisher = seawire::kingfisher;
+  namespace registry = seawire::registry;
+  seawire::fuzz::check_roles(data, size, registry::kingfisher_from_vehicle,
+                             registry::kingfisher_to_vehicle);
   // The role entry points are the same decoders; they must not disagree with the sets.
   const std::string_view line = seawire::fuzz::as_text(data, size);
   SEAWIRE_FUZZ_CHECK(kingfisher::decode_from_vehicle(line).ec ==

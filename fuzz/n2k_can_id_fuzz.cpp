@@ -19,13 +19,10 @@
 #include "fuzz_common.hpp"
 #include "seawire/nmea2000/can_id.hpp"
 
+namespace seawire::fuzz {
 namespace {
 
-namespace n2k = seawire::nmea2000;
-using seawire::errc;
-using seawire::name;
-using seawire::fuzz::byte_source;
-using seawire::fuzz::number;
+namespace n2k = nmea2000;
 
 std::string hex32(std::uint32_t v) {
   std::string out = "0x";
@@ -108,3 +105,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check_make(f);
   return 0;
 }
+
+}  // namespace seawire::fuzz

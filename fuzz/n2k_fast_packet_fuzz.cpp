@@ -28,21 +28,10 @@
 #include "seawire/nmea2000/can_id.hpp"
 #include "seawire/nmea2000/fast_packet.hpp"
 
+namespace seawire::fuzz {
 namespace {
 
-namespace n2k = seawire::nmea2000;
-using seawire::errc;
-using seawire::name;
-using seawire::fuzz::number;
-
-std::string hex_of(std::span<const std::uint8_t> bytes) {
-  std::string out;
-  for (const std::uint8_t b : bytes) {
-    out += "0123456789ABCDEF"[b >> 4U];
-    out += "0123456789ABCDEF"[b & 15U];
-  }
-  return out;
-}
+namespace n2k = nmea2000;
 
 /// The PGNs a header byte can pick: three of the library's fast-packet PGNs, and an addressed
 /// (PDU1) proprietary one.
@@ -181,3 +170,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check_split(input, static_cast<std::uint8_t>(first % 32 == 31 ? 8 + (first >> 5U) : first & 7U));
   return 0;
 }
+
+}  // namespace seawire::fuzz

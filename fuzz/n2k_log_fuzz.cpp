@@ -38,14 +38,12 @@
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/nmea2000/pgns.hpp"
 #include "seawire/nmea2000/reader.hpp"
+#include "seawire/registry.hpp"
 
+namespace seawire::fuzz {
 namespace {
 
-namespace n2k = seawire::nmea2000;
-using seawire::errc;
-using seawire::name;
-using seawire::fuzz::as_text;
-using seawire::fuzz::number;
+namespace n2k = nmea2000;
 
 constexpr std::array<n2k::log_format, 4> formats = {
     n2k::log_format::candump_log, n2k::log_format::candump, n2k::log_format::canboat,
@@ -207,12 +205,12 @@ void read_through(Reader& reader, bool& headed, std::string_view line,
         SEAWIRE_FUZZ_CHECK(payload.size() <= n2k::max_fast_packet_length, line);
         // The line's own bytes, or a packet its frames completed (a canboat line is a frame
         // or a whole message as the log's header or first canboat line says).
-        const auto info = n2k::ins_input_pgns::info(rec.id.pgn);
+        const auto info = registry::pgns::info(rec.id.pgn);
         SEAWIRE_FUZZ_CHECK(
             std::ranges::equal(payload, rec.data()) ||
                 (info && info->transport == n2k::framing::fast_packet && rec.size <= 8),
             "a line's own payload not passed on as it is", line);
-        (void)n2k::ins_input_pgns::visit(h.id.pgn, payload, [&](const auto& m) {
+        (void)registry::pgns::visit(h.id.pgn, payload, [&](const auto& m) {
           SEAWIRE_FUZZ_CHECK(n2k::encode(m).ok(), "a message read from a log does not encode",
                              line);
         });
@@ -244,8 +242,8 @@ void read_through(Reader& reader, bool& headed, std::string_view line,
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text = as_text(data, size);
   // Two slots, so that a few sources interleaving fast packets evict each other.
-  n2k::log_reader<n2k::ins_input_pgns, 2> detecting;
-  n2k::log_reader<n2k::ins_input_pgns, 2> fixed;
+  n2k::log_reader<registry::pgns, 2> detecting;
+  n2k::log_reader<registry::pgns, 2> fixed;
   bool detecting_headed = false;
   bool fixed_headed = false;
   const n2k::log_format fixed_format = formats[size == 0 ? 0 : data[0] % formats.size()];
@@ -264,3 +262,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   return 0;
 }
+
+}  // namespace seawire::fuzz

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The six NMEA 2000 PGNs of ins_input_pgns: the first byte picks one, the rest is its payload
+// Every NMEA 2000 PGN of registry::pgns: the first byte picks one, the rest is its payload
 // (of any length: short, exact or longer than the PGN). Then a message of that PGN built from
 // the same bytes with raw values of any width.
 // Properties:
@@ -22,23 +22,12 @@
 #include "fuzz_common.hpp"
 #include "seawire/nmea2000/field.hpp"
 #include "seawire/nmea2000/pgns.hpp"
+#include "seawire/registry.hpp"
 
+namespace seawire::fuzz {
 namespace {
 
-namespace n2k = seawire::nmea2000;
-using seawire::errc;
-using seawire::name;
-using seawire::fuzz::byte_source;
-using seawire::fuzz::number;
-
-std::string hex_of(std::span<const std::uint8_t> bytes) {
-  std::string out;
-  for (const std::uint8_t b : bytes) {
-    out += "0123456789ABCDEF"[b >> 4U];
-    out += "0123456789ABCDEF"[b & 15U];
-  }
-  return out;
-}
+namespace n2k = nmea2000;
 
 template <n2k::pgn_like P>
 void check_payload(std::span<const std::uint8_t> payload) {
@@ -124,18 +113,13 @@ void check(std::span<const std::uint8_t> payload) {
 
 }  // namespace
 
-static_assert(n2k::ins_input_pgns::size == 6, "one case below per PGN of ins_input_pgns");
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::span<const std::uint8_t> payload(data + 1, size - 1);
-  switch (data[0] % 6) {
-    case 0: check<n2k::engine_parameters_rapid>(payload); break;
-    case 1: check<n2k::engine_parameters_dynamic>(payload); break;
-    case 2: check<n2k::speed_water_referenced>(payload); break;
-    case 3: check<n2k::distance_log>(payload); break;
-    case 4: check<n2k::environmental_parameters>(payload); break;
-    default: check<n2k::vessel_speed_components>(payload); break;
-  }
+  registry::visit_type<registry::pgns>(data[0] % registry::pgns::size, [&](auto tag) {
+    check<typename decltype(tag)::type>(payload);
+  });
   return 0;
 }
+
+}  // namespace seawire::fuzz

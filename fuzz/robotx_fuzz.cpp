@@ -6,10 +6,9 @@
 #include <cstdint>
 
 #include "fuzz_common.hpp"
-#include "seawire/robotx/messages.hpp"
+#include "seawire/registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  seawire::fuzz::check_sentence_input<seawire::robotx::reports>(data, size,
-                                                                {seawire::robotx::judge_policy});
+  seawire::fuzz::check_roles(data, size, seawire::registry::robotx_reports);
   return 0;
 }

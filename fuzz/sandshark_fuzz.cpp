@@ -6,16 +6,11 @@
 #include <cstdint>
 
 #include "fuzz_common.hpp"
-#include "seawire/nmea/dispatch.hpp"
-#include "seawire/sandshark/messages.hpp"
-
-namespace {
-namespace sandshark = seawire::sandshark;
-using both_ways = seawire::nmea::merge_sets<sandshark::from_vehicle, sandshark::to_vehicle>::type;
-}  // namespace
+#include "seawire/registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  seawire::fuzz::check_sentence_input<both_ways>(
-      data, size, {sandshark::from_vehicle_policy, sandshark::to_vehicle_policy});
+  namespace registry = seawire::registry;
+  seawire::fuzz::check_roles(data, size, registry::sandshark_from_vehicle,
+                             registry::sandshark_to_vehicle);
   return 0;
 }

@@ -1,29 +1,16 @@
 // SPDX-License-Identifier: BSL-1.0
-// The talker-agnostic NMEA 0183 sentences (RMC, GGA, RPM, RSA, VHW, VBW, VWR): any line, as sent
-// and with its checksum made right, under the liberal, strict and ANELLO input policies.
+// The talker-agnostic NMEA 0183 sentences (registry::standard_sentences: RMC, GGA, RPM, RSA, VHW,
+// VBW, VWR), any line, as sent and with its checksum made right, under the liberal, strict and
+// ANELLO input policies (with the ANELLO inputs: the INS reads these sentences).
 // Properties: fuzz_common.hpp (check_sentence_input).
 #include <cstddef>
 #include <cstdint>
 
 #include "fuzz_common.hpp"
-#include "seawire/anello/inputs.hpp"
-#include "seawire/nmea/dispatch.hpp"
-#include "seawire/standard/gga.hpp"
-#include "seawire/standard/rmc.hpp"
-#include "seawire/standard/rpm.hpp"
-#include "seawire/standard/rsa.hpp"
-#include "seawire/standard/vbw.hpp"
-#include "seawire/standard/vhw.hpp"
-#include "seawire/standard/vwr.hpp"
-
-namespace {
-namespace standard = seawire::standard;
-using standard_set =
-    seawire::nmea::message_set<standard::rmc, standard::gga, standard::rpm, standard::rsa,
-                               standard::vhw, standard::vbw, standard::vwr>;
-}  // namespace
+#include "seawire/registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  seawire::fuzz::check_sentence_input<standard_set>(data, size, {seawire::anello::input_policy});
+  namespace registry = seawire::registry;
+  seawire::fuzz::check_roles(data, size, registry::standard_nmea, registry::anello_inputs);
   return 0;
 }

@@ -6,21 +6,27 @@
 // field's options narrow it (in_range, max_places, length_between, code_chars, may_be_absent,
 // only_with_field_count). Whatever a description admits, encode must write and decode must read
 // back to the same value; a message with a field type of its own gives that type's values by a
-// specialization of support::values<T>.
+// specialization of support::values<T>. NMEA 2000 PGNs and the ANELLO 0xAB00 frame get raw
+// values of every width and range their tables declare. Every message of seawire/registry.hpp
+// has a generate<T> here (round_trip_test checks it at compile time).
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 
+#include "seawire/anello/frame.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/variation.hpp"
+#include "seawire/nmea2000/field.hpp"
 #include "support.hpp"
 
 namespace support {
@@ -286,5 +292,56 @@ M generate(prng& g) {
   });
   return m;
 }
+
+/// A PGN message with a raw value in every field, drawn from what the field's width holds (the
+/// not-available and out-of-range sentinels included: senders send them); reserved bits are not
+/// members.
+template <seawire::nmea2000::pgn_like P>
+P generate(prng& g) {
+  P m{};
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      using V = typename F::value_type;
+      const std::int64_t low = V::is_signed ? -(std::int64_t{1} << (F::bits - 1)) : 0;
+      const std::int64_t top =
+          V::is_signed ? (std::int64_t{1} << (F::bits - 1)) - 1 : (std::int64_t{1} << F::bits) - 1;
+      V v = V::from_raw(g.chance(10) ? top - static_cast<std::int64_t>(g.below(3))
+                                     : g.between(low, top));
+      while (!v.fits()) v = V::from_raw(g.between(low, top));
+      m.*F::member = v;
+    }
+  });
+  return m;
+}
+
+/// An ANELLO 0xAB00 frame: each field not available one time in eight, otherwise a wire value
+/// inside what a sender may write (sensor_field::wire_limits).
+template <class T>
+requires std::is_same_v<T, seawire::anello::sensor_frame_raw> T generate(prng& g) {
+  T frame{};
+  std::apply(
+      [&](const auto&... field) {
+        const auto one = [&](const auto& f) {
+          using F = std::remove_cvref_t<decltype(f)>;
+          using raw = typename F::raw_type;
+          if (g.below(8) == 0) return;  // left at "not available"
+          auto [lo, hi] = f.wire_limits();
+          // A time: up to the year 2100 in milliseconds, what a GPS clock gives.
+          if constexpr (std::is_same_v<typename F::value_type, seawire::anello::time_ms>)
+            hi = std::min<std::int64_t>(hi, std::int64_t{4102444800000});
+          frame.*F::raw_member = static_cast<raw>(g.between(lo, hi));
+        };
+        (one(field), ...);
+      },
+      seawire::anello::sensor_fields);
+  return frame;
+}
+
+/// Whether generate<T> gives values of T: true of every message the registry lists.
+template <class T>
+concept generated_type = requires(prng& g) {
+  { generate<T>(g) } -> std::same_as<T>;
+};
 
 }  // namespace support

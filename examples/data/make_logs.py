@@ -335,7 +335,8 @@ def anello_mixed():
 # ------------------------------------------------------------------------------------------------
 # Standard sentences from a boat's NMEA 0183 bus: a GPS receiver (RMC in the 2.2, 2.3 and 4.1
 # forms, GGA, and GSA/GSV, which seawire does not decode), engine, rudder, log and wind sensors
-# from several talkers, and a receiver starting up without a fix.
+# from several talkers, a gyrocompass (HDT, blank while it settles), and a receiver starting up
+# without a fix.
 
 
 def standard():
@@ -376,6 +377,10 @@ def standard():
         if k % 2 == 0:
             out.append(seal("WIVWR,%s,L,%s,N,%s,M,%s,K" % (
                 f(42.0 + k, 1), f(14.2, 1), f(7.3, 1), f(26.3, 1))))
+        elif k == 1:
+            out.append(seal("HEHDT,,T"))
+        else:
+            out.append(seal("HEHDT,%s,T" % f(heading - 0.42 + 0.07 * k, 2)))
     return out
 
 

@@ -25,14 +25,7 @@
 #include "seawire/nmea/variation.hpp"
 #include "seawire/nmea/writer.hpp"
 
-// standard sentences
-#include "seawire/standard/gga.hpp"
-#include "seawire/standard/rmc.hpp"
-#include "seawire/standard/rpm.hpp"
-#include "seawire/standard/rsa.hpp"
-#include "seawire/standard/vbw.hpp"
-#include "seawire/standard/vhw.hpp"
-#include "seawire/standard/vwr.hpp"
+// standard sentences: every one, through seawire/registry.hpp below
 
 // kingfisher
 #include "seawire/kingfisher/messages.hpp"
@@ -61,3 +54,6 @@
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/nmea2000/pgns.hpp"
 #include "seawire/nmea2000/reader.hpp"
+
+// every message
+#include "seawire/registry.hpp"

@@ -5,11 +5,15 @@
 // themselves (the compiler names an enumerator in a function template's signature, as
 // nmea/enum.hpp does for letters), so a value added to an enum is a row added here; the
 // docs_enums_current test fails until the file is regenerated, and docs_enums_listed fails when
-// a header declares an enum this program does not list.
+// a header declares an enum this program does not list. The enums of the messages' fields are
+// found by walking every field of every message of seawire/registry.hpp, which also gives the
+// fields each is in: a message added to the registry brings its enums here.
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -38,15 +42,20 @@ std::string_view signature() {
   std::exit(1);
 }
 
+// The template argument `parameter` stands for in a __PRETTY_FUNCTION__ ("V = ...;" or "V =
+// ...]", as GCC and Clang write them).
+std::string_view argument(std::string_view signature, std::string_view parameter) {
+  const std::size_t at = signature.find(std::string(parameter) + " = ");
+  if (at == std::string_view::npos) fail("no template argument in", signature);
+  const std::string_view rest = signature.substr(at + parameter.size() + 3);
+  return rest.substr(0, rest.find_first_of(";]"));
+}
+
 // The enumerator whose value is V, by name ("red"); empty when V is no enumerator (the compiler
 // writes it as a cast, "(seawire::robotx::color)66").
 template <auto V>
 std::string enumerator() {
-  const std::string_view f = signature<V>();
-  const std::size_t at = f.find("V = ");
-  if (at == std::string_view::npos) fail("no template argument in", f);
-  std::string_view e = f.substr(at + 4);
-  e = e.substr(0, e.find_first_of(";]"));
+  const std::string_view e = argument(signature<V>(), "V");
   if (e.empty() || e[0] == '(' || e[0] == '-' || (e[0] >= '0' && e[0] <= '9')) return {};
   const std::size_t colon = e.rfind("::");
   return std::string(colon == std::string_view::npos ? e : e.substr(colon + 2));
@@ -191,6 +200,127 @@ std::vector<std::string> mission_texts() {
   return out;
 }
 
+// The enum type of a PGN field: E of a lookup<E, B> or flags<E, B>, void otherwise.
+template <class V>
+struct pgn_enum {
+  using type = void;
+};
+template <class E, unsigned B>
+struct pgn_enum<nmea2000::lookup<E, B>> {
+  using type = E;
+};
+template <class E, unsigned B>
+struct pgn_enum<nmea2000::flags<E, B>> {
+  using type = E;
+};
+
+template <class T>
+std::string_view type_signature() {
+  return __PRETTY_FUNCTION__;
+}
+
+// T's name with its namespaces ("seawire::standard::rmc_status"), as the compiler spells it.
+template <class T>
+std::string qualified_name() {
+  return std::string(argument(type_signature<T>(), "T"));
+}
+
+// The header under include/seawire/<namespace>/ that declares `enum class <name>`.
+std::string header_of(const std::string& qualified) {
+  const std::size_t first = qualified.find("::");
+  const std::size_t last = qualified.rfind("::");
+  const std::string dir = qualified.substr(first + 2, last - first - 2);
+  const std::string decl = "enum class " + qualified.substr(last + 2) + " ";
+  const std::string root = std::string(SEAWIRE_SOURCE_DIR) + "/include/seawire/";
+  for (const auto& entry : std::filesystem::directory_iterator(root + dir)) {
+    std::ifstream in(entry.path());
+    std::stringstream all;
+    all << in.rdbuf();
+    if (all.str().find(decl) != std::string::npos)
+      return dir + "/" + entry.path().filename().string();
+  }
+  fail("no header declares", qualified);
+}
+
+// An enum some registry message has as a field, and where: each message with its field numbers
+// ("RSA" 2 and 4, "PGN 128259" 4).
+struct wire_enum {
+  std::string qualified;
+  std::vector<std::pair<std::string, std::vector<std::string>>> uses;
+  std::function<void(const wire_enum&)> print;
+};
+
+// "RSA fields 2 and 4, ..."
+std::string uses_text(const wire_enum& w) {
+  std::string out;
+  for (const auto& [message, fields] : w.uses) {
+    out += (out.empty() ? "" : "; ") + message + (fields.size() == 1 ? " field " : " fields ");
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      out += (i == 0 ? "" : i + 1 == fields.size() ? " and " : ", ") + fields[i];
+  }
+  return out + ".";
+}
+
+template <class E>
+void add_use(std::vector<wire_enum>& out, const std::string& message, const std::string& field,
+             kind k) {
+  const std::string q = qualified_name<E>();
+  for (wire_enum& w : out) {
+    if (w.qualified != q) continue;
+    if (w.uses.back().first == message) {
+      w.uses.back().second.push_back(field);
+    } else {
+      w.uses.push_back({message, {field}});
+    }
+    return;
+  }
+  out.push_back({q, {{message, {field}}}, [k](const wire_enum& w) {
+                   table<E>(w.qualified, header_of(w.qualified), uses_text(w), k);
+                 }});
+}
+
+// Every enum the registry's sentences and PGNs have as a field, in registry order.
+std::vector<wire_enum> wire_enums() {
+  std::vector<wire_enum> out;
+  registry::for_each_type<registry::sentences>([&](auto tag) {
+    using M = typename decltype(tag)::type;
+    const std::string address(M::nmea.address);
+    unsigned first = 1;
+    M::nmea.fields.apply([&](const auto&... d) {
+      (
+          [&](const auto& f) {
+            using V = typename std::remove_cvref_t<decltype(f)>::value_type;
+            const std::string message = address.substr(address.starts_with("--") ? 2 : 0);
+            if constexpr (nmea::char_enum_like<V>) {
+              add_use<V>(out, message, std::to_string(first), kind::letter);
+            } else if constexpr (nmea::word_enum_like<V>) {
+              add_use<V>(out, message, std::to_string(first), kind::word);
+            } else if constexpr (std::is_same_v<V, robotx::light_pattern>) {
+              // A light pattern is three colour letters in one field.
+              add_use<robotx::color>(out, message, std::to_string(first) + " (three letters)",
+                                     kind::letter);
+            }
+            first += f.width();
+          }(d),
+          ...);
+    });
+  });
+  registry::for_each_type<registry::pgns>([&](auto tag) {
+    using P = typename decltype(tag)::type;
+    P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
+      using F = std::remove_cvref_t<decltype(f)>;
+      if constexpr (!F::is_reserved) {
+        using E = typename pgn_enum<typename F::value_type>::type;
+        if constexpr (!std::is_void_v<E>) {
+          add_use<E>(out, "PGN " + std::to_string(P::n2k.info.pgn),
+                     std::to_string(row) + " (" + std::string(f.title) + ")", kind::lookup);
+        }
+      }
+    });
+  });
+  return out;
+}
+
 }  // namespace
 
 int main() {
@@ -214,69 +344,19 @@ int main() {
   std::printf("## Fields of NMEA 0183 sentences\n\n");
   table<nmea::hemisphere>("seawire::nmea::hemisphere", "nmea/position.hpp",
                           "A position's or a magnetic variation's direction letter.", kind::letter);
-  table<standard::rmc_status>("seawire::standard::rmc_status", "standard/rmc.hpp", "RMC field 2.",
-                              kind::letter);
-  table<standard::mode_indicator>("seawire::standard::mode_indicator", "standard/rmc.hpp",
-                                  "RMC field 12 (NMEA 2.3 and later).", kind::letter);
-  table<standard::nav_status>("seawire::standard::nav_status", "standard/rmc.hpp",
-                              "RMC field 13 (NMEA 4.1).", kind::letter);
-  table<standard::gps_quality>("seawire::standard::gps_quality", "standard/gga.hpp", "GGA field 6.",
-                               kind::letter);
-  table<standard::rpm_source>("seawire::standard::rpm_source", "standard/rpm.hpp", "RPM field 1.",
-                              kind::letter);
-  table<standard::rpm_status>("seawire::standard::rpm_status", "standard/rpm.hpp", "RPM field 5.",
-                              kind::letter);
-  table<standard::rsa_status>("seawire::standard::rsa_status", "standard/rsa.hpp",
-                              "RSA fields 2 and 4.", kind::letter);
-  table<standard::vbw_status>("seawire::standard::vbw_status", "standard/vbw.hpp",
-                              "VBW status fields.", kind::letter);
-  table<standard::bow_side>("seawire::standard::bow_side", "standard/vwr.hpp",
-                            "VWR field 2: which side of the bow the wind is on.", kind::letter);
-  table<anello::gps_control>("seawire::anello::gps_control", "anello/gpsctrl.hpp",
-                             "PAPGPSCTRL field 1.", kind::letter);
-  table<sandshark::ack_status>("seawire::sandshark::ack_status", "sandshark/messages.hpp",
-                               "BFACK field 5.", kind::letter);
-  table<sandshark::log_state>("seawire::sandshark::log_state", "sandshark/messages.hpp",
-                              "BPLOG field 2.", kind::word);
-  table<sandshark::depth_mode>("seawire::sandshark::depth_mode", "sandshark/messages.hpp",
-                               "BPRMB depth mode.", kind::letter);
-  table<sandshark::speed_mode>("seawire::sandshark::speed_mode", "sandshark/messages.hpp",
-                               "BPRMB speed mode.", kind::letter);
-  table<sandshark::horizontal_mode>("seawire::sandshark::horizontal_mode", "sandshark/messages.hpp",
-                                    "BPRMB horizontal mode.", kind::letter);
-  table<sandshark::abort_reason>("seawire::sandshark::abort_reason", "sandshark/messages.hpp",
-                                 "BPABT field 2.", kind::letter);
+  // The enums of the registry's messages' fields, with the fields they are in.
+  const std::vector<wire_enum> fields = wire_enums();
+  for (const wire_enum& w : fields)
+    if (!w.uses.front().first.starts_with("PGN ")) w.print(w);
   table<sandshark::mission_state>(
       "seawire::sandshark::mission_state", "sandshark/messages.hpp",
       "BFMIS field 3 is text (the spec's list is open); `bfmis::state()` reads it as one of "
       "these.",
       kind::text, mission_texts());
-  table<robotx::system_mode>("seawire::robotx::system_mode", "robotx/messages.hpp",
-                             "RXHRB field 8.", kind::letter);
-  table<robotx::auv_status>("seawire::robotx::auv_status", "robotx/messages.hpp", "RXHRB field 9.",
-                            kind::letter);
-  table<robotx::gate>("seawire::robotx::gate", "robotx/messages.hpp", "RXGAT fields 3 and 4.",
-                      kind::letter);
-  table<robotx::light_buoy>("seawire::robotx::light_buoy", "robotx/messages.hpp",
-                            "RXCOD: whether the light buoy is lit.", kind::letter);
-  table<robotx::color>("seawire::robotx::color", "robotx/messages.hpp",
-                       "RXCOD light pattern: three of these letters.", kind::letter);
-  table<robotx::dock_shape>("seawire::robotx::dock_shape", "robotx/messages.hpp", "RXDOK field 4.",
-                            kind::word);
-  table<robotx::deliver_shape>("seawire::robotx::deliver_shape", "robotx/messages.hpp",
-                               "RXDEL field 4.", kind::word);
 
   std::printf("## Fields of NMEA 2000 PGNs\n\n");
-  table<nmea2000::water_reference>("seawire::nmea2000::water_reference", "nmea2000/pgns.hpp",
-                                   "PGN 128259's speed sensor type.", kind::lookup);
-  table<nmea2000::temperature_source>("seawire::nmea2000::temperature_source", "nmea2000/pgns.hpp",
-                                      "PGN 130311's temperature source.", kind::lookup);
-  table<nmea2000::humidity_source>("seawire::nmea2000::humidity_source", "nmea2000/pgns.hpp",
-                                   "PGN 130311's humidity source.", kind::lookup);
-  table<nmea2000::engine_status_1>("seawire::nmea2000::engine_status_1", "nmea2000/pgns.hpp",
-                                   "PGN 127489's discrete status 1: bit numbers.", kind::lookup);
-  table<nmea2000::engine_status_2>("seawire::nmea2000::engine_status_2", "nmea2000/pgns.hpp",
-                                   "PGN 127489's discrete status 2: bit numbers.", kind::lookup);
+  for (const wire_enum& w : fields)
+    if (w.uses.front().first.starts_with("PGN ")) w.print(w);
 
   std::printf("## Library enums (not on the wire)\n\n");
   table<errc>("seawire::errc", "error.hpp",
@@ -331,5 +411,11 @@ int main() {
       "seawire::nmea2000::canboat_format", "nmea2000/log.hpp",
       "The formats a canboat log's `# format=` header names; the first five are read.",
       kind::value);
+  table<wire_kind>("seawire::wire_kind", "walk.hpp", "Which wire a walked field is of.",
+                   kind::value);
+  table<byte_order>("seawire::byte_order", "walk.hpp", "How a walked field's bytes are laid out.",
+                    kind::value);
+  table<position_axis>("seawire::position_axis", "walk.hpp", "What a position-typed field holds.",
+                       kind::value);
   return 0;
 }

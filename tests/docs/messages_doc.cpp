@@ -258,11 +258,6 @@ void set(std::string_view title, std::string_view section, nmea::message_set<Ms.
       ...);
 }
 
-template <class Set>
-Set* of() {
-  return nullptr;
-}
-
 // The 0xAB00 frame, from anello::sensor_fields.
 void frame() {
   std::printf(
@@ -366,7 +361,7 @@ void pgn() {
 template <class... P>
 void pgns(nmea2000::pgn_list<P...>*) {
   std::printf(
-      "## NMEA 2000: inputs to the INS\n\n"
+      "## NMEA 2000 PGNs\n\n"
       "Fields are little-endian and packed least significant bit first from the bit offset. A\n"
       "number's physical value is its raw value times the step, in the unit its name ends with.\n"
       "The highest raw values of a field are not values: in a number of 8 bits or more the top\n"
@@ -404,18 +399,11 @@ int main() {
       "**Precision** is the number of fraction digits `nmea::builder` rounds a\n"
       "double to by default (its shortest decimal, halves away from zero: 1.005 at 2 is\n"
       "1.01).\n\n");
-  set("Kingfisher: vehicle to payload", "Kingfisher, from the vehicle.",
-      of<kingfisher::from_vehicle>());
-  set("Kingfisher: payload to vehicle", "Kingfisher, a command to the vehicle.",
-      of<kingfisher::to_vehicle>());
-  set("Sandshark: vehicle to payload", "Sandshark SPI, from the vehicle.",
-      of<sandshark::from_vehicle>());
-  set("Sandshark: payload to vehicle", "Sandshark SPI, from the payload.",
-      of<sandshark::to_vehicle>());
-  set("RobotX: team to judges", "RobotX 2018 report.", of<robotx::reports>());
-  set("ANELLO: inputs to the INS", "ANELLO Maritime INS input.", of<anello::nmea_inputs>());
-  set("ANELLO: output of the INS", "ANELLO Maritime INS output.", of<anello::nmea_outputs>());
+  registry::for_each_role([](const auto& role) {
+    set(role.title, role.about,
+        static_cast<typename std::remove_cvref_t<decltype(role)>::set*>(nullptr));
+  });
   frame();
-  pgns(static_cast<nmea2000::ins_input_pgns*>(nullptr));
+  pgns(static_cast<registry::pgns*>(nullptr));
   return 0;
 }

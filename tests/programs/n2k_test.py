@@ -8,7 +8,7 @@ canboat  every NN_*.in decoded, each message compared with canboat's analyzer ou
          field through the mapping table below.
 layout   a decoder written here from the bit layouts of docs N2K.md (sections 1-7 and 10-11),
          not from the library: it parses the log lines, reassembles fast packets and decodes
-         the six PGNs itself, and must agree with seawire-decode value for value.
+         every PGN of seawire itself, and must agree with seawire-decode value for value.
 errors   malformed lines among good ones: one error object per bad line, the good lines still
          decoded, exit status 1, fast-packet drops counted by --stats; --input and --log-format.
 """
@@ -80,6 +80,7 @@ TEMPERATURE_SOURCE = {
     "heat_index": "Heat Index Temperature", "freezer": "Freezer Temperature",
     "exhaust_gas": "Exhaust Gas Temperature", "shaft_seal": "Shaft Seal Temperature"}
 HUMIDITY_SOURCE = {"inside": "Inside", "outside": "Outside"}
+DIRECTION_REFERENCE = {"true": "True", "magnetic": "Magnetic"}
 ENGINE_STATUS_1 = {
     "check_engine": "Check Engine", "over_temperature": "Over Temperature",
     "low_oil_pressure": "Low Oil Pressure", "low_oil_level": "Low Oil Level",
@@ -246,6 +247,13 @@ CANBOAT_FIELDS = {
         "stern_water_mps": ("sternSpeedWaterReferenced", num("0.001")),
         "stern_ground_mps": ("sternSpeedGroundReferenced", num("0.001")),
     },
+    127250: {
+        "sid": ("sid", num("1")),
+        "heading_rad": ("heading", num("0.0001")),
+        "deviation_rad": ("deviation", num("0.0001")),
+        "variation_rad": ("variation", num("0.0001")),
+        "reference": ("reference", lookup(DIRECTION_REFERENCE)),
+    },
 }
 # canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones;
 # seawire ignores reserved bits on receive (N2K.md section 1), so it has no such field.
@@ -406,6 +414,7 @@ L_TEMP = ["sea", "outside", "inside", "engine_room", "main_cabin", "live_well", 
           "refrigeration", "heating_system", "dew_point", "apparent_wind_chill",
           "theoretical_wind_chill", "heat_index", "freezer", "exhaust_gas", "shaft_seal"]
 L_HUM = ["inside", "outside"]
+L_DIRECTION = ["true", "magnetic"]
 F_STATUS_1 = ["check_engine", "over_temperature", "low_oil_pressure", "low_oil_level",
               "low_fuel_pressure", "low_system_voltage", "low_coolant_level", "water_flow",
               "water_in_fuel", "charge_indicator", "preheat_indicator", "high_boost_pressure",
@@ -453,6 +462,13 @@ LAYOUT = {
              ("transverse_ground_mps", 48, 16, S, "0.001"),
              ("stern_water_mps", 64, 16, S, "0.001"),
              ("stern_ground_mps", 80, 16, S, "0.001")],
+    # canboat's database: SID, heading (unsigned) and deviation, variation (signed) in 0.0001
+    # rad, a 2-bit direction reference, 6 reserved bits.
+    127250: [("sid", 0, 8, U, "1"),
+             ("heading_rad", 8, 16, U, "0.0001"),
+             ("deviation_rad", 24, 16, S, "0.0001"),
+             ("variation_rad", 40, 16, S, "0.0001"),
+             ("reference", 56, 2, "lookup", L_DIRECTION)],
 }
 
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The NMEA 2000 PGNs the ANELLO Maritime INS takes as sensor input; each struct is one PGN, its
-// members in wire order, then its table (field.hpp). Values are SI as on the wire (Pa, K, m/s,
-// plus rpm, L/h, %, s). Where ANELLO's field lists differ from what devices send (128259's speed
-// direction, 130311's source lookups, 127489's reserved byte), these follow the wire:
-// docs/nmea2000.md.
+// The NMEA 2000 PGNs the ANELLO Maritime INS takes as sensor input, and the vessel heading; each
+// struct is one PGN, its members in wire order, then its table (field.hpp). Values are SI as on
+// the wire (Pa, K, m/s, rad, plus rpm, L/h, %, s). Where ANELLO's field lists differ from what
+// devices send (128259's speed direction, 130311's source lookups, 127489's reserved byte), these
+// follow the wire: docs/nmea2000.md.
 
 #include <array>
 #include <cstddef>
@@ -120,6 +120,16 @@ constexpr std::array<std::string_view, 8> lookup_names(engine_status_2) noexcept
           "neutral_start_protect", "engine_shutting_down"};
 }
 
+/// What a heading is measured from (127250). Raw values 2 and 3 are not values: out of range
+/// ("error") and not available.
+enum class heading_reference : std::uint8_t {
+  true_north = 0,  ///< true heading
+  magnetic = 1,    ///< magnetic heading (add deviation and variation for true)
+};
+constexpr std::array<std::string_view, 2> lookup_names(heading_reference) noexcept {
+  return {"true", "magnetic"};
+}
+
 // ---------------------------------------------------------------------------------------------
 // the PGNs
 
@@ -131,6 +141,7 @@ inline constexpr resolution tenth{1, -1};       ///< 0.1
 inline constexpr resolution hundredth{1, -2};   ///< 0.01
 inline constexpr resolution thousandth{1, -3};  ///< 0.001
 inline constexpr resolution humidity{4, -3};    ///< 0.004
+inline constexpr resolution radian{1, -4};      ///< 0.0001 rad
 }  // namespace res
 
 /// PGN 127488 Engine Parameters, Rapid Update: 8 bytes, single frame, priority 2, 10 Hz.
@@ -284,6 +295,26 @@ struct vessel_speed_components {
                    field<&vessel_speed_components::stern_ground_mps>(
                        "stern_ground_mps", "Stern Speed, Ground-referenced"));
   [[nodiscard]] constexpr bool operator==(const vessel_speed_components&) const noexcept = default;
+};
+
+/// PGN 127250 Vessel Heading: 8 bytes, single frame, priority 2, 10 Hz. Angles in radians:
+/// the heading from the reference named, deviation and variation positive east (a magnetic
+/// heading plus both is the true heading).
+struct vessel_heading {
+  unsigned_number<8> sid;
+  unsigned_number<16, res::radian> heading_rad;
+  signed_number<16, res::radian> deviation_rad;
+  signed_number<16, res::radian> variation_rad;
+  lookup<heading_reference, 2> reference;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127250, "vessel_heading", "Vessel Heading", 2, framing::single_frame, 100},
+      field<&vessel_heading::sid>("sid", "Sequence ID"),
+      field<&vessel_heading::heading_rad>("heading_rad", "Heading"),
+      field<&vessel_heading::deviation_rad>("deviation_rad", "Deviation"),
+      field<&vessel_heading::variation_rad>("variation_rad", "Variation"),
+      field<&vessel_heading::reference>("reference", "Reference"), reserved<6>);
+  [[nodiscard]] constexpr bool operator==(const vessel_heading&) const noexcept = default;
 };
 
 // ---------------------------------------------------------------------------------------------
