@@ -42,7 +42,7 @@ struct json_field {
   position_axis axis = position_axis::none;
 };
 
-namespace detail {
+namespace tracked {
 // Whether a field's values are states whose changes along a track are events: enums and flags
 // of a sentence, lookups and flag sets of a PGN, the frame's codes (fix quality).
 template <class V>
@@ -63,7 +63,7 @@ constexpr bool state_field() {
     return is_state<typename View::value_type>::value;
   }
 }
-}  // namespace detail
+}  // namespace tracked
 
 /// A JSON string's content without its quotes, still escaped (as it goes back into JSON).
 inline std::string_view unquoted(std::string_view v) {
@@ -126,7 +126,7 @@ class tracks {
         put_field_value<nmea::json_style::json>(*this, f);
         ends_.push_back(text_.size());
         fields_.push_back(
-            {f.key, {}, detail::state_field<std::remove_cvref_t<decltype(f)>>(), f.axis});
+            {f.key, {}, tracked::state_field<std::remove_cvref_t<decltype(f)>>(), f.axis});
       });
       std::size_t start = 0;
       for (std::size_t i = 0; i < fields_.size(); ++i) {
