@@ -12,7 +12,7 @@
 #include <memory>
 #include <seawire/kingfisher/messages.hpp>
 #include <seawire/nmea/build.hpp>
-#include <seawire/nmea/describe.hpp>
+#include <seawire/nmea/error_text.hpp>
 #include <seawire/nmea/time.hpp>
 #include <string>
 #include <variant>
@@ -250,7 +250,7 @@ class simulator {
         char why[200];
         // Told with the policy it was read with: a command that ends "*" without a checksum
         // splits into its fields only under the vehicle's policy, and so has its field named.
-        const auto text = nmea::describe<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
+        const auto text = nmea::error_text<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
         net::line_server::log("client %llu: rejected: %.*s%s",
                               static_cast<unsigned long long>(c.id()),
                               static_cast<int>(text.size()), text.data(),

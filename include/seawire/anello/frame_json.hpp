@@ -36,7 +36,7 @@
 #include "seawire/detail/copy.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/csv.hpp"
-#include "seawire/nmea/describe.hpp"
+#include "seawire/nmea/error_text.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/walk.hpp"
@@ -195,8 +195,8 @@ struct sensor_field_about {
 /// outside the range the spec allows", the value as write_json writes it (from `frame`, the
 /// frame the result is about). Written into `out` (cut to fit, always NUL-terminated); the
 /// returned view is into `out`.
-constexpr std::string_view describe(std::span<char> out, const result<sensor_frame_raw>& r,
-                                    const sensor_frame_raw& frame) noexcept {
+constexpr std::string_view error_text(std::span<char> out, const result<sensor_frame_raw>& r,
+                                      const sensor_frame_raw& frame) noexcept {
   nmea::detail::text_out t(out);
   if (r) return t.put("ok").view();
   t.put(frame_json_type).put(" field ").put(std::uint64_t{r.field});
@@ -206,6 +206,13 @@ constexpr std::string_view describe(std::span<char> out, const result<sensor_fra
     t.put(f.value.exact());
   });
   return t.put(": ").put(message(r.ec)).view();
+}
+
+/// The former name of error_text(), kept for one release.
+[[deprecated("use anello::error_text")]] constexpr std::string_view describe(
+    std::span<char> out, const result<sensor_frame_raw>& r,
+    const sensor_frame_raw& frame) noexcept {
+  return error_text(out, r, frame);
 }
 
 /// A field's value (the walk's per-wire value text: see seawire::write_json_fields): null when

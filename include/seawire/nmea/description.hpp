@@ -631,7 +631,7 @@ template <message_like T>
 /// position and its hemisphere letter, a value and its unit letter) names each one after the
 /// first by `part` ("hemisphere letter", "unit letter"; empty for the first), so that a field
 /// is called what it is: "latitude's hemisphere letter". `explain`, when the field's codec has
-/// one, tells from a refused text what is wrong with it (see describe()).
+/// one, tells from a refused text what is wrong with it (see error_text()).
 struct field_about {
   std::string_view name;
   field_options opts{};

@@ -177,7 +177,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
         s.put(v.name());
         detail::quote<Style>(s);
       }
-    } else if constexpr (std::is_same_v<T, date>) {
+    } else if constexpr (std::is_same_v<T, day_count>) {
       const std::chrono::year_month_day ymd(*v.value());
       nmea::detail::json_joined<Style == nmea::json_style::json>(
           s,
@@ -185,7 +185,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
             {static_cast<unsigned>(ymd.month()), 2},
             {static_cast<unsigned>(ymd.day()), 2}}},
           '-');
-    } else if constexpr (std::is_same_v<T, time_of_day>) {
+    } else if constexpr (std::is_same_v<T, time_since_midnight>) {
       const auto ticks = static_cast<std::uint64_t>(v.raw());  // 0.1 ms
       nmea::detail::json_joined<Style == nmea::json_style::json>(
           s, {{{ticks / 36'000'000, 2}, {ticks / 600'000 % 60, 2}, {ticks / 10'000 % 60, 2}}}, ':',
@@ -351,7 +351,7 @@ template <class T>
     for (; digits < 4; ++digits) frac *= 10;
   }
   ticks = ((h * 60 + m) * 60 + s) * 10'000 + frac;
-  return ticks > time_of_day::number_type::max_valid_raw ? errc::out_of_range : errc::ok;
+  return ticks > time_since_midnight::number_type::max_valid_raw ? errc::out_of_range : errc::ok;
 }
 
 }  // namespace detail
@@ -418,14 +418,14 @@ template <field_value T, class Lookup>
       const auto r = T::from_name(v.text);
       if (r) out = r.value;
       return r.ec;
-    } else if constexpr (std::is_same_v<T, date>) {
+    } else if constexpr (std::is_same_v<T, day_count>) {
       std::chrono::sys_days day{};
       if (v.kind != json_kind::string || !detail::parse_date_text(v.text, day))
         return errc::bad_date;
-      const auto r = date::from(day);
+      const auto r = day_count::from(day);
       if (r) out = r.value;
       return r.ec;
-    } else if constexpr (std::is_same_v<T, time_of_day>) {
+    } else if constexpr (std::is_same_v<T, time_since_midnight>) {
       if (v.kind != json_kind::string) return errc::bad_time;
       std::int64_t ticks = 0;
       const errc e = detail::parse_time_of_day(v.text, ticks);
