@@ -45,6 +45,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/bit_layout.hpp"
+#include "seawire/detail/member.hpp"
 #include "seawire/detail/rounding.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/decimal.hpp"
@@ -491,21 +492,11 @@ concept field_value = requires(const T& t, std::int64_t raw) {
   { t.state() } -> std::same_as<field_state>;
 };
 
-namespace detail {
-template <class M>
-struct member_traits;
-template <class C, class T>
-struct member_traits<T C::*> {
-  using owner = C;
-  using value_type = T;
-};
-}  // namespace detail
-
 /// One row of a PGN table: the member, its name (snake_case with the unit last, as JSON, CSV and
 /// fmt show it) and the standard's name for the field.
 template <auto Member>
 struct field_entry {
-  using value_type = typename detail::member_traits<decltype(Member)>::value_type;
+  using value_type = seawire::detail::member_type_t<Member>;
   static_assert(field_value<value_type>,
                 "a PGN member must be a number, lookup, flags, day_count or time_since_midnight");
   static constexpr auto member = Member;
