@@ -37,6 +37,7 @@
 #include <type_traits>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/calendar.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/json.hpp"
@@ -311,17 +312,10 @@ template <class T>
 
 [[nodiscard]] constexpr bool parse_date_text(std::string_view t,
                                              std::chrono::sys_days& out) noexcept {
-  if (t.size() != 10 || t[4] != '-' || t[7] != '-') return false;
-  const int y1 = two_digits(t, 0);
-  const int y2 = two_digits(t, 2);
-  const int m = two_digits(t, 5);
-  const int d = two_digits(t, 8);
-  if (y1 < 0 || y2 < 0 || m < 1 || d < 1) return false;
-  const std::chrono::year_month_day ymd{std::chrono::year{y1 * 100 + y2},
-                                        std::chrono::month{static_cast<unsigned>(m)},
-                                        std::chrono::day{static_cast<unsigned>(d)}};
-  if (!ymd.ok()) return false;
-  out = std::chrono::sys_days(ymd);
+  seawire::detail::civil_date c;
+  if (t.size() != 10 || !seawire::detail::parse_iso_date(t, c) || !seawire::detail::valid_date(c))
+    return false;
+  out = std::chrono::sys_days(std::chrono::days(seawire::detail::days_from_civil(c)));
   return true;
 }
 
