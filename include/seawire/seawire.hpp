@@ -20,6 +20,7 @@
 #include "seawire/nmea/error_text.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/framer.hpp"
+#include "seawire/nmea/heading.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/stream.hpp"
