@@ -45,6 +45,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/bit_layout.hpp"
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/detail/member.hpp"
 #include "seawire/detail/rounding.hpp"
 #include "seawire/error.hpp"
@@ -271,13 +272,13 @@ inline constexpr auto names_of = lookup_names(E{});
 
 template <named_enum E>
 [[nodiscard]] constexpr std::string_view enum_name(std::uint64_t v) noexcept {
-  return v < names_of<E>.size() ? names_of<E>[v] : std::string_view{};
+  return seawire::detail::name_at(names_of<E>, v);
 }
 template <named_enum E>
 [[nodiscard]] constexpr std::optional<std::uint64_t> enum_value(std::string_view name) noexcept {
-  for (std::size_t i = 0; i < names_of<E>.size(); ++i)
-    if (!names_of<E>[i].empty() && names_of<E>[i] == name) return i;
-  return std::nullopt;
+  const std::optional<std::size_t> i = seawire::detail::index_of_name(names_of<E>, name);
+  if (!i) return std::nullopt;
+  return *i;
 }
 }  // namespace detail
 

@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "seawire/bluefin/navigation.hpp"
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -107,21 +108,15 @@ struct bfmis {
   /// The status as one of the states the spec names, or unknown.
   [[nodiscard]] constexpr mission_state state() const noexcept {
     if (running()) return mission_state::running;
-    constexpr std::array<std::pair<std::string_view, mission_state>, 10> names{{
-        {"Offline", mission_state::offline},
-        {"Waiting", mission_state::waiting},
-        {"Invalid Dive File", mission_state::invalid_dive_file},
-        {"Invalid Wrapup File", mission_state::invalid_wrapup_file},
-        {"Ready", mission_state::ready},
-        {"WrappingUp", mission_state::wrapping_up},
-        {"Aborting", mission_state::aborting},
-        {"Completed", mission_state::completed},
-        {"Aborted", mission_state::aborted},
-        {"Stopped", mission_state::stopped},
-    }};
-    for (const auto& [name, state] : names)
-      if (status.view() == name) return state;
-    return mission_state::unknown;
+    // Indexed by mission_state; unknown names no text, running is the prefix above.
+    constexpr std::array<std::string_view, 12> names{
+        "",        "Offline", "Waiting",    "Invalid Dive File", "Invalid Wrapup File",
+        "Ready",   "",        "WrappingUp", "Aborting",          "Completed",
+        "Aborted", "Stopped"};
+    static_assert(static_cast<std::size_t>(mission_state::stopped) + 1 == names.size() &&
+                  names[static_cast<std::size_t>(mission_state::wrapping_up)] == "WrappingUp");
+    const std::optional<std::size_t> i = seawire::detail::index_of_name(names, status.view());
+    return i ? static_cast<mission_state>(*i) : mission_state::unknown;
   }
 
   friend constexpr bool operator==(const bfmis&, const bfmis&) noexcept = default;
