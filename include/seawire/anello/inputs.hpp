@@ -103,14 +103,7 @@ template <class T>
 [[nodiscard]] constexpr bool put_decimal(std::optional<nmea::decimal>& out, double v,
                                          unsigned places, std::uint16_t field,
                                          result<T>& r) noexcept {
-  const result<nmea::decimal> d = nmea::decimal::from_double(v, places);
-  if (!d) {
-    r.ec = d.ec;
-    r.field = field;
-    return false;
-  }
-  out = d.value;
-  return true;
+  return seawire::detail::take(nmea::decimal::from_double(v, places), field, out, r);
 }
 
 /// A heading in [0, 360) (nmea::wrap_heading): headings from vehicle software are
@@ -119,14 +112,7 @@ template <class T>
 [[nodiscard]] constexpr bool put_heading(std::optional<nmea::decimal>& out, double deg,
                                          unsigned places, std::uint16_t field,
                                          result<T>& r) noexcept {
-  const result<nmea::decimal> d = nmea::wrap_heading(deg, places);
-  if (!d) {
-    r.ec = d.ec;
-    r.field = field;
-    return false;
-  }
-  out = d.value;
-  return true;
+  return seawire::detail::take(nmea::wrap_heading(deg, places), field, out, r);
 }
 
 /// A VHW speed (knots or km/h) from m/s. A speed that rounds to zero is zero, not "-0.00".
