@@ -299,12 +299,7 @@ template <class F>
 constexpr result<bool> visit_report(std::string_view line, F&& on_report,
                                     const nmea::parse_policy& policy = judge_policy) {
   const result<nmea::sentence_view> s = nmea::parse(line, policy);
-  if (!s) {
-    result<bool> out;
-    out.ec = s.ec;
-    out.column = s.column;
-    return out;
-  }
+  if (!s) return nmea::detail::parse_failure<bool>(s);
   return reports::visit(s.value, policy, on_report);
 }
 
