@@ -19,6 +19,7 @@
 
 #include "seawire/bluefin/navigation.hpp"
 #include "seawire/detail/enum_names.hpp"
+#include "seawire/detail/fixed_string.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -40,18 +41,22 @@ struct bfsht {
   static constexpr auto nmea = nmea::sentence<"BFSHT">(nmea::field<&bfsht::timestamp>("timestamp"));
 };
 
-/// BFVER: the SPI version the vehicle speaks; sent at the start of communications.
+/// BFVER and BPVER: the SPI version the sender speaks.
 ///   $BFVER,081025.987,1.0*hh
-struct bfver {
+template <seawire::detail::fixed_string Address>
+struct version_report {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   nmea::text<32> version;       // 2 [v-v] Version number
 
-  friend constexpr bool operator==(const bfver&, const bfver&) noexcept = default;
+  friend constexpr bool operator==(const version_report&, const version_report&) noexcept = default;
 
-  static constexpr auto nmea =
-      nmea::sentence<"BFVER">(nmea::field<&bfver::timestamp>("timestamp"),
-                              nmea::field<&bfver::version>("version", nmea::length_between(1, 32)));
+  static constexpr auto nmea = nmea::sentence<Address>(
+      nmea::field<&version_report::timestamp>("timestamp"),
+      nmea::field<&version_report::version>("version", nmea::length_between(1, 32)));
 };
+
+/// BFVER: the SPI version the vehicle speaks; sent at the start of communications.
+using bfver = version_report<"BFVER">;
 
 // ---------------------------------------------------------------------------------------------
 // from the vehicle: status (SPI 6), sent only after BPLOG asks for them
@@ -319,17 +324,7 @@ struct bpabt {
 };
 
 /// BPVER: the SPI version the payload speaks; the payload must send it first.
-///   $BPVER,081025.987,1.0*hh
-struct bpver {
-  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  nmea::text<32> version;       // 2 [v-v] Version number
-
-  friend constexpr bool operator==(const bpver&, const bpver&) noexcept = default;
-
-  static constexpr auto nmea =
-      nmea::sentence<"BPVER">(nmea::field<&bpver::timestamp>("timestamp"),
-                              nmea::field<&bpver::version>("version", nmea::length_between(1, 32)));
-};
+using bpver = version_report<"BPVER">;
 
 // ---------------------------------------------------------------------------------------------
 // roles
