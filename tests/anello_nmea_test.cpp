@@ -13,6 +13,7 @@
 #include "seawire/anello/gpsctrl.hpp"
 #include "seawire/anello/inputs.hpp"
 #include "seawire/nmea/checksum.hpp"
+#include "seawire/nmea/heading.hpp"
 #include "seawire/nmea/message.hpp"
 
 #include "support.hpp"
@@ -309,6 +310,20 @@ TEST_CASE("make_vhw: headings wrap into [0, 360)", "[anello][si]") {
   CHECK(heading(720.25) == decimal::scaled(3, 1));
   CHECK(heading(-0.0) == decimal::scaled(0, 1));
   CHECK_FALSE(heading(-0.0).negative);
+}
+
+TEST_CASE("wrap_heading: any double heading into [0, 360) at a field's places") {
+  using nmea::wrap_heading;
+  CHECK(wrap_heading(-0.3, 1).value == decimal::scaled(3597, 1));
+  CHECK(wrap_heading(359.996, 2).value == decimal::scaled(0, 2));  // 360.00 is north
+  CHECK(wrap_heading(359.994, 2).value == decimal::scaled(35999, 2));
+  CHECK(wrap_heading(-360.0, 0).value == decimal::scaled(0, 0));
+  CHECK(wrap_heading(1085.5, 3).value == decimal::scaled(5500, 3));
+  CHECK(wrap_heading(-1e12, 0).value == decimal::scaled(80, 0));  // -1e12 = -2777777778 turns + 80
+  CHECK(wrap_heading(1.001e12, 0).ec == errc::out_of_range);
+  CHECK(wrap_heading(-infinity, 1).ec == errc::not_finite);
+  CHECK(wrap_heading(not_a_number, 1).ec == errc::not_finite);
+  CHECK(wrap_heading(10.0, 20).ec == errc::value_too_large);
 }
 
 TEST_CASE("make_vhw: refusals name the wire field", "[anello][si]") {

@@ -115,8 +115,8 @@ TEST_CASE("NMEA 2000 messages and field values") {
   CHECK(fmt::format("{:j}", engine.temperature_k) == R"("out_of_range")");
 
   n2k::distance_log log{};
-  log.date = n2k::date::from_raw(17'000);
-  log.time = n2k::time_of_day::from_raw(453'251'234);
+  log.date = n2k::day_count::from_raw(17'000);
+  log.time = n2k::time_since_midnight::from_raw(453'251'234);
   CHECK(fmt::format("{} {}", log.date, log.time) == "2016-07-18 12:35:25.1234");
 }
 

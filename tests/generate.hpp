@@ -23,6 +23,7 @@
 
 #include "seawire/anello/frame.hpp"
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/calendar.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/variation.hpp"
@@ -128,7 +129,7 @@ inline nm::date any_date(prng& g) {
   nm::date d;
   d.year = static_cast<std::uint16_t>(1980 + g.below(100));
   d.month = static_cast<std::uint8_t>(1 + g.below(12));
-  d.day = static_cast<std::uint8_t>(1 + g.below(nm::detail::days_in_month(d.month, d.year)));
+  d.day = static_cast<std::uint8_t>(1 + g.below(seawire::detail::days_in_month(d.month, d.year)));
   return d;
 }
 

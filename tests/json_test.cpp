@@ -1004,17 +1004,17 @@ TEST_CASE("ANELLO frame: fields named by number, and errors told for people") {
   std::array<char, 160> buf;
   const auto r = validate(f);
   REQUIRE(r.field == 1);
-  CHECK(describe(buf, r, f) ==
+  CHECK(error_text(buf, r, f) ==
         "AB00 field 1 (heading_deg) 361: " + std::string(seawire::message(r.ec)));
   f.heading = 359;
   const auto r2 = validate(f);
   REQUIRE(r2.field == 2);
-  CHECK(describe(buf, r2, f) ==
+  CHECK(error_text(buf, r2, f) ==
         "AB00 field 2 (latitude) -90.000001: " + std::string(seawire::message(r2.ec)));
   std::array<char, 12> small;
-  CHECK(describe(small, r2, f) == "AB00 field ");  // cut to fit, NUL kept
+  CHECK(error_text(small, r2, f) == "AB00 field ");  // cut to fit, NUL kept
   CHECK(small.back() == '\0');
-  CHECK(describe(buf, validate(sensor_frame_raw{}), sensor_frame_raw{}) == "ok");
+  CHECK(error_text(buf, validate(sensor_frame_raw{}), sensor_frame_raw{}) == "ok");
 }
 
 TEST_CASE("CSV: a header of field names, rows of the JSON values, blank for not available") {

@@ -192,16 +192,16 @@ static_assert(std::is_assignable_v<n2k::lookup<n2k::water_reference, 8>&, n2k::w
 
 TEST_CASE("date and time of day") {
   using namespace std::chrono;
-  const auto d = n2k::date::from(sys_days(year{2024} / July / 3));
+  const auto d = n2k::day_count::from(sys_days(year{2024} / July / 3));
   REQUIRE(d);
   CHECK(d.value.raw() == 19907);
   CHECK(*d.value.value() == sys_days(year{2024} / July / 3));
-  CHECK(n2k::date::from(sys_days(year{1969} / December / 31)).ec == errc::out_of_range);
-  const auto t = n2k::time_of_day::from(hours(15) + minutes(42) + seconds(58));
+  CHECK(n2k::day_count::from(sys_days(year{1969} / December / 31)).ec == errc::out_of_range);
+  const auto t = n2k::time_since_midnight::from(hours(15) + minutes(42) + seconds(58));
   REQUIRE(t);
   CHECK(t.value.raw() == 565780000);
-  CHECK(n2k::time_of_day::from(seconds(86402)).ec == errc::out_of_range);
-  CHECK(n2k::time_of_day::from(seconds(-1)).ec == errc::out_of_range);
+  CHECK(n2k::time_since_midnight::from(seconds(86402)).ec == errc::out_of_range);
+  CHECK(n2k::time_since_midnight::from(seconds(-1)).ec == errc::out_of_range);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1082,7 +1082,7 @@ TEST_CASE("times of 24 h and later decode, print, and read back") {
        {863999999LL, 864000000LL, 864005000LL, 864010000LL, 900000000LL, 4294967292LL}) {
     INFO(raw);
     n2k::distance_log m;
-    m.time = n2k::time_of_day::from_raw(raw);
+    m.time = n2k::time_since_midnight::from_raw(raw);
     const std::string j = json_of<512>(n2k::message_header{}, m);
     const auto at = j.find(R"("time":")") + 8;
     const std::string text = j.substr(at, j.find('"', at) - at);
@@ -1092,10 +1092,10 @@ TEST_CASE("times of 24 h and later decode, print, and read back") {
   }
   // as canboat prints them
   n2k::distance_log m;
-  m.time = n2k::time_of_day::from_raw(864000000);
+  m.time = n2k::time_since_midnight::from_raw(864000000);
   CHECK(json_of<512>(n2k::message_header{}, m).find(R"("time":"24:00:00.0000")") !=
         std::string::npos);
-  m.time = n2k::time_of_day::from_raw(4294967292);
+  m.time = n2k::time_since_midnight::from_raw(4294967292);
   CHECK(json_of<512>(n2k::message_header{}, m).find(R"("time":"119:18:16.7292")") !=
         std::string::npos);
   std::int64_t t = 0;

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "seawire/detail/calendar.hpp"
 #include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/message.hpp"
@@ -596,4 +597,48 @@ TEST_CASE("time_of_day and date from system_clock time points and back") {
   // A leap second has no system_clock time of its own: it is the next day's first second.
   CHECK(to_sys_time(date{2016, 12, 31}, time_of_day{23, 59, 60}) == sys_days{2017y / January / 1});
   CHECK(date{2014, 12, 31}.sys_days() == sys_days{2014y / December / 31});
+}
+
+TEST_CASE("calendar: days since 1970 and back, month lengths, the ISO date's form") {
+  using seawire::detail::civil_date;
+  using seawire::detail::civil_from_days;
+  using seawire::detail::days_from_civil;
+  CHECK(days_from_civil({1970, 1, 1}) == 0);
+  CHECK(days_from_civil({2024, 7, 3}) == 19907);
+  CHECK(days_from_civil({1969, 12, 31}) == -1);
+  CHECK(days_from_civil({2000, 3, 1}) == 11017);
+  CHECK(days_from_civil({2149, 6, 3}) == 65532);  // the last a day_count carries as a value
+  // Every day from 1600 to 2400 (leap centuries and not) reads back as itself, one after another.
+  std::int64_t prev = days_from_civil({1599, 12, 31});
+  for (std::int64_t y = 1600; y <= 2400; ++y) {
+    for (unsigned m = 1; m <= 12; ++m) {
+      const unsigned last = seawire::detail::days_in_month(m, y);
+      CHECK_FALSE(seawire::detail::valid_date({y, m, last + 1}));
+      for (unsigned d = 1; d <= last; ++d) {
+        const std::int64_t n = days_from_civil({y, m, d});
+        REQUIRE(n == prev + 1);
+        const civil_date c = civil_from_days(n);
+        REQUIRE((c.year == y && c.month == m && c.day == d));
+        prev = n;
+      }
+    }
+  }
+  CHECK(seawire::detail::days_in_month(2, 1900) == 28);
+  CHECK(seawire::detail::days_in_month(2, 2000) == 29);
+  CHECK(seawire::detail::days_in_month(2, 2024) == 29);
+  CHECK_FALSE(seawire::detail::valid_date({2024, 13, 1}));
+  CHECK_FALSE(seawire::detail::valid_date({2024, 0, 1}));
+  CHECK_FALSE(seawire::detail::valid_date({2024, 1, 0}));
+
+  civil_date c;
+  CHECK(seawire::detail::parse_iso_date("2018-12-10T12:00:00", c));
+  CHECK((c.year == 2018 && c.month == 12 && c.day == 10));
+  CHECK(
+      seawire::detail::parse_iso_date("0000-99-99", c));  // the form only: ranges are the caller's
+  CHECK((c.year == 0 && c.month == 99 && c.day == 99));
+  CHECK_FALSE(seawire::detail::parse_iso_date("2018-12-1", c));
+  CHECK_FALSE(seawire::detail::parse_iso_date("2018/12/10", c));
+  CHECK_FALSE(seawire::detail::parse_iso_date("20x8-12-10", c));
+  CHECK_FALSE(seawire::detail::parse_iso_date("2018-1a-10", c));
+  CHECK_FALSE(seawire::detail::parse_iso_date("+018-12-10", c));
 }

@@ -99,8 +99,7 @@ static_assert(!std::is_constructible_v<decimal, double, int>);  // decimal(1.5, 
 
 // Members of messages, plain and optional, on both sides of each link.
 template <auto Member, class V>
-concept member_takes =
-    assignable_from<typename nmea::detail::member_pointer_traits<decltype(Member)>::member_type, V>;
+concept member_takes = assignable_from<seawire::detail::member_type_t<Member>, V>;
 template <auto Member>
 constexpr bool member_refuses_floating() {
   return !member_takes<Member, double> && !member_takes<Member, float> && member_takes<Member, int>;

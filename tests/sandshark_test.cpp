@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 
 #include "seawire/nmea/checksum.hpp"
@@ -296,6 +297,29 @@ TEST_CASE("the spec's other messages") {
   const auto odd = decode<bfmis>(sealed("BFMIS,081026.000,,Paused,"), from_vehicle_policy);
   REQUIRE(odd.ok());
   CHECK(odd.value.state() == mission_state::unknown);
+  // Every text the spec names, exactly (case and spaces count); a blank status names none.
+  const std::pair<std::string_view, mission_state> named[] = {
+      {"Offline", mission_state::offline},
+      {"Waiting", mission_state::waiting},
+      {"Invalid Dive File", mission_state::invalid_dive_file},
+      {"Invalid Wrapup File", mission_state::invalid_wrapup_file},
+      {"Ready", mission_state::ready},
+      {"Running", mission_state::running},
+      {"WrappingUp", mission_state::wrapping_up},
+      {"Aborting", mission_state::aborting},
+      {"Completed", mission_state::completed},
+      {"Aborted", mission_state::aborted},
+      {"Stopped", mission_state::stopped},
+      {"", mission_state::unknown},
+      {"ready", mission_state::unknown},
+      {"Ready ", mission_state::unknown},
+  };
+  for (const auto& [text, state] : named) {
+    INFO(text);
+    bfmis t;
+    REQUIRE(t.status.assign(text));
+    CHECK(t.state() == state);
+  }
 
   const auto nvr = decode_from_vehicle(sealed("BFNVR,081025.987,0.1,-0.2,0.03,1.5,-2,0.25"));
   REQUIRE(nvr.ok());

@@ -38,8 +38,8 @@
 #include "seawire/anello/stream.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/csv.hpp"
-#include "seawire/nmea/describe.hpp"
 #include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/error_text.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -507,7 +507,7 @@ class decoder {
   static std::string frame_error(const anello::sensor_frame_raw& frame,
                                  const result<anello::sensor_frame_raw>& v) {
     std::array<char, 160> buf;
-    return std::string(anello::describe(buf, v, frame));
+    return std::string(anello::error_text(buf, v, frame));
   }
 
   template <class Bytes>
@@ -718,13 +718,13 @@ class decoder {
   void parse_error(const nmea::framed_line& l, const result<nmea::sentence_view>& s,
                    const nmea::parse_policy& policy) {
     char why[512];
-    reject(l.line, s.ec, 0, nmea::describe<all_messages>(why, s, l.text, policy), l.text);
+    reject(l.line, s.ec, 0, nmea::error_text<all_messages>(why, s, l.text, policy), l.text);
   }
 
   void decode_error(const nmea::framed_line& l, const result<bool>& r,
                     const nmea::parse_policy& policy) {
     char why[512];
-    reject(l.line, r.ec, r.field, nmea::describe<all_messages>(why, r, l.text, policy), l.text);
+    reject(l.line, r.ec, r.field, nmea::error_text<all_messages>(why, r, l.text, policy), l.text);
   }
 
   void reject(std::uint64_t line, errc e, std::uint16_t field, std::string_view detail,

@@ -12,7 +12,8 @@
 #include <memory>
 #include <seawire/kingfisher/messages.hpp>
 #include <seawire/nmea/build.hpp>
-#include <seawire/nmea/describe.hpp>
+#include <seawire/nmea/error_text.hpp>
+#include <seawire/nmea/heading.hpp>
 #include <seawire/nmea/time.hpp>
 #include <string>
 #include <variant>
@@ -27,15 +28,14 @@ namespace kf = seawire::kingfisher;
 namespace net = seawire::tools::net;
 using sys_ns = std::chrono::sys_time<std::chrono::nanoseconds>;
 
-// A heading in [0, 360) for heading field M: -0.3 is 359.7, and 359.996 for a field of two
-// places is 0, not 360.00 (which the field refuses). The builder then rounds it to the field's
-// places by the library's one rule, the same rounding that decides the wrap here.
+// A heading in [0, 360) for heading field M, at the field's places: -0.3 is 359.7, and 359.996
+// for a field of two places is 0, not 360.00 (which the field refuses). The builder reads the
+// decimal's double back as the same decimal. A heading the wrap refuses is given as it is, for
+// the builder to refuse.
 template <auto M>
 double wrap_heading(double h) {
-  constexpr auto places = static_cast<unsigned>(nmea::precision_of<M>());
-  const double w = std::fmod(std::fmod(h, 360.0) + 360.0, 360.0);
-  const auto r = nmea::decimal::from_double(w, places);
-  return r && r.value.compare(nmea::decimal{360}) >= 0 ? 0.0 : w;
+  const auto r = nmea::wrap_heading(h, static_cast<unsigned>(nmea::precision_of<M>()));
+  return r ? r.value.to_double() : h;
 }
 
 struct options {
@@ -250,7 +250,7 @@ class simulator {
         char why[200];
         // Told with the policy it was read with: a command that ends "*" without a checksum
         // splits into its fields only under the vehicle's policy, and so has its field named.
-        const auto text = nmea::describe<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
+        const auto text = nmea::error_text<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
         net::line_server::log("client %llu: rejected: %.*s%s",
                               static_cast<unsigned long long>(c.id()),
                               static_cast<int>(text.size()), text.data(),

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <map>
 #include <seawire/nmea/build.hpp>
+#include <seawire/nmea/heading.hpp>
 #include <seawire/nmea/time.hpp>
 #include <seawire/nmea/writer.hpp>
 #include <seawire/sandshark/messages.hpp>
@@ -424,16 +425,15 @@ class simulator {
     nvg.nav_timestamp = stamp;
     // A heading that the builder would round up to 360.0 (which the field refuses) is north.
     const double h = model_.heading();
-    const auto rounded = nmea::decimal::from_double(
-        h, static_cast<unsigned>(nmea::precision_of<&ss::bfnvg::heading_deg>()));
+    const auto wrapped =
+        nmea::wrap_heading(h, static_cast<unsigned>(nmea::precision_of<&ss::bfnvg::heading_deg>()));
     (void)session_.publish(
         nmea::builder<ss::bfnvg>{nvg}
             .set<&ss::bfnvg::lat>(model_.lat())
             .set<&ss::bfnvg::lon>(model_.lon())
             .set<&ss::bfnvg::altitude_m>(std::max(0.0, water_depth_m - depth_))
             .set<&ss::bfnvg::depth_m>(depth_)
-            .set<&ss::bfnvg::heading_deg>(
-                rounded && rounded.value.compare(nmea::decimal{360}) >= 0 ? 0.0 : h)
+            .set<&ss::bfnvg::heading_deg>(wrapped ? wrapped.value.to_double() : h)
             .set<&ss::bfnvg::roll_deg>(model_.roll())
             .set<&ss::bfnvg::pitch_deg>(model_.pitch())
             .message(),

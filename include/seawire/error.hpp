@@ -193,4 +193,20 @@ struct result {
   [[nodiscard]] constexpr bool ok() const noexcept { return ec == errc::ok; }
 };
 
+namespace detail {
+/// One step of building a message from values: `v`'s value into `out`, or its errc and the
+/// wire `field` it was for into `r` (false then, and the caller stops there).
+template <class V, class Out, class T>
+[[nodiscard]] constexpr bool take(const result<V>& v, std::uint16_t field, Out& out,
+                                  result<T>& r) noexcept {
+  if (!v) {
+    r.ec = v.ec;
+    r.field = field;
+    return false;
+  }
+  out = v.value;
+  return true;
+}
+}  // namespace detail
+
 }  // namespace seawire

@@ -15,10 +15,12 @@
 // nmea wire layer
 #include "seawire/nmea/build.hpp"
 #include "seawire/nmea/checksum.hpp"
-#include "seawire/nmea/describe.hpp"
+#include "seawire/nmea/describe.hpp"  // the former name of error_text.hpp
 #include "seawire/nmea/dispatch.hpp"
+#include "seawire/nmea/error_text.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/framer.hpp"
+#include "seawire/nmea/heading.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/nmea/stream.hpp"

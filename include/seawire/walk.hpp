@@ -42,7 +42,7 @@
 
 #include "seawire/anello/frame.hpp"
 #include "seawire/detail/inline.hpp"
-#include "seawire/detail/same_member.hpp"
+#include "seawire/detail/member.hpp"
 #include "seawire/nmea/decimal.hpp"
 #include "seawire/nmea/description.hpp"
 #include "seawire/nmea/variation.hpp"

@@ -326,11 +326,11 @@ std::string n2k_form(std::string& step, std::string& range) {
   } else if constexpr (kind == 3) {
     range = names_of<typename n2k_kind<V>::enum_type>(true);
     return "flag set (`[]` when none is set, `null` when not sent)";
-  } else if constexpr (std::is_same_v<V, nmea2000::date>) {
+  } else if constexpr (std::is_same_v<V, nmea2000::day_count>) {
     step = "1 day";
     range = "1970-01-01 to 2149-06-03";
     return "date, days since 1970-01-01, JSON `\"YYYY-MM-DD\"`";
-  } else if constexpr (std::is_same_v<V, nmea2000::time_of_day>) {
+  } else if constexpr (std::is_same_v<V, nmea2000::time_since_midnight>) {
     step = "0.0001 s";
     range =
         "00:00:00.0000 to 24:00:01.0000 (a leap second); later times as sent, to "

@@ -48,8 +48,8 @@
 #include "seawire/detail/bit_layout.hpp"
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
+#include "seawire/detail/member.hpp"
 #include "seawire/detail/rounding.hpp"
-#include "seawire/detail/same_member.hpp"
 #include "seawire/error.hpp"
 
 namespace seawire::anello {
@@ -156,15 +156,6 @@ struct value_range {
 
 namespace detail {
 
-template <class M>
-struct member_type;
-template <class C, class M>
-struct member_type<M C::*> {
-  using type = M;
-};
-template <auto Member>
-using member_type_t = typename member_type<std::remove_cv_t<decltype(Member)>>::type;
-
 /// Fraction digits of a power-of-ten divisor (1 -> 0, 10 -> 1, 1'000'000 -> 6).
 [[nodiscard]] constexpr unsigned divisor_places(std::int64_t divisor) noexcept {
   unsigned n = 0;
@@ -182,8 +173,8 @@ using member_type_t = typename member_type<std::remove_cv_t<decltype(Member)>>::
 /// member; their types give the wire type and the physical type (double, int or time_ms).
 template <auto RawMember, auto ValueMember>
 struct sensor_field {
-  using raw_type = detail::member_type_t<RawMember>;
-  using value_type = typename detail::member_type_t<ValueMember>::value_type;
+  using raw_type = seawire::detail::member_type_t<RawMember>;
+  using value_type = typename seawire::detail::member_type_t<ValueMember>::value_type;
   /// The field's width on the wire: its wire type's.
   static constexpr unsigned bits = 8 * sizeof(raw_type);
   static constexpr auto raw_member = RawMember;
@@ -394,7 +385,7 @@ consteval std::size_t row_of() noexcept {
 // One field of `frame` in physical units, read through its row alone (an accessor costs the
 // compiler one row, not a walk over all 19).
 template <auto ValueMember>
-[[nodiscard]] constexpr member_type_t<ValueMember> physical_of(
+[[nodiscard]] constexpr seawire::detail::member_type_t<ValueMember> physical_of(
     const sensor_frame_raw& frame) noexcept {
   constexpr const auto& field = std::get<row_of<ValueMember>()>(sensor_fields);
   using field_type = std::remove_cvref_t<decltype(field)>;

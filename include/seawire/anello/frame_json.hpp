@@ -33,10 +33,11 @@
 
 #include "seawire/anello/frame.hpp"
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/calendar.hpp"
 #include "seawire/detail/copy.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/csv.hpp"
-#include "seawire/nmea/describe.hpp"
+#include "seawire/nmea/error_text.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/walk.hpp"
@@ -48,32 +49,8 @@ inline constexpr std::string_view frame_json_type = "AB00";
 
 namespace detail {
 
-// Civil date of days since 1970-01-01 (proleptic Gregorian; Howard Hinnant's algorithm).
-struct civil {
-  std::int64_t year;
-  unsigned month, day;
-};
-[[nodiscard]] constexpr civil civil_from_days(std::int64_t z) noexcept {
-  z += 719468;
-  const std::int64_t era = (z >= 0 ? z : z - 146096) / 146097;
-  const auto doe = static_cast<std::uint64_t>(z - era * 146097);
-  const std::uint64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
-  const std::int64_t y = static_cast<std::int64_t>(yoe) + era * 400;
-  const std::uint64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-  const std::uint64_t mp = (5 * doy + 2) / 153;
-  const auto d = static_cast<unsigned>(doy - (153 * mp + 2) / 5 + 1);
-  const auto m = static_cast<unsigned>(mp < 10 ? mp + 3 : mp - 9);
-  return {m <= 2 ? y + 1 : y, m, d};
-}
-[[nodiscard]] constexpr std::int64_t days_from_civil(std::int64_t y, unsigned m,
-                                                     unsigned d) noexcept {
-  y -= m <= 2 ? 1 : 0;
-  const std::int64_t era = (y >= 0 ? y : y - 399) / 400;
-  const auto yoe = static_cast<std::uint64_t>(y - era * 400);
-  const std::uint64_t doy = (153 * (m > 2 ? m - 3 : m + 9) + 2) / 5 + d - 1;
-  const std::uint64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
-}
+using civil = seawire::detail::civil_date;
+using seawire::detail::civil_from_days;
 
 // Milliseconds of 10000-01-01T00:00:00Z: ISO text is written below it.
 inline constexpr std::uint64_t iso_limit_ms = 253402300800000ULL;
@@ -127,22 +104,20 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   } else if (s.ends_with("+00:00")) {
     s.remove_suffix(6);
   }
-  unsigned y = 0, mo = 0, d = 0;
-  if (s.size() < 19 || s[4] != '-' || s[7] != '-' || (s[10] != 'T' && s[10] != ' ') ||
-      !nmea::detail::parse_fixed_digits(s, 0, 4, y) ||
-      !nmea::detail::parse_fixed_digits(s, 5, 2, mo) ||
-      !nmea::detail::parse_fixed_digits(s, 8, 2, d))
+  seawire::detail::civil_date date;
+  if (s.size() < 19 || (s[10] != 'T' && s[10] != ' ') || !seawire::detail::parse_iso_date(s, date))
     return errc::bad_date;
-  if (mo < 1 || mo > 12) return errc::month_out_of_range;
-  if (y < 1970) return errc::out_of_range;  // before the epoch the frame counts from
-  if (d < 1 || d > nmea::detail::days_in_month(mo, y)) return errc::day_out_of_range;
+  if (date.month < 1 || date.month > 12) return errc::month_out_of_range;
+  if (date.year < 1970) return errc::out_of_range;  // before the epoch the frame counts from
+  if (!seawire::detail::valid_date(date)) return errc::day_out_of_range;
   const result<nmea::time_of_day> t = nmea::parse_time_text(s.substr(11));
   if (!t) return t.ec;
   if (t.value.places > 3 || t.value.second > 59) return errc::bad_time;
   const std::uint64_t ms_of_day =
       ((t.value.hour * 60ULL + t.value.minute) * 60ULL + t.value.second) * 1000ULL +
       t.value.fraction * seawire::detail::pow10_table[3 - t.value.places];
-  out = static_cast<std::uint64_t>(days_from_civil(y, mo, d)) * 86'400'000ULL + ms_of_day;
+  out = static_cast<std::uint64_t>(seawire::detail::days_from_civil(date)) * 86'400'000ULL +
+        ms_of_day;
   return errc::ok;
 }
 
@@ -195,8 +170,8 @@ struct sensor_field_about {
 /// outside the range the spec allows", the value as write_json writes it (from `frame`, the
 /// frame the result is about). Written into `out` (cut to fit, always NUL-terminated); the
 /// returned view is into `out`.
-constexpr std::string_view describe(std::span<char> out, const result<sensor_frame_raw>& r,
-                                    const sensor_frame_raw& frame) noexcept {
+constexpr std::string_view error_text(std::span<char> out, const result<sensor_frame_raw>& r,
+                                      const sensor_frame_raw& frame) noexcept {
   nmea::detail::text_out t(out);
   if (r) return t.put("ok").view();
   t.put(frame_json_type).put(" field ").put(std::uint64_t{r.field});
@@ -206,6 +181,13 @@ constexpr std::string_view describe(std::span<char> out, const result<sensor_fra
     t.put(f.value.exact());
   });
   return t.put(": ").put(message(r.ec)).view();
+}
+
+/// The former name of error_text(), kept for one release.
+[[deprecated("use anello::error_text")]] constexpr std::string_view describe(
+    std::span<char> out, const result<sensor_frame_raw>& r,
+    const sensor_frame_raw& frame) noexcept {
+  return error_text(out, r, frame);
 }
 
 /// A field's value (the walk's per-wire value text: see seawire::write_json_fields): null when

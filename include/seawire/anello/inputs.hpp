@@ -14,6 +14,7 @@
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
+#include "seawire/nmea/heading.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
 #include "seawire/standard/rmc.hpp"
@@ -102,34 +103,16 @@ template <class T>
 [[nodiscard]] constexpr bool put_decimal(std::optional<nmea::decimal>& out, double v,
                                          unsigned places, std::uint16_t field,
                                          result<T>& r) noexcept {
-  const result<nmea::decimal> d = nmea::decimal::from_double(v, places);
-  if (!d) {
-    r.ec = d.ec;
-    r.field = field;
-    return false;
-  }
-  out = d.value;
-  return true;
+  return seawire::detail::take(nmea::decimal::from_double(v, places), field, out, r);
 }
 
-/// A heading in [0, 360): headings from vehicle software are often -180..180 or unwrapped.
+/// A heading in [0, 360) (nmea::wrap_heading): headings from vehicle software are
+/// often -180..180 or unwrapped.
 template <class T>
 [[nodiscard]] constexpr bool put_heading(std::optional<nmea::decimal>& out, double deg,
                                          unsigned places, std::uint16_t field,
                                          result<T>& r) noexcept {
-  constexpr double max = std::numeric_limits<double>::max();
-  if (!(deg == deg) || deg > 1e12 || deg < -1e12) {
-    // Past 1e12 turns the wrap below would lose the fraction; such a heading is a bug upstream.
-    r.ec = deg == deg && deg <= max && deg >= -max ? errc::out_of_range : errc::not_finite;
-    r.field = field;
-    return false;
-  }
-  double w = deg - 360.0 * static_cast<double>(static_cast<std::int64_t>(deg / 360.0));
-  if (w < 0) w += 360.0;
-  if (!put_decimal(out, w, places, field, r)) return false;
-  // 359.96 rounded to one place is 360.0, which is north: write it as 0.
-  if (out->compare(nmea::decimal(360)) >= 0) out = nmea::decimal::scaled(0, out->places);
-  return true;
+  return seawire::detail::take(nmea::wrap_heading(deg, places), field, out, r);
 }
 
 /// A VHW speed (knots or km/h) from m/s. A speed that rounds to zero is zero, not "-0.00".

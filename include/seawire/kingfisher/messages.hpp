@@ -173,15 +173,9 @@ namespace detail {
 template <class T>
 [[nodiscard]] constexpr bool convert(result<T>& out, nmea::decimal T::*member, std::uint16_t field,
                                      double v, int places, int declared) noexcept {
-  const result<nmea::decimal> d =
-      nmea::decimal::from_double(v, static_cast<unsigned>(places >= 0 ? places : declared));
-  if (!d) {
-    out.ec = d.ec;
-    out.field = field;
-    return false;
-  }
-  out.value.*member = d.value;
-  return true;
+  return seawire::detail::take(
+      nmea::decimal::from_double(v, static_cast<unsigned>(places >= 0 ? places : declared)), field,
+      out.value.*member, out);
 }
 }  // namespace detail
 

@@ -34,7 +34,7 @@
 
 #include "seawire/detail/fixed_string.hpp"
 #include "seawire/detail/inline.hpp"
-#include "seawire/detail/same_member.hpp"
+#include "seawire/detail/member.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -177,20 +177,13 @@ struct optional_traits<std::optional<T>> {
   static constexpr bool is_optional = true;
   using value_type = T;
 };
-template <class M>
-struct member_pointer_traits;
-template <class C, class T>
-struct member_pointer_traits<T C::*> {
-  using class_type = C;
-  using member_type = T;
-};
 }  // namespace detail
 
 /// One field of a message: which member, its name in JSON/fmt, its options.
 template <auto Member>
 struct field_desc {
-  using class_type = typename detail::member_pointer_traits<decltype(Member)>::class_type;
-  using member_type = typename detail::member_pointer_traits<decltype(Member)>::member_type;
+  using class_type = seawire::detail::member_class_t<Member>;
+  using member_type = seawire::detail::member_type_t<Member>;
   using value_type = typename detail::optional_traits<member_type>::value_type;
   static constexpr bool is_optional = detail::optional_traits<member_type>::is_optional;
   static constexpr auto member = Member;
@@ -377,8 +370,6 @@ template <std::uint8_t... C>
     if (c[i] <= c[i - 1]) return false;
   return true;
 }
-template <auto M>
-using member_type_of = typename member_pointer_traits<decltype(M)>::member_type;
 }  // namespace detail
 
 /// A message's wire layout: its address, its fields in wire order, and the forms it comes in,
@@ -430,7 +421,7 @@ struct sentence_desc {
   template <auto M>
   [[nodiscard]] consteval auto talker_in() const noexcept {
     static_assert(any_talker, "talker_in: only an address starting with \"--\" has a talker");
-    static_assert(std::is_same_v<detail::member_type_of<M>, talker_id>,
+    static_assert(std::is_same_v<seawire::detail::member_type_t<M>, talker_id>,
                   "talker_in: the member must be a nmea::talker_id");
     return sentence_desc<Address, typename Forms::template with_talker<M>, Fields...>{fields};
   }
@@ -444,7 +435,7 @@ struct sentence_desc {
   /// default, and what decode leaves otherwise) writes the fields the values need.
   template <auto M>
   [[nodiscard]] consteval auto wire_fields_in() const noexcept {
-    static_assert(std::is_same_v<detail::member_type_of<M>, std::uint8_t>,
+    static_assert(std::is_same_v<seawire::detail::member_type_t<M>, std::uint8_t>,
                   "wire_fields_in: the member must be a std::uint8_t");
     return sentence_desc<Address, typename Forms::template with_wire_fields<M>, Fields...>{fields};
   }
@@ -456,7 +447,7 @@ struct sentence_desc {
   /// default, and a message built in code) writes every unit letter.
   template <auto M>
   [[nodiscard]] consteval auto blank_units_in() const noexcept {
-    static_assert(std::is_same_v<detail::member_type_of<M>, std::uint32_t>,
+    static_assert(std::is_same_v<seawire::detail::member_type_t<M>, std::uint32_t>,
                   "blank_units_in: the member must be a std::uint32_t");
     return sentence_desc<Address, typename Forms::template with_blank_units<M>, Fields...>{fields};
   }
@@ -523,7 +514,7 @@ template <message_like T, auto M>
 /// rounded to by default: the precision its field declares. `precision_of<&pydev::speed_mps>()`.
 template <auto M>
 [[nodiscard]] consteval int precision_of() noexcept {
-  using T = typename detail::member_pointer_traits<decltype(M)>::class_type;
+  using T = seawire::detail::member_class_t<M>;
   constexpr std::size_t i = detail::field_index_of<T, M>();
   static_assert(i < T::nmea.fields.size, "precision_of: the member is not a field");
   constexpr int p = field_at<i>(T::nmea.fields).opts.precision;
@@ -631,7 +622,7 @@ template <message_like T>
 /// position and its hemisphere letter, a value and its unit letter) names each one after the
 /// first by `part` ("hemisphere letter", "unit letter"; empty for the first), so that a field
 /// is called what it is: "latitude's hemisphere letter". `explain`, when the field's codec has
-/// one, tells from a refused text what is wrong with it (see describe()).
+/// one, tells from a refused text what is wrong with it (see error_text()).
 struct field_about {
   std::string_view name;
   field_options opts{};

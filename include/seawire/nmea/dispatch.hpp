@@ -123,12 +123,7 @@ struct message_set {
   [[nodiscard]] static constexpr result<variant> decode(std::string_view line,
                                                         const parse_policy& p = {}) noexcept {
     const result<sentence_view> s = parse(line, p);
-    if (!s) {
-      result<variant> out;
-      out.ec = s.ec;
-      out.column = s.column;
-      return out;
-    }
+    if (!s) return detail::parse_failure<variant>(s);
     return decode(s.value, p);
   }
 

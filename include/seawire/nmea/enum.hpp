@@ -5,10 +5,12 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string_view>
 #include <type_traits>
 #include <utility>
 
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/codec.hpp"
@@ -217,8 +219,7 @@ requires char_enum_like<E> || word_enum_like<E>
     return {};
   } else {
     constexpr auto words = enum_words(E{});
-    const auto i = static_cast<std::size_t>(e);
-    return i < words.size() ? words[i] : std::string_view{};
+    return seawire::detail::name_at(words, static_cast<std::size_t>(e));
   }
 }
 
@@ -258,11 +259,9 @@ struct codec<E> {
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {
     const std::string_view s = r.take().text;
     constexpr auto words = enum_words(E{});
-    for (std::size_t i = 0; i < words.size(); ++i) {
-      if (words[i] == s) {
-        v = static_cast<E>(i);
-        return errc::ok;
-      }
+    if (const std::optional<std::size_t> i = seawire::detail::index_of_name(words, s)) {
+      v = static_cast<E>(*i);
+      return errc::ok;
     }
     if constexpr (has_enum_aliases<E>) {
       for (const auto& [word, value] : enum_aliases(E{})) {

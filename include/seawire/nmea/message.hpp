@@ -336,12 +336,7 @@ template <message_like T>
 [[nodiscard]] constexpr result<T> decode(std::string_view line,
                                          const parse_policy& policy = {}) noexcept {
   const result<sentence_view> s = parse(line, policy);
-  if (!s) {
-    result<T> out;
-    out.ec = s.ec;
-    out.column = s.column;
-    return out;
-  }
+  if (!s) return detail::parse_failure<T>(s);
   return decode<T>(s.value, policy);
 }
 

@@ -32,7 +32,7 @@ struct axis {
 using lat_axis = axis<'N', 'S', 90, 2, errc::bad_latitude>;
 using lon_axis = axis<'E', 'W', 180, 3, errc::bad_longitude>;
 
-/// Why a position's hemisphere letter was refused, for describe().
+/// Why a position's hemisphere letter was refused, for error_text().
 template <class Axis>
 [[nodiscard]] constexpr std::string_view explain_hemisphere(std::string_view text) noexcept {
   if (text.empty()) return "hemisphere letter is missing (blank)";

@@ -329,6 +329,17 @@ inline bool scan_clean_simd(const char* p, std::size_t begin, std::size_t end,
   return r;
 }
 
+namespace detail {
+/// A line parse() refused, as the result of what it was parsed for: the same error and column.
+template <class T>
+[[nodiscard]] constexpr result<T> parse_failure(const result<sentence_view>& s) noexcept {
+  result<T> out;
+  out.ec = s.ec;
+  out.column = s.column;
+  return out;
+}
+}  // namespace detail
+
 /// What stands right after a field's text, for the readers that can use it: nothing known, or
 /// the ',' before the next field (a byte that may be read and is no digit).
 enum class field_end : bool { unknown, comma };

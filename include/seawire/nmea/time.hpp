@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/calendar.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/codec.hpp"
@@ -117,14 +118,6 @@ struct date {
   }
   friend constexpr bool operator==(const date&, const date&) noexcept = default;
 };
-
-namespace detail {
-[[nodiscard]] constexpr unsigned days_in_month(unsigned month, unsigned year) noexcept {
-  constexpr unsigned days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-  return month == 2 && leap ? 29 : days[month - 1];
-}
-}  // namespace detail
 
 /// The system_clock time point of a UTC date and time of day (RMC's fields 9 and 1, RobotX's
 /// date and time), to the nanosecond. system_clock has no leap seconds: 23:59:60 is the next
@@ -259,7 +252,7 @@ struct codec<date> {
       return errc::out_of_range;
     if (v.month < 1 || v.month > 12) [[unlikely]]
       return errc::month_out_of_range;
-    if (v.day < 1 || v.day > detail::days_in_month(v.month, v.year)) [[unlikely]]
+    if (v.day < 1 || v.day > seawire::detail::days_in_month(v.month, v.year)) [[unlikely]]
       return errc::day_out_of_range;
     return errc::ok;
   }
@@ -306,11 +299,11 @@ struct codec<date> {
 /// A date from ISO "YYYY-MM-DD" or the wire's "ddmmyy"; years 1980..2079, as the wire's.
 [[nodiscard]] constexpr result<date> parse_date_text(std::string_view s) noexcept {
   result<date> r;
+  seawire::detail::civil_date iso;
   unsigned y = 0, m = 0, d = 0;
-  if (s.size() == 10 && s[4] == '-' && s[7] == '-' && detail::parse_fixed_digits(s, 0, 4, y) &&
-      detail::parse_fixed_digits(s, 5, 2, m) && detail::parse_fixed_digits(s, 8, 2, d)) {
-    r.value = {static_cast<std::uint16_t>(y), static_cast<std::uint8_t>(m),
-               static_cast<std::uint8_t>(d)};
+  if (s.size() == 10 && seawire::detail::parse_iso_date(s, iso)) {
+    r.value = {static_cast<std::uint16_t>(iso.year), static_cast<std::uint8_t>(iso.month),
+               static_cast<std::uint8_t>(iso.day)};
   } else if (s.size() == 6 && detail::parse_fixed_digits(s, 0, 2, d) &&
              detail::parse_fixed_digits(s, 2, 2, m) && detail::parse_fixed_digits(s, 4, 2, y)) {
     r.value = {static_cast<std::uint16_t>(y < 80 ? 2000 + y : 1900 + y),

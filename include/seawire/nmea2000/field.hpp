@@ -45,6 +45,8 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/bit_layout.hpp"
+#include "seawire/detail/enum_names.hpp"
+#include "seawire/detail/member.hpp"
 #include "seawire/detail/rounding.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/decimal.hpp"
@@ -270,13 +272,13 @@ inline constexpr auto names_of = lookup_names(E{});
 
 template <named_enum E>
 [[nodiscard]] constexpr std::string_view enum_name(std::uint64_t v) noexcept {
-  return v < names_of<E>.size() ? names_of<E>[v] : std::string_view{};
+  return seawire::detail::name_at(names_of<E>, v);
 }
 template <named_enum E>
 [[nodiscard]] constexpr std::optional<std::uint64_t> enum_value(std::string_view name) noexcept {
-  for (std::size_t i = 0; i < names_of<E>.size(); ++i)
-    if (!names_of<E>[i].empty() && names_of<E>[i] == name) return i;
-  return std::nullopt;
+  const std::optional<std::size_t> i = seawire::detail::index_of_name(names_of<E>, name);
+  if (!i) return std::nullopt;
+  return *i;
 }
 }  // namespace detail
 
@@ -400,23 +402,23 @@ class flags {
 // date and time of day
 
 /// A date as days since 1970-01-01 (16 bits: up to 2149-06-03).
-class date {
+class day_count {
  public:
   static constexpr unsigned bits = 16;
   static constexpr bool is_signed = false;
   using number_type = number<16, false>;
   static constexpr std::int64_t top_raw = number_type::top_raw;
 
-  constexpr date() noexcept = default;
-  [[nodiscard]] static constexpr date from_raw(std::int64_t raw) noexcept {
-    date d;
+  constexpr day_count() noexcept = default;
+  [[nodiscard]] static constexpr day_count from_raw(std::int64_t raw) noexcept {
+    day_count d;
     d.n_ = number_type::from_raw(raw);
     return d;
   }
   /// out_of_range before 1970 or after 2149-06-03.
-  [[nodiscard]] static constexpr result<date> from(std::chrono::sys_days day) noexcept {
+  [[nodiscard]] static constexpr result<day_count> from(std::chrono::sys_days day) noexcept {
     const auto r = number_type::from(day.time_since_epoch().count());
-    date d;
+    day_count d;
     d.n_ = r.value;
     return {d, r.ec};
   }
@@ -428,14 +430,14 @@ class date {
   [[nodiscard]] constexpr bool fits() const noexcept { return n_.fits(); }
   [[nodiscard]] constexpr field_state state() const noexcept { return n_.state(); }
   [[nodiscard]] constexpr bool has_value() const noexcept { return n_.has_value(); }
-  [[nodiscard]] constexpr bool operator==(const date&) const noexcept = default;
+  [[nodiscard]] constexpr bool operator==(const day_count&) const noexcept = default;
 
  private:
   number_type n_;
 };
 
 /// A time of day in units of 0.1 ms since midnight (32 bits; up to 86 401 s, a leap second).
-class time_of_day {
+class time_since_midnight {
  public:
   static constexpr unsigned bits = 32;
   static constexpr bool is_signed = false;
@@ -444,18 +446,18 @@ class time_of_day {
   static constexpr std::int64_t top_raw = number_type::top_raw;
   static constexpr std::int64_t max_ticks = 864'010'000;  // 24 h and one leap second
 
-  constexpr time_of_day() noexcept = default;
-  [[nodiscard]] static constexpr time_of_day from_raw(std::int64_t raw) noexcept {
-    time_of_day t;
+  constexpr time_since_midnight() noexcept = default;
+  [[nodiscard]] static constexpr time_since_midnight from_raw(std::int64_t raw) noexcept {
+    time_since_midnight t;
     t.n_ = number_type::from_raw(raw);
     return t;
   }
   /// The time `since_midnight`, rounded to 0.1 ms; out_of_range when negative or past 86 401 s.
   template <class Rep, class Period>
-  [[nodiscard]] static constexpr result<time_of_day> from(
+  [[nodiscard]] static constexpr result<time_since_midnight> from(
       std::chrono::duration<Rep, Period> since_midnight) noexcept {
     const auto t = std::chrono::round<ticks>(since_midnight);
-    if (t.count() < 0 || t.count() > max_ticks) return {time_of_day{}, errc::out_of_range};
+    if (t.count() < 0 || t.count() > max_ticks) return {time_since_midnight{}, errc::out_of_range};
     return {from_raw(t.count()), errc::ok};
   }
   /// Since midnight; nullopt for a sentinel. A sender's value past 86 401 s is kept as it is.
@@ -467,11 +469,15 @@ class time_of_day {
   [[nodiscard]] constexpr bool fits() const noexcept { return n_.fits(); }
   [[nodiscard]] constexpr field_state state() const noexcept { return n_.state(); }
   [[nodiscard]] constexpr bool has_value() const noexcept { return n_.has_value(); }
-  [[nodiscard]] constexpr bool operator==(const time_of_day&) const noexcept = default;
+  [[nodiscard]] constexpr bool operator==(const time_since_midnight&) const noexcept = default;
 
  private:
   number_type n_;
 };
+
+/// The former names of day_count and time_since_midnight, kept for one release.
+using date [[deprecated("use nmea2000::day_count")]] = day_count;
+using time_of_day [[deprecated("use nmea2000::time_since_midnight")]] = time_since_midnight;
 
 // ---------------------------------------------------------------------------------------------
 // descriptions
@@ -487,23 +493,13 @@ concept field_value = requires(const T& t, std::int64_t raw) {
   { t.state() } -> std::same_as<field_state>;
 };
 
-namespace detail {
-template <class M>
-struct member_traits;
-template <class C, class T>
-struct member_traits<T C::*> {
-  using owner = C;
-  using value_type = T;
-};
-}  // namespace detail
-
 /// One row of a PGN table: the member, its name (snake_case with the unit last, as JSON, CSV and
 /// fmt show it) and the standard's name for the field.
 template <auto Member>
 struct field_entry {
-  using value_type = typename detail::member_traits<decltype(Member)>::value_type;
+  using value_type = seawire::detail::member_type_t<Member>;
   static_assert(field_value<value_type>,
-                "a PGN member must be a number, lookup, flags, date or time_of_day");
+                "a PGN member must be a number, lookup, flags, day_count or time_since_midnight");
   static constexpr auto member = Member;
   static constexpr unsigned bits = value_type::bits;
   static constexpr bool is_reserved = false;

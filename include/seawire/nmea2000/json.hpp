@@ -37,6 +37,7 @@
 #include <type_traits>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/calendar.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/json.hpp"
@@ -177,7 +178,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
         s.put(v.name());
         detail::quote<Style>(s);
       }
-    } else if constexpr (std::is_same_v<T, date>) {
+    } else if constexpr (std::is_same_v<T, day_count>) {
       const std::chrono::year_month_day ymd(*v.value());
       nmea::detail::json_joined<Style == nmea::json_style::json>(
           s,
@@ -185,7 +186,7 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
             {static_cast<unsigned>(ymd.month()), 2},
             {static_cast<unsigned>(ymd.day()), 2}}},
           '-');
-    } else if constexpr (std::is_same_v<T, time_of_day>) {
+    } else if constexpr (std::is_same_v<T, time_since_midnight>) {
       const auto ticks = static_cast<std::uint64_t>(v.raw());  // 0.1 ms
       nmea::detail::json_joined<Style == nmea::json_style::json>(
           s, {{{ticks / 36'000'000, 2}, {ticks / 600'000 % 60, 2}, {ticks / 10'000 % 60, 2}}}, ':',
@@ -311,17 +312,10 @@ template <class T>
 
 [[nodiscard]] constexpr bool parse_date_text(std::string_view t,
                                              std::chrono::sys_days& out) noexcept {
-  if (t.size() != 10 || t[4] != '-' || t[7] != '-') return false;
-  const int y1 = two_digits(t, 0);
-  const int y2 = two_digits(t, 2);
-  const int m = two_digits(t, 5);
-  const int d = two_digits(t, 8);
-  if (y1 < 0 || y2 < 0 || m < 1 || d < 1) return false;
-  const std::chrono::year_month_day ymd{std::chrono::year{y1 * 100 + y2},
-                                        std::chrono::month{static_cast<unsigned>(m)},
-                                        std::chrono::day{static_cast<unsigned>(d)}};
-  if (!ymd.ok()) return false;
-  out = std::chrono::sys_days(ymd);
+  seawire::detail::civil_date c;
+  if (t.size() != 10 || !seawire::detail::parse_iso_date(t, c) || !seawire::detail::valid_date(c))
+    return false;
+  out = std::chrono::sys_days(std::chrono::days(seawire::detail::days_from_civil(c)));
   return true;
 }
 
@@ -351,7 +345,7 @@ template <class T>
     for (; digits < 4; ++digits) frac *= 10;
   }
   ticks = ((h * 60 + m) * 60 + s) * 10'000 + frac;
-  return ticks > time_of_day::number_type::max_valid_raw ? errc::out_of_range : errc::ok;
+  return ticks > time_since_midnight::number_type::max_valid_raw ? errc::out_of_range : errc::ok;
 }
 
 }  // namespace detail
@@ -418,14 +412,14 @@ template <field_value T, class Lookup>
       const auto r = T::from_name(v.text);
       if (r) out = r.value;
       return r.ec;
-    } else if constexpr (std::is_same_v<T, date>) {
+    } else if constexpr (std::is_same_v<T, day_count>) {
       std::chrono::sys_days day{};
       if (v.kind != json_kind::string || !detail::parse_date_text(v.text, day))
         return errc::bad_date;
-      const auto r = date::from(day);
+      const auto r = day_count::from(day);
       if (r) out = r.value;
       return r.ec;
-    } else if constexpr (std::is_same_v<T, time_of_day>) {
+    } else if constexpr (std::is_same_v<T, time_since_midnight>) {
       if (v.kind != json_kind::string) return errc::bad_time;
       std::int64_t ticks = 0;
       const errc e = detail::parse_time_of_day(v.text, ticks);

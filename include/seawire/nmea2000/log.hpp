@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/calendar.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/text.hpp"
 #include "seawire/nmea2000/can_id.hpp"
@@ -290,17 +291,10 @@ class log_cursor {
 /// canboat's timestamps: YYYY-MM-DD[T or -]hh:mm:ss[.f...][Z | +hh:mm | -hh:mm | +hhmm].
 [[nodiscard]] constexpr std::optional<std::int64_t> parse_canboat_time(
     std::string_view t) noexcept {
-  if (t.size() < 19 || t[4] != '-' || t[7] != '-' || (t[10] != 'T' && t[10] != '-' && t[10] != ' '))
+  seawire::detail::civil_date ymd;
+  if (t.size() < 19 || (t[10] != 'T' && t[10] != '-' && t[10] != ' ') ||
+      !seawire::detail::parse_iso_date(t, ymd) || !seawire::detail::valid_date(ymd))
     return std::nullopt;
-  const int y1 = two_digits(t, 0);
-  const int y2 = two_digits(t, 2);
-  const int mo = two_digits(t, 5);
-  const int d = two_digits(t, 8);
-  if (y1 < 0 || y2 < 0 || mo < 1 || mo > 12 || d < 1) return std::nullopt;
-  const std::chrono::year_month_day ymd{std::chrono::year{y1 * 100 + y2},
-                                        std::chrono::month{static_cast<unsigned>(mo)},
-                                        std::chrono::day{static_cast<unsigned>(d)}};
-  if (!ymd.ok()) return std::nullopt;
   std::int64_t clock = 0;
   const std::size_t used = parse_clock(t.substr(11), clock);
   if (used == 0) return std::nullopt;
@@ -320,7 +314,7 @@ class log_cursor {
     }
     if (i != t.size()) return std::nullopt;
   }
-  const std::int64_t days = std::chrono::sys_days(ymd).time_since_epoch().count();
+  const std::int64_t days = seawire::detail::days_from_civil(ymd);
   const std::int64_t us = days * 86'400'000'000 + clock - offset_us;
   // Unix time from 1970 to the end of year 9999: what the writers can write back.
   if (us < 0 || us >= 253'402'300'800'000'000) return std::nullopt;

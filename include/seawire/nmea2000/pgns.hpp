@@ -232,8 +232,8 @@ struct speed_water_referenced {
 /// PGN 128275 Distance Log: 14 bytes, fast packet, priority 6, 1 Hz. Date and time are of the
 /// measurement (UTC); most logs send them as not available and fill only the two distances.
 struct distance_log {
-  nmea2000::date date;
-  nmea2000::time_of_day time;
+  nmea2000::day_count date;
+  nmea2000::time_since_midnight time;
   unsigned_number<32> log_m;       ///< total cumulative distance
   unsigned_number<32> trip_log_m;  ///< distance since last reset
 

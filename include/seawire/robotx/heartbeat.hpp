@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
@@ -93,21 +94,12 @@ class scheduler {
   [[nodiscard]] constexpr const std::optional<rxhrb>& status() const noexcept { return heartbeat_; }
 
   // status(), submit() and poll() are templates of nothing, like the role decoders (nmea::lazy).
-  template <int N = 0>
-  [[nodiscard]] constexpr submit_result submit(const rxgat& m, instant now) noexcept {
-    return submit_one<nmea::lazy<rxgat, N>>(m, now);
-  }
-  template <int N = 0>
-  [[nodiscard]] constexpr submit_result submit(const rxcod& m, instant now) noexcept {
-    return submit_one<nmea::lazy<rxcod, N>>(m, now);
-  }
-  template <int N = 0>
-  [[nodiscard]] constexpr submit_result submit(const rxdok& m, instant now) noexcept {
-    return submit_one<nmea::lazy<rxdok, N>>(m, now);
-  }
-  template <int N = 0>
-  [[nodiscard]] constexpr submit_result submit(const rxdel& m, instant now) noexcept {
-    return submit_one<nmea::lazy<rxdel, N>>(m, now);
+  /// One task report (rxgat, rxcod, rxdok or rxdel; the heartbeat is status()'s).
+  template <int N = 0, class M>
+  requires std::is_same_v<M, rxgat> || std::is_same_v<M, rxcod> || std::is_same_v<M, rxdok> ||
+      std::is_same_v<M, rxdel>
+  [[nodiscard]] constexpr submit_result submit(const M& m, instant now) noexcept {
+    return submit_one<nmea::lazy<M, N>>(m, now);
   }
 
   /// The next sentence to send at `now`, or nullopt when nothing is due. Call until nullopt.

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <utility>
 
+#include "seawire/detail/fixed_string.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -198,39 +199,31 @@ struct rxcod {
   friend constexpr bool operator==(const rxcod&, const rxcod&) noexcept = default;
 };
 
-/// Identify Symbols and Dock: colour and shape of the bay the AMS will dock in. Echoed.
+/// Identify Symbols and Dock (RXDOK) and Detect and Deliver (RXDEL): colour and shape of the
+/// bay the AMS will dock in, or of the face it will deliver into. Echoed.
 ///   $RXDOK,101218,161229,AUVSI,R,TRIAN*28
-struct rxdok {
+template <seawire::detail::fixed_string Address, class Shape>
+struct shape_report {
   nmea::date date;                   // 1 [HST date] ddmmyy
   nmea::time_of_day time;            // 2 [HST time] hhmmss
   nmea::text<5> team_id;             // 3 [Team ID]
   std::optional<color> shape_color;  // 4 [Shape Color] R/B/G
-  std::optional<dock_shape> shape;   // 5 [Shape] CRUC/TRIAN/CIRCL (CRUCI accepted)
+  std::optional<Shape> shape;        // 5 [Shape] dock_shape or deliver_shape words
 
-  static constexpr auto nmea = nmea::sentence<"RXDOK">(
-      nmea::field<&rxdok::date>("date"), nmea::field<&rxdok::time>("time", nmea::max_places(0)),
-      nmea::field<&rxdok::team_id>("team_id", nmea::exact_length(5)),
-      nmea::field<&rxdok::shape_color>("shape_color"), nmea::field<&rxdok::shape>("shape"));
+  static constexpr auto nmea =
+      nmea::sentence<Address>(nmea::field<&shape_report::date>("date"),
+                              nmea::field<&shape_report::time>("time", nmea::max_places(0)),
+                              nmea::field<&shape_report::team_id>("team_id", nmea::exact_length(5)),
+                              nmea::field<&shape_report::shape_color>("shape_color"),
+                              nmea::field<&shape_report::shape>("shape"));
 
-  friend constexpr bool operator==(const rxdok&, const rxdok&) noexcept = default;
+  friend constexpr bool operator==(const shape_report&, const shape_report&) noexcept = default;
 };
 
-/// Detect and Deliver: colour and shape of the face the AMS will deliver into. Echoed.
-///   $RXDEL,101218,161229,AUVSI,R,CIRCL*32
-struct rxdel {
-  nmea::date date;                     // 1 [HST date] ddmmyy
-  nmea::time_of_day time;              // 2 [HST time] hhmmss
-  nmea::text<5> team_id;               // 3 [Team ID]
-  std::optional<color> shape_color;    // 4 [Shape Color] R/B/G
-  std::optional<deliver_shape> shape;  // 5 [Shape] CRUCI/TRIAN/CIRCL (CRUC accepted)
-
-  static constexpr auto nmea = nmea::sentence<"RXDEL">(
-      nmea::field<&rxdel::date>("date"), nmea::field<&rxdel::time>("time", nmea::max_places(0)),
-      nmea::field<&rxdel::team_id>("team_id", nmea::exact_length(5)),
-      nmea::field<&rxdel::shape_color>("shape_color"), nmea::field<&rxdel::shape>("shape"));
-
-  friend constexpr bool operator==(const rxdel&, const rxdel&) noexcept = default;
-};
+/// RXDOK: the shape is CRUC/TRIAN/CIRCL (CRUCI accepted).
+using rxdok = shape_report<"RXDOK", dock_shape>;
+/// RXDEL: the shape is CRUCI/TRIAN/CIRCL (CRUC accepted).
+using rxdel = shape_report<"RXDEL", deliver_shape>;
 
 // ---------------------------------------------------------------------------------------------
 // the set
@@ -299,12 +292,7 @@ template <class F>
 constexpr result<bool> visit_report(std::string_view line, F&& on_report,
                                     const nmea::parse_policy& policy = judge_policy) {
   const result<nmea::sentence_view> s = nmea::parse(line, policy);
-  if (!s) {
-    result<bool> out;
-    out.ec = s.ec;
-    out.column = s.column;
-    return out;
-  }
+  if (!s) return nmea::detail::parse_failure<bool>(s);
   return reports::visit(s.value, policy, on_report);
 }
 

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/calendar.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
@@ -216,7 +217,7 @@ template <class Valid>
 
 [[nodiscard]] constexpr bool unpadded_date(std::string_view s) noexcept {
   return unpadded_reading(s, [](unsigned d, unsigned m, unsigned y) {
-    return m >= 1 && m <= 12 && d >= 1 && d <= nmea::detail::days_in_month(m, 2000 + y);
+    return seawire::detail::valid_date({2000 + y, m, d});
   });
 }
 [[nodiscard]] constexpr bool unpadded_time(std::string_view s) noexcept {

@@ -18,6 +18,8 @@
 #include <utility>
 
 #include "seawire/bluefin/navigation.hpp"
+#include "seawire/detail/enum_names.hpp"
+#include "seawire/detail/fixed_string.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -39,18 +41,22 @@ struct bfsht {
   static constexpr auto nmea = nmea::sentence<"BFSHT">(nmea::field<&bfsht::timestamp>("timestamp"));
 };
 
-/// BFVER: the SPI version the vehicle speaks; sent at the start of communications.
+/// BFVER and BPVER: the SPI version the sender speaks.
 ///   $BFVER,081025.987,1.0*hh
-struct bfver {
+template <seawire::detail::fixed_string Address>
+struct version_report {
   nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
   nmea::text<32> version;       // 2 [v-v] Version number
 
-  friend constexpr bool operator==(const bfver&, const bfver&) noexcept = default;
+  friend constexpr bool operator==(const version_report&, const version_report&) noexcept = default;
 
-  static constexpr auto nmea =
-      nmea::sentence<"BFVER">(nmea::field<&bfver::timestamp>("timestamp"),
-                              nmea::field<&bfver::version>("version", nmea::length_between(1, 32)));
+  static constexpr auto nmea = nmea::sentence<Address>(
+      nmea::field<&version_report::timestamp>("timestamp"),
+      nmea::field<&version_report::version>("version", nmea::length_between(1, 32)));
 };
+
+/// BFVER: the SPI version the vehicle speaks; sent at the start of communications.
+using bfver = version_report<"BFVER">;
 
 // ---------------------------------------------------------------------------------------------
 // from the vehicle: status (SPI 6), sent only after BPLOG asks for them
@@ -107,21 +113,15 @@ struct bfmis {
   /// The status as one of the states the spec names, or unknown.
   [[nodiscard]] constexpr mission_state state() const noexcept {
     if (running()) return mission_state::running;
-    constexpr std::array<std::pair<std::string_view, mission_state>, 10> names{{
-        {"Offline", mission_state::offline},
-        {"Waiting", mission_state::waiting},
-        {"Invalid Dive File", mission_state::invalid_dive_file},
-        {"Invalid Wrapup File", mission_state::invalid_wrapup_file},
-        {"Ready", mission_state::ready},
-        {"WrappingUp", mission_state::wrapping_up},
-        {"Aborting", mission_state::aborting},
-        {"Completed", mission_state::completed},
-        {"Aborted", mission_state::aborted},
-        {"Stopped", mission_state::stopped},
-    }};
-    for (const auto& [name, state] : names)
-      if (status.view() == name) return state;
-    return mission_state::unknown;
+    // Indexed by mission_state; unknown names no text, running is the prefix above.
+    constexpr std::array<std::string_view, 12> names{
+        "",        "Offline", "Waiting",    "Invalid Dive File", "Invalid Wrapup File",
+        "Ready",   "",        "WrappingUp", "Aborting",          "Completed",
+        "Aborted", "Stopped"};
+    static_assert(static_cast<std::size_t>(mission_state::stopped) + 1 == names.size() &&
+                  names[static_cast<std::size_t>(mission_state::wrapping_up)] == "WrappingUp");
+    const std::optional<std::size_t> i = seawire::detail::index_of_name(names, status.view());
+    return i ? static_cast<mission_state>(*i) : mission_state::unknown;
   }
 
   friend constexpr bool operator==(const bfmis&, const bfmis&) noexcept = default;
@@ -324,17 +324,7 @@ struct bpabt {
 };
 
 /// BPVER: the SPI version the payload speaks; the payload must send it first.
-///   $BPVER,081025.987,1.0*hh
-struct bpver {
-  nmea::time_of_day timestamp;  // 1 [hhmmss.ss] Timestamp
-  nmea::text<32> version;       // 2 [v-v] Version number
-
-  friend constexpr bool operator==(const bpver&, const bpver&) noexcept = default;
-
-  static constexpr auto nmea =
-      nmea::sentence<"BPVER">(nmea::field<&bpver::timestamp>("timestamp"),
-                              nmea::field<&bpver::version>("version", nmea::length_between(1, 32)));
-};
+using bpver = version_report<"BPVER">;
 
 // ---------------------------------------------------------------------------------------------
 // roles

@@ -271,20 +271,13 @@ class payload_session {
     return true;
   }
 
-  /// The UTC time of day at `now`, for the timestamps the session writes.
-  constexpr void set_utc(time_point now, const nmea::time_of_day& utc) noexcept {
-    advance(now);
-    utc_.set(now, utc);
-  }
-  /// The UTC time at `now` (a std::chrono::system_clock time), for the timestamps.
-  constexpr void set_utc(time_point now, utc_time utc) noexcept {
-    advance(now);
-    utc_.set(now, utc);
-  }
-  /// Refused at compile time: a steady (or other non-system_clock) time is not UTC.
+  /// The UTC time at `now`, for the timestamps the session writes: a time of day or a
+  /// std::chrono::system_clock time, as utc_clock::set() takes (a steady time does not compile).
   template <class T>
-  requires detail::not_utc_time_point<T>
-  constexpr void set_utc(time_point now, T utc) noexcept { utc_.set(now, utc); }
+  constexpr void set_utc(time_point now, const T& utc) noexcept {
+    advance(now);
+    utc_.set(now, utc);
+  }
 
   // -- what the vehicle says ------------------------------------------------------------------
 

@@ -294,19 +294,13 @@ class vehicle_session {
   [[nodiscard]] constexpr const std::optional<bfmis>& mission() const noexcept { return mission_; }
   /// The vehicle's UTC clock, for the timestamps of what the caller publishes.
   [[nodiscard]] constexpr const utc_clock& utc() const noexcept { return utc_; }
-  constexpr void set_utc(time_point now, const nmea::time_of_day& t) noexcept {
-    advance(now);
-    utc_.set(now, t);
-  }
-  /// The UTC time at `now` (a std::chrono::system_clock time).
-  constexpr void set_utc(time_point now, utc_time utc) noexcept {
+  /// The UTC time at `now`, for the timestamps the session writes: a time of day or a
+  /// std::chrono::system_clock time, as utc_clock::set() takes (a steady time does not compile).
+  template <class T>
+  constexpr void set_utc(time_point now, const T& utc) noexcept {
     advance(now);
     utc_.set(now, utc);
   }
-  /// Refused at compile time: a steady (or other non-system_clock) time is not UTC.
-  template <class T>
-  requires detail::not_utc_time_point<T>
-  constexpr void set_utc(time_point now, T utc) noexcept { utc_.set(now, utc); }
   [[nodiscard]] constexpr std::uint64_t events_lost() const noexcept { return events_.lost(); }
   [[nodiscard]] constexpr std::uint64_t outbox_overflows() const noexcept { return overflows_; }
 

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
-// describe(): errors told for people, with the sentence, the field, what it held, why, and
+// error_text(): errors told for people, with the sentence, the field, what it held, why, and
 // what the field allows.
 
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <string>
 
+#include "seawire/anello/frame_json.hpp"
 #include "seawire/seawire.hpp"
 #include "support.hpp"
 
@@ -17,13 +18,13 @@ std::string told(std::string_view line, const nmea::parse_policy& p = {}) {
   char buf[256];
   const auto r = Set::decode(line, p);
   REQUIRE_FALSE(r);
-  const std::string_view v = nmea::describe<Set>(buf, r, line, p);
+  const std::string_view v = nmea::error_text<Set>(buf, r, line, p);
   CHECK(std::strlen(buf) == v.size());  // a C string too
   return std::string(v);
 }
 }  // namespace
 
-TEST_CASE("describe: field, text, reason and the range the field allows") {
+TEST_CASE("error_text: field, text, reason and the range the field allows") {
   using kf = kingfisher::to_vehicle;
   CHECK(told<kf>("$PYDIR,150,0\r\n") ==
         R"(PYDIR field 1 (thrust_left) "150": value outside the range the spec allows: -100..100)");
@@ -40,7 +41,7 @@ TEST_CASE("describe: field, text, reason and the range the field allows") {
         R"(BPLOG field 1 (code) "NV": wrong length: exactly 3 characters)");
 }
 
-TEST_CASE("describe: errors of the sentence as a whole say where") {
+TEST_CASE("error_text: errors of the sentence as a whole say where") {
   using set = kingfisher::to_vehicle;
   CHECK(told<set>("$PYDIR,45,55*58\r\n") ==
         "checksum does not match the sentence (sent 58, computed 57) at column 13");
@@ -60,19 +61,19 @@ TEST_CASE("describe: errors of the sentence as a whole say where") {
       "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,400,311214,,,A";
   const auto r = nmea::decode<standard::rmc>(line);
   REQUIRE_FALSE(r);
-  CHECK(nmea::describe<standard::rmc>(buf, r, line) ==
+  CHECK(nmea::error_text<standard::rmc>(buf, r, line) ==
         R"(GPRMC field 8 (course_true) "400": value outside the range the spec allows: 0..360)");
 }
 
-TEST_CASE("describe: a small buffer cuts the text and still ends it") {
+TEST_CASE("error_text: a small buffer cuts the text and still ends it") {
   char small[12];
   const std::string_view line = "$PYDIR,150,0\r\n";
   const auto r = kingfisher::to_vehicle::decode(line);
-  const std::string_view v = nmea::describe<kingfisher::to_vehicle>(small, r, line);
+  const std::string_view v = nmea::error_text<kingfisher::to_vehicle>(small, r, line);
   CHECK(v == "PYDIR field");
   CHECK(small[11] == '\0');
   char none[1];
-  CHECK(nmea::describe<kingfisher::to_vehicle>(none, r, line).empty());
+  CHECK(nmea::error_text<kingfisher::to_vehicle>(none, r, line).empty());
   CHECK(none[0] == '\0');
 }
 
@@ -84,7 +85,7 @@ std::string told_sealed(std::string_view body, const nmea::parse_policy& p = {})
 }
 }  // namespace
 
-TEST_CASE("describe: a declaration's later wire fields are named for what they are") {
+TEST_CASE("error_text: a declaration's later wire fields are named for what they are") {
   using rx = robotx::reports;
   using kf = kingfisher::from_vehicle;
   // A blank hemisphere letter: which letter, and that it is blank.
@@ -117,7 +118,7 @@ TEST_CASE("describe: a declaration's later wire fields are named for what they a
   CHECK(nmea::field_name<standard::rmc>(4) == "latitude");
 }
 
-TEST_CASE("describe: what is wrong with a refused position's text") {
+TEST_CASE("error_text: what is wrong with a refused position's text") {
   using rx = robotx::reports;
   using kf = kingfisher::from_vehicle;
   // A sign where the letter carries it: decimal degrees and DDMM.m, either axis.
@@ -184,7 +185,7 @@ TEST_CASE("describe: what is wrong with a refused position's text") {
       R"(GPRMC field 10 (magnetic_variation) "-3.1": a sign is not allowed: the E/W letter carries it)");
 }
 
-TEST_CASE("describe: a checksum as it was sent") {
+TEST_CASE("error_text: a checksum as it was sent") {
   using set = kingfisher::to_vehicle;
   // Lower-case digits are echoed as sent.
   CHECK(told<set>("$PYDIR,45,55*5a\r\n") ==
@@ -202,7 +203,7 @@ TEST_CASE("describe: a checksum as it was sent") {
   CHECK_FALSE(nmea::written_in_decimal("", 0x52));
 }
 
-TEST_CASE("describe: a text's declared length gives one error on both sides") {
+TEST_CASE("error_text: a text's declared length gives one error on both sides") {
   using s = sandshark::to_vehicle;
   CHECK(told<s>("$BPLOG,ACKS,ON\r\n") ==
         R"(BPLOG field 1 (code) "ACKS": wrong length: exactly 3 characters)");
@@ -216,3 +217,30 @@ TEST_CASE("describe: a text's declared length gives one error on both sides") {
   CHECK(told_sealed<rx>("RXHRB,101218,161229,29.6,N,82.3,W,GATR,1,1") ==
         R"(RXHRB field 7 (team_id) "GATR": wrong length: exactly 5 characters)");
 }
+
+// The former names, kept for one release: the same functions and types under their old names.
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+TEST_CASE("error_text: the former names still give the same text and types") {
+  const std::string_view line = "$PYDIR,150,0\r\n";
+  const auto r = kingfisher::to_vehicle::decode(line);
+  char now[128];
+  char was[128];
+  CHECK(nmea::describe<kingfisher::to_vehicle>(was, r, line) ==
+        nmea::error_text<kingfisher::to_vehicle>(now, r, line));
+  const auto rmc = nmea::decode<standard::rmc>(
+      std::string_view("$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,400,311214,,,A"));
+  CHECK(nmea::describe<standard::rmc>(was, rmc, "$GPRMC") ==
+        nmea::error_text<standard::rmc>(now, rmc, "$GPRMC"));
+  anello::sensor_frame_raw f;
+  f.heading = 361;
+  const auto v = anello::validate(f);
+  CHECK(anello::describe(was, v, f) == anello::error_text(now, v, f));
+  STATIC_REQUIRE(std::is_same_v<nmea2000::date, nmea2000::day_count>);
+  STATIC_REQUIRE(std::is_same_v<nmea2000::time_of_day, nmea2000::time_since_midnight>);
+}
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
