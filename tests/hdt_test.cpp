@@ -8,6 +8,7 @@
 #include <string_view>
 #include <variant>
 
+#include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/registry.hpp"
 #include "seawire/standard/hdt.hpp"
@@ -96,4 +97,21 @@ TEST_CASE("HDT: in the registry, read by the standard sentences' policy", "[hdt]
   CHECK(std::get<hdt>(r.value).heading_true_deg == decimal::scaled(27407, 2));
   CHECK(registry::standard_sentences::knows("HEHDT"));
   CHECK(registry::receiving_policy("HEHDT").checksum == registry::standard_nmea.policy.checksum);
+}
+
+TEST_CASE("HDT: a CSV row of one blank heading is a quoted empty cell, not an empty line",
+          "[hdt][csv]") {
+  support::string_sink header;
+  nmea::write_csv_header<hdt>(header);
+  CHECK(header.s == "heading_true_deg\n");
+  const auto blank = nmea::decode<hdt>(std::string_view("$HEHDT,,T"));
+  REQUIRE(blank);
+  support::string_sink row;
+  nmea::write_csv(row, blank.value);
+  CHECK(row.s == "\"\"\n");
+  const auto some = nmea::decode<hdt>(std::string_view("$HEHDT,274.07,T"));
+  REQUIRE(some);
+  support::string_sink full;
+  nmea::write_csv(full, some.value);
+  CHECK(full.s == "274.07\n");
 }

@@ -16,6 +16,7 @@
 // too) are seawire::write_csv_columns and write_csv_cells, loops over the walk (walk.hpp); each
 // wire gives its cells' text (put_csv_value).
 
+#include <cstddef>
 #include <string_view>
 #include <type_traits>
 
@@ -87,14 +88,39 @@ constexpr void write_csv_columns(Sink& s, bool first = true) noexcept {
   s.put('\n');
 }
 
+namespace detail {
+/// A sink that passes text on and counts it.
+template <class Sink>
+struct counted_sink {
+  Sink& out;
+  std::size_t size = 0;
+  constexpr void put(char c) noexcept {
+    ++size;
+    out.put(c);
+  }
+  constexpr void put(std::string_view v) noexcept {
+    size += v.size();
+    out.put(v);
+  }
+};
+}  // namespace detail
+
 /// Every field of `msg` as a CSV cell, in wire order, then LF (`first` as write_csv_columns'). A
-/// cell's text is its wire's (put_csv_value, found with the field).
+/// cell's text is its wire's (put_csv_value, found with the field). A row that is one empty cell
+/// is written `""`: as an empty line, CSV readers would skip it (pandas) or read no cell (Python).
 template <nmea::json_sink Sink, walkable M>
 constexpr void write_csv_cells(Sink& s, const M& msg, bool first = true) noexcept {
+  const bool alone = first && field_count_of<M> == 1;
   visit_fields(msg, [&](const auto& f) {
     if (!first) s.put(',');
     first = false;
-    put_csv_value(s, f);
+    if (alone) {
+      detail::counted_sink<Sink> c{s};
+      put_csv_value(c, f);
+      if (c.size == 0) s.put("\"\"");
+    } else {
+      put_csv_value(s, f);
+    }
   });
   s.put('\n');
 }
