@@ -336,12 +336,7 @@ template <std::uint8_t... C>
 }  // namespace detail
 
 /// A message's wire layout: its address, its fields in wire order, and the forms it comes in,
-/// declared after the fields:
-///
-///   static constexpr auto nmea = nmea::sentence<"--VBW">(nmea::field<...>(...), ...)
-///                                    .talker_in<&vbw::talker>()
-///                                    .standard_forms<6, 10>()
-///                                    .wire_fields_in<&vbw::wire_fields>();
+/// declared after the fields (`sentence<"--VBW">(...).talker_in<&vbw::talker>()`).
 template <seawire::detail::fixed_string Address, class Forms, class... Fields>
 struct sentence_desc {
   static constexpr std::string_view address = Address.view();
@@ -379,9 +374,8 @@ struct sentence_desc {
     return sentence_desc<Address, typename Forms::template with_talker<M>, Fields...>{fields};
   }
 
-  /// Member M (a std::uint8_t) keeps a decoded sentence's field count when it is more than its
-  /// values need (a field that may be left out came blank); encode writes that many fields. 0:
-  /// the fields the values need.
+  /// Member M (a std::uint8_t) keeps a decoded sentence's field count when more than its values
+  /// need (a field that may be left out came blank); encode writes that many. 0: what they need.
   template <auto M>
   [[nodiscard]] consteval auto wire_fields_in() const noexcept {
     static_assert(std::is_same_v<seawire::detail::member_type_t<M>, std::uint8_t>,
@@ -408,8 +402,7 @@ struct sentence_desc {
         fields};
   }
 
-  /// The message's sender writes these number forms (number_forms): `.sender_writes<{.nan_as_blank
-  /// = true}>()`. Decode reads them for this message only.
+  /// Number forms the message's sender writes (number_forms), read for this message only.
   template <number_forms F>
   [[nodiscard]] consteval auto sender_writes() const noexcept {
     return sentence_desc<Address, typename Forms::template with_numbers<F>, Fields...>{fields};
@@ -499,8 +492,7 @@ template <message_like T>
     return 0;
   }
 }
-/// Whether T declares a field that only the longer form has, and one that may be left out at
-/// the end: a message that keeps its wire_fields may have one kind or the other, not both.
+/// Whether T has both a longer form's field and one absent at the end (wire_fields allows one).
 template <message_like T>
 [[nodiscard]] consteval bool has_both_optional_kinds() noexcept {
   bool longer = false;
@@ -566,8 +558,7 @@ struct field_about {
   bool found = false;
   std::string_view part;    ///< the wire field within the declaration, after its first
   unsigned part_index = 0;  ///< 0 for the declaration's first wire field
-  /// codec<V>::explain(part_index, error, text): why `text` was refused, or "" when the text
-  /// shows nothing more than the error says.
+  /// codec<V>::explain(part_index, error, text): why `text` was refused, or "" if no more to say.
   std::string_view (*explain)(unsigned, errc, std::string_view) noexcept = nullptr;
 };
 

@@ -141,8 +141,8 @@ struct padded {
   unsigned width = 0;
 };
 
-// Three numbers joined by `sep`, then a point and `fraction` when its width is not 0, quoted when
-// Quoted, written at once: a date ("2014-12-31") or a time ("16:49:59.980").
+// A date ("2014-12-31") or time ("16:49:59.980"), written at once: three numbers joined by `sep`,
+// then a point and `fraction` when its width is not 0, quoted when `Quoted`.
 template <bool Quoted, json_sink Sink>
 constexpr void json_joined(Sink& s, const std::array<padded, 3>& parts, char sep,
                            padded fraction = {}) noexcept {
@@ -311,8 +311,7 @@ struct array_sink {
   }
 };
 
-// The text Text::to(sink) writes, made once at compile time: counted, then written into an
-// array of that size.
+// The text Text::to(sink) writes, made once at compile time (counted, then written).
 template <class Text>
 inline constexpr auto static_text = [] {
   constexpr std::size_t size = [] {
@@ -381,8 +380,7 @@ SEAWIRE_ALWAYS_INLINE constexpr void write_json_fields(Sink& s, const M& msg) no
   visit_fields(msg, detail::json_field_writer<Sink>{s});
 }
 
-/// A message of any wire as one JSON object (no newline): head(s) (`{"type":...`), every field,
-/// '}'.
+/// A message of any wire as one JSON object (no newline): head(s) `{"type":...`, fields, '}'.
 template <nmea::json_sink Sink, walkable M, class Head>
 constexpr void write_json_object(Sink& s, const M& msg, Head&& head) noexcept {
   head(s);
@@ -390,8 +388,7 @@ constexpr void write_json_object(Sink& s, const M& msg, Head&& head) noexcept {
   s.put('}');
 }
 
-/// `{name=value, ...}` with values as people read them (json_style::plain): fmt's "{}" of a
-/// message of any wire, after its type.
+/// `{name=value, ...}` with plain values: fmt's "{}" of a message of any wire, after its type.
 template <nmea::json_sink Sink, walkable M>
 constexpr void write_plain_fields(Sink& s, const M& msg) noexcept {
   s.put('{');
@@ -432,9 +429,8 @@ constexpr void write_json(Sink& s, const T& msg) noexcept {
   });
 }
 
-/// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}. A '!'
-/// sentence (!AIVDM) says so with "start": {"type":"AIVDM","start":"!","fields":[...]}; a '$'
-/// one has no "start" key.
+/// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}, with
+/// "start":"!" after "type" for a '!' sentence (!AIVDM).
 template <json_sink Sink>
 constexpr void write_json(Sink& s, const unknown_sentence& u) noexcept {
   s.put("{\"type\":\"");
