@@ -99,9 +99,8 @@ template <resolution R>
   return d;
 }
 
-/// The raw value nearest m x 10^t at resolution R, negated when `negative` (halves away from
-/// zero, exactly). False when it is beyond what 64 bits hold (the caller's range check then
-/// refuses it).
+/// The raw value nearest m x 10^t at resolution R, negated when `negative`, halves away from
+/// zero; false beyond 64 bits (the caller's range check refuses it).
 template <resolution R>
 [[nodiscard]] constexpr bool raw_from_scaled(std::uint64_t m, int t, bool negative,
                                              std::int64_t& out) noexcept {
@@ -180,8 +179,7 @@ class number {
   [[nodiscard]] static constexpr result<number> from(I v) noexcept {
     return from(nmea::decimal(v));
   }
-  /// A character or a bool is not a physical value: without this it would convert to double
-  /// ('A' would be 65).
+  /// A character or a bool is not a physical value ('A' would be 65).
   template <std::integral I>
   requires(!nmea::whole_number<I>) static result<number> from(I) = delete;
 
@@ -233,9 +231,8 @@ using signed_number = number<Bits, true, Res>;
 // ---------------------------------------------------------------------------------------------
 // lookups and flag sets
 
-/// The names of a lookup's values or of a flag set's bits, indexed by value or bit: declared
-/// beside the enum as `constexpr std::array<std::string_view, N> lookup_names(E)` (found by
-/// argument-dependent lookup). These are the JSON and fmt spellings.
+/// The JSON and fmt names of a lookup's values or a flag set's bits, by value or bit: declared
+/// beside the enum as `constexpr std::array<std::string_view, N> lookup_names(E)` (found by ADL).
 template <class E>
 concept named_enum = std::is_enum_v<E> && requires(E e) {
   { lookup_names(e).size() } -> std::convertible_to<std::size_t>;
@@ -496,8 +493,7 @@ struct reserved_bits {
 template <unsigned Bits>
 inline constexpr reserved_bits<Bits> reserved{};
 
-/// How a PGN travels: in one CAN frame (up to 8 bytes) or as a fast packet (up to 223 bytes over
-/// up to 32 frames; fast_packet.hpp).
+/// How a PGN travels: one CAN frame (up to 8 bytes) or a fast packet (up to 223 bytes).
 enum class framing : std::uint8_t { single_frame, fast_packet };
 
 /// What the standard says about a PGN besides its fields.
@@ -520,8 +516,7 @@ inline constexpr bool is_flag_word<flags<E, B>> = true;
 /// How PGN payloads lay out their bits (docs/nmea2000.md).
 inline constexpr auto payload_order = seawire::detail::bit_order::lsb_first;
 
-/// A PGN's table: its rows are a binary layout (detail/bit_layout.hpp), each where the one before
-/// ends, the first at bit 0.
+/// A PGN's table: a binary layout (detail/bit_layout.hpp), each row where the one before ends.
 template <class... F>
 struct pgn_description {
   pgn_info info;
