@@ -1,28 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Optional: fmt::formatter for every message and value type. Needs {fmt} (8 or later); nothing
-// else in seawire does, and nothing else includes this header.
-//
-//   fmt::print("{}\n", msg);    // CPNVG{timestamp=16:49:59.034, latitude=42.36185237, ...}
-//   fmt::print("{:j}\n", msg);  // {"type":"CPNVG","timestamp":"16:49:59.034",...} (one line)
-//
-// Values are written as nmea/json.hpp writes them: decimals with the wire's digits, positions
-// in signed decimal degrees, "hh:mm:ss.fff" times, ISO dates, enums by their wire spelling,
-// null for a blank optional. The default form quotes only text; {:j} is exactly write_json().
-// Value types format on their own too: fmt::format("{}", msg.lat) is "42.36185237", a
-// time_of_day "08:10:25.987", a text<N> its characters, an enum its wire spelling.
-// An unknown_sentence formats as its line ({}) or as {"type":...,"fields":[...]} ({:j}).
-//
-// NMEA 2000 messages and field values likewise, as nmea2000/json.hpp writes them:
-//
-//   fmt::print("{}\n", speed);    // PGN128259{sid=0, speed_water_mps=0.18, ...}
-//   fmt::print("{:j}\n", speed);  // {"type":"PGN128259","sid":0,"speed_water_mps":0.18,...}
-//   fmt::print("{}", speed.speed_ground_mps);  // null when not available
-//
-// The JSON form of a message has no frame header (priority, source, time): it is
-// nmea2000::write_json(sink, msg). Flag sets are arrays of names: [check_engine,over_temperature].
-// The ANELLO 0xAB00 frame likewise: AB00{heading_deg=89, latitude_deg=32.828671, ...}, and {:j}
-// is anello::write_json. Every message is written by one loop over its fields (walk.hpp).
+// Optional: fmt::formatter for every message and value type of every wire. Needs {fmt} (8 or
+// later); nothing else in seawire does. "{}" is TYPE{name=value, ...} with values as the JSON
+// writers write them, only text quoted (CPNVG{timestamp=16:49:59.034, ...}, PGN128259{...},
+// AB00{...}); "{:j}" is exactly write_json (a PGN without its frame header). Value types format
+// on their own ("{}" of msg.lat is "42.36185237"; a PGN field not available is null).
 
 #include <fmt/format.h>
 

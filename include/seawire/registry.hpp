@@ -1,15 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Every message seawire declares, listed once: each family's sets of sentences with the parse
-// policy of the role that receives them, every sentence merged into one set, the NMEA 2000 PGNs,
-// and the ANELLO 0xAB00 frame. The programs, the docs generators, the fuzz targets and the round
-// trip tests iterate these lists, so a message added here is decoded, encoded, documented,
-// fuzzed and round-tripped everywhere; a message declared in a header but missing here fails
-// the registry_complete test.
-//
-//   seawire::registry::for_each_type<seawire::registry::pgns>([](auto tag) {
-//     using P = typename decltype(tag)::type;   // one PGN struct after another
-//   });
+// Every message seawire declares, listed once: each role's sentences with its parse policy, all
+// sentences in one set, the NMEA 2000 PGNs and the 0xAB00 frame. The programs, docs generators,
+// fuzz targets and round-trip tests iterate these lists (for_each_type); a message declared but
+// missing here fails registry_complete (docs/adding-a-message.md).
 
 #include <cstddef>
 #include <string_view>
@@ -72,8 +66,7 @@ constexpr bool one(type_list<T...>*, std::size_t index, Fn& fn) {
 template <class List>
 using types = typename detail::types_of<List>::type;
 
-/// fn(std::type_identity<T>{}) for every type T of the list (a message_set, a pgn_list or a
-/// type_list), in order.
+/// fn(std::type_identity<T>{}) for every type T of the list, in order.
 template <class List, class Fn>
 constexpr void for_each_type(Fn&& fn) {
   detail::each(static_cast<types<List>*>(nullptr), fn);
@@ -121,11 +114,9 @@ inline constexpr role<anello::nmea_inputs> anello_inputs{
 inline constexpr role<anello::nmea_outputs> anello_outputs{
     "ANELLO: output of the INS", "ANELLO Maritime INS output.", anello::output_policy};
 
-/// Every role. A sentence is read by the policy of the first role here whose set has its
-/// address (receiving_policy), so a log of what a payload sends a Kingfisher is read as the
-/// vehicle reads it (a bare '*' is no checksum) and a log of what the vehicle sends as a payload
-/// reads it (checksum required). The standard sentences come first: a GPRMC in a log may come
-/// from any receiver, so it is read by the liberal default.
+/// Every role. A sentence is read by the policy of the first role whose set has its address
+/// (receiving_policy): the standard sentences first (a GPRMC may come from any receiver: the
+/// liberal default), then each family's as its receiver reads it.
 inline constexpr std::tuple roles{
     standard_nmea,        kingfisher_from_vehicle, kingfisher_to_vehicle, sandshark_from_vehicle,
     sandshark_to_vehicle, robotx_reports,          anello_inputs,         anello_outputs};

@@ -1,36 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// One walk over the fields of a message of any wire: an NMEA 0183 sentence (a message_like
-// struct), an NMEA 2000 PGN (a pgn_like struct) or ANELLO's 0xAB00 frame (sensor_frame_raw).
-// Each wire keeps its own description and codec (text fields; little-endian bit fields;
-// big-endian frame fields); what sits above them, JSON, CSV, fmt and the documentation, walks the
-// fields through this one vocabulary:
-//
-//   seawire::visit_fields(msg, [](const auto& f) { ... f.name, f.key, f.value, f.state ... });
-//   seawire::visit_layout<M>([](auto f) { ... the same without a value ... });
-//
-// fn is called once per field in wire order (a PGN's reserved bits are no field: visit_rows
-// gives them too). What a view knows of its field is a compile-time constant, a static member of
-// its type, so a writer can make text from it once (a JSON key with its quotes):
-//
-//   kind        wire_kind::nmea0183, nmea2000 or anello_frame
-//   name        the declared name ("speed_water_mps", "latitude_deg")
-//   key         the JSON key: the name, but "latitude"/"longitude" for the frame's position
-//   unit        the unit the name ends with ("mps", "deg", "m"; "" when it ends with none)
-//   number      a sentence's first wire field of the field (1-based, longest form); a PGN's row
-//               (reserved rows counted); the frame's field number (heading 1 .. pressure 19)
-//   wire_fields how many wire fields a sentence's field spans (a position and its letter: 2)
-//   bit_offset, bits, order   where a binary field is: its first bit (the frame's from the
-//               frame's first byte) and width, and the byte order (text for sentences)
-//   axis        position_axis::latitude / longitude for a position-typed field, else none
-//   reserved    a PGN's reserved bits (visit_rows only)
-//   desc        the description's own row (field_desc, field_entry, sensor_field)
-//   value       (visit_fields) the member as the message holds it: the sentence's member
-//               (std::optional where it may be blank), the PGN's number / lookup / flags /
-//               date / time_of_day, the frame's raw integer with its scale (frame_value)
-//   state       (visit_fields) value; not_available for a blank optional, a variation without a
-//               value, a PGN field not available, a frame field "not available"; out_of_range
-//               and reserved for a PGN's sentinels of those names
+// One walk over the fields of a message of any wire: an NMEA 0183 sentence (message_like), an
+// NMEA 2000 PGN (pgn_like) or ANELLO's 0xAB00 frame (sensor_frame_raw). JSON, CSV, fmt and the
+// docs are loops over it: visit_fields(msg, fn) calls fn(field_view) once per field in wire
+// order, visit_layout<M>(fn) fn(field_layout) without a message, visit_rows<M>(fn) a PGN's
+// reserved bits too. What a field_layout says is a compile-time constant (its members below).
 
 #include <cstddef>
 #include <cstdint>
@@ -60,13 +34,12 @@ enum class byte_order : std::uint8_t { text, little_endian, big_endian };
 /// What a position-typed field holds.
 enum class position_axis : std::uint8_t { none, latitude, longitude };
 
-/// What a field's value means, on every wire (nmea2000::field_state): a value, or blank / not
-/// available, or one of the sentinels a PGN field has for out of range and reserved.
+/// What a field's value means, on every wire: a value, blank / not available, or a PGN field's
+/// out_of_range and reserved sentinels.
 using field_state = nmea2000::field_state;
 
 namespace detail {
-/// What a field of a binary wire (a PGN's, the frame's) is on the wire: row I (numbered from 1)
-/// of a table whose rows follow each other, at `Offset` bits, `Bits` wide, in byte order `Order`.
+/// Row I (numbered from 1) of a binary wire's table, at `Offset` bits, `Bits` wide.
 template <wire_kind Kind, byte_order Order, std::size_t I, unsigned Offset, unsigned Bits>
 struct binary_field {
   static constexpr wire_kind kind = Kind;
@@ -92,29 +65,32 @@ struct binary_field {
 }
 }  // namespace detail
 
-/// A field of a message type, without a message: what visit_layout gives. Every member is a
-/// compile-time constant (see the top of this file); Info is the wire's walk_field.
+/// A field of a message type, without a message (visit_layout); Info is the wire's walk_field.
 template <class Info>
 struct field_layout {
   using info = Info;
   using value_type = typename Info::value_type;
   static constexpr wire_kind kind = Info::kind;
-  static constexpr std::string_view name = Info::name;
+  static constexpr std::string_view name = Info::name;  ///< declared: "speed_water_mps"
+  /// JSON key: the name, but "latitude"/"longitude" for the frame's position.
   static constexpr std::string_view key = Info::key;
-  static constexpr std::string_view unit = detail::unit_of_name(Info::name);
+  static constexpr std::string_view unit = detail::unit_of_name(Info::name);  ///< "mps", or ""
+  /// A sentence's first wire field (1-based, longest form), a PGN's row (reserved rows counted),
+  /// the frame's field number (heading 1 .. pressure 19).
   static constexpr std::uint16_t number = Info::number;
-  static constexpr unsigned wire_fields = Info::wire_fields;
+  static constexpr unsigned wire_fields = Info::wire_fields;  ///< a position and its letter: 2
+  /// A binary field's first bit (the frame's from its first byte), width and byte order.
   static constexpr unsigned bit_offset = Info::bit_offset;
   static constexpr unsigned bits = Info::bits;
   static constexpr byte_order order = Info::order;
   static constexpr position_axis axis = Info::axis;
-  static constexpr bool reserved = Info::reserved;
-  static constexpr const auto& desc = Info::desc;
+  static constexpr bool reserved = Info::reserved;  ///< a PGN's reserved bits (visit_rows only)
+  static constexpr const auto& desc = Info::desc;   ///< the description's own row
 };
 
-/// A field of a message: its layout, and its value and state (what visit_fields gives). The
-/// value is a reference into the message, except the frame's (a frame_value, made from the raw
-/// member).
+/// A field of a message (visit_fields): its layout, the member as the message holds it (the
+/// frame's: a frame_value made from the raw integer) and its state (not_available for a blank
+/// optional, a variation without a value, a PGN or frame field not available).
 template <class Info>
 struct field_view : field_layout<Info> {
   using held = std::conditional_t<Info::by_value, typename Info::value_type,
@@ -342,8 +318,7 @@ constexpr void visit_rows(Fn&& fn) {
 }
 
 namespace detail {
-// One row of the walks below (a function, not a lambda in the pack expansion: clang 14 fails on
-// that).
+// One row of the walks below (not a lambda in the pack expansion: clang 14 fails on that).
 template <class F, class Fn>
 constexpr void walk_layout_row(Fn& fn) {
   if constexpr (!F::reserved) fn(field_layout<F>{});

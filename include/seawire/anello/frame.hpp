@@ -1,37 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The ANELLO Maritime INS custom binary sensor input frame (spec 002, section 2.2), 56 bytes,
-// every field big-endian:
-//
-//   0      2          4               8                                                      56
-//   AB 00 | length=48 | CRC-32 (u32)  | heading | lat | lon | sog | cog | gps time | ... | pressure
-//   frame id  payload   over bytes 8-55 \_______________ payload: 19 fields, 48 bytes ___________/
-//
-// The CRC is zlib's (see detail/crc32.hpp; the spec's "starting value 0xFFFFFFF" is a typo for
-// 0xFFFFFFFF). There is no byte stuffing, so a stream reader resyncs by scanning for AB 00 and
-// letting decode_frame judge: `truncated` always means "a valid beginning, send more bytes".
-//
-// The payload is described once, in `sensor_fields` below: name, JSON key, wire type, scale and
-// allowed range of each field, in wire order. The table is a binary layout of the same kind as
-// the NMEA 2000 PGN tables (detail/bit_layout.hpp): each row's width comes from its wire type,
-// offsets follow from the widths, and fields are read and written by the same functions, here
-// most significant bit first (big-endian). decode_frame,
-// encode_frame, build_frame, validate, to_values, for_each_field and the accessors of
-// sensor_frame_raw are all loops over that table, so a field cannot be decoded from one offset and
-// encoded at another.
-//
-// Three ways to hold a frame:
-//   raw bytes  <- encode_frame / decode_frame ->  sensor_frame_raw  <- build_frame / to_values ->
-//   sensor_values. The raw struct keeps the wire's integers, so decode -> encode is bit-exact
-//   whatever a sender wrote; sensor_values is what a user has (double metres, degrees, ...), and
-//   build_frame is the strict sender: it rounds to the wire resolution and refuses what the field
-//   cannot carry, with result::field = the payload field's number (heading 1 .. pressure 19, the
-//   spec table's order without its three header rows) and result::column = its byte offset.
-//
-// "Not available" is each type's maximum (0xFF.., or 0x7F.. for signed types), as the spec's note
-// says; accessors turn it into std::nullopt, and a nullopt value is sent as that maximum.
-// Decoding is liberal: a value outside the spec's range (heading 400) is reported as it is;
-// validate() says whether a frame stays inside the ranges build_frame enforces.
+// The ANELLO Maritime INS custom binary sensor input frame: 56 bytes, every field big-endian:
+// AB 00, payload length 48, zlib CRC-32 of bytes 8-55, then 19 payload fields. One table
+// (sensor_fields) gives each field's offset, scale and range; decode_frame, encode_frame,
+// build_frame, validate, to_values and the accessors are loops over it. "Not available" is each
+// wire type's maximum. The rules (CRC, sentinels, rounding, ranges): docs/anello-frame.md.
 
 #include <array>
 #include <chrono>
@@ -62,14 +35,12 @@ inline constexpr std::size_t sensor_field_count = 19;
 
 using frame_bytes = std::array<std::uint8_t, frame_size>;
 
-/// GPS time as the frame carries it: milliseconds of Unix time (UTC, no leap seconds). The spec's
-/// example 0x00000190794363D0 is 2024-07-03 15:42:58.000 UTC read this way, so it is not the GPS
-/// time scale (which would be 18 s ahead).
+/// GPS time as the frame carries it: milliseconds of Unix time (UTC, no leap seconds), not the GPS
+/// time scale.
 using time_ms = std::chrono::sys_time<std::chrono::milliseconds>;
 
 /// The payload in physical units, as a sender has it; nullopt = not available. Member names are
-/// the field names of the table, the accessors of sensor_frame_raw and the JSON keys; the ranges
-/// are the table's (sensor_fields, listed in docs/messages.md).
+/// the table's field names (ranges: docs/messages.md).
 struct sensor_values {
   std::optional<double> heading_deg;         ///<  1 IMU compass heading, degrees
   std::optional<double> latitude_deg;        ///<  2 degrees, north positive
@@ -168,9 +139,8 @@ namespace detail {
 
 }  // namespace detail
 
-/// One payload field: where it is, how its integer becomes a physical value and back, and what a
-/// sender may put in it. RawMember is the sensor_frame_raw member, ValueMember the sensor_values
-/// member; their types give the wire type and the physical type (double, int or time_ms).
+/// One payload field: where it is, its scale and what a sender may put in it; the members'
+/// types give the wire type and the physical type (double, int or time_ms).
 template <auto RawMember, auto ValueMember>
 struct sensor_field {
   using raw_type = seawire::detail::member_type_t<RawMember>;
@@ -188,8 +158,7 @@ struct sensor_field {
   std::optional<value_range> allowed = std::nullopt;
   /// A value read as "not available" besides the type's maximum.
   std::optional<raw_type> also_not_available = std::nullopt;
-  /// Of the field's first byte, counted from the frame's first byte: the table's layout computes
-  /// it from the widths of the fields before.
+  /// Of the field's first byte in the frame, computed from the widths before it.
   std::size_t offset = 0;
 
   [[nodiscard]] constexpr bool not_available(raw_type raw) const noexcept {
@@ -206,8 +175,7 @@ struct sensor_field {
             std::cmp_less(int64_max, type_hi) ? int64_max : static_cast<std::int64_t>(type_hi)};
   }
 
-  /// The error for a value outside wire_limits(): beyond what the spec allows, or beyond what the
-  /// wire field can carry (for fields whose only limit is their type).
+  /// The error for a value outside wire_limits(): out_of_range (the spec's), value_too_large.
   [[nodiscard]] constexpr errc refusal() const noexcept {
     return allowed ? errc::out_of_range : errc::value_too_large;
   }
@@ -225,8 +193,7 @@ struct sensor_field {
       if (std::cmp_greater(raw, std::numeric_limits<rep>::max())) return std::nullopt;
       return time_ms{time_ms::duration{static_cast<rep>(raw)}};
     } else if constexpr (std::is_same_v<value_type, double>) {
-      // Dividing by the exact divisor (not multiplying by 0.1) gives the double nearest the
-      // decimal the wire means: 32828671 -> 32.828671 exactly as that literal reads.
+      // Divided by the exact divisor: the double nearest the wire's decimal (32.828671).
       return static_cast<double>(raw) / static_cast<double>(divisor);
     } else {
       return static_cast<value_type>(raw);
@@ -245,8 +212,7 @@ struct sensor_field {
     if constexpr (std::is_same_v<value_type, time_ms>) {
       wire = value->time_since_epoch().count();
     } else if constexpr (std::is_same_v<value_type, double>) {
-      // seawire's one rule for doubles (nmea::decimal::from_double): the shortest decimal of
-      // the value, rounded half away from zero to the field's step (1.05 m/s is 11 tenths).
+      // nmea::decimal::from_double's rule: 1.05 m/s is 11 tenths.
       seawire::detail::rounded_double m;
       const errc e = seawire::detail::round_double(
           *value, 1, static_cast<int>(detail::divisor_places(divisor)), 1, m);
@@ -280,8 +246,7 @@ consteval auto make_sensor_fields() {
   // Rows follow the spec's table; a row's position (1-based) is the field number in errors.
   auto fields = std::tuple{
       sensor_field<&r::heading, &v::heading_deg>{.name = "heading_deg", .allowed = degrees},
-      // Positions are "latitude" and "longitude" (signed decimal degrees) in JSON, as in every
-      // other message.
+      // JSON "latitude" and "longitude", as every message.
       sensor_field<&r::lat, &v::latitude_deg>{.name = "latitude_deg",
                                               .json_key = "latitude",
                                               .divisor = millionths,
@@ -295,8 +260,7 @@ consteval auto make_sensor_fields() {
       sensor_field<&r::gps_time_ms, &v::gps_time>{.name = "gps_time"},
       sensor_field<&r::alt_msl, &v::alt_msl_m>{.name = "alt_msl_m", .divisor = tenths},
       sensor_field<&r::geoid_sep, &v::geoid_sep_m>{.name = "geoid_sep_m", .divisor = tenths},
-      // Not enforced, though the spec says it: "HDOP range 0-1; this field range 0-10". Real fixes
-      // often have HDOP above 1, and refusing the whole frame for that would drop good positions.
+      // The spec's HDOP range 0-1 is not enforced: real fixes have more.
       sensor_field<&r::hdop_tenths, &v::hdop>{.name = "hdop", .divisor = tenths},
       // "as defined by GPGGA": NMEA 0183 defines qualities 0 (invalid) to 8 (simulation).
       sensor_field<&r::gga_quality, &v::fix_quality>{.name = "fix_quality", .allowed = {{0, 8}}},
@@ -311,10 +275,7 @@ consteval auto make_sensor_fields() {
                                                                .divisor = tenths},
       sensor_field<&r::wind_dir_rel, &v::wind_dir_rel_deg>{.name = "wind_dir_rel_deg",
                                                            .allowed = degrees},
-      // The spec's note makes 0x7FFF "not available", but its own example sends 0xFFFF for an
-      // air temperature "invalid / not reported". So 0xFFFF (-0.1 degC taken literally) is read
-      // as not available too, and build_frame refuses -0.1 degC rather than send it ambiguously;
-      // nullopt is sent as the spec's 0x7FFF.
+      // 0xFFFF, the spec example's "not reported", is not available too; nullopt sent as 0x7FFF.
       sensor_field<&r::air_temp, &v::air_temp_c>{
           .name = "air_temp_c", .divisor = tenths, .also_not_available = std::int16_t{-1}},
       sensor_field<&r::pressure, &v::pressure_hpa>{.name = "pressure_hpa"},
@@ -329,8 +290,7 @@ consteval auto make_sensor_fields() {
 
 }  // namespace detail
 
-/// The payload layout, one sensor_field per field in the spec's order. Iterate it with std::apply
-/// to generate docs, dictionaries or schemas; for_each_field pairs it with a frame's values.
+/// The payload layout, one sensor_field per field in the spec's order (a std::tuple).
 inline constexpr auto sensor_fields = detail::make_sensor_fields();
 
 namespace detail {
@@ -394,12 +354,10 @@ template <auto ValueMember>
 
 }  // namespace detail
 
-/// Decodes the frame at the start of `bytes` (later bytes are not read). Checks, in this order:
-///   frame id (bad_frame_id, column 0), length field == 48 (bad_length, column 2),
-///   56 bytes present (truncated, column = bytes.size()), CRC (crc_mismatch, column 4).
-/// The header is compared byte by byte, so `truncated` means "every byte so far is right, send
-/// more": a stream reader can drop a false AB as soon as the byte that betrays it arrives.
-/// No range checks here: see validate(). On error `value` is a default (all n/a) frame.
+/// Decodes the frame at the start of `bytes`. Checks, in order: frame id (bad_frame_id, column
+/// 0), length 48 (bad_length, column 2), 56 bytes (truncated, column = bytes.size(): every byte
+/// so far is right), CRC (crc_mismatch, column 4). No range checks (validate()). On error `value`
+/// is an all-n/a frame.
 [[nodiscard]] constexpr result<sensor_frame_raw> decode_frame(
     std::span<const std::uint8_t> bytes) noexcept {
   result<sensor_frame_raw> out;
@@ -432,9 +390,8 @@ template <auto ValueMember>
   return out;
 }
 
-/// Writes `frame` as 56 bytes to the start of `out`, header and CRC included, and returns 56.
-/// Writes the raw integers as they are (so decode -> encode is bit-exact); build_frame is where
-/// values are checked. buffer_too_small (nothing written) if `out` is shorter than 56 bytes.
+/// Writes `frame`'s raw integers as 56 bytes, header and CRC included, and returns 56;
+/// buffer_too_small (nothing written) if `out` is shorter.
 [[nodiscard]] constexpr result<std::size_t> encode_frame(const sensor_frame_raw& frame,
                                                          std::span<std::uint8_t> out) noexcept {
   if (out.size() < frame_size) return {0, errc::buffer_too_small};
@@ -459,15 +416,10 @@ template <auto ValueMember>
   return bytes;
 }
 
-/// The frame a strict sender writes for `values`: each value rounded to its field's resolution
-/// (its shortest decimal, halves away from zero, as nmea::decimal::from_double rounds: 1.05 m/s
-/// is 11 tenths), nullopt as "not available". Refuses the first field (in table order)
-/// whose value is NaN or infinite (not_finite), outside the spec's range (out_of_range: heading,
-/// course and wind directions 0..360, latitude +-90, longitude +-180, fix quality 0..8, motor and
-/// rudder +-100), or, for fields the spec gives no range, not carried by the wire type or equal
-/// to its "not available" value (value_too_large: SOG -1 or 6553.5 m/s, air temperature -0.1 C).
-/// Ranges apply after rounding, so heading 360.4 is sent as 360. The error's `field` is the
-/// payload field number (heading 1 .. pressure 19) and `column` its offset in the frame.
+/// The frame a strict sender writes for `values`: each rounded to its field's resolution
+/// (decimal::from_double's rule), nullopt as not available. Refuses the first field that is
+/// NaN or infinite (not_finite), outside the spec's range after rounding (out_of_range), or not
+/// carried by the wire type (value_too_large); `field` 1-19, `column` its byte offset.
 [[nodiscard]] constexpr result<sensor_frame_raw> build_frame(const sensor_values& values) noexcept {
   result<sensor_frame_raw> out;
   detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
@@ -481,9 +433,8 @@ template <auto ValueMember>
   return out;
 }
 
-/// Whether every field of `frame` is "not available" or within what build_frame would send; the
-/// first field that is not gives the error (as build_frame's). For receivers that want to be
-/// strict; decode_frame itself is not.
+/// Whether every field of `frame` is not available or within what build_frame would send; the
+/// first that is not gives build_frame's error.
 [[nodiscard]] constexpr result<sensor_frame_raw> validate(const sensor_frame_raw& frame) noexcept {
   result<sensor_frame_raw> out{frame};
   detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
@@ -508,9 +459,8 @@ template <auto ValueMember>
   return values;
 }
 
-/// Calls fn(name, value) for each field in table order: name is the snake_case field name
-/// (std::string_view), value a std::optional of double, int (fix_quality) or time_ms (gps_time),
-/// nullopt when not available. Meant for writers of JSON, CSV or logs.
+/// Calls fn(name, value) for each field in table order: value a std::optional of double, int
+/// (fix_quality) or time_ms (gps_time).
 template <class Fn>
 constexpr void for_each_field(const sensor_frame_raw& frame, Fn&& fn) {
   detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {

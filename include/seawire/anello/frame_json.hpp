@@ -1,25 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// JSON and CSV for the ANELLO 0xAB00 binary frame, by the conventions of nmea/json.hpp and
-// nmea/csv.hpp:
-//
-//   {"type":"AB00","heading_deg":89,"latitude":32.828671,"longitude":-117.229926,"sog_mps":0.0,
-//    "cog_deg":null,"gps_time":"2024-07-03T15:42:58.000Z","alt_msl_m":48.0,...}
-//
-// Keys are the JSON keys of anello::sensor_fields: the field names, but "latitude" and
-// "longitude" (signed decimal degrees) for the position, as in every other message. Values come
-// from the wire's integers, never through double: a field with resolution 0.1 has one fraction
-// digit, latitude six. "Not available" is null. gps_time is ISO 8601 UTC with milliseconds (a time
-// outside the years 1970..9999 is written as its integer milliseconds).
-//
-// Reading (read_frame_json) is strict like build_frame: a measured value is rounded to the field's
-// resolution (halves away from zero) and refused, with the field number 1..19, when it is outside
-// the spec's range or not carried by the wire type; null or absent is "not available". A code
-// (fix_quality, an int in sensor_values) is no measurement and is not rounded: it must be written
-// as an integer (7, not 7.5 or 7.0; bad_number otherwise), as the integer fields of sentences
-// must. Every frame validate() accepts is written by write_json as JSON that reads back as the
-// same frame (with "not available" as each type's maximum: the spec example's 0xFFFF air
-// temperature comes back as 0x7FFF); a frame validate() refuses gives JSON that is refused.
+// JSON and CSV for the ANELLO 0xAB00 frame: {"type":"AB00", then the table's JSON keys}, values
+// from the wire's integers (a 0.1 field has one fraction digit, latitude six), null for not
+// available, gps_time ISO 8601 UTC with milliseconds (integer milliseconds outside years
+// 1970..9999). read_frame_json is as strict as build_frame; fix_quality must be a whole number.
+// Every frame validate() accepts reads back as the same frame, not available as each type's
+// maximum. Schema: docs/seawire-decode.md, docs/seawire-encode.md; rules: docs/anello-frame.md.
 
 #include <chrono>
 #include <cstddef>
@@ -121,9 +107,7 @@ constexpr void write_time_ms(Sink& s, std::uint64_t ms) noexcept {
   return errc::ok;
 }
 
-/// A decimal at `places` fraction digits as an integer: round(value * 10^places), halves away
-/// from zero, exactly (the rounding of every wire number). value_too_large when it does not fit
-/// 63 bits.
+/// round(value * 10^places), halves away from zero, exactly; value_too_large past 63 bits.
 [[nodiscard]] constexpr errc scale_decimal(const nmea::decimal& d, unsigned places,
                                            std::int64_t& out) noexcept {
   std::uint64_t m = 0;
@@ -166,10 +150,9 @@ struct sensor_field_about {
   return a;
 }
 
-/// An error from validate() or build_frame() for people: "AB00 field 1 (heading_deg) 361: value
-/// outside the range the spec allows", the value as write_json writes it (from `frame`, the
-/// frame the result is about). Written into `out` (cut to fit, always NUL-terminated); the
-/// returned view is into `out`.
+/// An error from validate() or build_frame() for people, about `frame`: "AB00 field 1
+/// (heading_deg) 361: value outside the range the spec allows". Into `out`, cut to fit,
+/// NUL-terminated; the view is into `out`.
 constexpr std::string_view error_text(std::span<char> out, const result<sensor_frame_raw>& r,
                                       const sensor_frame_raw& frame) noexcept {
   nmea::detail::text_out t(out);
@@ -190,8 +173,8 @@ constexpr std::string_view error_text(std::span<char> out, const result<sensor_f
   return error_text(out, r, frame);
 }
 
-/// A field's value (the walk's per-wire value text: see seawire::write_json_fields): null when
-/// not available, else the wire's integer with the row's fraction digits, or the ISO time.
+/// A field's value: null when not available, else the wire's integer with the row's fraction
+/// digits, or the ISO time.
 template <nmea::json_style Style, nmea::json_sink Sink, class Info>
 requires(Info::kind == wire_kind::anello_frame) constexpr void put_field_value(
     Sink& s, const field_view<Info>& f) noexcept {
@@ -251,15 +234,13 @@ constexpr void write_json(Sink& sink, const sensor_frame_raw& frame) noexcept {
   sink.put(std::string_view(text, s.size));
 }
 
-/// The header row of the frame's CSV table (with its LF): the 19 JSON keys in table order, as
-/// nmea/csv.hpp writes tables of messages.
+/// The header row of the frame's CSV table (with its LF): the 19 JSON keys in table order.
 template <nmea::json_sink Sink>
 constexpr void write_csv_header(Sink& s) noexcept {
   write_csv_columns<sensor_frame_raw>(s);
 }
 
-/// A frame as one CSV row (with its LF): the values write_json writes, unquoted (gps_time
-/// "2024-07-03T15:42:58.000Z"), an empty cell for "not available".
+/// A frame as one CSV row (with its LF): write_json's values unquoted, empty for not available.
 template <nmea::json_sink Sink>
 constexpr void write_csv(Sink& s, const sensor_frame_raw& frame) noexcept {
   write_csv_cells(s, frame);

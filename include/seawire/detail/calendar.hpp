@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The proleptic Gregorian calendar (internal): month lengths, days since 1970-01-01 and back,
-// and the ISO "YYYY-MM-DD" text that JSON, CSV and CAN logs carry dates in.
+// and the ISO "YYYY-MM-DD" dates of JSON, CSV and CAN logs.
 
 #include <cstdint>
 #include <string_view>
@@ -29,8 +29,7 @@ struct civil_date {
   return c.month >= 1 && c.month <= 12 && c.day >= 1 && c.day <= days_in_month(c.month, c.year);
 }
 
-// Days since 1970-01-01 and back, for any year (Howard Hinnant's algorithms: 400-year eras of
-// 146097 days, each year counted from March so that February's leap day comes last).
+// Howard Hinnant's algorithms: 400-year eras of 146097 days, years counted from March.
 
 /// The date `z` days after 1970-01-01 (before it when negative).
 [[nodiscard]] constexpr civil_date civil_from_days(std::int64_t z) noexcept {
@@ -56,9 +55,7 @@ struct civil_date {
   return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
 }
 
-/// The ISO date "YYYY-MM-DD" at the start of `s` (what follows is the caller's): four, two and
-/// two digits between dashes. Only the form is checked; valid_date() and the caller's year range
-/// say whether the date can be.
+/// The ISO date "YYYY-MM-DD" at the start of `s`; only the form is checked (valid_date()).
 [[nodiscard]] constexpr bool parse_iso_date(std::string_view s, civil_date& out) noexcept {
   if (s.size() < 10 || s[4] != '-' || s[7] != '-') return false;
   unsigned v[3] = {0, 0, 0};

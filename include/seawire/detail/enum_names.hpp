@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// An enum's names as a table indexed by its values (internal): NMEA word fields (enum_words),
-// NMEA 2000 lookups and flag sets (lookup_names) and the states a status text names. A value
-// the table does not name has an empty entry, or lies past its end.
+// An enum's names as a table indexed by its values (internal): enum_words, lookup_names, status
+// texts. A value the table does not name has an empty entry or lies past its end.
 
 #include <cstddef>
 #include <cstdint>
@@ -17,8 +16,7 @@ template <class Names>
   return v < names.size() ? std::string_view(names[v]) : std::string_view{};
 }
 
-/// The value named `name`: the index of its first entry in the table; nullopt when none is
-/// (an empty entry names nothing, so it is never found).
+/// The index of the first entry `name`; nullopt when none (an empty entry is never found).
 template <class Names>
 [[nodiscard]] constexpr std::optional<std::size_t> index_of_name(const Names& names,
                                                                  std::string_view name) noexcept {

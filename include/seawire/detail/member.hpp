@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Member pointers (internal): the class and the type a member pointer names, and whether two
-// member pointers, of any types, name the same member (how a description finds the row or field
-// of a member it is given).
+// Member pointers (internal): the class and member type a member pointer names, and whether two
+// member pointers of any types name the same member.
 
 #include <type_traits>
 

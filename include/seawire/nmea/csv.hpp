@@ -1,20 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// CSV for messages: one table per message type, a header row of the description's field names
-// and one row per message, for pandas, R and spreadsheets.
-//
-//   latitude,longitude,...                  write_csv_header<T>(sink)
-//   42.3618523333333,-71.0908130,...        write_csv(sink, msg)
-//
-// RFC 4180 text with LF line ends (which every CSV reader takes): fields separated by commas, a
-// field quoted ("...", inner quotes doubled) only when it holds a comma, a quote, CR or LF. The
-// values are those of nmea/json.hpp, unquoted: numbers with the wire's digits, positions in
-// signed decimal degrees, times "hh:mm:ss.sss", dates "YYYY-MM-DD", enums their wire spelling,
-// flags true/false. A blank or not-available field is an empty cell (so is blank text), which
-// pandas reads as NaN and R as NA. No "type" column: a table holds one type (its file name or
-// the caller says which). The header and the rows of every wire's tables (PGNs, the 0xAB00 frame
-// too) are seawire::write_csv_columns and write_csv_cells, loops over the walk (walk.hpp); each
-// wire gives its cells' text (put_csv_value).
+// CSV for messages: one table per message type, a header row of the field names
+// (write_csv_header<T>) and one row per message (write_csv), RFC 4180 with LF line ends. Cells
+// are the JSON values unquoted, empty when blank or not available (pandas NaN, R NA); a cell is
+// quoted, inner quotes doubled, only when it holds a comma, a quote, CR or LF. Every wire's tables
+// are loops over the walk (write_csv_columns, write_csv_cells). Details: docs/seawire-decode.md.
 
 #include <cstddef>
 #include <string_view>
@@ -42,7 +32,7 @@ constexpr void write_csv_text(Sink& s, std::string_view text) noexcept {
   s.put('"');
 }
 
-/// One value as a CSV field, by the conventions at the top of this file.
+/// One value as a CSV field: its plain JSON text, quoted if need be.
 template <json_sink Sink, class T>
 constexpr void write_csv_value(Sink& s, const T& v) noexcept {
   if constexpr (detail::is_optional<T>::value) {

@@ -1,25 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The message description: one declaration per message, from which decode, encode, field
-// names and validation all follow. A message is a plain struct with a static `nmea` member:
-//
-//   // $PYDIR,<thrust_left>,<thrust_right>*hh
-//   struct pydir {
-//     decimal thrust_left;   // 1 percent, -100..100
-//     decimal thrust_right;  // 2 percent, -100..100
-//     static constexpr auto nmea = sentence<"PYDIR">(
-//         field<&pydir::thrust_left>("thrust_left", in_range(-100, 100)),
-//         field<&pydir::thrust_right>("thrust_right", in_range(-100, 100)));
-//   };
-//
-// Two words are used in one sense throughout: a field is *blank* when it is in the sentence
-// but empty (",,"), and *absent* when the sentence ends before it (may_be_absent, the codecs'
-// allows_blank, parse_policy::absent_as_blank). Member types pick their codec (fields.hpp);
-// std::optional<T> marks a field that may be blank (nullopt). Options after the name add a
-// range, a unit letter field, or say when a field may be absent. What the sentence declares
-// besides its fields follows them (sentence_desc): an address starting with "--" ("--RMC")
-// matches any talker and names the talker_id member that decode fills and encode writes with
-// `.talker_in<&rmc::talker>()`.
+// The message description: a message is a plain struct with a static `nmea` member,
+// `nmea::sentence<"ADDR">(nmea::field<&M::m>("name", options...)...)` then the forms it comes in
+// (talker_in, wire_fields_in, blank_units_in, standard_forms, sender_writes); decode, encode,
+// field names and validation all follow from it. A field is *blank* when empty (",,") and
+// *absent* when the sentence ends before it; std::optional<T> members may be blank. The options
+// and forms, with an example: docs/adding-a-message.md.
 
 #include <array>
 #include <concepts>
@@ -45,8 +31,7 @@ namespace seawire::nmea {
 // ---------------------------------------------------------------------------------------------
 // field options
 
-/// Everything a field declaration can add to its codec. Built from the option helpers below,
-/// each of which sets the member of its name (the range helpers set min and max).
+/// Everything a field declaration can add to its codec, set by the option helper of its name.
 struct field_options {
   decimal min{};
   decimal max{};
@@ -62,8 +47,7 @@ struct field_options {
   std::uint16_t max_length = 0xFFFF;  ///< text: most characters
   std::uint8_t zero_pad = 0;          ///< integers: write at least this many digits ("06")
   bool code_chars = false;            ///< text: upper-case letters and digits only ("NVG")
-  /// Fraction digits a double given to nmea::builder is rounded to (minute digits for DDMM.m
-  /// positions); -1 = not declared.
+  /// Fraction digits nmea::builder rounds a double to (DDMM.m: minute digits); -1 = none.
   std::int8_t precision = -1;
 };
 
@@ -126,9 +110,8 @@ struct length {
 [[nodiscard]] constexpr option::range at_least(decimal lo) noexcept {
   return {.lo = lo, .hi = {}, .has_lo = true};
 }
-/// A double given to nmea::builder for this field is rounded to n fraction digits (minute
-/// digits for a DDMM.m position): what the spec or real senders write. A call may ask for
-/// others. Every number and position field of a message declares one.
+/// nmea::builder rounds a double for this field to n fraction digits (DDMM.m: minute digits), as
+/// the spec or real senders write. Every number and position field declares one.
 [[nodiscard]] constexpr option::precision precision(int n) noexcept {
   return {static_cast<std::int8_t>(n)};
 }
@@ -136,17 +119,14 @@ struct length {
 [[nodiscard]] constexpr option::max_places max_places(int n) noexcept {
   return {static_cast<std::int8_t>(n)};
 }
-/// The value is followed by a field holding this unit letter ("5.2,N"). On receive the letter
-/// may also be blank; seawire writes it, except blank beside a blank value where the message
-/// keeps that it came so (sentence_desc::blank_units_in).
+/// The value is followed by a field holding this unit letter ("5.2,N"); blank accepted on
+/// receive, always written but where blank_units_in keeps it blank.
 [[nodiscard]] constexpr option::unit unit(char c) noexcept { return {c}; }
-/// The field exists only in the longer form of the sentence, the one with at least `n` fields
-/// (an optional member; written only when it has a value).
+/// The field exists only in the form of the sentence with at least `n` fields (optional member).
 [[nodiscard]] constexpr option::only_with_field_count only_with_field_count(int n) noexcept {
   return {static_cast<std::uint16_t>(n)};
 }
-/// A trailing optional field that senders may leave out entirely; when the value is nullopt
-/// it is not written (nor any comma for it).
+/// A trailing optional field senders may leave out; nullopt is not written, nor its comma.
 inline constexpr option::may_be_absent may_be_absent{};
 /// Integers written with at least n digits ("06" satellites). Any width is accepted on receive.
 [[nodiscard]] constexpr option::zero_pad zero_pad(int n) noexcept {
@@ -156,8 +136,7 @@ inline constexpr option::may_be_absent may_be_absent{};
 [[nodiscard]] constexpr option::length length_between(int lo, int hi) noexcept {
   return {static_cast<std::uint16_t>(lo), static_cast<std::uint16_t>(hi)};
 }
-/// Text that is a code, such as a message id: upper-case letters and digits only (bad_text
-/// otherwise; the protocols are case-sensitive, so "nvg" is not "NVG").
+/// Upper-case letters and digits only, bad_text otherwise (case-sensitive: "nvg" is not "NVG").
 inline constexpr option::code_chars code_chars{};
 [[nodiscard]] constexpr option::length exact_length(int n) noexcept {
   return {static_cast<std::uint16_t>(n), static_cast<std::uint16_t>(n)};
@@ -225,8 +204,7 @@ inline constexpr bool is_text_field = requires(const V& v) {
   V::capacity;
 };
 
-// An option that does not apply to the member's type would be ignored without a word: it is a
-// compile error instead, naming the option and what it applies to.
+// An option that does not apply to the member's type is a compile error, not ignored.
 template <class Option, class V, bool Optional>
 consteval bool option_applies() {
   if constexpr (std::is_same_v<Option, option::range>) {
@@ -283,9 +261,8 @@ template <std::size_t... I, class... Fields>
 struct field_slots<std::index_sequence<I...>, Fields...> : field_slot<I, Fields>... {};
 }  // namespace detail
 
-/// The field descriptors of a message in wire order: a flat aggregate with one base per field.
-/// (std::tuple, which this replaces, instantiates a recursive chain of bases and constraint
-/// checks per message: a large share of the compile time of a file that includes every family.)
+/// The field descriptors of a message in wire order: a flat aggregate with one base per field
+/// (std::tuple's recursive bases cost much compile time).
 template <class... Fields>
 struct field_list : detail::field_slots<std::index_sequence_for<Fields...>, Fields...> {
   static constexpr std::size_t size = sizeof...(Fields);
@@ -306,36 +283,22 @@ template <std::size_t I, class T>
   return slot.value;
 }
 
-/// Forms of numbers that a message's sender writes although NMEA 0183 has no such form, as a
-/// sender does that prints its values with a floating-point format (the Clearpath vehicle's
-/// "%f"). A message declares those its sender writes (sentence_desc::sender_writes); decode then
-/// reads them as the sender means them, for that message only, so a receiver's GGA keeps
-/// refusing what would be a different, wrong form there. Encode never makes them up.
+/// Number forms beyond NMEA 0183 that a message's sender writes (a printf "%f" sender such as the
+/// Clearpath vehicle), read for the messages that declare them (sender_writes) only, never
+/// written otherwise. Each form's rule: docs/parse-policy.md.
 struct number_forms {
-  /// A DDMM.m position printed as the number degrees * 100 + minutes, unpadded: under one
-  /// degree it has at most two digits before the point, all of them minutes ("22.2,W" is
-  /// 0 deg 22.2 min W, "44.598,S" 0 deg 44.598 min S, "0,S" and "00.00,N" zero). Decoded as
-  /// zero degrees and written back as it came (nmea_coordinate::unpadded).
+  /// DDMM.m as degrees * 100 + minutes, unpadded ("22.2,W" is 0 deg 22.2 min W); kept as it came.
   bool unpadded_positions = false;
-  /// "nan", in any case and with or without a sign (what printf writes for a value the sender
-  /// does not have), in an optional number field: not available (nullopt), and the rest of the
-  /// sentence is kept. Refused where the policy holds input to the sending rules
-  /// (strict_values), since seawire never writes it.
+  /// "nan" (any case, any sign) in an optional number field: nullopt; refused by strict_values.
   bool nan_as_blank = false;
-  /// Seconds printed with a float format: "%06.3f" writes hh:mm:59.9995 and later as
-  /// "hhmm60.000", the first instant of the next minute. Second 60 with a fraction of zeros is
-  /// then read at any minute (elsewhere only 23:59:60, a leap second, is), and written back as
-  /// it came.
+  /// Second 60 with a zero fraction at any minute ("%06.3f" of hh:mm:59.9995); kept as it came.
   bool rounded_seconds = false;
 
   friend constexpr bool operator==(const number_forms&, const number_forms&) noexcept = default;
 };
 
-/// What a sentence declares besides its fields (see sentence_desc): the member a "--" address's
-/// talker goes to, the member that keeps a decoded sentence's field count, the member that
-/// keeps which unit letters came blank, a larger encode buffer, the number forms its sender
-/// writes, and the field counts of its standard forms. nullptr / 0 / {} / no counts: not
-/// declared.
+/// What a sentence declares besides its fields (sentence_desc's members of the same names);
+/// nullptr / 0 / {} / no counts: not declared.
 template <auto Talker, auto WireFields, auto BlankUnits, std::size_t BufferSize,
           number_forms Numbers, std::uint8_t... Counts>
 struct sentence_forms {
@@ -373,33 +336,20 @@ template <std::uint8_t... C>
 }  // namespace detail
 
 /// A message's wire layout: its address, its fields in wire order, and the forms it comes in,
-/// declared after the fields:
-///
-///   static constexpr auto nmea = nmea::sentence<"--VBW">(nmea::field<...>(...), ...)
-///                                    .talker_in<&vbw::talker>()
-///                                    .standard_forms<6, 10>()
-///                                    .wire_fields_in<&vbw::wire_fields>();
+/// declared after the fields (`sentence<"--VBW">(...).talker_in<&vbw::talker>()`).
 template <seawire::detail::fixed_string Address, class Forms, class... Fields>
 struct sentence_desc {
   static constexpr std::string_view address = Address.view();
   /// "--RMC": any two-character talker followed by RMC. A 'P' first is not a talker but a
   /// proprietary sentence (Garmin's $PGRMC is no RMC), so it never matches.
   static constexpr bool any_talker = Address.size() > 2 && address[0] == '-' && address[1] == '-';
-  /// The talker_id member a "--" sentence's talker is read into and written from (talker_in);
-  /// nullptr for a fixed address.
-  static constexpr auto talker_member = Forms::talker;
-  /// The std::uint8_t member that keeps a decoded sentence's field count (wire_fields_in), or
-  /// nullptr.
-  static constexpr auto wire_fields_member = Forms::wire_fields;
-  /// The std::uint32_t member that keeps which unit letters came blank (blank_units_in), or
-  /// nullptr.
-  static constexpr auto blank_units_member = Forms::blank_units;
-  /// The field counts of the standard forms, increasing (field_counts); empty: any count.
-  static constexpr auto field_counts = Forms::field_counts;
-  /// The smallest buffer encode() gives the message (buffer_size); 0: what its fields need.
-  static constexpr std::size_t buffer_size = Forms::buffer_size;
-  /// The number forms the message's sender writes beyond NMEA 0183 (sender_writes).
-  static constexpr number_forms numbers = Forms::numbers;
+  // The members declared by the functions below (nullptr / empty / 0 when not declared).
+  static constexpr auto talker_member = Forms::talker;            // talker_in
+  static constexpr auto wire_fields_member = Forms::wire_fields;  // wire_fields_in
+  static constexpr auto blank_units_member = Forms::blank_units;  // blank_units_in
+  static constexpr auto field_counts = Forms::field_counts;       // standard_forms, increasing
+  static constexpr std::size_t buffer_size = Forms::buffer_size;  // buffer_size_at_least
+  static constexpr number_forms numbers = Forms::numbers;         // sender_writes
   field_list<Fields...> fields;
 
   [[nodiscard]] constexpr bool matches(std::string_view a) const noexcept {
@@ -407,17 +357,15 @@ struct sentence_desc {
     if constexpr (any_talker) {
       if (a[0] == 'P') return false;
     }
-    // The length is a constant: a few byte compares, unrolled, where a string compare would be
-    // a call (decode checks the address of every sentence it is given).
+    // A constant length: a few unrolled byte compares, not a string compare call.
     for (std::size_t i = any_talker ? 2 : 0; i < address.size(); ++i)
       if (a[i] != address[i]) return false;
     return true;
   }
   [[nodiscard]] static constexpr std::size_t size() noexcept { return sizeof...(Fields); }
 
-  /// For an address that starts with "--", which any talker may send: member M (a talker_id)
-  /// receives the talker on decode ("GN" of $GNRMC) and gives it on encode. Such a sentence
-  /// must declare it; no other may.
+  /// A "--" address only, and it must: member M (a talker_id) receives the talker on decode ("GN"
+  /// of $GNRMC) and gives it on encode.
   template <auto M>
   [[nodiscard]] consteval auto talker_in() const noexcept {
     static_assert(any_talker, "talker_in: only an address starting with \"--\" has a talker");
@@ -426,13 +374,8 @@ struct sentence_desc {
     return sentence_desc<Address, typename Forms::template with_talker<M>, Fields...>{fields};
   }
 
-  /// For a sentence with fields that senders may leave out (may_be_absent at the end, or
-  /// fields of only the longer form): member M (a std::uint8_t) remembers the field count of
-  /// the sentence a message was decoded from when that is more than its values need, because
-  /// one of those fields came blank instead of left out. Encode then writes that many fields,
-  /// so the Kingfisher spec's eight-field "$CPIMU,...,-0.932172,*hh" goes back out with its
-  /// empty eighth field and a six-field CPRBS with a blank battery id keeps its six. 0 (the
-  /// default, and what decode leaves otherwise) writes the fields the values need.
+  /// Member M (a std::uint8_t) keeps a decoded sentence's field count when more than its values
+  /// need (a field that may be left out came blank); encode writes that many. 0: what they need.
   template <auto M>
   [[nodiscard]] consteval auto wire_fields_in() const noexcept {
     static_assert(std::is_same_v<seawire::detail::member_type_t<M>, std::uint8_t>,
@@ -440,11 +383,8 @@ struct sentence_desc {
     return sentence_desc<Address, typename Forms::template with_wire_fields<M>, Fields...>{fields};
   }
 
-  /// For a sentence with unit letter fields (nmea::unit) that senders may leave blank beside a
-  /// blank value ("$IIVHW,,,211.0,M,..." as well as "$IIVHW,,T,211.0,M,..."): member M (a
-  /// std::uint32_t) remembers, bit n for wire field n, which unit letters of blank values came
-  /// blank, and encode writes those blank again, so both forms go back out as they came. 0 (the
-  /// default, and a message built in code) writes every unit letter.
+  /// Member M (a std::uint32_t) keeps, bit n for wire field n, which unit letters beside a blank
+  /// value came blank ("$IIVHW,,,211.0,M"); encode writes those blank again. 0: every letter.
   template <auto M>
   [[nodiscard]] consteval auto blank_units_in() const noexcept {
     static_assert(std::is_same_v<seawire::detail::member_type_t<M>, std::uint32_t>,
@@ -452,10 +392,8 @@ struct sentence_desc {
     return sentence_desc<Address, typename Forms::template with_blank_units<M>, Fields...>{fields};
   }
 
-  /// A sentence whose standard forms have only some field counts lists them, increasing
-  /// (VBW: 6 and 10). Encode writes the shortest listed form that holds the values (an NMEA 3.0
-  /// stern speed alone goes out with all four stern fields, not as a seven-field sentence); a
-  /// strict decode refuses the counts in between (too_few_fields).
+  /// The field counts of the standard forms, increasing (VBW: 6, 10). Encode writes the shortest
+  /// that holds the values; a strict decode refuses counts in between (too_few_fields).
   template <std::uint8_t... Counts>
   [[nodiscard]] consteval auto standard_forms() const noexcept {
     static_assert(sizeof...(Counts) > 0, "standard_forms: list at least one field count");
@@ -464,16 +402,14 @@ struct sentence_desc {
         fields};
   }
 
-  /// The message's sender writes these number forms (number_forms): `.sender_writes<{.nan_as_blank
-  /// = true}>()`. Decode reads them for this message only.
+  /// Number forms the message's sender writes (number_forms), read for this message only.
   template <number_forms F>
   [[nodiscard]] consteval auto sender_writes() const noexcept {
     return sentence_desc<Address, typename Forms::template with_numbers<F>, Fields...>{fields};
   }
 
-  /// encode() gives the message a buffer of at least N bytes (it gives 256, or what the
-  /// fields' longest text needs when a codec says): for a message with a codec of its own that
-  /// cannot say how long its text gets.
+  /// encode() gives the message at least N bytes (else 256, or the fields' longest text), for a
+  /// codec that cannot say how long its text gets.
   template <std::size_t N>
   [[nodiscard]] consteval auto buffer_size_at_least() const noexcept {
     return sentence_desc<Address, typename Forms::template with_buffer_size<N>, Fields...>{fields};
@@ -510,8 +446,7 @@ template <message_like T, auto M>
 }
 }  // namespace detail
 
-/// The fraction digits (minute digits for a DDMM.m position) a double given for member M is
-/// rounded to by default: the precision its field declares. `precision_of<&pydev::speed_mps>()`.
+/// The precision member M's field declares: `precision_of<&pydev::speed_mps>()`.
 template <auto M>
 [[nodiscard]] consteval int precision_of() noexcept {
   using T = seawire::detail::member_class_t<M>;
@@ -557,8 +492,7 @@ template <message_like T>
     return 0;
   }
 }
-/// Whether T declares a field that only the longer form has, and one that may be left out at
-/// the end: a message that keeps its wire_fields may have one kind or the other, not both.
+/// Whether T has both a longer form's field and one absent at the end (wire_fields allows one).
 template <message_like T>
 [[nodiscard]] consteval bool has_both_optional_kinds() noexcept {
   bool longer = false;
@@ -576,9 +510,8 @@ template <message_like T>
 // forms
 
 namespace detail {
-/// Whether encode leaves field `f` out of `msg`'s sentence for want of a value: a field that may
-/// be absent at the end (if nothing after it is written), or one of only the longer form when
-/// the message is not written in that form.
+/// Whether encode leaves field `f` out of `msg`'s sentence: absent at the end, or of a longer
+/// form than msg is written in.
 template <class F, class T>
 [[nodiscard]] constexpr bool skipped(const F& f, const T& msg) noexcept {
   if constexpr (F::is_optional) {
@@ -606,8 +539,7 @@ constexpr void for_each_field(T& msg, F&& f) {
   T::nmea.fields.apply([&](const auto&... d) { (f(d.name, msg.*(d.member)), ...); });
 }
 
-/// The number of wire fields of the form `msg` is written in, for field_name: every field's,
-/// but for a field only the longer form has (only_with_field_count) that holds no value.
+/// The number of wire fields of the form `msg` is written in, for field_name.
 template <message_like T>
 [[nodiscard]] constexpr std::size_t form_field_count(const T& msg) noexcept {
   std::size_t n = 0;
@@ -618,19 +550,15 @@ template <message_like T>
 }
 
 /// What a message's description says of wire field `n`: its declared name and options (found
-/// false when the message has no such field). A declaration spanning several wire fields (a
-/// position and its hemisphere letter, a value and its unit letter) names each one after the
-/// first by `part` ("hemisphere letter", "unit letter"; empty for the first), so that a field
-/// is called what it is: "latitude's hemisphere letter". `explain`, when the field's codec has
-/// one, tells from a refused text what is wrong with it (see error_text()).
+/// false when there is none); `part` names a declaration's later wire fields ("hemisphere
+/// letter", "unit letter"), `explain` says what is wrong with a refused text (error_text()).
 struct field_about {
   std::string_view name;
   field_options opts{};
   bool found = false;
   std::string_view part;    ///< the wire field within the declaration, after its first
   unsigned part_index = 0;  ///< 0 for the declaration's first wire field
-  /// codec<V>::explain(part_index, error, text): why `text` was refused, or "" when the text
-  /// shows nothing more than the error says.
+  /// codec<V>::explain(part_index, error, text): why `text` was refused, or "" if no more to say.
   std::string_view (*explain)(unsigned, errc, std::string_view) noexcept = nullptr;
 };
 
@@ -672,11 +600,9 @@ template <message_like T>
   return a;
 }
 
-/// The declared name of the field that holds wire field `n` (1-based), or "" if none (a
-/// declaration's later wire fields have its name: about_field's `part` tells them apart).
-/// Numbered as in the longest form of the sentence; give the sentence's field count (e.g.
-/// sentence_view::field_count) to number a shorter form as it came: a five-field CPRBS has no
-/// battery id, so its field 2 is the stack voltage.
+/// The declared name of the field that holds wire field `n` (1-based), or "" if none. Numbered
+/// as in the longest form; give the sentence's field_count to number a shorter form as it came
+/// (a five-field CPRBS has no battery id: its field 2 is the stack voltage).
 template <message_like T>
 [[nodiscard]] constexpr std::string_view field_name(
     std::size_t n, std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {

@@ -1,19 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// error_text(): an error told for people, in the caller's buffer, the same everywhere.
-//
-//   char why[256];
-//   auto r = kingfisher::decode_to_vehicle(line);
-//   if (!r) std::puts(nmea::error_text<kingfisher::to_vehicle>(why, r, line).data());
-//     // PYDIR field 1 (thrust_left) "150": value outside the range the spec allows: -100..100
-//     // checksum does not match the sentence (sent 11, computed 17) at column 14
-//     // RXHRB field 4 (latitude's hemisphere letter) "": hemisphere letter is missing (blank)
-//
-// Which sentence, which field by number and declared name (and which of a declaration's wire
-// fields: "latitude's hemisphere letter"), the text it held, why (what in the text is wrong,
-// where the field's codec can tell: a sign before a position, DDMM.m without its minute
-// digits), and the range or form the field allows where it has one. No allocation: the text is cut
-// to the buffer (and always terminated, so .data() is a C string).
+// error_text(): an error from decoding a line told for people, in the caller's buffer, the same
+// everywhere: which sentence, which field by number, name and part, the text it held, why (what
+// in the text is wrong, where the codec can tell) and the range or form the field allows:
+//   PYDIR field 1 (thrust_left) "150": value outside the range the spec allows: -100..100
+// No allocation: the text is cut to the buffer and always NUL-terminated.
 
 #include <cstddef>
 #include <cstdint>
@@ -34,7 +25,7 @@ namespace seawire::nmea {
 namespace detail {
 
 /// Appends to a caller's buffer, keeping one byte for the terminating NUL; cuts what does not
-/// fit. Numbers are written by the JSON writer's routines (json.hpp), into its range sink.
+/// fit.
 class text_out {
  public:
   constexpr explicit text_out(std::span<char> out) noexcept
@@ -93,9 +84,8 @@ constexpr void put_allowed(text_out& t, errc e, const field_options& o) noexcept
   }
 }
 
-/// " (sent 0a, computed 67)": the checksum as it was sent (its case kept), and the one the
-/// sentence has. Sent digits that read as a decimal number equal to the computed checksum were
-/// written in decimal by the sender, and are said to be.
+/// " (sent 0a, computed 67)", the sent digits' case kept; ": written in decimal?" when they read
+/// as the computed checksum in decimal.
 constexpr void put_checksum(text_out& t, std::string_view line, const sentence_view& s) noexcept {
   const std::size_t star = line.find('*');
   std::string_view sent =
@@ -129,8 +119,7 @@ constexpr std::string_view error_text_with(std::span<char> out, errc e, std::uin
     t.put(message(e));
     if (e == errc::checksum_mismatch && s) put_checksum(t, line, s.value);
     if (e == errc::trailing_characters && column < line.size()) {
-      // What stands after the checksum, without the one line ending parse() takes off; bytes
-      // that are not printable ASCII as \xHH.
+      // What stands after the checksum but the line ending; non-printable bytes as \xHH.
       std::string_view rest = line.substr(column);
       if (rest.ends_with("\r\n"))
         rest.remove_suffix(2);
@@ -166,10 +155,8 @@ constexpr std::string_view error_text_with(std::span<char> out, errc e, std::uin
 
 }  // namespace detail
 
-/// An error from decoding `line` as T, for people: "PYDIR field 1 (thrust_left) "150": value
-/// outside the range the spec allows: -100..100". Written into `out` (cut to fit, always
-/// NUL-terminated); the returned view is into `out`. `policy` is the one the line was decoded
-/// with (it decides how the line splits).
+/// An error from decoding `line` as T, for people, into `out` (cut to fit, NUL-terminated; the
+/// view is into `out`). `policy`: the one the line was decoded with (it decides the split).
 template <message_like T, class R>
 constexpr std::string_view error_text(std::span<char> out, const result<R>& r,
                                       std::string_view line,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// A heading from a double into [0, 360): headings from vehicle software are often
-// -180..180 or unwrapped, and a heading field refuses 360.
+// A heading from a double (often -180..180 or unwrapped) into [0, 360): a heading field
+// refuses 360.
 
 #include <cstdint>
 #include <limits>
@@ -11,11 +11,10 @@
 
 namespace seawire::nmea {
 
-/// `deg` wrapped into [0, 360) and rounded to `places` fraction digits by the rule of every wire
-/// number (decimal::from_double): -0.3 is 359.7, 725 is 5, and 359.96 at one place is 0.0
-/// (north), not 360.0. not_finite for NaN and infinities; out_of_range beyond 1e12 degrees,
-/// where the wrap would lose the fraction (such a heading is a bug upstream); value_too_large
-/// past 19 places.
+/// `deg` wrapped into [0, 360), rounded to `places` by decimal::from_double's rule: -0.3 is
+/// 359.7, 725 is 5, 359.96 at one place 0.0, not 360.0. not_finite for NaN and infinities;
+/// out_of_range beyond 1e12 degrees (the wrap would lose the fraction); value_too_large past 19
+/// places.
 [[nodiscard]] constexpr result<decimal> wrap_heading(double deg, unsigned places) noexcept {
   constexpr double max = std::numeric_limits<double>::max();
   if (!(deg == deg) || deg > 1e12 || deg < -1e12)

@@ -1,45 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// JSON for messages: write any message (anything with a description) as one JSON object, and
-// read a message back from the values of a JSON object. No JSON parser here: the reading side
-// takes values already tokenised (kind + text), so a program can use any JSON library that hands
-// out a number's text. Nothing goes through double, so numbers keep the digits the wire had.
-//
-//   $CPNVG,164959.034,4221.711142,N,7105.44878,W,1,0,0,234.32964,...,164959.006*78
-//   {"type":"CPNVG","timestamp":"16:49:59.034","latitude":42.36185237,"longitude":-71.0908130,
-//    "position_quality":true,"altitude_m":0,"depth_m":0,"heading_deg":234.32964,...}
-//
-// The conventions, value type by value type (the same for fmt.hpp):
-//   "type"            the address as on the wire; talker + type for talker-agnostic messages
-//                     ("GPRMC", "IIRPM"); then every field under its declared name, wire order
-//   decimal           a JSON number with exactly the wire's digits: 203.10 stays 203.10, -0.0
-//                     stays -0.0. Zero-padded integer digits ("011.3") are not valid JSON and
-//                     are dropped (11.3): the value is kept, the padding is not.
-//   integers, flags   JSON numbers; 0/1 flags (bool) as false/true
-//   nmea_coordinate   (DDMM.mmm + hemisphere) signed decimal degrees, S and W negative, with
-//                     two more fraction digits than the wire's minutes: "4221.71114,N" (5
-//                     minute places) is 42.3618523 (7 places). Exact integer arithmetic both
-//                     ways, so reading that number back with minute places = its fraction digits
-//                     - 2 gives the wire's minutes digit for digit. 0.0 S prints as -0.0000...
-//   decimal_coordinate (RobotX "21.31198,N") signed decimal degrees, the wire's digits
-//   time_of_day       "hh:mm:ss" plus the wire's fraction digits: "08:10:25.987", "16:49:59.00"
-//   date              ISO "YYYY-MM-DD"
-//   enums             their wire spelling as a string: "A", "ON", "TRIAN"
-//   text<N>           a JSON string (quotes, backslashes and control characters escaped)
-//   std::optional     null when blank or absent on the wire
-//   anything else     with a codec: its wire text as a string (RobotX light pattern: "RGB")
-//
-// Every message of every wire (sentences here, NMEA 2000 PGNs in nmea2000/json.hpp, the 0xAB00
-// frame in anello/frame_json.hpp) is written by one loop over the walk of its fields (walk.hpp):
-// seawire::write_json_object writes the wire's head, then `,"key":value` per field
-// (write_json_fields, keys made at compile time), then '}'; each wire gives only its head and its
-// values' text (put_field_value). write_plain_fields is the same loop for fmt's "{}".
-//
-// Reading (read_json<T>): each field from a json_value (kind + text, strings unescaped); absent
-// or null is "blank" (nullopt; an error for a required field except text, where it is ""). Numbers
-// may also come as strings, booleans as 0/1, times also as "hhmmss.sss", dates as "ddmmyy". The
-// wire precision of a position is taken from the number's digits (documented at
-// from_decimal_degrees) unless the object has "precision": {"<field>": n}.
+// JSON for messages: write_json writes any message as one JSON object ("type", then each field
+// under its declared name, wire order); read_json<T> reads one back from values a JSON library
+// has tokenised (kind + text). Nothing goes through double: numbers keep the wire's digits. Every
+// wire's object is one loop over the walk (walk.hpp; PGNs: nmea2000/json.hpp, the 0xAB00 frame:
+// anello/frame_json.hpp). The conventions, value type by value type (also fmt.hpp's):
+// docs/seawire-decode.md (writing) and docs/seawire-encode.md (reading).
 
 #include <algorithm>
 #include <array>
@@ -69,8 +35,8 @@ namespace seawire::nmea {
 // ---------------------------------------------------------------------------------------------
 // sinks
 
-/// Where JSON text goes: anything with put(char) and put(std::string_view). The writers never
-/// check for room; a sink that can fill up remembers that it did (json_buffer::overflow()).
+/// Where JSON text goes: put(char) and put(std::string_view); a sink that can fill up remembers
+/// that it did (json_buffer::overflow()).
 template <class S>
 concept json_sink = requires(S& s, char c, std::string_view v) {
   s.put(c);
@@ -109,9 +75,7 @@ class json_buffer {
   bool overflow_ = false;
 };
 
-/// How values are written: as JSON, or plain for people (fmt.hpp's default): times, dates,
-/// enums and other wire words without quotes; text still quoted and escaped, since it may hold
-/// spaces.
+/// As JSON, or plain for people (fmt.hpp): wire words unquoted, text still quoted and escaped.
 enum class json_style : std::uint8_t { json, plain };
 
 // ---------------------------------------------------------------------------------------------
@@ -160,8 +124,8 @@ constexpr void json_string(Sink& s, std::string_view text) noexcept {
   }
 }
 
-/// A decimal as a JSON number: no padding, the wire's fraction digits. One with more than 19
-/// fraction digits (which no decoder makes and encode refuses) is null: the document stays valid.
+/// A decimal as a JSON number: no padding, the wire's fraction digits; null past 19 fraction
+/// digits (no decoder makes one), so the document stays valid.
 template <json_sink Sink>
 constexpr void json_decimal(Sink& s, const decimal& d) noexcept {
   if (d.places > seawire::detail::max_fraction_digits) {
@@ -177,8 +141,8 @@ struct padded {
   unsigned width = 0;
 };
 
-// Three numbers joined by `sep`, then a point and `fraction` when its width is not 0, quoted when
-// Quoted, written at once: a date ("2014-12-31") or a time ("16:49:59.980").
+// A date ("2014-12-31") or time ("16:49:59.980"), written at once: three numbers joined by `sep`,
+// then a point and `fraction` when its width is not 0, quoted when `Quoted`.
 template <bool Quoted, json_sink Sink>
 constexpr void json_joined(Sink& s, const std::array<padded, 3>& parts, char sep,
                            padded fraction = {}) noexcept {
@@ -210,7 +174,7 @@ struct is_text<text<N>> : std::true_type {};
 
 }  // namespace detail
 
-/// One value, by the conventions at the top of this file.
+/// One value, by the JSON conventions (docs/seawire-decode.md).
 template <json_style Style = json_style::json, json_sink Sink, class T>
 constexpr void write_json_value(Sink& s, const T& v) noexcept {
   if constexpr (detail::is_optional<T>::value) {
@@ -302,12 +266,9 @@ class range_sink {
 };
 }  // namespace detail
 
-/// A value as people read it, as std::to_chars writes numbers: into [first, last), no NUL,
-/// ptr past the last character written; std::errc::value_too_large (and ptr == last) when it
-/// does not fit. The text is fmt's "{}" of the value: a decimal's digits as written ("4.50",
-/// "-0.0"), a position in signed decimal degrees, a magnetic variation in signed degrees (east
-/// positive; "null" when it has no value), a time "16:49:59.980", a date "2014-12-31", an enum
-/// its wire letter or word, text as written. Integers and bool: std::to_chars.
+/// A value as fmt's "{}" writes it ("4.50", signed decimal degrees, "16:49:59.980"; a magnetic
+/// variation east positive or "null"), with std::to_chars's contract: into [first, last), no
+/// NUL; std::errc::value_too_large (ptr == last) when it does not fit.
 template <class T>
 requires(has_codec<T> && !std::is_arithmetic_v<T>) [[nodiscard]] constexpr std::to_chars_result
     to_chars(char* first, char* last, const T& value) noexcept {
@@ -350,8 +311,7 @@ struct array_sink {
   }
 };
 
-// The text Text::to(sink) writes, made once at compile time: counted, then written into an
-// array of that size.
+// The text Text::to(sink) writes, made once at compile time (counted, then written).
 template <class Text>
 inline constexpr auto static_text = [] {
   constexpr std::size_t size = [] {
@@ -414,15 +374,13 @@ struct json_field_writer {
 };
 }  // namespace detail
 
-/// `,"key":value` for every field of `msg` in wire order: the members of any message's JSON
-/// object after its head. A value's text is its wire's (put_field_value, found with the field).
+/// `,"key":value` for every field of `msg` in wire order (values by the wire's put_field_value).
 template <nmea::json_sink Sink, walkable M>
 SEAWIRE_ALWAYS_INLINE constexpr void write_json_fields(Sink& s, const M& msg) noexcept {
   visit_fields(msg, detail::json_field_writer<Sink>{s});
 }
 
-/// A message of any wire as one JSON object (no newline): head(s) writes `{"type":...` and what
-/// else the wire puts first, then every field, then '}'. Every write_json is this.
+/// A message of any wire as one JSON object (no newline): head(s) `{"type":...`, fields, '}'.
 template <nmea::json_sink Sink, walkable M, class Head>
 constexpr void write_json_object(Sink& s, const M& msg, Head&& head) noexcept {
   head(s);
@@ -430,8 +388,7 @@ constexpr void write_json_object(Sink& s, const M& msg, Head&& head) noexcept {
   s.put('}');
 }
 
-/// `{name=value, ...}` with values as people read them (json_style::plain): fmt's "{}" of a
-/// message of any wire, after its type.
+/// `{name=value, ...}` with plain values: fmt's "{}" of a message of any wire, after its type.
 template <nmea::json_sink Sink, walkable M>
 constexpr void write_plain_fields(Sink& s, const M& msg) noexcept {
   s.put('{');
@@ -450,8 +407,7 @@ constexpr void write_plain_fields(Sink& s, const M& msg) noexcept {
 
 namespace seawire::nmea {
 
-/// A field's value, by the conventions at the top of this file (the walk's per-wire value text:
-/// see seawire::write_json_fields).
+/// A field's value as JSON (or plain): the walk's value text for sentences.
 template <json_style Style, json_sink Sink, class Info>
 requires(Info::kind ==
          wire_kind::nmea0183) constexpr void put_field_value(Sink& s,
@@ -473,9 +429,8 @@ constexpr void write_json(Sink& s, const T& msg) noexcept {
   });
 }
 
-/// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}. A '!'
-/// sentence (!AIVDM) says so with "start": {"type":"AIVDM","start":"!","fields":[...]}; a '$'
-/// one has no "start" key.
+/// A sentence no known message describes: {"type":"<address>","fields":["...", ...]}, with
+/// "start":"!" after "type" for a '!' sentence (!AIVDM).
 template <json_sink Sink>
 constexpr void write_json(Sink& s, const unknown_sentence& u) noexcept {
   s.put("{\"type\":\"");
@@ -564,9 +519,8 @@ template <class T>
 
 }  // namespace detail
 
-/// One value from JSON, by the conventions at the top of this file. The value must not be
-/// blank (callers handle null and absent). `precision`: for positions, the wire's fraction
-/// digits (minutes for DDMM.mmm positions, degrees for decimal-degree ones); < 0 = default.
+/// One value from JSON, not blank (callers handle null and absent). `precision`: a position's
+/// wire fraction digits (minutes for DDMM.mmm, degrees for decimal degrees); < 0 = default.
 template <class T>
 [[nodiscard]] constexpr errc read_json_value(const json_value& v, T& out,
                                              int precision = -1) noexcept {
@@ -655,14 +609,10 @@ template <message_like T, class V>
 }
 }  // namespace detail
 
-/// Reads a message from a JSON object. `type` is its "type" member ("GPRMC": the talker of a
-/// talker-agnostic message comes from it). `lookup(object, key)` returns the json_value of
-/// member `key` of the message object (object == "") or of its "precision" object (object ==
-/// "precision"; a number of fraction digits for a position field). On failure: the errc and
-/// the field number on the wire of the form being read, as encode_to would number it
-/// (nmea::field_name<T>(field, nmea::form_field_count(value)) names it); wrong_address when
-/// `type` is not T's. Values are checked against the spec's ranges when the message is encoded,
-/// not here.
+/// Reads a message from a JSON object whose "type" is `type` (the talker comes from it).
+/// `lookup(object, key)` gives member `key` of the object (object == "") or of its "precision"
+/// object. Errors: the errc and the wire field number as encode_to numbers it; wrong_address for
+/// another type. Ranges are checked by encode, not here.
 template <message_like T, class Lookup>
 [[nodiscard]] constexpr result<T> read_json(std::string_view type, Lookup&& lookup) noexcept {
   result<T> out;

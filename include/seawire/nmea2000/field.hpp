@@ -1,31 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// NMEA 2000 field values and the PGN description they are declared with.
-//
-// A PGN's payload is one little-endian bit string: the field at bit offset o starts at bit o % 8
-// of byte o / 8, counting from the least significant bit, and a field of several bytes has its
-// least significant byte first. Signed fields are two's complement. A PGN struct holds one member
-// per field and a table (`static constexpr auto n2k = describe_pgn<...>(...)`) listing them in
-// wire order; each field's width, signedness and resolution come from its member's type, so the
-// table is names only and the bit offsets follow from the widths. decode<P>, encode<P>, the JSON
-// and CSV forms, fmt output and the documentation are all loops over that table.
-//
-// Values are kept as the wire's integers ("raw") and converted on access, so whatever a sender
-// put on the bus survives decode -> encode bit for bit. A field of n >= 8 bits reserves its top
-// raw values (canboat's "top of range" rule, what every NMEA 2000 device uses):
-//
-//   all ones (unsigned) / 0x7F.. (signed)   not available     (field_state::not_available)
-//   one below                               out of range      (field_state::out_of_range)
-//   two below                               reserved          (field_state::reserved)
-//
-// Numbers of 4 to 7 bits reserve the first two, of 2 or 3 bits only "not available". A lookup
-// (an enumeration) reserves three of more than 2 bits (61, 62, 63 of a 6-bit one) and two of 2
-// bits (2 and 3: J1939's "error" and "not available" of a two-bit state), as canboat reads them.
-// Flag words have no sentinel: all ones is every flag, and "not available" is a word not sent.
-// A value in one of these states reads as an empty optional; the state says which. The most
-// negative signed value (0x80.., -32.768 m/s in a speed) is an ordinary number.
-//
-// Reserved bits (`reserved_bits<N>` in a table) are sent as ones and ignored when received.
+// NMEA 2000 field values (number, lookup, flags, day_count, time_since_midnight) and the PGN
+// table they are declared in (describe_pgn). A payload is one little-endian bit string: a field
+// at bit offset o starts at bit o % 8 of byte o / 8, least significant byte first, signed fields
+// two's complement. Values are kept raw, so decode -> encode is bit for bit; the top raw values
+// of a field are sentinels (not available, out of range, reserved), reserved bits are sent as
+// ones. The full rules, sentinel counts by width and kind: docs/nmea2000.md.
 
 #include <algorithm>
 #include <array>
@@ -71,9 +51,8 @@ enum class field_state : std::uint8_t {
   return "value";
 }
 
-/// The size of one raw step: physical value = raw x mantissa x 10^exponent. Every resolution in
-/// the standard is of this form (0.25 rpm = 25e-2, 0.004 % = 4e-3, 100 Pa = 1e2), so physical
-/// values convert to and from decimal text exactly.
+/// The size of one raw step: physical value = raw x mantissa x 10^exponent (0.25 rpm = 25e-2,
+/// 0.004 % = 4e-3, 100 Pa = 1e2), so values convert to and from decimal text exactly.
 struct resolution {
   std::int64_t mantissa = 1;
   int exponent = 0;
@@ -87,12 +66,12 @@ struct resolution {
 
 namespace detail {
 
-/// How many of a number's top raw values are sentinels (see the top of this file).
+/// How many of a number's top raw values are sentinels (docs/nmea2000.md).
 [[nodiscard]] constexpr unsigned sentinel_count(unsigned bits) noexcept {
   return bits >= 8 ? 3U : bits >= 4 ? 2U : bits >= 2 ? 1U : 0U;
 }
 
-/// How many of a lookup's top raw values are sentinels (see the top of this file).
+/// How many of a lookup's top raw values are sentinels (docs/nmea2000.md).
 [[nodiscard]] constexpr unsigned lookup_sentinel_count(unsigned bits) noexcept {
   return bits > 2 ? 3U : bits == 2 ? 2U : 0U;
 }
@@ -120,9 +99,8 @@ template <resolution R>
   return d;
 }
 
-/// The raw value nearest m x 10^t at resolution R, negated when `negative` (halves away from
-/// zero, exactly). False when it is beyond what 64 bits hold (the caller's range check then
-/// refuses it).
+/// The raw value nearest m x 10^t at resolution R, negated when `negative`, halves away from
+/// zero; false beyond 64 bits (the caller's range check refuses it).
 template <resolution R>
 [[nodiscard]] constexpr bool raw_from_scaled(std::uint64_t m, int t, bool negative,
                                              std::int64_t& out) noexcept {
@@ -138,10 +116,9 @@ template <resolution R>
 
 }  // namespace detail
 
-/// An integer field of `Bits` bits, `Signed` or not, at resolution `Res` (1 by default).
-/// Default-constructed it is "not available". It never converts from a plain number: build one
-/// with from() (a physical value, rounded to the resolution and range-checked) or from_raw()
-/// (the wire's integer), so 3 m/s can never be sent as raw 3 = 0.03 m/s.
+/// An integer field of `Bits` bits, `Signed` or not, at resolution `Res` (1 by default); "not
+/// available" by default. Built with from() (a physical value) or from_raw(), never from a plain
+/// number (3 m/s is not raw 3 = 0.03 m/s).
 template <unsigned Bits, bool Signed, resolution Res = resolution{}>
 class number {
   static_assert(Bits >= 1 && Bits <= 32 && (!Signed || Bits >= 2), "field width 1..32 bits");
@@ -178,19 +155,16 @@ class number {
     return from_raw(top_raw - 2);
   }
 
-  /// The physical value `d` (in the field's unit), rounded to the nearest step (halves away from
-  /// zero, exactly: 1.005 at 0.01 is raw 101). out_of_range when it is outside what the field
-  /// carries as an ordinary value.
+  /// The physical value `d` (in the field's unit), rounded to the nearest step, halves away from
+  /// zero (1.005 at 0.01 is raw 101). out_of_range outside the field's ordinary values.
   [[nodiscard]] static constexpr result<number> from(const nmea::decimal& d) noexcept {
     std::int64_t raw = 0;
     const bool fits =
         detail::raw_from_scaled<Res>(d.mantissa, -static_cast<int>(d.places), d.negative, raw);
     return checked(fits, raw);
   }
-  /// The physical value `v`, by seawire's one rule for doubles (decimal::from_double): its
-  /// shortest decimal (363.15 K is 363.15, not 363.149999...), rounded to the nearest step,
-  /// halves away from zero (1.005 at 0.01 is raw 101, -1.005 is -101). not_finite for NaN and
-  /// infinities, out_of_range as for a decimal.
+  /// The physical value `v` by decimal::from_double's rule (363.15 K is 363.15, not
+  /// 363.149999...), then as for a decimal. not_finite for NaN and infinities.
   [[nodiscard]] static constexpr result<number> from(double v) noexcept {
     seawire::detail::rounded_double m;
     const errc e = seawire::detail::round_double(v, 1, -Res.exponent,
@@ -205,8 +179,7 @@ class number {
   [[nodiscard]] static constexpr result<number> from(I v) noexcept {
     return from(nmea::decimal(v));
   }
-  /// A character or a bool is not a physical value: without this it would convert to double
-  /// ('A' would be 65).
+  /// A character or a bool is not a physical value ('A' would be 65).
   template <std::integral I>
   requires(!nmea::whole_number<I>) static result<number> from(I) = delete;
 
@@ -258,9 +231,8 @@ using signed_number = number<Bits, true, Res>;
 // ---------------------------------------------------------------------------------------------
 // lookups and flag sets
 
-/// The names of a lookup's values or of a flag set's bits, indexed by value or bit: declared
-/// beside the enum as `constexpr std::array<std::string_view, N> lookup_names(E)` (found by
-/// argument-dependent lookup). These are the JSON and fmt spellings.
+/// The JSON and fmt names of a lookup's values or a flag set's bits, by value or bit: declared
+/// beside the enum as `constexpr std::array<std::string_view, N> lookup_names(E)` (found by ADL).
 template <class E>
 concept named_enum = std::is_enum_v<E> && requires(E e) {
   { lookup_names(e).size() } -> std::convertible_to<std::size_t>;
@@ -282,10 +254,9 @@ template <named_enum E>
 }
 }  // namespace detail
 
-/// A field of `Bits` bits whose values name things (a speed sensor's type, a temperature's
-/// source). Values the standard has not named are kept and sent as they are. The top raw values
-/// are sentinels: three of a lookup of more than 2 bits (63, 62, 61 of a 6-bit one: not
-/// available, out of range, reserved), two of a 2-bit one (3 and 2).
+/// A field of `Bits` bits whose values name things (a speed sensor's type). Values the standard
+/// has not named are kept and sent as they are; the top 3 raw values are sentinels (2 of a 2-bit
+/// lookup).
 template <named_enum E, unsigned Bits>
 class lookup {
   static_assert(Bits >= 1 && Bits <= 16);
@@ -341,11 +312,9 @@ class lookup {
   std::int64_t raw_ = top_raw;
 };
 
-/// A word of `Bits` independent flags (an engine's discrete status). E's values are bit numbers;
-/// bits without a name are kept. No raw value is a sentinel: all ones means every flag is set.
-/// So "not available" is a state of its own, for a word the sender did not send (a payload
-/// that ends before it): default-constructed, a flag set is not available, which is not the same
-/// as none(), every flag clear. encode() can only leave such a word out at the end of a payload.
+/// A word of `Bits` independent flags; E's values are bit numbers, unnamed bits are kept. No raw
+/// value is a sentinel: default-constructed it is "not available" (a word not sent), which is not
+/// none(), every flag clear.
 template <named_enum E, unsigned Bits>
 class flags {
   static_assert(Bits >= 1 && Bits <= 32);
@@ -524,8 +493,7 @@ struct reserved_bits {
 template <unsigned Bits>
 inline constexpr reserved_bits<Bits> reserved{};
 
-/// How a PGN travels: in one CAN frame (up to 8 bytes) or as a fast packet (up to 223 bytes over
-/// up to 32 frames; fast_packet.hpp).
+/// How a PGN travels: one CAN frame (up to 8 bytes) or a fast packet (up to 223 bytes).
 enum class framing : std::uint8_t { single_frame, fast_packet };
 
 /// What the standard says about a PGN besides its fields.
@@ -545,11 +513,10 @@ template <class E, unsigned B>
 inline constexpr bool is_flag_word<flags<E, B>> = true;
 }  // namespace detail
 
-/// How PGN payloads lay out their bits (see the top of this file).
+/// How PGN payloads lay out their bits (docs/nmea2000.md).
 inline constexpr auto payload_order = seawire::detail::bit_order::lsb_first;
 
-/// A PGN's table: its rows are a binary layout (detail/bit_layout.hpp), each where the one before
-/// ends, the first at bit 0.
+/// A PGN's table: a binary layout (detail/bit_layout.hpp), each row where the one before ends.
 template <class... F>
 struct pgn_description {
   pgn_info info;
@@ -593,10 +560,8 @@ using payload_of = std::array<std::uint8_t, description_of<P>::length>;
 // ---------------------------------------------------------------------------------------------
 // decode and encode
 
-/// P from a payload. Fields the payload is too short to hold in full read as not available (a
-/// sender may leave trailing fields out; a flag set left out is not available, not "no flag
-/// set"); bytes past P's length are ignored (a later version of the standard may add fields).
-/// Reserved bits are not looked at. Never fails.
+/// P from a payload. Fields the payload is too short to hold in full read as not available;
+/// bytes past P's length and reserved bits are ignored. Never fails.
 template <pgn_like P>
 [[nodiscard]] constexpr P decode(std::span<const std::uint8_t> payload) noexcept {
   P out{};
@@ -620,9 +585,8 @@ template <pgn_like P>
   return out;
 }
 
-/// The bytes encode() writes for a PGN of `N` bytes: the first size() of `bytes`. That is all N,
-/// unless a flag set that is not available ends the payload early (see encode). A contiguous
-/// range: a std::span<const std::uint8_t> of it (what decode takes) views the bytes written.
+/// The bytes encode() writes for a PGN of `N` bytes: the first size() of `bytes` (fewer than N
+/// when a flag set not available ends the payload). A contiguous range, as decode takes.
 template <std::size_t N>
 struct encoded_bytes {
   std::array<std::uint8_t, N> bytes{};
@@ -649,11 +613,9 @@ struct encoded_bytes {
 template <pgn_like P>
 using encoded_payload = encoded_bytes<description_of<P>::length>;
 
-/// P's payload: every field at its offset, reserved bits as ones. A field not available is sent
-/// as its "not available" value, except a flag set, which has none: the payload then ends before
-/// it (at the byte the word starts in, rounded up), as a sender that leaves trailing fields out
-/// does, so decode() gives back the same message. Errors, with `field` = the row number (of the
-/// first in table order):
+/// P's payload: every field at its offset, reserved bits as ones, a field not available as its
+/// "not available" value; a flag set not available ends the payload at the byte the word starts
+/// in (rounded up). Errors, `field` = the first such row number:
 ///   value_too_large   a member holds a raw value (from_raw) its width cannot carry;
 ///   missing_field     a flag set is not available but a field after it is not "not available"
 ///                     either (the word can only be left out with everything after it).

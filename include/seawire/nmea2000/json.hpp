@@ -1,33 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// NMEA 2000 messages as JSON, one object per message, and read back from a JSON object's values
-// (the same tokenised json_value the sentences use: nmea/json.hpp).
-//
-//   {"type":"PGN128259","time_s":1502984866.953084,"interface":"slcan0","prio":2,"src":116,
-//    "dst":255,"sid":0,"speed_water_mps":0.18,"speed_ground_mps":null,"speed_type":"paddle_wheel",
-//    "speed_direction":null}
-//
-//   "type"         "PGN" and the number, for every PGN, described or not
-//   "time_s"       the log's time in seconds (log.hpp: Unix time, or time of day for yd_raw);
-//                  absent when the line has none
-//   "interface"    candump formats; "direction" ("R"/"T") yd_raw
-//   "prio" "src" "dst"   the identifier's priority, source and destination (255 = broadcast)
-//   then each field of the PGN's table by name, reserved bits left out:
-//   numbers        the physical value with the resolution's digits (798.50 rpm, 60.116 %), null
-//                  when not available, "out_of_range" / "reserved" for those states
-//   lookups        the value's name ("doppler"); the number for a value without a name
-//   flag sets      an array of the names of the flags set (["over_temperature"]); a set bit
-//                  without a name as "bit_N"; [] when the word was sent with no flag set, null
-//                  when it was not sent (a short payload): a flag word has no "not available"
-//                  value of its own, so only its absence says that
-//   date, time     "YYYY-MM-DD" and "hh:mm:ss.ffff" (UTC); a time of 24 h or more (a leap
-//                  second, a sender's clock run past midnight) as "24:00:00.0000" and on, up to
-//                  "119:18:16.7292", and read back so
-//   a PGN of no description: "data" with its bytes in hex ("FF0000FFFF03FFFF")
-//
-// Reading takes the same forms: a number (or numeric string) for a number field, rounded to the
-// resolution and range-checked; null or absent for not available; the state names; a name or a
-// number for a lookup; an array of names (or the raw word as a number) for flags.
+// NMEA 2000 messages as JSON and CSV, and read back from a JSON object's tokenised values
+// (nmea/json.hpp's json_value): "type":"PGN<n>", the log header ("time_s", "interface" or
+// "direction", "prio", "src", "dst"), then the PGN's fields by name. Sentinel states are null,
+// "out_of_range", "reserved"; a flag set is [] when sent clear, null when not sent. Reading also
+// takes a lookup as its number and a flag set as its raw word. The whole schema:
+// docs/seawire-decode.md and docs/seawire-encode.md (NMEA 2000).
 
 #include <cstddef>
 #include <cstdint>
@@ -150,7 +128,7 @@ constexpr bool flag_names(Sink& s, const T& v, char sep) noexcept {
 
 }  // namespace detail
 
-/// One field value by the conventions at the top of this file.
+/// One field value as JSON (or plain).
 template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, field_value T>
 constexpr void write_json_value(Sink& s, const T& v) noexcept {
   using nmea::detail::json_uint;
@@ -252,8 +230,7 @@ constexpr void write_json(Sink& s, const message_header& h, const P& msg) noexce
   write_json_object(s, msg, [&](Sink& out) { write_json_header(out, h); });
 }
 
-/// A message without the header of its frame: `{"type":"PGN<n>"` and the fields, nothing of
-/// priority, source or time (for a message built in code rather than read from a bus).
+/// A message without its frame's header (built in code): `{"type":"PGN<n>"` and the fields.
 template <json_sink Sink, pgn_like P>
 constexpr void write_json(Sink& s, const P& msg) noexcept {
   write_json_object(s, msg, [](Sink& out) {
@@ -319,11 +296,9 @@ template <class T>
   return true;
 }
 
-/// A time field's text as write_json_value writes it: hh:mm:ss with up to 4 fraction digits (the
-/// field's 0.1 ms), the hours of two or more digits, since the field counts past midnight: 24:00:00
-/// and later is what the leap second, and senders whose clock runs on past midnight, send (23:59:60
-/// reads as 24:00:00). bad_time for another form, out_of_range beyond what the field carries as a
-/// value (119:18:16.7292).
+/// A time field's text as written: hh:mm:ss, up to 4 fraction digits, hours of two or more
+/// digits (24:00:00 and on: a leap second, a clock run past midnight; 23:59:60 reads as 24:00:00).
+/// bad_time for another form, out_of_range past 119:18:16.7292.
 [[nodiscard]] constexpr errc parse_time_of_day(std::string_view t, std::int64_t& ticks) noexcept {
   const std::size_t colon = t.find(':');
   if (colon < 2 || colon > 6 || t.size() < colon + 6 || t[colon + 3] != ':') return errc::bad_time;
@@ -350,8 +325,7 @@ template <class T>
 
 }  // namespace detail
 
-/// One field value from JSON (see the top of this file). `lookup(name, index)` is consulted for
-/// the elements of a flag array ("0", "1", ...), `name` being the field's.
+/// One field value from JSON; `lookup(name, index)` gives a flag array's elements ("0", "1", ...).
 template <field_value T, class Lookup>
 [[nodiscard]] constexpr errc read_json_value(const json_value& v, T& out, std::string_view name,
                                              Lookup&& lookup) noexcept {
@@ -429,10 +403,9 @@ template <field_value T, class Lookup>
   }
 }
 
-/// A message of PGN struct P from the members of a JSON object. `lookup(object, key)` returns
-/// member `key` of the object (object == "") or element `key` ("0", "1", ...) of its array member
-/// `object`. On failure: the errc and `field` = the row of P's table (field_name<P> names it).
-/// Unknown members are not looked at (the caller reports them if it wants).
+/// A message of PGN struct P from a JSON object: `lookup(object, key)` gives member `key` (object
+/// == "") or element `key` of array member `object`. Errors: `field` = the row of P's table.
+/// Unknown members are not looked at.
 template <pgn_like P, class Lookup>
 [[nodiscard]] constexpr result<P> read_json(Lookup&& lookup) noexcept {
   result<P> r;
@@ -471,9 +444,9 @@ template <pgn_like P>
   return static_cast<std::uint32_t>(n);
 }
 
-/// The header members of a JSON object (see the top of this file) for a message of `pgn`.
-/// "prio" defaults to `default_priority`, "src" to 0 and "dst" to 255; "time_s" absent leaves no
-/// time. On failure `field` is 1 for time_s, 2 interface, 3 direction, 4 prio, 5 src, 6 dst.
+/// The header members of a JSON object for a message of `pgn`: "prio" defaults to
+/// `default_priority`, "src" to 0, "dst" to 255, no "time_s" to no time. On failure `field` is 1
+/// time_s, 2 interface, 3 direction, 4 prio, 5 src, 6 dst.
 template <class Lookup>
 [[nodiscard]] constexpr result<message_header> read_json_header(std::uint32_t pgn,
                                                                 std::uint8_t default_priority,
@@ -526,9 +499,7 @@ template <class Lookup>
 }
 
 // ---------------------------------------------------------------------------------------------
-// CSV: one table per PGN, columns time_s, prio, src, dst, then the fields; cells as in JSON
-// without quotes, empty for not available and no time, flags joined by ';' ("none" when the word
-// was sent with no flag set).
+// CSV: one table per PGN, columns time_s, prio, src, dst, then the fields (put_csv_value).
 
 /// The header row of P's table, ending in LF.
 template <pgn_like P, json_sink Sink>
