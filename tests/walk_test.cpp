@@ -247,6 +247,36 @@ TEST_CASE("walk: the frame's fields are big-endian, raw with their scale") {
   CHECK(i == v.size());
 }
 
+TEST_CASE("walk: a frame field a strict sender could not have written is out_of_range") {
+  anello::sensor_frame_raw f;
+  f.heading = 361;      // the spec allows 0-360
+  f.gga_quality = 9;    // qualities 0-8
+  f.motor = -101;       // -100..100
+  f.rudder = 100;       // in range
+  f.air_temp = 0x7FFE;  // the wire type's largest value short of "not available"
+  const std::vector<seen> v = walk(f);
+  CHECK(v[0].state == field_state::out_of_range);
+  CHECK(v[0].json == "361");  // the value is still given: the frame has no sentinel for it
+  CHECK(v[9].state == field_state::out_of_range);
+  CHECK(v[9].json == "9");
+  CHECK(v[10].state == field_state::out_of_range);
+  CHECK(v[10].json == "-101");
+  CHECK(v[11].state == field_state::value);
+  CHECK(v[17].state == field_state::value);
+  CHECK(v[17].json == "3276.6");
+  // The same fields are the ones validate() refuses, the first of them by number.
+  const auto checked = anello::validate(f);
+  CHECK(checked.ec == seawire::errc::out_of_range);
+  CHECK(checked.field == 1);
+  std::size_t out_of_range = 0;
+  for (const seen& s : v) out_of_range += s.state == field_state::out_of_range ? 1 : 0;
+  CHECK(out_of_range == 3);
+  // CSV gives the value too; only "not available" is an empty cell.
+  nmea::json_buffer<1024> csv;
+  write_csv_cells(csv, f);
+  CHECK(std::string_view(csv.view()).starts_with("361,,,,,,,,,9,-101,100,"));
+}
+
 TEST_CASE("walk: the layout has the message's facts without a message") {
   const auto sentence = layout<kingfisher::cpnvg>();
   const auto walked = walk(kingfisher::cpnvg{});

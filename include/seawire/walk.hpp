@@ -89,8 +89,10 @@ struct field_layout {
 };
 
 /// A field of a message (visit_fields): its layout, the member as the message holds it (the
-/// frame's: a frame_value made from the raw integer) and its state (not_available for a blank
-/// optional, a variation without a value, a PGN or frame field not available).
+/// frame's: a frame_value made from the raw integer) and its state: not_available for a blank
+/// optional, a variation without a value, a PGN or frame field not available; out_of_range or
+/// reserved for a PGN field's sentinels, and for a frame field build_frame would refuse (the
+/// value is still there: the frame has no sentinel for it).
 template <class Info>
 struct field_view : field_layout<Info> {
   using held = std::conditional_t<Info::by_value, typename Info::value_type,
@@ -263,7 +265,9 @@ struct walk_field : seawire::detail::binary_field<
     return {frame.*desc_type::raw_member};
   }
   [[nodiscard]] static constexpr field_state state(const value_type& v) noexcept {
-    return desc.not_available(v.raw) ? field_state::not_available : field_state::value;
+    if (desc.not_available(v.raw)) return field_state::not_available;
+    // A value build_frame would refuse: outside the spec's range or the wire type's.
+    return desc.acceptable(v.raw) ? field_state::value : field_state::out_of_range;
   }
 };
 

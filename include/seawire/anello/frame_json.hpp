@@ -174,11 +174,11 @@ constexpr std::string_view error_text(std::span<char> out, const result<sensor_f
 }
 
 /// A field's value: null when not available, else the wire's integer with the row's fraction
-/// digits, or the ISO time.
+/// digits, or the ISO time (an out-of-range value too: the frame has no other way to say it).
 template <nmea::json_style Style, nmea::json_sink Sink, class Info>
 requires(Info::kind == wire_kind::anello_frame) constexpr void put_field_value(
     Sink& s, const field_view<Info>& f) noexcept {
-  if (!f.has_value()) {
+  if (f.state == field_state::not_available) {
     s.put("null");
   } else if constexpr (Info::value_type::is_time) {
     detail::write_time_ms<Style>(s, static_cast<std::uint64_t>(f.value.raw));
@@ -193,7 +193,7 @@ template <nmea::json_sink Sink, class Info>
 requires(Info::kind ==
          wire_kind::anello_frame) constexpr void put_csv_value(Sink& s,
                                                                const field_view<Info>& f) noexcept {
-  if (f.has_value()) put_field_value<nmea::json_style::plain>(s, f);
+  if (f.state != field_state::not_available) put_field_value<nmea::json_style::plain>(s, f);
 }
 
 namespace detail {
