@@ -39,6 +39,7 @@
 #include <utility>
 #include <variant>
 
+#include "../tests/hex_of.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/crc32.hpp"
 #include "seawire/error.hpp"
@@ -52,6 +53,8 @@
 #include "seawire/registry.hpp"
 
 namespace seawire::fuzz {
+
+using support::hex_of;
 
 // ---------------------------------------------------------------------------------------------
 // reporting
@@ -94,16 +97,6 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) noex
 }
 
 inline std::string number(std::uint64_t v) { return std::to_string(v); }
-
-/// Bytes as upper-case hex digits, for failure reports.
-inline std::string hex_of(std::span<const std::uint8_t> bytes) {
-  std::string out;
-  for (const std::uint8_t b : bytes) {
-    out += "0123456789ABCDEF"[b >> 4U];
-    out += "0123456789ABCDEF"[b & 15U];
-  }
-  return out;
-}
 
 // ---------------------------------------------------------------------------------------------
 // integrity fix-ups

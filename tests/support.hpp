@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hex_of.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/stream.hpp"
@@ -113,16 +114,6 @@ inline const char* ending_name(seawire::nmea::line_ending e) {
     case seawire::nmea::line_ending::crlf: return "crlf";
   }
   return "?";
-}
-
-/// Bytes as upper-case hex, two digits each, nothing between.
-inline std::string hex_of(std::span<const std::uint8_t> bytes) {
-  std::string out;
-  for (const std::uint8_t b : bytes) {
-    out += "0123456789ABCDEF"[b >> 4U];
-    out += "0123456789ABCDEF"[b & 15U];
-  }
-  return out;
 }
 
 /// A sink for the text writers (JSON, CSV): what they put, kept as a string.
