@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/seawire.hpp"
 
 #ifndef SEAWIRE_SOURCE_DIR
@@ -30,11 +31,6 @@
 namespace {
 
 using namespace seawire;
-
-template <auto V>
-std::string_view signature() {
-  return __PRETTY_FUNCTION__;
-}
 
 [[noreturn]] void fail(std::string_view what, std::string_view detail) {
   std::fprintf(stderr, "enums_doc: %.*s: %.*s\n", static_cast<int>(what.size()), what.data(),
@@ -51,14 +47,11 @@ std::string_view argument(std::string_view signature, std::string_view parameter
   return rest.substr(0, rest.find_first_of(";]"));
 }
 
-// The enumerator whose value is V, by name ("red"); empty when V is no enumerator (the compiler
-// writes it as a cast, "(seawire::robotx::color)66").
+// The enumerator whose value is V, by name ("red"); empty when V is no enumerator (the library's
+// reading of the compiler's signature, detail/enum_names.hpp).
 template <auto V>
 std::string enumerator() {
-  const std::string_view e = argument(signature<V>(), "V");
-  if (e.empty() || e[0] == '(' || e[0] == '-' || (e[0] >= '0' && e[0] <= '9')) return {};
-  const std::size_t colon = e.rfind("::");
-  return std::string(colon == std::string_view::npos ? e : e.substr(colon + 2));
+  return std::string(seawire::detail::enumerator_name<V>());
 }
 
 struct row {

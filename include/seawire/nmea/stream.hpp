@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/framer_scan.hpp"
@@ -118,16 +119,7 @@ enum class drop_reason : std::uint8_t {
 
 /// "noise", "invalid_byte", ...: the enumerator's name.
 [[nodiscard]] constexpr std::string_view name(drop_reason r) noexcept {
-  switch (r) {
-    case drop_reason::noise: return "noise";
-    case drop_reason::invalid_byte: return "invalid_byte";
-    case drop_reason::overlong: return "overlong";
-    case drop_reason::interrupted: return "interrupted";
-    case drop_reason::bad_crc: return "bad_crc";
-    case drop_reason::bad_length: return "bad_length";
-    case drop_reason::truncated_frame: return "truncated_frame";
-  }
-  return "unknown";
+  return seawire::detail::enumerator_name_of<7>(r);
 }
 
 /// One drop: which bytes of the stream the reader gave up on, and why. The stream_item's offset

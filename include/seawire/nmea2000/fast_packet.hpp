@@ -16,6 +16,7 @@
 #include <span>
 #include <string_view>
 
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea2000/can_id.hpp"
 
@@ -131,16 +132,7 @@ enum class fast_packet_drop : std::uint8_t {
 inline constexpr std::size_t fast_packet_drop_count = 7;
 
 [[nodiscard]] constexpr std::string_view name(fast_packet_drop d) noexcept {
-  switch (d) {
-    case fast_packet_drop::missing_frame: return "missing_frame";
-    case fast_packet_drop::repeated_frame: return "repeated_frame";
-    case fast_packet_drop::sequence_changed: return "sequence_changed";
-    case fast_packet_drop::too_long: return "too_long";
-    case fast_packet_drop::short_frame: return "short_frame";
-    case fast_packet_drop::orphan_frame: return "orphan_frame";
-    case fast_packet_drop::evicted: return "evicted";
-  }
-  return "unknown";
+  return seawire::detail::enumerator_name_of<fast_packet_drop_count>(d);
 }
 
 /// A packet the assembler completed. `payload` views the assembler's buffer: valid until the

@@ -42,13 +42,7 @@ enum class field_state : std::uint8_t {
 };
 
 [[nodiscard]] constexpr std::string_view name(field_state s) noexcept {
-  switch (s) {
-    case field_state::value: return "value";
-    case field_state::not_available: return "not_available";
-    case field_state::out_of_range: return "out_of_range";
-    case field_state::reserved: return "reserved";
-  }
-  return "value";
+  return seawire::detail::enumerator_name_of<4>(s);
 }
 
 /// The size of one raw step: physical value = raw x mantissa x 10^exponent (0.25 rpm = 25e-2,

@@ -16,6 +16,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/calendar.hpp"
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/text.hpp"
 #include "seawire/nmea2000/can_id.hpp"
@@ -26,13 +27,7 @@ namespace seawire::nmea2000 {
 enum class log_format : std::uint8_t { candump_log, candump, canboat, yd_raw };
 
 [[nodiscard]] constexpr std::string_view name(log_format f) noexcept {
-  switch (f) {
-    case log_format::candump_log: return "candump_log";
-    case log_format::candump: return "candump";
-    case log_format::canboat: return "canboat";
-    case log_format::yd_raw: return "yd_raw";
-  }
-  return "candump_log";
+  return seawire::detail::enumerator_name_of<4>(f);
 }
 
 /// The format called `text` (as name() spells it), or nullopt.

@@ -16,6 +16,7 @@
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/calendar.hpp"
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/checksum.hpp"
 #include "seawire/nmea/dispatch.hpp"
@@ -50,24 +51,7 @@ inline constexpr std::size_t rule_count = 15;
 
 /// The identifier of a rule as text ("checksum_lowercase").
 [[nodiscard]] constexpr std::string_view name(rule r) noexcept {
-  switch (r) {
-    case rule::framing: return "framing";
-    case rule::checksum: return "checksum";
-    case rule::checksum_lowercase: return "checksum_lowercase";
-    case rule::checksum_decimal: return "checksum_decimal";
-    case rule::line_ending: return "line_ending";
-    case rule::unknown_address: return "unknown_address";
-    case rule::field: return "field";
-    case rule::unpadded: return "unpadded";
-    case rule::team_id: return "team_id";
-    case rule::team_mismatch: return "team_mismatch";
-    case rule::field_count: return "field_count";
-    case rule::rate: return "rate";
-    case rule::heartbeat_gap: return "heartbeat_gap";
-    case rule::clock_skew: return "clock_skew";
-    case rule::hemisphere_flip: return "hemisphere_flip";
-  }
-  return "unknown_rule";
+  return seawire::detail::enumerator_name_of<rule_count>(r, "unknown_rule");
 }
 
 /// A sentence of explanation for a rule, for people.

@@ -15,6 +15,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/writer.hpp"
@@ -63,22 +64,7 @@ enum class payload_event_kind : std::uint8_t {
 
 /// The identifier of a payload_event_kind as text ("ack_ok"), for logs.
 [[nodiscard]] constexpr std::string_view name(payload_event_kind k) noexcept {
-  switch (k) {
-    case payload_event_kind::ack_ok: return "ack_ok";
-    case payload_event_kind::ack_failed: return "ack_failed";
-    case payload_event_kind::ack_invalid: return "ack_invalid";
-    case payload_event_kind::ack_pending: return "ack_pending";
-    case payload_event_kind::ack_timeout: return "ack_timeout";
-    case payload_event_kind::command_resent: return "command_resent";
-    case payload_event_kind::command_failed_after_retries: return "command_failed_after_retries";
-    case payload_event_kind::unmatched_ack: return "unmatched_ack";
-    case payload_event_kind::control_gained: return "control_gained";
-    case payload_event_kind::control_lost: return "control_lost";
-    case payload_event_kind::shutdown: return "shutdown";
-    case payload_event_kind::outbox_overflow: return "outbox_overflow";
-    case payload_event_kind::events_lost: return "events_lost";
-  }
-  return "unknown_event";
+  return seawire::detail::enumerator_name_of<13>(k, "unknown_event");
 }
 
 /// What sent the message an event is about.

@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -69,17 +70,7 @@ enum class vehicle_event_kind : std::uint8_t {
 
 /// The identifier of a vehicle_event_kind as text ("request_expired"), for logs.
 [[nodiscard]] constexpr std::string_view name(vehicle_event_kind k) noexcept {
-  switch (k) {
-    case vehicle_event_kind::request_started: return "request_started";
-    case vehicle_event_kind::request_expired: return "request_expired";
-    case vehicle_event_kind::request_cancelled: return "request_cancelled";
-    case vehicle_event_kind::abort_requested: return "abort_requested";
-    case vehicle_event_kind::command_pending: return "command_pending";
-    case vehicle_event_kind::invalid_command: return "invalid_command";
-    case vehicle_event_kind::outbox_overflow: return "outbox_overflow";
-    case vehicle_event_kind::events_lost: return "events_lost";
-  }
-  return "unknown_event";
+  return seawire::detail::enumerator_name_of<8>(k, "unknown_event");
 }
 
 struct vehicle_event {
