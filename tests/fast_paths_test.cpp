@@ -594,23 +594,28 @@ errc reference_position(std::string_view s, nmea_coordinate<Axis>& v) {
   return errc::ok;
 }
 
-// Times as the time codec read them before: three parse_fixed_digits and the fraction.
+// Times by a plain reading of hhmmss[.f], one to nine fraction digits, that shares nothing with
+// the codec's digit readers.
 errc reference_time(std::string_view s, time_of_day& v) {
-  unsigned h = 0, m = 0, sec = 0;
-  if (!nmea::detail::parse_fixed_digits(s, 0, 2, h) ||
-      !nmea::detail::parse_fixed_digits(s, 2, 2, m) ||
-      !nmea::detail::parse_fixed_digits(s, 4, 2, sec))
-    return errc::bad_time;
+  const auto number = [s](std::size_t from, std::size_t n, unsigned& out) {
+    out = 0;
+    if (from + n > s.size()) return false;
+    for (const char c : s.substr(from, n)) {
+      if (c < '0' || c > '9') return false;
+      out = out * 10 + static_cast<unsigned>(c - '0');
+    }
+    return true;
+  };
+  unsigned hms[3] = {};
+  for (std::size_t k = 0; k < 3; ++k)
+    if (!number(2 * k, 2, hms[k])) return errc::bad_time;
   unsigned frac = 0;
-  std::size_t places = 0;
-  if (s.size() > 6) {
-    places = s.size() - 7;
-    if (s[6] != '.' || places == 0 || places > 9 ||
-        !nmea::detail::parse_fixed_digits(s, 7, places, frac))
-      return errc::bad_time;
-  }
-  v = {static_cast<std::uint8_t>(h), static_cast<std::uint8_t>(m), static_cast<std::uint8_t>(sec),
-       frac, static_cast<std::uint8_t>(places)};
+  const std::size_t places = s.size() > 7 ? s.size() - 7 : 0;
+  const bool fraction_ok =
+      s.size() == 6 || (s[6] == '.' && places >= 1 && places <= 9 && number(7, places, frac));
+  if (!fraction_ok) return errc::bad_time;
+  v = {static_cast<std::uint8_t>(hms[0]), static_cast<std::uint8_t>(hms[1]),
+       static_cast<std::uint8_t>(hms[2]), frac, static_cast<std::uint8_t>(places)};
   return codec<time_of_day>::check(v);
 }
 
