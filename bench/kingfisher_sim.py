@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSL-1.0
 """Figures for seawire-kingfisher-sim, on loopback (build it in Release for these):
 
-    python3 bench/kingfisher_sim.py build/<dir>/examples/tools/seawire-kingfisher-sim
+    python3 bench/kingfisher_sim.py build/<dir>/tools/seawire-kingfisher-sim
 
 1. Throughput: sentences per second one simulator delivers to 50 clients, each client reading
    everything (the simulator at --nav-rate 1000, so it sends 4,000+ sentences a second to each

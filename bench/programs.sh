@@ -20,7 +20,7 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DSEAWIRE_
   >/dev/null
 cmake --build "$build" -j "${SEAWIRE_JOBS:-1}" --target seawire-decode seawire-encode \
   seawire-xor-baseline
-tools=$build/examples/tools
+tools=$build/tools
 
 # The family logs (not bad.nmea), over and over, to the wanted number of lines.
 logs=(examples/data/{kingfisher,sandshark,robotx,anello,standard}.nmea)

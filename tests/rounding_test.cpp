@@ -3,7 +3,7 @@
 // (what std::to_chars writes), rounded half away from zero to the places or step the wire needs.
 // Checked path by path (decimal::from_double, positions, magnetic variation, nmea::builder,
 // nmea2000::number::from, the ANELLO frame) against a table Python's decimal module computed
-// (tests/data/rounding_table.txt, checked by tests/programs/rounding_table.py), and the
+// (tests/data/rounding_table.txt, checked by tests/rounding_table.py), and the
 // shortest digits against std::to_chars over many random doubles.
 
 #include <catch2/catch.hpp>

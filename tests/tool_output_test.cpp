@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The programs' buffered output (examples/tools/io.hpp): what goes in comes out byte for byte,
+// The programs' buffered output (tools/common/io.hpp): what goes in comes out byte for byte,
 // whatever the sizes of the pieces and wherever the end of the buffer falls among them.
 
 #include <catch2/catch.hpp>
@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "../examples/tools/io.hpp"
+#include "../tools/common/io.hpp"
 #include "support.hpp"
 
 namespace {

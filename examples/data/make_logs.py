@@ -5,7 +5,7 @@
 One realistic log per protocol family, CR LF, canonical (uppercase checksums), built around the
 verified vectors with generated lines around them (plausible motion, correct
 checksums), plus bad.nmea, a few lines that must be rejected, with good lines between them.
-The programs' tests (tests/programs/) know these files line by line: regenerate, then update
+The programs' tests (tools/decode/ and tools/encode/) know these files line by line: regenerate, then update
 the expectations there.
 """
 
@@ -385,7 +385,7 @@ def standard():
 
 
 # ------------------------------------------------------------------------------------------------
-# Bad on purpose. Each rejected line is commented in tests/programs/programs_test.sh.
+# Bad on purpose. Each rejected line is commented in tools/decode/programs_test.sh.
 
 
 def bad():

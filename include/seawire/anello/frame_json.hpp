@@ -5,7 +5,7 @@
 // available, gps_time ISO 8601 UTC with milliseconds (integer milliseconds outside years
 // 1970..9999). read_frame_json is as strict as build_frame; fix_quality must be a whole number.
 // Every frame validate() accepts reads back as the same frame, not available as each type's
-// maximum. Schema: docs/seawire-decode.md, docs/seawire-encode.md; rules: docs/anello-frame.md.
+// maximum. Schema: tools/decode/README.md, tools/encode/README.md; rules: docs/anello-frame.md.
 
 #include <chrono>
 #include <cstddef>

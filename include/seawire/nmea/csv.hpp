@@ -4,7 +4,7 @@
 // (write_csv_header<T>) and one row per message (write_csv), RFC 4180 with LF line ends. Cells
 // are the JSON values unquoted, empty when blank or not available (pandas NaN, R NA); a cell is
 // quoted, inner quotes doubled, only when it holds a comma, a quote, CR or LF. Every wire's tables
-// are loops over the walk (write_csv_columns, write_csv_cells). Details: docs/seawire-decode.md.
+// are loops over the walk (write_csv_columns, write_csv_cells). Details: tools/decode/README.md.
 
 #include <cstddef>
 #include <string_view>

@@ -5,7 +5,7 @@
 // has tokenised (kind + text). Nothing goes through double: numbers keep the wire's digits. Every
 // wire's object is one loop over the walk (walk.hpp; PGNs: nmea2000/json.hpp, the 0xAB00 frame:
 // anello/frame_json.hpp). The conventions, value type by value type (also fmt.hpp's):
-// docs/seawire-decode.md (writing) and docs/seawire-encode.md (reading).
+// tools/decode/README.md (writing) and tools/encode/README.md (reading).
 
 #include <algorithm>
 #include <array>
@@ -174,7 +174,7 @@ struct is_text<text<N>> : std::true_type {};
 
 }  // namespace detail
 
-/// One value, by the JSON conventions (docs/seawire-decode.md).
+/// One value, by the JSON conventions (tools/decode/README.md).
 template <json_style Style = json_style::json, json_sink Sink, class T>
 constexpr void write_json_value(Sink& s, const T& v) noexcept {
   if constexpr (detail::is_optional<T>::value) {

@@ -5,7 +5,7 @@
 // "direction", "prio", "src", "dst"), then the PGN's fields by name. Sentinel states are null,
 // "out_of_range", "reserved"; a flag set is [] when sent clear, null when not sent. Reading also
 // takes a lookup as its number and a flag set as its raw word. The whole schema:
-// docs/seawire-decode.md and docs/seawire-encode.md (NMEA 2000).
+// tools/decode/README.md and tools/encode/README.md (NMEA 2000).
 
 #include <cstddef>
 #include <cstdint>

@@ -6,7 +6,7 @@
 // sentence by its address; a CAN log goes through nmea2000::log_reader (lines, fast packets).
 // Every message, of every wire, goes out through one place (decoder::deliver): the library's JSON
 // and CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp, which gathers
-// positions from the same walk. See --help, and docs/seawire-decode.md for the manual.
+// positions from the same walk. See --help, and tools/decode/README.md for the manual.
 
 #include <sys/stat.h>
 #include <unistd.h>

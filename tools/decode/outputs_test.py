@@ -22,6 +22,7 @@ import sys
 import tempfile
 import zlib
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import harness
 from harness import check, run_case, seal
 
@@ -29,7 +30,7 @@ DECODE, DATA, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 RSVG = sys.argv[4] if len(sys.argv) > 4 else None
 FAMILIES = ["kingfisher", "sandshark", "robotx", "anello", "anello_mixed", "standard"]
 # NMEA 2000 CAN logs (candump, plain/fast, YD raw), beside the tests that use them.
-N2K = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "n2k")
+N2K = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "data", "n2k")
 N2K_LOGS = sorted(f for f in os.listdir(N2K) if f.endswith(".in"))
 
 
@@ -491,4 +492,4 @@ def case_progress():
         check(err == b"", f"stdin a pipe: {err[:200]!r}")
 
 
-run_case({"csv": case_csv, "geojson": case_geojson, "svg": case_svg, "progress": case_progress}, CASE)
+run_case(globals(), CASE)

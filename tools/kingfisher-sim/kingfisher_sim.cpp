@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // seawire-kingfisher-sim: a Clearpath Kingfisher for payloads to talk to. A TCP server (port
 // 29500 unless told otherwise) that streams the vehicle's sentences to every client and obeys
-// the PY* commands any client sends. Manual: docs/seawire-kingfisher-sim.md.
+// the PY* commands any client sends. Manual: tools/kingfisher-sim/README.md.
 
 #include <CLI/CLI.hpp>
 #include <asio.hpp>

@@ -2,8 +2,9 @@
 """What the program tests here share: checks that are counted, NMEA checksums, a program that
 listens on an ephemeral port, a program's refusals of bad arguments, and the end of a run.
 
-A test script imports it from its own folder (python3 puts the script's folder first on the path):
+A test script beside a program imports it from tools/common:
 
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
     from harness import check, finish
     ...
     finish()   # the failures counted, exit 1 if any, else "ok"
@@ -41,9 +42,20 @@ def finish():
     print("ok")
 
 
-def run_case(cases, name):
-    """Runs the case `name` of `cases` (name -> function), then finish()."""
-    cases[name]()
+def case_of(scope, name):
+    """The function case_<name> of `scope` (a test script's globals()): a script's cases are its
+    case_ functions, and CMake makes one test of each (tools/CMakeLists.txt)."""
+    fn = scope.get("case_" + name)
+    if not callable(fn):
+        cases = sorted(k[5:] for k, v in scope.items() if k.startswith("case_") and callable(v))
+        print(f"no case {name!r}; the cases: {' '.join(cases)}", file=sys.stderr)
+        sys.exit(2)
+    return fn
+
+
+def run_case(scope, name):
+    """Runs the case `name` (the function case_<name> of `scope`), then finish()."""
+    case_of(scope, name)()
     finish()
 
 

@@ -2,7 +2,7 @@
 // seawire-tcp: a line-framed TCP client for the shell. Sentences from stdin go to the server,
 // sentences from the server go to stdout, each cut out by seawire's stream reader (a garbled or
 // overlong line from either side is dropped, never glued to the next), each ended with CR LF.
-// Manual: docs/seawire-tcp.md.
+// Manual: tools/tcp/README.md.
 
 #include <fcntl.h>
 #include <poll.h>

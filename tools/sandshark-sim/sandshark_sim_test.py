@@ -16,6 +16,7 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from harness import Server, check, checksum_ok, refusals, run_case, seal
 
 SIM, CASE = sys.argv[1], sys.argv[2]
@@ -262,4 +263,4 @@ def case_usage():
     os.remove(bad)
 
 
-run_case({"session": case_session, "usage": case_usage, "backseat": case_backseat}, CASE)
+run_case(globals(), CASE)

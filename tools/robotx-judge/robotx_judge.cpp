@@ -3,7 +3,7 @@
 // for rehearsing a team's reports. Every line a team sends is judged as it arrives by
 // robotx::validator; each rule broken is printed at once, RXCOD, RXDOK and RXDEL are echoed back
 // as the judges' system does, and a summary per team is printed at the end.
-// Manual: docs/seawire-robotx-judge.md.
+// Manual: tools/robotx-judge/README.md.
 
 #include <CLI/CLI.hpp>
 #include <asio.hpp>

@@ -21,6 +21,7 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from harness import Server, check, checksum_ok, refusals, run_case, seal
 
 SIM, DECODE, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -446,6 +447,4 @@ def case_usage():
     check(r.returncode == 1 and b"in use" in r.stderr, "port in use: %r" % r.stderr[-200:])
 
 
-run_case({"stream": case_stream, "commands": case_commands, "load": case_load, "churn": case_churn,
-          "gpsd": case_gpsd, "signals": case_signals, "usage": case_usage, "payload": case_payload,
-          "north": case_north, "linger": case_linger}, CASE)
+run_case(globals(), CASE)

@@ -3,7 +3,7 @@
 // sensor frame and NMEA sentences -- on its RS-232 input (a serial device set up with termios,
 // 115200 8N1 by default) or over UDP, paced at the frame rate, from a simulated boat or from a
 // stream seawire-encode wrote. With --read-rmc it also reads the INS's RMC output back from the
-// same device. Manual: docs/seawire-anello-feed.md.
+// same device. Manual: tools/anello-feed/README.md.
 
 #include <fcntl.h>
 #include <termios.h>

@@ -8,9 +8,11 @@
 import signal
 import socket
 import subprocess
+import os
 import sys
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from harness import check, run_case
 
 TCP, CASE = sys.argv[1], sys.argv[2]
@@ -147,5 +149,4 @@ def case_errors():
     check(r.returncode == 0 and b"--reconnect" in r.stdout, "--help")
 
 
-run_case({"framing": case_framing, "send": case_send, "reconnect": case_reconnect,
-          "errors": case_errors}, CASE)
+run_case(globals(), CASE)

@@ -4,7 +4,7 @@
 // controller for PYDEV, first-order speed and yaw-rate responses, and the position integrated on
 // the WGS84 ellipsoid. No I/O; the program steps it at its navigation rate.
 //
-// Dynamics (all documented in docs/seawire-kingfisher-sim.md):
+// Dynamics (all documented in tools/kingfisher-sim/README.md):
 // - Thrust t (-100..100 %) per side. Speed demand = max_speed * (left + right) / 200 (reverse is
 //   capped at half the forward speed); yaw-rate demand = max_yaw_rate * (left - right) / 200,
 //   positive clockwise (more port thrust turns to starboard).

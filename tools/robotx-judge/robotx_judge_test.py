@@ -10,10 +10,12 @@ import re
 import signal
 import socket
 import subprocess
+import os
 import sys
 import threading
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from harness import Server, check, refusals, run_case, seal
 
 JUDGE, CASE = sys.argv[1], sys.argv[2]
@@ -186,5 +188,4 @@ def case_usage():
               (["--report", "xml", "--listen", "127.0.0.1:0"], b"report")))
 
 
-run_case({"live": case_live, "text": case_text, "usage": case_usage, "heartbeat": case_heartbeat,
-          "reasons": case_reasons}, CASE)
+run_case(globals(), CASE)

@@ -4,7 +4,7 @@
 // sandshark::vehicle_session: BFVER on connect, BPLOG subscriptions per client, acks (pending
 // then final for the commands configured), a mission timeline with BFMIS and BFCTL handover,
 // BPRMB requests that steer a small vehicle model and lapse after 5 s, BPABT, and BFSHT before
-// shutting down. Manual: docs/seawire-sandshark-sim.md.
+// shutting down. Manual: tools/sandshark-sim/README.md.
 
 #include <CLI/CLI.hpp>
 #include <asio.hpp>

@@ -22,6 +22,7 @@ import re
 import sys
 from decimal import Decimal
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import harness
 from harness import check
 
@@ -840,7 +841,7 @@ def case_errors():
           f"130578 of 19 bytes, frames vs FAST line: {a} {b}")
 
 
-{"canboat": case_canboat, "layout": case_layout, "errors": case_errors}[CASE]()
+harness.case_of(globals(), CASE)()
 if compared:
     print(f"{CASE}: {compared} values compared")
 harness.finish()

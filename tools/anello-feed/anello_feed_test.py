@@ -16,6 +16,7 @@ import tempfile
 import time
 import tty
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 from harness import check, refusals, run_case
 
 FEED, DECODE, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -152,5 +153,4 @@ def case_usage():
               (["--input", "/nonexistent"], b"cannot be read", 2)), extra=["--seconds", "0.1"])
 
 
-run_case({"pty": case_pty, "udp": case_udp, "input": case_input, "usage": case_usage,
-          "signal": case_signal}, CASE)
+run_case(globals(), CASE)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSL-1.0
 # Runs the real seawire-decode and seawire-encode over examples/data and checks their output,
-# errors and exit status. One ctest test per case (tests/programs/CMakeLists.txt):
+# errors and exit status. One ctest test per case_ function (tools/CMakeLists.txt):
 #   programs_test.sh <seawire-decode> <seawire-encode> <examples/data> <case> [<registry list>]
 # The registry list (tests/registry/list.cpp) prints every message seawire declares.
 set -euo pipefail
@@ -949,7 +949,7 @@ case_live() {
 
 case_reasons() {
   # An enum value in the other message's spelling is accepted and given in the message's own
-  # (docs/seawire-decode.md, docs/round-trip.md): RobotX's cruciform.
+  # (tools/decode/README.md, docs/round-trip.md): RobotX's cruciform.
   crlf "$(seal RXDOK,101218,161229,AUVSI,G,CRUCI)" "$(seal RXDEL,101218,161229,AUVSI,G,CRUC)" \
     >"$work/in"
   expect_rc "both cruciform spellings" 0 "$decode" <"$work/in"

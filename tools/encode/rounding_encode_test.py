@@ -11,9 +11,11 @@ module computes from the same text (ROUND_HALF_UP); values past a field's range 
 """
 
 import json
+import os
 import sys
 from decimal import ROUND_HALF_UP, Decimal
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import harness
 from harness import check
 

@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: BSL-1.0
 # The programs and examples are written against the public API only: no seawire detail
 # namespace, no header under seawire/detail/. One exception: the programs' output buffer
-# (examples/tools/io.hpp) copies its short pieces with the library's own copy_bytes, rather than
+# (tools/common/io.hpp) copies its short pieces with the library's own copy_bytes, rather than
 # keeping a second copy of it. Run: cmake -DSOURCE_DIR=<root> -P public_api.cmake
-file(GLOB_RECURSE sources "${SOURCE_DIR}/examples/*.cpp" "${SOURCE_DIR}/examples/*.hpp")
+file(GLOB_RECURSE sources "${SOURCE_DIR}/tools/*.cpp" "${SOURCE_DIR}/tools/*.hpp"
+     "${SOURCE_DIR}/examples/*.cpp" "${SOURCE_DIR}/examples/*.hpp")
 set(found "")
 foreach(source IN LISTS sources)
   file(STRINGS "${source}" lines)
@@ -12,7 +13,7 @@ foreach(source IN LISTS sources)
     math(EXPR n "${n} + 1")
     # Other libraries' detail namespaces (nlohmann::detail::exception) are theirs to expose.
     string(REGEX REPLACE "nlohmann::detail::" "" line "${line}")
-    if(source MATCHES "/examples/tools/io\\.hpp$")
+    if(source MATCHES "/tools/common/io\\.hpp$")
       string(REGEX REPLACE "seawire/detail/copy\\.hpp|seawire::detail::copy_bytes" "" line "${line}")
     endif()
     if(line MATCHES "detail::" OR line MATCHES "seawire/detail/")
@@ -21,10 +22,10 @@ foreach(source IN LISTS sources)
   endforeach()
 endforeach()
 if(found)
-  message(FATAL_ERROR "the examples use seawire internals:${found}")
+  message(FATAL_ERROR "the programs or examples use seawire internals:${found}")
 endif()
 list(LENGTH sources count)
 if(count EQUAL 0)
-  message(FATAL_ERROR "no example sources under ${SOURCE_DIR}/examples")
+  message(FATAL_ERROR "no sources under ${SOURCE_DIR}/tools and ${SOURCE_DIR}/examples")
 endif()
-message(STATUS "${count} example sources use the public API only")
+message(STATUS "${count} program and example sources use the public API only")
