@@ -96,7 +96,7 @@ std::string letters_decoded() {
 template <class V>
 void check_enum(std::string_view where, std::set<std::string>& seen) {
   if constexpr (nmea::char_enum_like<V>) {
-    if (!seen.insert(std::string(nmea::detail::enum_listing<V{}>())).second) return;
+    if (!seen.insert(std::string(seawire::detail::enum_listing<V{}>())).second) return;
     INFO(std::string(where));
     const std::string_view letters = nmea::enum_letters<V>;
     CHECK(!letters.empty());

@@ -44,24 +44,11 @@ concept has_enum_aliases = requires(E e) {
 
 namespace detail {
 
-// C++20 cannot list an enum's enumerators, but every compiler prints a template's arguments in
-// its function-name string, an enumerator by its name and any other value as a cast:
-//   GCC    "... [with auto ...V = {ns::e::a, (ns::e)66}; ...]"
-//   Clang  "... [V = <ns::e::a, (ns::e)66>]", "<(anonymous namespace)::e::a, ...>"
-//   MSVC   "... enum_listing<ns::e::a,(enum ns::e)0x42>(void)"
-// One instantiation with every candidate letter tells which are enumerators, one with the other
-// printable bytes that none is. They are made only where a letter field is decoded, encoded or
-// printed (about 10 ms of GCC's time, 25 of Clang's, an enum), never where a header is merely
-// included.
-template <auto... V>
-constexpr std::string_view enum_listing() noexcept {
-#if defined(_MSC_VER) && !defined(__clang__)
-  return __FUNCSIG__;
-#else
-  return __PRETTY_FUNCTION__;
-#endif
-}
-
+// An enum's letters are read from the compiler's listing of candidate values
+// (seawire::detail::enum_listing): one instantiation with every candidate letter tells which are
+// enumerators, one with the other printable bytes that none is. They are made only where a letter
+// field is decoded, encoded or printed (about 10 ms of GCC's time, 25 of Clang's, an enum), never
+// where a header is merely included.
 inline constexpr std::string_view letter_candidates =
     "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
 // The other printable bytes: an enumerator that is one of them could be declared but never sent
@@ -74,75 +61,34 @@ struct letter_set {
   bool parsed = false;  ///< the listing had one element per candidate
 };
 
-// Whether one element of a listing is a cast ("(ns::e)66", "((anonymous namespace)::e)66") or a
-// bare number ("0x42"), which is no enumerator, rather than a name ("(anonymous namespace)::e::a").
-constexpr bool is_cast_or_number(std::string_view element) {
-  const auto digit = [](char c) { return c == '-' || (c >= '0' && c <= '9'); };
-  if (element.empty() || digit(element[0])) return true;
-  if (element[0] != '(') return false;
-  int depth = 0;
-  for (std::size_t i = 0; i < element.size(); ++i) {
-    if (element[i] == '(') ++depth;
-    if (element[i] == ')' && --depth == 0) return i + 1 < element.size() && digit(element[i + 1]);
-  }
-  return true;
-}
-
 // Which elements of `listing`'s argument list are names, in candidate order.
 constexpr letter_set enumerators_among_candidates(std::string_view listing,
                                                   std::string_view candidates = letter_candidates) {
   letter_set out;
-  std::size_t at = listing.find("V = ");
-  if (at != std::string_view::npos) {
-    at += 5;  // past "V = {" or "V = <"
-  } else if ((at = listing.find("enum_listing<")) != std::string_view::npos) {
-    at += 13;
-  } else {
-    return out;
-  }
   std::size_t element = 0;
-  while (at < listing.size()) {
-    while (at < listing.size() && listing[at] == ' ') ++at;
-    if (element >= candidates.size()) return out;
-    // To the ',' that ends this element, or the bracket that ends the list.
-    const std::size_t begin = at;
-    int depth = 0;
-    bool last = false;
-    for (; at < listing.size(); ++at) {
-      const char c = listing[at];
-      if (c == '(' || c == '<' || c == '[' || c == '{') {
-        ++depth;
-      } else if (c == ')' || c == '>' || c == ']' || c == '}') {
-        if (depth == 0) {
-          last = true;
-          break;
-        }
-        --depth;
-      } else if (c == ',' && depth == 0) {
-        break;
-      }
+  bool too_many = false;
+  const std::size_t n = seawire::detail::for_each_listed(listing, [&](std::string_view e) {
+    if (element >= candidates.size()) {
+      too_many = true;
+      return;
     }
-    if (at >= listing.size()) return out;
-    if (!is_cast_or_number(listing.substr(begin, at - begin)))
-      out.chars[out.size++] = candidates[element];
+    if (!seawire::detail::is_cast_or_number(e)) out.chars[out.size++] = candidates[element];
     ++element;
-    if (last) {
-      out.parsed = element == candidates.size();
-      return out;
-    }
-    ++at;
-  }
+  });
+  out.parsed = !too_many && n == candidates.size();
   return out;
 }
 
 template <class E, std::size_t... I>
 consteval letter_set probe_letters(std::index_sequence<I...>) {
-  return enumerators_among_candidates(enum_listing<static_cast<E>(letter_candidates[I])...>());
+  return enumerators_among_candidates(
+      seawire::detail::enum_listing<static_cast<E>(letter_candidates[I])...>());
 }
 template <class E, std::size_t... I>
 consteval letter_set probe_non_letters(std::index_sequence<I...>) {
-  return enumerators_among_candidates(enum_listing<static_cast<E>(non_letter_candidates[I])...>(),
-                                      non_letter_candidates);
+  return enumerators_among_candidates(
+      seawire::detail::enum_listing<static_cast<E>(non_letter_candidates[I])...>(),
+      non_letter_candidates);
 }
 
 #if defined(__clang__)
