@@ -1,18 +1,20 @@
 // SPDX-License-Identifier: BSL-1.0
-// NMEA 2000 CAN log lines (candump -L, candump, canboat PLAIN/FAST, Yacht Devices RAW). The input
+// NMEA 2000 CAN log lines (candump -L, candump, canboat PLAIN/FAST, Yacht Devices RAW, Actisense
+// N2K ASCII). The input
 // is text cut at each LF; every line goes to parse_log_line (format detected, then each format
 // named), and through two log_readers (formats detected, and the one format the first byte picks).
 // Properties:
 //  - a line that does not parse gives an errc, a field that log_field_name names (0, the whole
 //    line, when no format was recognised) and a column inside the line;
 //  - a line that parses has the format detected or asked for and fields a frame can have;
-//  - write_log_line in that format writes it (the one refusal: a canboat line may name an
-//    addressed PGN with a low byte, which no CAN identifier carries: bad_can_id), and the line
-//    written parses again, in the same format and through detection, to the same record as far
+//  - write_log_line in that format writes it (the one refusal: a canboat or Actisense line may
+//    name an addressed PGN with a low byte, which no CAN identifier carries: bad_can_id), and the
+//    line written parses again, in the same format and through detection, to the same record as far
 //    as the format keeps it: identifier, data, FAST or not, always; the interface (candump
 //    formats) and direction (yd_raw); the time: exactly (candump -L and canboat, which write
 //    ms or us as the time needs; candump, which writes it as `candump -t a` when there is one),
-//    to the millisecond of the day (yd_raw); a canboat line whose timestamp did not parse is
+//    to the millisecond of the day (yd_raw, Actisense); a canboat line whose timestamp did not
+//    parse is
 //    written as 1970-01-01T00:00:00.000Z, which reads back as time 0;
 //  - writing that record again gives the same line;
 //  - log_reader::read_line reads a blank line as empty input whatever the format, a comment line
@@ -45,9 +47,9 @@ namespace {
 
 namespace n2k = nmea2000;
 
-constexpr std::array<n2k::log_format, 4> formats = {
+constexpr std::array<n2k::log_format, n2k::log_format_count> formats = {
     n2k::log_format::candump_log, n2k::log_format::candump, n2k::log_format::canboat,
-    n2k::log_format::yd_raw};
+    n2k::log_format::yd_raw, n2k::log_format::actisense_n2k_ascii};
 
 constexpr std::int64_t us_per_ms = 1000;
 
@@ -74,7 +76,8 @@ std::optional<std::int64_t> time_kept(const n2k::log_record& r, n2k::log_format 
     case n2k::log_format::candump_log:
     case n2k::log_format::candump: return r.time_us;
     case n2k::log_format::canboat: return r.time_us.value_or(0);
-    case n2k::log_format::yd_raw: return *r.time_us / us_per_ms * us_per_ms;
+    case n2k::log_format::yd_raw:
+    case n2k::log_format::actisense_n2k_ascii: return *r.time_us / us_per_ms * us_per_ms;
   }
   return std::nullopt;
 }
@@ -101,11 +104,13 @@ void check_same(const n2k::log_record& was, const n2k::log_record& now, n2k::log
 void check_record(const n2k::log_record& rec, n2k::log_format f, bool detected,
                   std::string_view line) {
   SEAWIRE_FUZZ_CHECK(rec.format == f, "a record of another format", line, describe(rec));
+  const bool whole_messages =
+      f == n2k::log_format::canboat || f == n2k::log_format::actisense_n2k_ascii;
   SEAWIRE_FUZZ_CHECK(
       rec.id.priority <= 7 && rec.id.pgn <= n2k::max_pgn &&
           (n2k::is_addressed(rec.id.pgn) || rec.id.destination == n2k::broadcast_address) &&
-          rec.size <= (f == n2k::log_format::canboat ? 223U : 8U) &&
-          rec.assembled == (rec.size > 8),
+          rec.size <= (whole_messages ? 223U : 8U) &&
+          rec.assembled == (f == n2k::log_format::actisense_n2k_ascii || rec.size > 8),
       "a record no frame can have", line, describe(rec));
   // Every format but canboat carries a time that parses, or none (candump without one).
   SEAWIRE_FUZZ_CHECK(
@@ -115,7 +120,7 @@ void check_record(const n2k::log_record& rec, n2k::log_format f, bool detected,
   seawire::nmea::json_buffer<1024> out;
   const errc e = n2k::write_log_line(out, rec, f);
   const bool no_identifier =
-      f == n2k::log_format::canboat && n2k::is_addressed(rec.id.pgn) && (rec.id.pgn & 0xFFU) != 0;
+      whole_messages && n2k::is_addressed(rec.id.pgn) && (rec.id.pgn & 0xFFU) != 0;
   if (no_identifier) {
     SEAWIRE_FUZZ_CHECK(e == errc::bad_can_id, "wrote an addressed PGN with a low byte", line,
                        describe(rec), name(e));

@@ -268,6 +268,10 @@ CANDUMP_LOG = re.compile(r"\((\d+\.\d+)\)\s+(\S+)\s+([0-9A-Fa-f]{8})#([0-9A-Fa-f
 CANDUMP = re.compile(r"\s*(\S+)\s+([0-9A-Fa-f]{8})\s+\[(\d)\]((?:\s+[0-9A-Fa-f]{2})*)\s*")
 YD_RAW = re.compile(r"(\d\d):(\d\d):(\d\d(?:\.\d+)?)\s+([RT])\s+([0-9A-Fa-f]{8})"
                     r"((?:\s+[0-9A-Fa-f]{2}){0,8})\s*")
+# Actisense N2K ASCII: A<hhmmss.ddd> <source, destination, priority in 5 hex digits> <PGN in hex>
+# <the whole message in hex>.
+ACTISENSE = re.compile(r"A(\d\d)(\d\d)(\d\d(?:\.\d+)?)\s+([0-9A-Fa-f]{5})\s+([0-9A-Fa-f]{1,5})"
+                       r"\s+((?:[0-9A-Fa-f]{2})*)\s*")
 ISO = re.compile(r"(\d{4})-(\d\d)-(\d\d)[T-](\d\d):(\d\d):(\d\d)(\.\d+)?(Z|[+-]\d\d:?\d\d)?")
 
 
@@ -278,6 +282,8 @@ def line_format(line):
         return "candump_log"
     if YD_RAW.fullmatch(line):
         return "yd_raw"
+    if ACTISENSE.fullmatch(line):
+        return "actisense_n2k_ascii"
     if CANDUMP.fullmatch(line):
         return "candump"
     return "canboat"
@@ -328,6 +334,15 @@ def parse_line(line):
         t = int(m.group(1)) * 3600 + int(m.group(2)) * 60 + Decimal(m.group(3))
         return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(6)),
                     time=t, extra={"direction": m.group(4)}, whole=False, canboat=False)
+    m = ACTISENSE.fullmatch(line)
+    if m:
+        address, pgn = int(m.group(4), 16), int(m.group(5), 16)
+        src, dst, prio = address >> 12, address >> 4 & 0xFF, address & 0xF
+        if not (pgn >> 8 & 0xFF) < 240:
+            dst = 255  # a broadcast PGN's destination is everyone, whatever the line says
+        t = int(m.group(1)) * 3600 + int(m.group(2)) * 60 + Decimal(m.group(3))
+        return dict(prio=prio, pgn=pgn, src=src, dst=dst, data=bytes.fromhex(m.group(6)),
+                    time=t, extra={}, whole=True, canboat=False)
     m = CANDUMP.fullmatch(line)
     if m:
         prio, pgn, src, dst = split_id(int(m.group(2), 16))
@@ -602,7 +617,11 @@ def canboat_time(where, fmt, ours, stamp, offsets):
     global compared
     got = ours.get("time_s")
     theirs, _ = iso_seconds(stamp)
-    if fmt == "yd_raw":
+    if fmt == "actisense_n2k_ascii":
+        # The time of day only, which canboat prints as it is ("00:00:57.086").
+        h, m, sec = stamp.split(":")
+        theirs = int(h) * 3600 + int(m) * 60 + Decimal(sec)
+    elif fmt == "yd_raw":
         # YD RAW has the time of day only: seawire gives seconds since midnight; canboat
         # prefixes the date it ran on (2026-11-21 in these files), so only the time of day
         # relates.

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Text logs of NMEA 2000 traffic, each read and written: candump -L (candump_log), candump's
-// screen output, canboat PLAIN/FAST lines, Yacht Devices RAW (yd_raw); parse_log_line() tells
-// them apart by their shape. A frame of 0 to 8 data bytes; '#' lines are comments, canboat's
+// screen output, canboat PLAIN/FAST lines, Yacht Devices RAW (yd_raw), Actisense N2K ASCII
+// (actisense_n2k_ascii); parse_log_line() tells them apart by their shape. A frame of 0 to 8 data
+// bytes, or a whole message (canboat FAST, Actisense); '#' lines are comments, canboat's
 // `# format=NAME` header included. Timestamps in microseconds: Unix time (UTC), or of the day for
-// yd_raw. Examples, the timestamp forms read and the canboat rules: docs/nmea2000.md.
+// yd_raw and Actisense. Examples, the timestamp forms read and the canboat rules:
+// docs/nmea2000.md.
 
 #include <array>
 #include <chrono>
@@ -24,17 +26,23 @@
 
 namespace seawire::nmea2000 {
 
-enum class log_format : std::uint8_t { candump_log, candump, canboat, yd_raw };
+enum class log_format : std::uint8_t {
+  candump_log,          ///< candump -L: "(1502984866.953084) can0 09F50374#001200FFFF00FFFF"
+  candump,              ///< candump's screen output: "  can0  09F8027F   [8]  00 FC FF ..."
+  canboat,              ///< canboat PLAIN/FAST: "2016-04-09T16:41:39.628Z,2,127489,16,255,8,..."
+  yd_raw,               ///< Yacht Devices RAW: "21:55:35.925 R 19F51323 20 0E FF FF"
+  actisense_n2k_ascii,  ///< Actisense N2K ASCII: "A000057.055 09FF7 1F801 2F0A0B1C3A7E0AD2"
+};
+inline constexpr std::size_t log_format_count = 5;
 
 [[nodiscard]] constexpr std::string_view name(log_format f) noexcept {
-  return seawire::detail::enumerator_name_of<4>(f);
+  return seawire::detail::enumerator_name_of<log_format_count>(f);
 }
 
 /// The format called `text` (as name() spells it), or nullopt.
 [[nodiscard]] constexpr std::optional<log_format> log_format_named(std::string_view text) noexcept {
-  for (const auto f :
-       {log_format::candump_log, log_format::candump, log_format::canboat, log_format::yd_raw})
-    if (name(f) == text) return f;
+  for (std::size_t i = 0; i < log_format_count; ++i)
+    if (name(static_cast<log_format>(i)) == text) return static_cast<log_format>(i);
   return std::nullopt;
 }
 
@@ -50,11 +58,12 @@ enum class canboat_format : std::uint8_t {
                    ///< whole message
   ydwg02,          ///< YDWG02: Yacht Devices RAW lines (log_format::yd_raw)
   // canboat formats seawire does not read:
-  airmar,               ///< AIRMAR
-  chetco,               ///< CHETCO ($PCDIN sentences)
-  garmin_csv1,          ///< GARMIN_CSV1
-  garmin_csv2,          ///< GARMIN_CSV2
-  actisense_n2k_ascii,  ///< ACTISENSE_N2K_ASCII
+  airmar,       ///< AIRMAR
+  chetco,       ///< CHETCO ($PCDIN sentences)
+  garmin_csv1,  ///< GARMIN_CSV1
+  garmin_csv2,  ///< GARMIN_CSV2
+  // read again:
+  actisense_n2k_ascii,  ///< ACTISENSE_N2K_ASCII: Actisense's N2K ASCII lines, whole messages
 };
 inline constexpr std::size_t canboat_format_count = 10;
 
@@ -75,16 +84,18 @@ inline constexpr std::size_t canboat_format_count = 10;
   return "PLAIN";
 }
 
-/// Whether seawire reads logs of canboat format `f` (the first five).
+/// Whether seawire reads logs of canboat format `f` (the first five and ACTISENSE_N2K_ASCII).
 [[nodiscard]] constexpr bool is_readable(canboat_format f) noexcept {
-  return f <= canboat_format::ydwg02;
+  return f <= canboat_format::ydwg02 || f == canboat_format::actisense_n2k_ascii;
 }
 
-/// The log_format of lines of canboat format `f` (canboat, or yd_raw for YDWG02); nullopt for a
-/// format seawire does not read.
+/// The log_format of lines of canboat format `f` (canboat, yd_raw for YDWG02,
+/// actisense_n2k_ascii); nullopt for a format seawire does not read.
 [[nodiscard]] constexpr std::optional<log_format> log_format_of(canboat_format f) noexcept {
   if (!is_readable(f)) return std::nullopt;
-  return f == canboat_format::ydwg02 ? log_format::yd_raw : log_format::canboat;
+  if (f == canboat_format::ydwg02) return log_format::yd_raw;
+  if (f == canboat_format::actisense_n2k_ascii) return log_format::actisense_n2k_ascii;
+  return log_format::canboat;
 }
 
 /// What every canboat log header starts with.
@@ -136,16 +147,17 @@ inline constexpr std::string_view format_header_prefix = "# format=";
   return r;
 }
 
-/// One line of a log: a CAN frame, or (canboat FAST) a whole fast-packet payload.
+/// One line of a log: a CAN frame, or (canboat FAST, Actisense) a whole fast-packet payload.
 struct log_record {
   log_format format = log_format::candump_log;
   can_id id;
   std::optional<std::int64_t> time_us;  ///< see the top of this file for what it counts from
   nmea::text<15> interface;             ///< candump formats: the CAN interface ("can0")
   char direction = 'R';                 ///< yd_raw: 'R' received, 'T' transmitted
-  /// data is a whole message (a canboat FAST line), not a frame. parse_log_line() takes a
-  /// canboat line of more than 8 bytes for one (PLAIN_MIX_FAST); log_reader also follows the
-  /// log's format header and canboat's rule for a log without one (canboat_format).
+  /// data is a whole message (a canboat FAST line, every Actisense line), not a frame.
+  /// parse_log_line() takes a canboat line of more than 8 bytes for one (PLAIN_MIX_FAST);
+  /// log_reader also follows the log's format header and canboat's rule for a log without one
+  /// (canboat_format).
   bool assembled = false;
   std::array<std::uint8_t, max_fast_packet_length> bytes{};
   std::uint8_t size = 0;
@@ -170,6 +182,7 @@ struct log_record {
   constexpr std::string_view canboat[] = {"line",   "timestamp",   "priority", "pgn",
                                           "source", "destination", "length",   "data"};
   constexpr std::string_view yd_raw[] = {"line", "time", "direction", "identifier", "data"};
+  constexpr std::string_view actisense[] = {"line", "time", "address", "pgn", "data"};
   const auto pick = [&](std::span<const std::string_view> names) {
     return field < names.size() ? names[field] : names.back();
   };
@@ -178,6 +191,7 @@ struct log_record {
     case log_format::candump: return pick(candump);
     case log_format::canboat: return pick(canboat);
     case log_format::yd_raw: return pick(yd_raw);
+    case log_format::actisense_n2k_ascii: return pick(actisense);
   }
   return "line";
 }
@@ -491,6 +505,72 @@ constexpr result<log_record> parse_yd_raw(std::string_view line) noexcept {
   return {r, errc::ok, 0, 0};
 }
 
+/// "Ahhmmss[.f...]" (the A included) as microseconds of the day; false when it is not that.
+[[nodiscard]] constexpr bool parse_actisense_time(std::string_view t, std::int64_t& us) noexcept {
+  if (t.size() < 7 || t[0] != 'A') return false;
+  const int h = two_digits(t, 1);
+  const int m = two_digits(t, 3);
+  const int s = two_digits(t, 5);
+  if (h < 0 || m < 0 || s < 0 || h > 23 || m > 59 || s > 60) return false;
+  std::int64_t frac = 0;
+  if (t.size() > 7) {
+    const std::string_view f = t.substr(8);
+    if (t[7] != '.' || f.empty()) return false;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (!seawire::detail::is_digit(f[i])) return false;
+      if (i < 6) frac = frac * 10 + (f[i] - '0');
+    }
+    for (std::size_t i = f.size(); i < 6; ++i) frac *= 10;
+  }
+  us = ((std::int64_t{h} * 60 + m) * 60 + s) * 1'000'000 + frac;
+  return true;
+}
+
+// Actisense N2K ASCII: "A<hhmmss.ddd> <SSDDP> <PGN> <data>", the address token five hex digits
+// (source, destination, priority), the PGN in hex, the whole message's bytes as hex without
+// spaces.
+constexpr result<log_record> parse_actisense_n2k_ascii(std::string_view line) noexcept {
+  log_record r;
+  r.format = log_format::actisense_n2k_ascii;
+  r.assembled = true;
+  log_cursor c(line);
+  c.skip_spaces();
+  std::size_t at = c.pos();
+  std::int64_t us = 0;
+  if (!parse_actisense_time(c.until(" \t"), us)) return log_fail(r, errc::bad_time, 1, at);
+  r.time_us = us;
+  c.skip_spaces();
+  at = c.pos();
+  std::uint32_t address = 0;
+  const std::string_view sdp = c.until(" \t");
+  if (sdp.size() != 5 || !parse_hex(sdp, address)) return log_fail(r, errc::bad_can_id, 2, at);
+  c.skip_spaces();
+  at = c.pos();
+  std::uint32_t pgn = 0;
+  const std::string_view pgn_text = c.until(" \t");
+  if (pgn_text.size() > 5 || !parse_hex(pgn_text, pgn)) return log_fail(r, errc::bad_can_id, 3, at);
+  const auto priority = static_cast<std::uint8_t>(address & 0xF);
+  if (priority > 7 || pgn > max_pgn) return log_fail(r, errc::bad_can_id, priority > 7 ? 2 : 3, at);
+  r.id.priority = priority;
+  r.id.pgn = pgn;
+  r.id.source = static_cast<std::uint8_t>(address >> 12);
+  r.id.destination =
+      is_addressed(pgn) ? static_cast<std::uint8_t>(address >> 4 & 0xFF) : broadcast_address;
+  c.skip_spaces();
+  at = c.pos();
+  const std::string_view hex = c.until(" \t");
+  c.skip_spaces();
+  if (!c.done()) return log_fail(r, errc::bad_log_line, 4, c.pos());
+  if (hex.size() % 2 != 0 || hex.size() > 2 * max_fast_packet_length)
+    return log_fail(r, errc::bad_length, 4, at);
+  for (std::size_t i = 0; i < hex.size(); i += 2) {
+    std::uint32_t v = 0;
+    if (!parse_hex(hex.substr(i, 2), v)) return log_fail(r, errc::bad_number, 4, at + i);
+    r.bytes[r.size++] = static_cast<std::uint8_t>(v);
+  }
+  return {r, errc::ok, 0, 0};
+}
+
 }  // namespace detail
 
 /// One line of a log in format `f` (a trailing CR/LF is ignored).
@@ -502,6 +582,7 @@ constexpr result<log_record> parse_yd_raw(std::string_view line) noexcept {
     case log_format::candump: return detail::parse_candump(line);
     case log_format::canboat: return detail::parse_canboat(line);
     case log_format::yd_raw: return detail::parse_yd_raw(line);
+    case log_format::actisense_n2k_ascii: return detail::parse_actisense_n2k_ascii(line);
   }
   return {};
 }
@@ -509,11 +590,13 @@ constexpr result<log_record> parse_yd_raw(std::string_view line) noexcept {
 /// The format a line looks like, or nullopt for a line of none (see the top of this file).
 [[nodiscard]] constexpr std::optional<log_format> detect_log_format(
     std::string_view line) noexcept {
+  std::size_t i = 0;
+  while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+  if (line.size() - i >= 2 && line[i] == 'A' && seawire::detail::is_digit(line[i + 1]))
+    return log_format::actisense_n2k_ascii;
   if (line.find('#') != std::string_view::npos) return log_format::candump_log;
   if (line.find('[') != std::string_view::npos) return log_format::candump;
   if (line.find(',') != std::string_view::npos) return log_format::canboat;
-  std::size_t i = 0;
-  while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
   if (line.size() - i >= 8 && line[i + 2] == ':' && line[i + 5] == ':' &&
       seawire::detail::is_digit(line[i]))
     return log_format::yd_raw;
@@ -584,16 +667,18 @@ constexpr void put_clock(Sink& s, std::int64_t us_of_day, unsigned places) noexc
 }  // namespace detail
 
 /// Writes `r` as one line of format `f`, ending in LF. A record holding more than 8 bytes (a
-/// whole fast packet) can only be written as canboat (FAST); bad_length for the other formats:
-/// split it into frames first (split_fast_packet). bad_can_id when r.id cannot be an identifier.
+/// whole fast packet) can only be written as canboat (FAST) or Actisense; bad_length for the
+/// other formats: split it into frames first (split_fast_packet). Every Actisense line is read
+/// back as a whole message. bad_can_id when r.id cannot be an identifier.
 /// candump writes the time first, as `candump -t a` does, when there is one. A missing time is
 /// written as 0 (candump_log, yd_raw) or 1970-01-01 (canboat); yd_raw
-/// keeps the time of day of a Unix time and canboat writes a time of day as a time on
-/// 1970-01-01. Milliseconds are written, or microseconds when the time has them, except by
-/// yd_raw (milliseconds, as the gateways write).
+/// and Actisense keep the time of day of a Unix time, and canboat writes a time of day as a time
+/// on 1970-01-01. Milliseconds are written, or microseconds when the time has them, except by
+/// yd_raw and Actisense (milliseconds, as the gateways write).
 template <class Sink>
 constexpr errc write_log_line(Sink& s, const log_record& r, log_format f) noexcept {
-  if (r.size > 8 && f != log_format::canboat) return errc::bad_length;
+  if (r.size > 8 && f != log_format::canboat && f != log_format::actisense_n2k_ascii)
+    return errc::bad_length;
   const result<std::uint32_t> id = make_can_id(r.id);
   if (!id) return id.ec;
   const std::int64_t time = r.time_us.value_or(0) < 0 ? 0 : r.time_us.value_or(0);
@@ -662,6 +747,31 @@ constexpr errc write_log_line(Sink& s, const log_record& r, log_format f) noexce
         detail::put_hex_byte(s, b, true);
       }
       break;
+    case log_format::actisense_n2k_ascii: {
+      s.put('A');
+      const std::int64_t of_day = time < 86'401'000'000 ? time : time % 86'400'000'000;
+      const auto clock = static_cast<std::uint64_t>(of_day);
+      if (clock >= 86'400'000'000) {  // a leap second
+        s.put("235960");
+      } else {
+        detail::put_uint(s, clock / 3'600'000'000, 2);
+        detail::put_uint(s, clock / 60'000'000 % 60, 2);
+        detail::put_uint(s, clock / 1'000'000 % 60, 2);
+      }
+      s.put('.');
+      detail::put_uint(s, clock % 1'000'000 / 1000, 3);
+      s.put(' ');
+      detail::put_hex_byte(s, r.id.source, true);
+      detail::put_hex_byte(s, r.id.destination, true);
+      s.put(seawire::detail::hex_digit_upper(r.id.priority));
+      s.put(' ');
+      s.put(seawire::detail::hex_digit_upper(r.id.pgn >> 16 & 0xF));
+      detail::put_hex_byte(s, static_cast<std::uint8_t>(r.id.pgn >> 8), true);
+      detail::put_hex_byte(s, static_cast<std::uint8_t>(r.id.pgn), true);
+      s.put(' ');
+      for (const std::uint8_t b : r.data()) detail::put_hex_byte(s, b, true);
+      break;
+    }
   }
   s.put('\n');
   return errc::ok;
