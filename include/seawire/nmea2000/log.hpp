@@ -31,7 +31,7 @@ enum class log_format : std::uint8_t {
   candump,              ///< candump's screen output: "  can0  09F8027F   [8]  00 FC FF ..."
   canboat,              ///< canboat PLAIN/FAST: "2016-04-09T16:41:39.628Z,2,127489,16,255,8,..."
   yd_raw,               ///< Yacht Devices RAW: "21:55:35.925 R 19F51323 20 0E FF FF"
-  actisense_n2k_ascii,  ///< Actisense N2K ASCII: "A000057.055 09FF7 1F801 2F0A0B1C3A7E0AD2"
+  actisense_n2k_ascii,  ///< Actisense N2K ASCII: "A000057.086 13FF2 1F112 005679FF7FFF7FFD"
 };
 inline constexpr std::size_t log_format_count = 5;
 
