@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "kingfisher_model.hpp"
 #include "net.hpp"
 
@@ -399,9 +400,11 @@ int main(int argc, char** argv) {
                  "a stream of frames and sentences (seawire-encode's output; - for stdin) "
                  "instead of the simulated boat");
   app.add_option("--rate", o.rate, "frames per second (the INS takes up to 10; 4 by default)")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::Range(0.1, 10.0))
       ->capture_default_str();
   app.add_option("--seconds", o.seconds, "stop after this long (0: the input's end or never)")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--start", o.start, "LAT,LON where the simulated boat starts")
@@ -411,7 +414,7 @@ int main(int argc, char** argv) {
                "print the RMC sentences the INS sends back on --device to stdout")
       ->needs(dev);
   app.add_flag("-q,--quiet", o.quiet, "no summary on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
 
   double lat = 0, lon = 0;
   char tail = 0;

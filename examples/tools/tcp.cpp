@@ -19,6 +19,7 @@
 #include <seawire/nmea/stream.hpp>
 #include <string>
 
+#include "cli.hpp"
 #include "net.hpp"
 
 namespace {
@@ -301,9 +302,11 @@ int main(int argc, char** argv) {
                "when the connection fails or ends, connect again (backoff doubling from "
                "--min-backoff to --max-backoff)");
   app.add_option("--min-backoff", o.min_backoff, "first wait before reconnecting, seconds")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--max-backoff", o.max_backoff, "longest wait before reconnecting, seconds")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_flag("--lf", o.lf, "end lines written to stdout with LF alone");
@@ -311,7 +314,7 @@ int main(int argc, char** argv) {
                "once stdin has ended and been sent, shut down the sending side and exit when the "
                "server closes (default: keep printing what the server sends)");
   app.add_flag("-q,--quiet", o.quiet, "no connection messages on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
   const auto where = net::parse_endpoint(o.server);
   if (!where || where->port == 0 || o.server.front() == ':') {
     std::fprintf(stderr, "seawire-tcp: %s: expected HOST:PORT\n", o.server.c_str());
