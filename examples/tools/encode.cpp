@@ -400,6 +400,13 @@ class encoder {
     if (opt_.line_buffered) out_.flush();
   }
 
+  // A line longer than tools::max_line: not read (its bytes are not kept), the next one is.
+  void too_long(std::uint64_t bytes) {
+    ++line_;
+    reject(std::to_string(bytes) + " bytes, more than the " + std::to_string(tools::max_line) +
+           " a line may have: not read");
+  }
+
   void finish() { out_.flush(); }
   [[nodiscard]] std::uint64_t rejected() const { return rejected_; }
   [[nodiscard]] bool output_failed() const { return out_.failed(); }
@@ -692,7 +699,9 @@ class encoder {
 int run(const options& o) {
   encoder e(o);
   tools::chunk_reader in(0);
-  tools::for_each_line(in, [&](std::string_view l) { e.line(l); });
+  tools::for_each_bounded_line(
+      in, tools::max_line, [&](std::string_view l) { e.line(l); },
+      [&](std::uint64_t bytes) { e.too_long(bytes); });
   e.finish();
   if (in.failed()) {
     std::perror("seawire-encode: reading stdin");
