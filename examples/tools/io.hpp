@@ -146,6 +146,13 @@ inline std::string printable(std::string_view s) {
   return out;
 }
 
+/// At most `n` bytes of `s` made printable, "..." after them when `s` is longer: what a message
+/// quotes of a value, however long the value.
+inline std::string quote_prefix(std::string_view s, std::size_t n = 64) {
+  if (s.size() <= n) return printable(s);
+  return printable(s.substr(0, n)) + "...";
+}
+
 /// A large output buffer in front of a FILE*. put() never fails; flush() reports write errors.
 class output {
  public:
