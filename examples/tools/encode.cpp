@@ -426,6 +426,7 @@ class encoder {
   }
   [[nodiscard]] std::uint64_t rejected() const { return rejected_; }
   [[nodiscard]] bool output_failed() const { return out_.failed(); }
+  [[nodiscard]] int output_error() const { return out_.error(); }
 
  private:
   template <class M>
@@ -727,12 +728,13 @@ int run(const options& o) {
       in, tools::max_line, [&](std::string_view l) { e.line(l); },
       [&](std::uint64_t bytes) { e.too_long(bytes); });
   e.finish();
+  // The errno saved when the read or write failed: errno itself has been set again since.
   if (in.failed()) {
-    std::perror("seawire-encode: reading stdin");
+    std::fprintf(stderr, "seawire-encode: reading stdin: %s\n", std::strerror(in.error()));
     return 1;
   }
   if (e.output_failed()) {
-    std::perror("seawire-encode: writing stdout");
+    std::fprintf(stderr, "seawire-encode: writing stdout: %s\n", std::strerror(e.output_error()));
     return 1;
   }
   return e.rejected() == 0 ? 0 : 1;

@@ -34,11 +34,16 @@ class chunk_reader {
       const ssize_t n = ::read(fd_, buf_.data(), buf_.size());
       if (n > 0) return {buf_.data(), static_cast<std::size_t>(n)};
       if (n < 0 && errno == EINTR) continue;
-      if (n < 0) failed_ = true;
+      if (n < 0) {
+        failed_ = true;
+        error_ = errno;
+      }
       return {};
     }
   }
   [[nodiscard]] bool failed() const { return failed_; }
+  /// The errno of the failed read (0 if none).
+  [[nodiscard]] int error() const { return error_; }
 
   /// Whether input (or its end) arrives within `ms` milliseconds; true too when the descriptor
   /// cannot be polled, so the caller just reads on.
@@ -55,6 +60,7 @@ class chunk_reader {
   int fd_;
   std::vector<char> buf_;
   bool failed_ = false;
+  int error_ = 0;
 };
 
 /// Calls f(line) for each line of `in` to its end, without its '\n' (a CR before it is kept), a
