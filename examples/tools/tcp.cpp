@@ -16,6 +16,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <seawire/nmea/stream.hpp>
 #include <string>
 
@@ -33,6 +34,7 @@ struct options {
   bool reconnect = false;
   double min_backoff = 0.1;
   double max_backoff = 5;
+  double connect_timeout = 10;
   bool lf = false;
   bool quiet = false;
   bool close_on_eof = false;
@@ -56,6 +58,7 @@ class client {
         resolver_(io),
         socket_(io),
         timer_(io),
+        connect_timer_(io),
         signals_(io, SIGINT, SIGTERM),
         backoff_(o.min_backoff) {
     struct stat st {};
@@ -88,11 +91,27 @@ class client {
             lost("cannot resolve " + host_ + ": " + ec.message());
             return;
           }
+          // A server that never answers (a full accept queue, a firewall dropping the SYN)
+          // would leave the connect waiting for minutes: closed after --connect-timeout.
+          timed_out_ = false;
+          connect_timer_.expires_after(
+              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                  std::chrono::duration<double>(o_.connect_timeout)));
+          connect_timer_.async_wait([this](const asio::error_code& t) {
+            if (t || done_ || connected_) return;
+            timed_out_ = true;
+            asio::error_code ignored;
+            socket_.close(ignored);
+          });
           asio::async_connect(
               socket_, r, [this](const asio::error_code& e, const asio::ip::tcp::endpoint& to) {
+                connect_timer_.cancel();
                 if (done_) return;
                 if (e) {
-                  lost("cannot connect to " + host_ + ":" + port_ + ": " + e.message());
+                  char why[64];
+                  std::snprintf(why, sizeof why, "no answer within %g s", o_.connect_timeout);
+                  lost("cannot connect to " + host_ + ":" + port_ + ": " +
+                       (timed_out_ ? std::string(why) : e.message()));
                   return;
                 }
                 connected(to);
@@ -174,7 +193,10 @@ class client {
         pollfd p{1, POLLOUT, 0};  // stdout is non-blocking (someone else set it): wait
         (void)::poll(&p, 1, 1000);
       } else {
-        finish(0);  // the reader went away (a closed pipe): nothing left to do
+        // A closed pipe (EPIPE: SIGPIPE is ignored), a full disk: told, and the end.
+        const int e = n < 0 ? errno : EIO;
+        std::fprintf(stderr, "seawire-tcp: writing stdout: %s\n", std::strerror(e));
+        finish(1);
         return;
       }
     }
@@ -207,7 +229,14 @@ class client {
     };
     if (ec) {
       stdin_done_ = true;
-      while (const auto item = from_stdin_.finish()) take(*item);
+      // A last line without its line ending was cut off (the writer died, a truncated file):
+      // not sent as if whole.
+      bool cut = false;
+      while (from_stdin_.finish()) cut = true;
+      if (cut)
+        std::fprintf(stderr,
+                     "seawire-tcp: stdin ended in the middle of a line (no line ending after "
+                     "it): that line is not sent\n");
     } else {
       from_stdin_.feed(std::string_view(stdin_buf_.data(), n), take);
       while (const auto item = from_stdin_.flush()) take(*item);
@@ -260,6 +289,7 @@ class client {
     asio::error_code ignored;
     signals_.cancel(ignored);
     timer_.cancel();
+    connect_timer_.cancel();
     resolver_.cancel();
     socket_.close(ignored);
     if (stdin_.is_open()) stdin_.close(ignored);
@@ -271,6 +301,8 @@ class client {
   asio::ip::tcp::resolver resolver_;
   asio::ip::tcp::socket socket_;
   asio::steady_timer timer_;
+  asio::steady_timer connect_timer_;
+  bool timed_out_ = false;  // the connect was closed by connect_timer_
   asio::signal_set signals_;
   asio::posix::stream_descriptor stdin_{io_};
   bool stdin_is_file_ = false;
@@ -306,6 +338,11 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--max-backoff", o.max_backoff, "longest wait before reconnecting, seconds")
+      ->check(seawire::tools::finite_number)
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--connect-timeout", o.connect_timeout,
+                 "seconds to wait for the server to accept a connection")
       ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

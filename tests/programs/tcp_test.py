@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: BSL-1.0
 """seawire-tcp against servers written here, on 127.0.0.1 with ephemeral ports.
 
-    tcp_test.py TCP CASE      CASE: framing, send, reconnect, errors
+    tcp_test.py TCP CASE      CASE: framing, send, reconnect, errors, timeout, stdout
 """
 
+import os
 import signal
 import socket
 import subprocess
@@ -79,16 +80,19 @@ def case_send():
     p.stdin.flush()
     time.sleep(0.2)
     p.stdin.write(b"IR,45,55*57\n" + b"x" * 3000 + b"\n$PYCLT,1")
-    p.stdin.close()  # the last line has no ending: sent all the same
+    p.stdin.close()  # the last line has no ending: cut off, not sent, and said so
     got = recv_all(conn)  # -N: the client half-closes once stdin is sent
-    check(got == b"$PYDEV,90,1.5\r\n$PYDIR,45,55*57\r\n$PYCLT,1\r\n",
-          "stdin framed, garbled and overlong lines dropped: %r" % got)
+    check(got == b"$PYDEV,90,1.5\r\n$PYDIR,45,55*57\r\n",
+          "stdin framed, garbled, overlong and cut-off lines dropped: %r" % got)
     conn.sendall(b"$CPALT,120000.000,1*62\r\n")
     conn.close()
     out = p.stdout.read()
     p.wait(timeout=20)
     check(out == b"$CPALT,120000.000,1*62\r\n" and p.returncode == 0,
           "after the half close the server's lines still arrive: %r" % out)
+    err = p.stderr.read()
+    check(b"seawire-tcp: stdin ended in the middle of a line (no line ending after it): that "
+          b"line is not sent\n" in err, "the cut-off line told: %r" % err)
     # Without -N the client stays after stdin ends (a listener with stdin at /dev/null).
     p = subprocess.Popen([TCP, "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL,
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE)
@@ -147,5 +151,71 @@ def case_errors():
     check(r.returncode == 0 and b"--reconnect" in r.stdout, "--help")
 
 
-run_case({"framing": case_framing, "send": case_send, "reconnect": case_reconnect,
+def case_timeout():
+    # A server that never accepts: its accept queue (backlog 0: one connection) is full, so the
+    # kernel drops the next SYNs and a connect waits. --connect-timeout ends the wait.
+    srv = socket.socket()
+    srv.bind(("127.0.0.1", 0))
+    srv.listen(0)
+    port = srv.getsockname()[1]
+    fillers = []
+    for _ in range(3):
+        c = socket.socket()
+        c.setblocking(False)
+        c.connect_ex(("127.0.0.1", port))
+        fillers.append(c)
+    time.sleep(0.2)
+    t = time.monotonic()
+    try:
+        r = subprocess.run([TCP, "--connect-timeout", "1", "127.0.0.1:%d" % port],
+                           capture_output=True, timeout=15, stdin=subprocess.DEVNULL)
+    except subprocess.TimeoutExpired:
+        check(False, "no connect timeout: still waiting after 15 s")
+        return
+    elapsed = time.monotonic() - t
+    check(r.returncode == 1, "exit 1: %d" % r.returncode)
+    check(0.9 < elapsed < 5, "ended after about 1 s: %.2f s" % elapsed)
+    check(r.stderr == b"seawire-tcp: cannot connect to 127.0.0.1:%d: no answer within 1 s\n"
+          % port, "told: %r" % r.stderr)
+    # With --reconnect the timeout is one failed attempt among others.
+    p = subprocess.Popen([TCP, "--reconnect", "--connect-timeout", "0.3", "--min-backoff", "0.1",
+                          "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL,
+                         stderr=subprocess.PIPE)
+    time.sleep(1.5)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=10)
+    check(p.returncode == 0 and err.count(b"no answer within 0.3 s; reconnecting in") >= 2,
+          "--reconnect retries after each timeout: %r" % err)
+    for c in fillers:
+        c.close()
+    srv.close()
+
+
+def case_stdout():
+    # Writing stdout fails (a full disk, a reader gone): told with the system's reason, exit 1.
+    srv = listener()
+    port = srv.getsockname()[1]
+    with open("/dev/full", "wb") as full:
+        p = subprocess.Popen([TCP, "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL,
+                             stdout=full, stderr=subprocess.PIPE)
+    conn, _ = srv.accept()
+    conn.sendall(b"$CPALT,120000.000,1*62\r\n")
+    _, err = p.communicate(timeout=20)
+    check(p.returncode == 1 and b"seawire-tcp: writing stdout: No space left on device\n" in err,
+          "ENOSPC told: %d %r" % (p.returncode, err))
+    conn.close()
+    rd, wr = os.pipe()
+    p = subprocess.Popen([TCP, "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL, stdout=wr,
+                         stderr=subprocess.PIPE)
+    os.close(wr)
+    os.close(rd)
+    conn, _ = srv.accept()
+    conn.sendall(b"$CPALT,120000.000,1*62\r\n")
+    _, err = p.communicate(timeout=20)
+    check(p.returncode == 1 and b"seawire-tcp: writing stdout: Broken pipe\n" in err,
+          "EPIPE told: %d %r" % (p.returncode, err))
+    conn.close()
+
+
+run_case({"timeout": case_timeout, "stdout": case_stdout, "framing": case_framing, "send": case_send, "reconnect": case_reconnect,
           "errors": case_errors}, CASE)
