@@ -21,6 +21,7 @@
 #include <string>
 
 #include "cli.hpp"
+#include "log_limit.hpp"
 #include "net.hpp"
 
 namespace {
@@ -39,14 +40,6 @@ struct options {
   bool quiet = false;
   bool close_on_eof = false;
 };
-
-template <class... A>
-void note(const options& o, const char* format, A... args) {
-  if (o.quiet) return;
-  std::fprintf(stderr, "seawire-tcp: ");
-  std::fprintf(stderr, format, args...);
-  std::fputc('\n', stderr);
-}
 
 class client {
  public:
@@ -79,6 +72,19 @@ class client {
   }
 
   void start() { connect(); }
+
+  // A connection message on stderr (unless --quiet): at most 20 a second (a server that accepts
+  // and closes at once, with --reconnect), then how many were not told.
+  template <class... A>
+  void note(const char* format, A... args) {
+    if (o_.quiet || !log_.allow([this](std::uint64_t n) { told(n); })) return;
+    std::fprintf(stderr, "seawire-tcp: ");
+    std::fprintf(stderr, format, args...);
+    std::fputc('\n', stderr);
+  }
+  void told(std::uint64_t suppressed) {
+    std::fprintf(stderr, "seawire-tcp: %s\n", log_.note_text(suppressed).c_str());
+  }
   [[nodiscard]] int status() const { return status_; }
 
  private:
@@ -122,7 +128,7 @@ class client {
   void connected(const asio::ip::tcp::endpoint& to) {
     asio::error_code ignored;
     socket_.set_option(asio::ip::tcp::no_delay(true), ignored);
-    note(o_, "connected to %s", net::to_string(to).c_str());
+    note("connected to %s", net::to_string(to).c_str());
     connected_ = true;
     connected_at_ = std::chrono::steady_clock::now();
     from_server_.reset();
@@ -145,11 +151,11 @@ class client {
     asio::error_code ignored;
     socket_.close(ignored);
     if (!o_.reconnect || (o_.close_on_eof && stdin_done_ && pending_.empty() && was)) {
-      if (!was || why != "closed by the server") note(o_, "%s", why.c_str());
+      if (!was || why != "closed by the server") note("%s", why.c_str());
       finish(was ? 0 : 1);
       return;
     }
-    note(o_, "%s; reconnecting in %.1f s", why.c_str(), backoff_);
+    note("%s; reconnecting in %.1f s", why.c_str(), backoff_);
     timer_.expires_after(milliseconds(static_cast<long>(backoff_ * 1000)));
     timer_.async_wait([this](const asio::error_code& ec) {
       if (!ec && !done_) connect();
@@ -285,6 +291,7 @@ class client {
   void finish(int status) {
     if (done_) return;
     done_ = true;
+    log_.flush([this](std::uint64_t n) { told(n); });
     status_ = status;
     asio::error_code ignored;
     signals_.cancel(ignored);
@@ -302,7 +309,8 @@ class client {
   asio::ip::tcp::socket socket_;
   asio::steady_timer timer_;
   asio::steady_timer connect_timer_;
-  bool timed_out_ = false;  // the connect was closed by connect_timer_
+  bool timed_out_ = false;
+  tools::log_limit log_{"connection messages"};  // the connect was closed by connect_timer_
   asio::signal_set signals_;
   asio::posix::stream_descriptor stdin_{io_};
   bool stdin_is_file_ = false;

@@ -2,14 +2,16 @@
 # SPDX-License-Identifier: BSL-1.0
 """seawire-tcp against servers written here, on 127.0.0.1 with ephemeral ports.
 
-    tcp_test.py TCP CASE      CASE: framing, send, reconnect, errors, timeout, stdout
+    tcp_test.py TCP CASE      CASE: framing, send, reconnect, errors, timeout, stdout, flood
 """
 
 import os
+import re
 import signal
 import socket
 import subprocess
 import sys
+import threading
 import time
 
 from harness import check, run_case
@@ -37,6 +39,16 @@ def recv_all(conn, timeout=10):
         if not chunk:
             return data
         data += chunk
+
+
+def run_for(seconds, *args):
+    """Runs seawire-tcp with `args` (stdin at /dev/null) for `seconds`, then SIGTERM; returns its
+    exit status and stderr."""
+    p = subprocess.Popen([TCP, *args], stdin=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    time.sleep(seconds)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=10)
+    return p.returncode, err
 
 
 def case_framing():
@@ -178,13 +190,9 @@ def case_timeout():
     check(r.stderr == b"seawire-tcp: cannot connect to 127.0.0.1:%d: no answer within 1 s\n"
           % port, "told: %r" % r.stderr)
     # With --reconnect the timeout is one failed attempt among others.
-    p = subprocess.Popen([TCP, "--reconnect", "--connect-timeout", "0.3", "--min-backoff", "0.1",
-                          "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL,
-                         stderr=subprocess.PIPE)
-    time.sleep(1.5)
-    p.send_signal(signal.SIGTERM)
-    _, err = p.communicate(timeout=10)
-    check(p.returncode == 0 and err.count(b"no answer within 0.3 s; reconnecting in") >= 2,
+    rc, err = run_for(1.5, "--reconnect", "--connect-timeout", "0.3", "--min-backoff", "0.1",
+                      "127.0.0.1:%d" % port)
+    check(rc == 0 and err.count(b"no answer within 0.3 s; reconnecting in") >= 2,
           "--reconnect retries after each timeout: %r" % err)
     for c in fillers:
         c.close()
@@ -217,5 +225,41 @@ def case_stdout():
     conn.close()
 
 
-run_case({"timeout": case_timeout, "stdout": case_stdout, "framing": case_framing, "send": case_send, "reconnect": case_reconnect,
+def case_flood():
+    # A server that accepts and closes at once, and a client that reconnects after 1 ms: two
+    # connection messages a connection, at most 20 a second told, the rest counted.
+    srv = listener()
+    port = srv.getsockname()[1]
+    stop = threading.Event()
+    accepted = [0]
+
+    def serve():
+        srv.settimeout(0.2)
+        while not stop.is_set():
+            try:
+                conn, _ = srv.accept()
+            except socket.timeout:
+                continue
+            conn.close()
+            accepted[0] += 1
+
+    t = threading.Thread(target=serve)
+    t.start()
+    _, err = run_for(2, "--reconnect", "--min-backoff", "0.001", "--max-backoff", "0.001",
+                     "127.0.0.1:%d" % port)
+    stop.set()
+    t.join()
+    lines = err.decode().splitlines()
+    notes = [int(m.group(1)) for l in lines
+             if (m := re.fullmatch(r"seawire-tcp: \.\.\. (\d+) more connection messages "
+                                   r"suppressed", l))]
+    told = len(lines) - len(notes)
+    check(accepted[0] > 100, "a flood of connections: %d" % accepted[0])
+    check(told <= 20 * 4, "at most 20 messages a second told: %d" % told)
+    check(notes and told + sum(notes) >= 2 * accepted[0] - 2,
+          "the rest counted: %d told, %d suppressed, %d connections"
+          % (told, sum(notes), accepted[0]))
+
+
+run_case({"flood": case_flood, "timeout": case_timeout, "stdout": case_stdout, "framing": case_framing, "send": case_send, "reconnect": case_reconnect,
           "errors": case_errors}, CASE)

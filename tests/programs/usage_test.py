@@ -43,7 +43,8 @@ TABLE = {
     JUDGE: [["--no-such-option"], ["--max-clients", "0"], ["--report", "xml"]]
     + real_option("--gap-limit") + real_option("--jitter", zero_ok=True, upper=0.5)
     + real_option("--clock-tolerance", zero_ok=True) + real_option("--duration", zero_ok=True),
-    TCP: [["--no-such-option"]] + real_option("--min-backoff") + real_option("--max-backoff"),
+    TCP: [["--no-such-option"]] + real_option("--min-backoff") + real_option("--max-backoff")
+    + real_option("--connect-timeout"),
     FEED: [["--no-such-option"], ["--baud", "12345"]] + real_option("--rate", upper=10)
     + real_option("--seconds", zero_ok=True),
 }
