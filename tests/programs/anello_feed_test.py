@@ -185,13 +185,20 @@ def case_stuck():
         time.sleep(0.5)
         # Fill the pty from here (the master is never read), non-blocking.
         fcntl.fcntl(slave, fcntl.F_SETFL, fcntl.fcntl(slave, fcntl.F_GETFL) | os.O_NONBLOCK)
-        for size in (4096, 64, 1):
-            try:
-                while True:
-                    os.write(slave, b"x" * size)
-            except BlockingIOError:
-                pass
-        time.sleep(0.5)
+        # The kernel moves what was written on to the master side a moment later, which frees
+        # room: filled again until a pause frees none.
+        for _ in range(50):
+            wrote = 0
+            for size in (4096, 64, 1):
+                try:
+                    while True:
+                        wrote += os.write(slave, b"x" * size)
+                except BlockingIOError:
+                    pass
+            if wrote == 0:
+                break
+            time.sleep(0.1)
+        time.sleep(0.3)
         if sig is None:
             try:
                 p.wait(timeout=6)
