@@ -28,16 +28,19 @@ def real_option(option, positive=True, zero_ok=False, upper=None):
     return [[option, v] for v in bad] + [[option]]
 
 
+# LAT,LON options: read by the program itself, refused the same way.
+START = [["--start", v] for v in ("nan,nan", "0,inf", "1e999,0", "95,0", "0", "x")]
+
 TABLE = {
     DECODE: [["--no-such-option"], ["--format", "xml"], ["--format"], ["--checksum", "sometimes"],
              ["--log-format", "nope"]],
     ENCODE: [["--no-such-option"], ["--output", "nope"], ["--output"]],
     KINGFISHER: [["--no-such-option"], ["--max-clients", "0"], ["--max-queue", "0"],
-                 ["--pydep-units", "grad"]]
+                 ["--pydep-units", "grad"]] + START
     + real_option("--nav-rate", upper=1000) + real_option("--status-rate", upper=1000)
     + real_option("--watchdog") + real_option("--max-speed") + real_option("--max-yaw-rate")
     + real_option("--duration", zero_ok=True),
-    SANDSHARK: [["--no-such-option"]] + real_option("--nav-rate", upper=100)
+    SANDSHARK: [["--no-such-option"]] + START + real_option("--nav-rate", upper=100)
     + real_option("--abort-time", zero_ok=True) + real_option("--shutdown-wait", zero_ok=True)
     + real_option("--duration", zero_ok=True),
     JUDGE: [["--no-such-option"], ["--max-clients", "0"], ["--report", "xml"]]
@@ -45,7 +48,7 @@ TABLE = {
     + real_option("--clock-tolerance", zero_ok=True) + real_option("--duration", zero_ok=True),
     TCP: [["--no-such-option"]] + real_option("--min-backoff") + real_option("--max-backoff")
     + real_option("--connect-timeout"),
-    FEED: [["--no-such-option"], ["--baud", "12345"]] + real_option("--rate", upper=10)
+    FEED: [["--no-such-option"], ["--baud", "12345"]] + START + real_option("--rate", upper=10)
     + real_option("--seconds", zero_ok=True),
 }
 
