@@ -241,6 +241,7 @@ class feeder {
         deadline_(io),
         device_in_(io),
         out_(io),
+        rmc_out_(io),
         signals_(io, SIGINT, SIGTERM) {}
 
   bool open(std::string& error) {
@@ -262,7 +263,7 @@ class feeder {
           return false;
         }
       }
-      return own_output(fd_, error);
+      return own_output(out_, fd_, error) && (!o_.read_rmc || own_stdout(rmc_out_, error));
     }
     if (!o_.udp.empty()) {
       const auto where = tools::net::parse_endpoint(o_.udp);
@@ -286,18 +287,7 @@ class feeder {
       }
       return true;
     }
-    // stdout: a pipe or terminal opened anew, so that making it non-blocking leaves the
-    // caller's open file (shared with its shell) as it was; a file or socket as it is.
-    struct stat st {};
-    int fd = -1;
-    if (::fstat(1, &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)))
-      fd = ::open("/proc/self/fd/1", O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) fd = ::dup(1);
-    if (fd < 0) {
-      error = std::string("stdout: ") + std::strerror(errno);
-      return false;
-    }
-    return own_output(fd, error);
+    return own_stdout(out_, error);
   }
 
   // Periods come from `next` until it returns nullopt with `later` false, --seconds is up or a
@@ -413,10 +403,10 @@ class feeder {
     finish();
   }
 
-  bool own_output(int fd, std::string& error) {
+  static bool own_output(asio::posix::stream_descriptor& d, int fd, std::string& error) {
     asio::error_code ec;
-    out_.assign(fd, ec);
-    if (!ec) out_.non_blocking(true, ec);
+    d.assign(fd, ec);
+    if (!ec) d.non_blocking(true, ec);
     if (ec) {
       error = "output: " + ec.message();
       return false;
@@ -424,25 +414,68 @@ class feeder {
     return true;
   }
 
-  // The INS's output: RMC sentences, printed as received; anything else counted.
+  // stdout, written without blocking: a pipe or terminal opened anew, so that making it
+  // non-blocking leaves the caller's open file (shared with its shell) as it was; a file or
+  // socket as it is.
+  static bool own_stdout(asio::posix::stream_descriptor& d, std::string& error) {
+    struct stat st {};
+    int fd = -1;
+    if (::fstat(1, &st) == 0 && (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)))
+      fd = ::open("/proc/self/fd/1", O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) fd = ::dup(1);
+    if (fd < 0) {
+      error = std::string("stdout: ") + std::strerror(errno);
+      return false;
+    }
+    return own_output(d, fd, error);
+  }
+
+  // The INS's output: RMC sentences, printed as received; anything else counted. Printed
+  // without blocking: while 64 KiB wait for a stdout nobody reads, the device is not read.
   void read() {
+    reading_ = true;
     device_in_.async_read_some(
         asio::buffer(in_), [this](const asio::error_code& ec, std::size_t n) {
-          if (ec) return;
+          reading_ = false;
+          if (ec || done_) return;
           reader_.feed(std::string_view(in_.data(), n), [this](const auto& item) {
             if (!item.is_sentence()) return;
             const auto r = anello::decode_output(item.sentence.text);
             if (r && std::holds_alternative<standard::rmc>(r.value)) {
-              std::printf("%.*s\n", static_cast<int>(item.sentence.text.size()),
-                          item.sentence.text.data());
-              std::fflush(stdout);
+              rmc_pending_ += item.sentence.text;
+              rmc_pending_ += '\n';
               ++rmc_;
             } else {
               ++other_;
             }
           });
-          read();
+          write_rmc();
         });
+  }
+
+  void write_rmc() {
+    while (!rmc_pending_.empty()) {
+      const ssize_t n = ::write(rmc_out_.native_handle(), rmc_pending_.data(), rmc_pending_.size());
+      if (n > 0) {
+        rmc_pending_.erase(0, static_cast<std::size_t>(n));
+        continue;
+      }
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+        if (!rmc_waiting_) {
+          rmc_waiting_ = true;
+          rmc_out_.async_wait(asio::posix::descriptor_base::wait_write,
+                              [this](const asio::error_code& ec) {
+                                rmc_waiting_ = false;
+                                if (!ec && !done_) write_rmc();
+                              });
+        }
+        break;
+      }
+      fail(std::string("writing stdout: ") + std::strerror(n < 0 ? errno : EIO));
+      return;
+    }
+    if (!reading_ && !done_ && rmc_pending_.size() < 64 * 1024) read();
   }
 
   void finish() {
@@ -455,6 +488,7 @@ class feeder {
     signals_.cancel(ignored);
     if (device_in_.is_open()) device_in_.close(ignored);
     if (out_.is_open()) out_.close(ignored);
+    if (rmc_out_.is_open()) rmc_out_.close(ignored);
     if (!o_.quiet)
       std::fprintf(stderr, "seawire-anello-feed: %llu frames, %llu sentences sent in %.2f s%s\n",
                    static_cast<unsigned long long>(frames_),
@@ -480,7 +514,10 @@ class feeder {
   asio::steady_timer timer_;
   asio::steady_timer deadline_;  // --seconds
   asio::posix::stream_descriptor device_in_;
-  asio::posix::stream_descriptor out_;  // the device (a descriptor of its own) or stdout
+  asio::posix::stream_descriptor out_;      // the device (a descriptor of its own) or stdout
+  asio::posix::stream_descriptor rmc_out_;  // stdout, with --read-rmc
+  std::string rmc_pending_;                 // RMC lines not yet written to stdout
+  bool reading_ = false, rmc_waiting_ = false;
   asio::signal_set signals_;
   std::optional<asio::ip::udp::socket> udp_;
   asio::ip::udp::endpoint udp_to_;

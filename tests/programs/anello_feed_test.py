@@ -3,7 +3,7 @@
 """seawire-anello-feed through a socat pseudo-terminal pair, over UDP on loopback, and from a file.
 
     anello_feed_test.py FEED DECODE CASE
-    CASE: pty, udp, input, usage, signal, stuck, stream, pipe
+    CASE: pty, udp, input, usage, signal, stuck, stream, pipe, rmc
 """
 
 import fcntl
@@ -218,6 +218,35 @@ def case_stuck():
         os.close(master)
 
 
+def case_rmc():
+    # --read-rmc with a stdout nobody reads: the RMC lines the INS sends fill the pipe; the
+    # feed still hears SIGTERM.
+    master, slave = pty.openpty()
+    tty.setraw(master)
+    rd, wr = os.pipe()
+    p = subprocess.Popen([FEED, "--device", os.ttyname(slave), "--read-rmc", "--rate", "10"],
+                         stdout=wr, stderr=subprocess.PIPE)
+    os.close(wr)
+    time.sleep(0.5)
+    rmc = (b"$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70\r\n")
+    fcntl.fcntl(master, fcntl.F_SETFL, fcntl.fcntl(master, fcntl.F_GETFL) | os.O_NONBLOCK)
+    sent = 0
+    end = time.monotonic() + 3
+    while sent < 200000 and time.monotonic() < end:
+        try:
+            sent += os.write(master, rmc * 50)
+        except BlockingIOError:
+            time.sleep(0.01)
+    check(sent > 70000, "more RMC sent than a pipe holds: %d bytes" % sent)
+    check(stops_within(p, signal.SIGTERM, 2.5), "SIGTERM ends a run whose stdout is full")
+    err = p.stderr.read()
+    check(p.returncode == 0 and b"RMC read" in err, "exit 0 with the summary: %d %r"
+          % (p.returncode, err))
+    os.close(rd)
+    os.close(slave)
+    os.close(master)
+
+
 def case_stream():
     # --input - is read as it comes: frames go out while stdin is still open (all but the last,
     # whose period the sentences after it may still join).
@@ -289,5 +318,6 @@ def case_pipe():
 
 
 run_case({"pty": case_pty, "udp": case_udp, "input": case_input, "usage": case_usage,
-          "signal": case_signal, "stuck": case_stuck, "stream": case_stream, "pipe": case_pipe},
+          "signal": case_signal, "stuck": case_stuck, "stream": case_stream, "pipe": case_pipe,
+          "rmc": case_rmc},
          CASE)
