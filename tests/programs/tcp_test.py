@@ -203,26 +203,28 @@ def case_stdout():
     # Writing stdout fails (a full disk, a reader gone): told with the system's reason, exit 1.
     srv = listener()
     port = srv.getsockname()[1]
+
+    def started(stdout):
+        return subprocess.Popen([TCP, "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL,
+                                stdout=stdout, stderr=subprocess.PIPE)
+
+    def served(p, reason):
+        """The server sends a line; `p` fails to write it and tells `reason`."""
+        conn, _ = srv.accept()
+        conn.sendall(b"$CPALT,120000.000,1*62\r\n")
+        _, err = p.communicate(timeout=20)
+        check(p.returncode == 1 and b"seawire-tcp: writing stdout: " + reason + b"\n" in err,
+              "%r told: %d %r" % (reason, p.returncode, err))
+        conn.close()
+
     with open("/dev/full", "wb") as full:
-        p = subprocess.Popen([TCP, "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL,
-                             stdout=full, stderr=subprocess.PIPE)
-    conn, _ = srv.accept()
-    conn.sendall(b"$CPALT,120000.000,1*62\r\n")
-    _, err = p.communicate(timeout=20)
-    check(p.returncode == 1 and b"seawire-tcp: writing stdout: No space left on device\n" in err,
-          "ENOSPC told: %d %r" % (p.returncode, err))
-    conn.close()
+        p = started(full)
+    served(p, b"No space left on device")
     rd, wr = os.pipe()
-    p = subprocess.Popen([TCP, "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL, stdout=wr,
-                         stderr=subprocess.PIPE)
+    p = started(wr)
     os.close(wr)
     os.close(rd)
-    conn, _ = srv.accept()
-    conn.sendall(b"$CPALT,120000.000,1*62\r\n")
-    _, err = p.communicate(timeout=20)
-    check(p.returncode == 1 and b"seawire-tcp: writing stdout: Broken pipe\n" in err,
-          "EPIPE told: %d %r" % (p.returncode, err))
-    conn.close()
+    served(p, b"Broken pipe")
 
 
 def case_flood():
