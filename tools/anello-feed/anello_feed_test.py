@@ -2,17 +2,22 @@
 # SPDX-License-Identifier: BSL-1.0
 """seawire-anello-feed through a socat pseudo-terminal pair, over UDP on loopback, and from a file.
 
-    anello_feed_test.py FEED DECODE CASE      CASE: pty, udp, input, usage
+    anello_feed_test.py FEED DECODE CASE
+    CASE: pty, udp, input, usage, signal, stuck, stream, pipe, rmc
 """
 
+import fcntl
 import json
 import os
+import pty
+import signal
 import select
 import shutil
 import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import tty
 
@@ -150,7 +155,167 @@ def case_usage():
               (["--device", "x", "--udp", "127.0.0.1:9"], b"excludes"),
               (["--read-rmc"], b"requires"),
               (["--udp", "127.0.0.1"], b"expected HOST:PORT", 1),
-              (["--input", "/nonexistent"], b"cannot be read", 2)), extra=["--seconds", "0.1"])
+              (["--input", "/nonexistent"], b"cannot be read", 2),
+              (["--input", "/"], b"--input /: cannot be read: Is a directory", 2)),
+             extra=["--seconds", "0.1"])
+    r = subprocess.run([FEED, "--input", "/", "--seconds", "0.1"], capture_output=True,
+                       timeout=20)
+    check(r.stderr.count(b"\n") == 1, "a directory: one line: %r" % r.stderr)
+
+
+def stops_within(p, sig, seconds):
+    """Sends `sig` and whether `p` then exits within `seconds` (killed if not)."""
+    t = time.monotonic()
+    p.send_signal(sig)
+    try:
+        p.wait(timeout=seconds)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        p.wait()
+        return False
+    return time.monotonic() - t < seconds
+
+
+def case_stuck():
+    # A pty nobody reads fills up; the feed must still hear SIGTERM, SIGINT and --seconds.
+    for sig, args in ((signal.SIGTERM, []), (signal.SIGINT, []), (None, ["--seconds", "2"])):
+        master, slave = pty.openpty()
+        path = os.ttyname(slave)
+        p = subprocess.Popen([FEED, "--device", path, "--rate", "10", *args],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        time.sleep(0.5)
+        # Fill the pty from here (the master is never read), non-blocking.
+        fcntl.fcntl(slave, fcntl.F_SETFL, fcntl.fcntl(slave, fcntl.F_GETFL) | os.O_NONBLOCK)
+        # The kernel moves what was written on to the master side a moment later, which frees
+        # room: filled again until a pause frees none.
+        for _ in range(50):
+            wrote = 0
+            for size in (4096, 64, 1):
+                try:
+                    while True:
+                        wrote += os.write(slave, b"x" * size)
+                except BlockingIOError:
+                    pass
+            if wrote == 0:
+                break
+            time.sleep(0.1)
+        time.sleep(0.3)
+        if sig is None:
+            try:
+                p.wait(timeout=6)
+                ok = True
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait()
+                ok = False
+            check(ok, "--seconds 2 ends a run on a full pty")
+        else:
+            check(stops_within(p, sig, 2.5), "signal %d ends a run on a full pty within 2.5 s"
+                  % sig)
+        err = p.stderr.read()
+        check(p.returncode == 0 and b"frames," in err, "exit 0 with the summary: %d %r"
+              % (p.returncode, err))
+        os.close(slave)
+        os.close(master)
+
+
+def case_rmc():
+    # --read-rmc with a stdout nobody reads: the RMC lines the INS sends fill the pipe; the
+    # feed still hears SIGTERM.
+    master, slave = pty.openpty()
+    tty.setraw(master)
+    rd, wr = os.pipe()
+    p = subprocess.Popen([FEED, "--device", os.ttyname(slave), "--read-rmc", "--rate", "10"],
+                         stdout=wr, stderr=subprocess.PIPE)
+    os.close(wr)
+    time.sleep(0.5)
+    rmc = (b"$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70\r\n")
+    fcntl.fcntl(master, fcntl.F_SETFL, fcntl.fcntl(master, fcntl.F_GETFL) | os.O_NONBLOCK)
+    sent = 0
+    end = time.monotonic() + 3
+    while sent < 200000 and time.monotonic() < end:
+        try:
+            sent += os.write(master, rmc * 50)
+        except BlockingIOError:
+            time.sleep(0.01)
+    check(sent > 70000, "more RMC sent than a pipe holds: %d bytes" % sent)
+    check(stops_within(p, signal.SIGTERM, 2.5), "SIGTERM ends a run whose stdout is full")
+    err = p.stderr.read()
+    check(p.returncode == 0 and b"RMC read" in err, "exit 0 with the summary: %d %r"
+          % (p.returncode, err))
+    os.close(rd)
+    os.close(slave)
+    os.close(master)
+
+
+def case_stream():
+    # --input - is read as it comes: frames go out while stdin is still open (all but the last,
+    # whose period the sentences after it may still join).
+    rec = subprocess.run([FEED, "--rate", "10", "--seconds", "1", "-q"], capture_output=True,
+                         timeout=30).stdout
+    check(len(rec) > 56 * 10 and rec[-56:-54] == b"\xab\x00",
+          "the recording ends with a frame: %r" % rec[-56:])
+    p = subprocess.Popen([FEED, "--input", "-", "--rate", "10", "-q"], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    p.stdin.write(rec)
+    p.stdin.flush()
+    got = b""
+    end = time.monotonic() + 5
+    while len(got) < len(rec) - 56 and time.monotonic() < end:
+        r, _, _ = select.select([p.stdout], [], [], 0.1)
+        if r:
+            got += os.read(p.stdout.fileno(), 65536)
+    check(got == rec[:-56], "the stream sent while stdin is open: %d of %d bytes"
+          % (len(got), len(rec) - 56))
+    p.stdin.close()
+    got += p.stdout.read()
+    p.wait(timeout=10)
+    check(p.returncode == 0 and got == rec, "all sent, exit 0 at the input's end: %d %d of %d"
+          % (p.returncode, len(got), len(rec)))
+    # Endless input without a frame (/dev/zero): memory bounded, --seconds and signals heard.
+    with open("/dev/zero", "rb") as zero:
+        t = time.monotonic()
+        p = subprocess.Popen([FEED, "--input", "-", "--seconds", "2"], stdin=zero,
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        killer = threading.Timer(10, p.kill)
+        killer.start()
+        _, status, usage = os.wait4(p.pid, 0)
+        elapsed = time.monotonic() - t
+        killer.cancel()
+    p.returncode = os.waitstatus_to_exitcode(status)
+    err = p.stderr.read()
+    check(p.returncode == 0 and elapsed < 5, "--seconds 2 on /dev/zero: %d after %.1f s %r"
+          % (p.returncode, elapsed, err))
+    check(b"0 frames, 0 sentences sent" in err and b"bytes outside frames" in err,
+          "nothing sent, the zeros counted: %r" % err)
+    check(usage.ru_maxrss < 200 * 1024, "memory bounded: %d KiB" % usage.ru_maxrss)
+    with open("/dev/zero", "rb") as zero:
+        p = subprocess.Popen([FEED, "--input", "-"], stdin=zero, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL)
+        time.sleep(1)
+        check(stops_within(p, signal.SIGTERM, 2.5) and p.returncode == 0,
+              "SIGTERM heard while reading /dev/zero")
+
+
+def case_pipe():
+    # The reader of stdout goes away: EPIPE told (SIGPIPE ignored), exit 1.
+    rd, wr = os.pipe()
+    p = subprocess.Popen([FEED, "--rate", "10"], stdout=wr, stderr=subprocess.PIPE)
+    os.close(wr)
+    os.read(rd, 10)
+    os.close(rd)
+    try:
+        _, err = p.communicate(timeout=10)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        _, err = p.communicate()
+    check(p.returncode == 1 and b"seawire-anello-feed: writing stdout: Broken pipe\n" in err,
+          "EPIPE told: %d %r" % (p.returncode, err))
+    with open("/dev/full", "wb") as full:
+        r = subprocess.run([FEED, "--rate", "10", "--seconds", "1"], stdout=full,
+                           capture_output=False, stderr=subprocess.PIPE, timeout=20)
+    check(r.returncode == 1 and b"writing stdout: No space left on device\n" in r.stderr,
+          "ENOSPC told: %d %r" % (r.returncode, r.stderr))
 
 
 run_case(globals(), CASE)

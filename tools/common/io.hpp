@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -33,11 +34,16 @@ class chunk_reader {
       const ssize_t n = ::read(fd_, buf_.data(), buf_.size());
       if (n > 0) return {buf_.data(), static_cast<std::size_t>(n)};
       if (n < 0 && errno == EINTR) continue;
-      if (n < 0) failed_ = true;
+      if (n < 0) {
+        failed_ = true;
+        error_ = errno;
+      }
       return {};
     }
   }
   [[nodiscard]] bool failed() const { return failed_; }
+  /// The errno of the failed read (0 if none).
+  [[nodiscard]] int error() const { return error_; }
 
   /// Whether input (or its end) arrives within `ms` milliseconds; true too when the descriptor
   /// cannot be polled, so the caller just reads on.
@@ -54,6 +60,7 @@ class chunk_reader {
   int fd_;
   std::vector<char> buf_;
   bool failed_ = false;
+  int error_ = 0;
 };
 
 /// Calls f(line) for each line of `in` to its end, without its '\n' (a CR before it is kept), a
@@ -83,6 +90,51 @@ void for_each_line(chunk_reader& in, F&& f) {
   if (!carry.empty()) f(std::string_view(carry));
 }
 
+/// The longest line for_each_bounded_line hands over (without its '\n'), a documented bound of
+/// seawire-encode: a JSON Lines object of any message is a few hundred bytes.
+inline constexpr std::size_t max_line = 64 * 1024;
+
+/// Like for_each_line, with memory bounded: a line longer than `max` bytes (without its '\n') is
+/// not kept but skipped to its end, and too_long(length) is called in its place (length: its
+/// bytes, counted, however many they are); the lines after it are read as usual.
+template <class F, class G>
+void for_each_bounded_line(chunk_reader& in, std::size_t max, F&& f, G&& too_long) {
+  std::string carry;          // a line cut by the chunk boundary, at most `max` bytes
+  std::uint64_t skipped = 0;  // bytes of the over-long line being skipped
+  bool skipping = false;
+  for (std::string_view chunk = in.next(); !chunk.empty(); chunk = in.next()) {
+    while (!chunk.empty()) {
+      const void* nl = std::memchr(chunk.data(), '\n', chunk.size());
+      const std::size_t n =
+          nl == nullptr ? chunk.size()
+                        : static_cast<std::size_t>(static_cast<const char*>(nl) - chunk.data());
+      if (!skipping && carry.size() + n > max) {
+        skipping = true;
+        skipped = carry.size();
+        carry.clear();
+      }
+      if (skipping) {
+        skipped += n;
+      } else if (nl != nullptr && carry.empty()) {
+        f(chunk.substr(0, n));
+      } else {
+        carry.append(chunk.substr(0, n));
+        if (nl != nullptr) f(std::string_view(carry));
+      }
+      if (nl == nullptr) break;
+      if (skipping) too_long(skipped);
+      skipping = false;
+      carry.clear();
+      chunk.remove_prefix(n + 1);
+    }
+  }
+  if (skipping) {
+    too_long(skipped);
+  } else if (!carry.empty()) {
+    f(std::string_view(carry));
+  }
+}
+
 /// `s` made safe for a terminal: control bytes (NUL included) and DEL as \xNN, the rest as is.
 inline std::string printable(std::string_view s) {
   std::string out;
@@ -98,6 +150,13 @@ inline std::string printable(std::string_view s) {
     }
   }
   return out;
+}
+
+/// At most `n` bytes of `s` made printable, "..." after them when `s` is longer: what a message
+/// quotes of a value, however long the value.
+inline std::string quote_prefix(std::string_view s, std::size_t n = 64) {
+  if (s.size() <= n) return printable(s);
+  return printable(s.substr(0, n)) + "...";
 }
 
 /// A large output buffer in front of a FILE*. put() never fails; flush() reports write errors.

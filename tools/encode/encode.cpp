@@ -25,6 +25,7 @@
 
 #include "cli.hpp"
 #include "io.hpp"
+#include "log_limit.hpp"
 #include "messages.hpp"
 #include "seawire/anello/frame.hpp"
 #include "seawire/anello/frame_json.hpp"
@@ -179,10 +180,10 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     std::string why;
     const std::string plain = plain_decimal(text, why);
     if (plain.empty()) {
-      const std::string where = depth_ == 1
-                                    ? "field \"" + std::string(key_) + "\""
-                                    : "\"precision\" of \"" + std::string(inner_key_) + "\"";
-      return refuse(where + " " + text + ": " + why);
+      const std::string where =
+          depth_ == 1 ? "field \"" + tools::quote_prefix(key_) + "\""
+                      : "\"precision\" of \"" + tools::quote_prefix(inner_key_) + "\"";
+      return refuse(where + " " + tools::quote_prefix(text) + ": " + why);
     }
     return value(json_kind::number, plain);
   }
@@ -201,7 +202,19 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   bool start_array(std::size_t) override { return open(true); }
   bool end_array() override { return close(); }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
-    error_ = std::string("invalid JSON: ") + e.what();
+    // nlohmann-json's message quotes the input it stopped at ("last read: '...'", "number
+    // overflow parsing '...'"), however long: a prefix of it.
+    const std::string_view what = e.what();
+    const std::size_t from = what.find('\'');
+    const std::size_t to = what.rfind('\'');
+    error_ = "invalid JSON: ";
+    if (from == std::string_view::npos || to == from) {
+      error_ += tools::quote_prefix(what, 256);
+    } else {
+      error_ += what.substr(0, from + 1);
+      error_ += tools::quote_prefix(what.substr(from + 1, to - from - 1));
+      error_ += tools::quote_prefix(what.substr(to), 64);
+    }
     return false;
   }
 
@@ -400,9 +413,20 @@ class encoder {
     if (opt_.line_buffered) out_.flush();
   }
 
-  void finish() { out_.flush(); }
+  // A line longer than tools::max_line: not read (its bytes are not kept), the next one is.
+  void too_long(std::uint64_t bytes) {
+    ++line_;
+    reject(std::to_string(bytes) + " bytes, more than the " + std::to_string(tools::max_line) +
+           " a line may have: not read");
+  }
+
+  void finish() {
+    out_.flush();
+    errors_.flush([&](std::uint64_t n) { note(errors_.note_text(n)); });
+  }
   [[nodiscard]] std::uint64_t rejected() const { return rejected_; }
   [[nodiscard]] bool output_failed() const { return out_.failed(); }
+  [[nodiscard]] int output_error() const { return out_.error(); }
 
  private:
   template <class M>
@@ -549,12 +573,12 @@ class encoder {
   void unknown(std::string_view type) {
     if (!obj_.has_fields()) {
       reject(std::string(name(errc::unknown_address)) + ": no known message is \"" +
-             std::string(type) + "\" (and there is no \"fields\" array to send it as is)");
+             tools::quote_prefix(type) + "\" (and there is no \"fields\" array to send it as is)");
       return;
     }
     for (const auto& [key, value] : obj_.members()) {
       if (key == "type" || key == "fields" || key == "start") continue;
-      reject(std::string(type) + ": unknown key \"" + std::string(key) +
+      reject(tools::quote_prefix(type) + ": unknown key \"" + tools::quote_prefix(key) +
              "\" (a sentence no message describes takes only \"type\", \"fields\" and "
              "\"start\")");
       return;
@@ -562,13 +586,13 @@ class encoder {
     char start = '$';
     if (const json_value s = obj_({}, "start"); s.kind != json_kind::absent) {
       if (s.kind != json_kind::string || (s.text != "$" && s.text != "!")) {
-        reject(std::string(type) + ": \"start\" must be \"$\" or \"!\"");
+        reject(tools::quote_prefix(type) + ": \"start\" must be \"$\" or \"!\"");
         return;
       }
       start = s.text[0];
     }
     if (!nmea::is_address(type)) {
-      reject(std::string(name(errc::bad_address)) + ": \"" + std::string(type) +
+      reject(std::string(name(errc::bad_address)) + ": \"" + tools::quote_prefix(type) +
              "\" is not 1-15 upper-case letters and digits");
       return;
     }
@@ -599,8 +623,8 @@ class encoder {
   bool known_keys(std::string_view type, Known&& known, bool precision_allowed = true) {
     for (const auto& [key, value] : obj_.members()) {
       if (key == "type" || (precision_allowed && key == "precision") || known(key)) continue;
-      reject(std::string(type) + ": unknown key \"" + std::string(key) + "\" (not a field of " +
-             std::string(type) + ")");
+      reject(std::string(type) + ": unknown key \"" + tools::quote_prefix(key) +
+             "\" (not a field of " + std::string(type) + ")");
       return false;
     }
     return true;
@@ -623,7 +647,7 @@ class encoder {
     for (const auto& [key, value] : obj_.precision()) {
       const std::optional<place_range> range = places(key);
       if (!range) {
-        reject(t + ": unknown key \"" + std::string(key) + "\" in \"precision\" (" +
+        reject(t + ": unknown key \"" + tools::quote_prefix(key) + "\" in \"precision\" (" +
                (names.empty() ? t + " has no position fields"
                               : "allowed: the position fields " + std::string(names)) +
                ")");
@@ -640,10 +664,10 @@ class encoder {
         const std::string_view quote = value.kind == json_kind::string ? "\"" : "";
         std::string why = t;
         why += ": \"precision\" of \"";
-        why += key;
+        why += tools::quote_prefix(key);
         why += "\" is ";
         why += quote;
-        why += value.text;
+        why += tools::quote_prefix(value.text);
         why += quote;
         why += ": must be a whole number from " + std::to_string(range->lo) + " to " +
                std::to_string(range->hi) + " (" + std::string(range->what) + ")";
@@ -663,9 +687,9 @@ class encoder {
         what += " (" + std::string(field_name) + ")";
         const json_value v = obj_({}, field_name);
         if (v.kind == json_kind::string) {
-          what += " \"" + std::string(v.text) + "\"";
+          what += " \"" + tools::quote_prefix(v.text) + "\"";
         } else if (v.kind == json_kind::number || v.kind == json_kind::boolean) {
-          what += " " + std::string(v.text);
+          what += " " + tools::quote_prefix(v.text);
         }
       }
     }
@@ -674,10 +698,17 @@ class encoder {
 
   void reject(const std::string& why) {
     ++rejected_;
+    // A flood of bad lines is told in part: 20 a second, then how many were not.
+    if (!errors_.allow([&](std::uint64_t n) { note(errors_.note_text(n)); })) return;
     out_.flush();  // keep stdout and stderr in input order for a reader of both
     // The reason quotes the input, which JSON lets hold any byte: NUL and control bytes escaped.
     std::fprintf(stderr, "seawire-encode: line %llu: %s\n", static_cast<unsigned long long>(line_),
                  tools::printable(why).c_str());
+  }
+
+  void note(const std::string& text) {
+    out_.flush();
+    std::fprintf(stderr, "seawire-encode: %s\n", text.c_str());
   }
 
   const options& opt_;
@@ -687,19 +718,23 @@ class encoder {
   bool canboat_header_ = false;  // "# format=FAST" written
   std::uint64_t line_ = 0;
   std::uint64_t rejected_ = 0;
+  tools::log_limit errors_{"rejected lines"};
 };
 
 int run(const options& o) {
   encoder e(o);
   tools::chunk_reader in(0);
-  tools::for_each_line(in, [&](std::string_view l) { e.line(l); });
+  tools::for_each_bounded_line(
+      in, tools::max_line, [&](std::string_view l) { e.line(l); },
+      [&](std::uint64_t bytes) { e.too_long(bytes); });
   e.finish();
+  // The errno saved when the read or write failed: errno itself has been set again since.
   if (in.failed()) {
-    std::perror("seawire-encode: reading stdin");
+    std::fprintf(stderr, "seawire-encode: reading stdin: %s\n", std::strerror(in.error()));
     return 1;
   }
   if (e.output_failed()) {
-    std::perror("seawire-encode: writing stdout");
+    std::fprintf(stderr, "seawire-encode: writing stdout: %s\n", std::strerror(e.output_error()));
     return 1;
   }
   return e.rejected() == 0 ? 0 : 1;

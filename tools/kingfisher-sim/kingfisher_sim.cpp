@@ -18,6 +18,7 @@
 #include <string>
 #include <variant>
 
+#include "cli.hpp"
 #include "kingfisher_model.hpp"
 #include "net.hpp"
 
@@ -329,13 +330,16 @@ int main(int argc, char** argv) {
   app.add_option("--time", o.time,
                  "UTC time of the first tick, 2026-11-25T12:00:00Z (default: now)");
   app.add_option("--nav-rate", o.nav_rate, "Hz of CPNVG, CPNVR, CPRCM, CPIMU")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::Range(0.1, 1000.0))
       ->capture_default_str();
   app.add_option("--status-rate", o.status_rate, "Hz of CPRBS, CPALT, GPRMC, GPGGA")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::Range(0.01, 1000.0))
       ->capture_default_str();
   app.add_option("--watchdog", o.vehicle.watchdog_s,
                  "seconds without a command after which the thrusters stop")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--pydep-units", o.pydep_units,
@@ -344,9 +348,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"deg", "rad"}))
       ->capture_default_str();
   app.add_option("--max-speed", o.vehicle.max_speed_mps, "m/s at full thrust")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--max-yaw-rate", o.vehicle.max_yaw_rate_dps, "deg/s at full differential thrust")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--max-queue", o.limits.max_queue_lines,
@@ -363,8 +369,10 @@ int main(int argc, char** argv) {
                  "SO_SNDBUF of each client socket in bytes (0: the system's)")
       ->capture_default_str();
   app.add_option("--duration", o.duration, "stop after this many seconds (0: run until signalled)")
+      ->check(seawire::tools::finite_number)
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
   o.vehicle.pydep_radians = o.pydep_units == "rad";
   if (o.status_rate > o.nav_rate) {
     std::fprintf(stderr,

@@ -17,6 +17,7 @@
 #include <string>
 #include <variant>
 
+#include "cli.hpp"
 #include "net.hpp"
 
 namespace {
@@ -329,27 +330,33 @@ int main(int argc, char** argv) {
       });
   app.add_option("--gap-limit", o.gap_limit,
                  "seconds without an accepted heartbeat that count as a gap")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--jitter", o.jitter,
                  "seconds by which two reports of a type may arrive closer than 1 s apart without "
                  "breaking the rate rule (network jitter)")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
   app.add_option("--clock-tolerance", o.clock_tolerance,
                  "flag reports whose HST time is further than this many seconds from their "
                  "arrival (0: off)")
+      ->check(seawire::tools::finite_number)
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--report", o.report,
                  "text: one line per finding and a summary; json: one JSON object per line")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();
   app.add_option("--duration", o.duration, "stop after this many seconds (0: at SIGINT/SIGTERM)")
+      ->check(seawire::tools::finite_number)
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--max-clients", o.limits.max_clients, "connections beyond this are closed")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
 
   const auto where = net::parse_endpoint(o.listen);
   if (!where) {

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "kingfisher_model.hpp"
 #include "net.hpp"
 
@@ -501,21 +502,26 @@ int main(int argc, char** argv) {
                  "RMB ABT VER, comma-separated, or 'none'")
       ->capture_default_str();
   app.add_option("--nav-rate", o.nav_rate, "Hz of BFNVG and BFNVR (to subscribers)")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::Range(0.1, 100.0))
       ->capture_default_str();
   app.add_option("--abort-time", o.abort_time, "seconds from BPABT to BFMIS Aborted")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--shutdown-wait", o.shutdown_wait,
                  "seconds between BFSHT (on SIGINT/SIGTERM) and closing; a second signal closes "
                  "at once")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--version-text", o.version, "the interface version sent in BFVER")
       ->capture_default_str();
   app.add_option("--duration", o.duration, "stop after this many seconds (0: at a signal)")
+      ->check(seawire::tools::finite_number)
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
 
   const auto fail = [](const std::string& what) {
     std::fprintf(stderr, "seawire-sandshark-sim: %s\n", what.c_str());

@@ -16,9 +16,12 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <seawire/nmea/stream.hpp>
 #include <string>
 
+#include "cli.hpp"
+#include "log_limit.hpp"
 #include "net.hpp"
 
 namespace {
@@ -32,18 +35,11 @@ struct options {
   bool reconnect = false;
   double min_backoff = 0.1;
   double max_backoff = 5;
+  double connect_timeout = 10;
   bool lf = false;
   bool quiet = false;
   bool close_on_eof = false;
 };
-
-template <class... A>
-void note(const options& o, const char* format, A... args) {
-  if (o.quiet) return;
-  std::fprintf(stderr, "seawire-tcp: ");
-  std::fprintf(stderr, format, args...);
-  std::fputc('\n', stderr);
-}
 
 class client {
  public:
@@ -55,6 +51,7 @@ class client {
         resolver_(io),
         socket_(io),
         timer_(io),
+        connect_timer_(io),
         signals_(io, SIGINT, SIGTERM),
         backoff_(o.min_backoff) {
     struct stat st {};
@@ -75,6 +72,19 @@ class client {
   }
 
   void start() { connect(); }
+
+  // A connection message on stderr (unless --quiet): at most 20 a second (a server that accepts
+  // and closes at once, with --reconnect), then how many were not told.
+  template <class... A>
+  void note(const char* format, A... args) {
+    if (o_.quiet || !log_.allow([this](std::uint64_t n) { told(n); })) return;
+    std::fprintf(stderr, "seawire-tcp: ");
+    std::fprintf(stderr, format, args...);
+    std::fputc('\n', stderr);
+  }
+  void told(std::uint64_t suppressed) {
+    std::fprintf(stderr, "seawire-tcp: %s\n", log_.note_text(suppressed).c_str());
+  }
   [[nodiscard]] int status() const { return status_; }
 
  private:
@@ -87,11 +97,27 @@ class client {
             lost("cannot resolve " + host_ + ": " + ec.message());
             return;
           }
+          // A server that never answers (a full accept queue, a firewall dropping the SYN)
+          // would leave the connect waiting for minutes: closed after --connect-timeout.
+          timed_out_ = false;
+          connect_timer_.expires_after(
+              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                  std::chrono::duration<double>(o_.connect_timeout)));
+          connect_timer_.async_wait([this](const asio::error_code& t) {
+            if (t || done_ || connected_) return;
+            timed_out_ = true;
+            asio::error_code ignored;
+            socket_.close(ignored);
+          });
           asio::async_connect(
               socket_, r, [this](const asio::error_code& e, const asio::ip::tcp::endpoint& to) {
+                connect_timer_.cancel();
                 if (done_) return;
                 if (e) {
-                  lost("cannot connect to " + host_ + ":" + port_ + ": " + e.message());
+                  char why[64];
+                  std::snprintf(why, sizeof why, "no answer within %g s", o_.connect_timeout);
+                  lost("cannot connect to " + host_ + ":" + port_ + ": " +
+                       (timed_out_ ? std::string(why) : e.message()));
                   return;
                 }
                 connected(to);
@@ -102,7 +128,7 @@ class client {
   void connected(const asio::ip::tcp::endpoint& to) {
     asio::error_code ignored;
     socket_.set_option(asio::ip::tcp::no_delay(true), ignored);
-    note(o_, "connected to %s", net::to_string(to).c_str());
+    note("connected to %s", net::to_string(to).c_str());
     connected_ = true;
     connected_at_ = std::chrono::steady_clock::now();
     from_server_.reset();
@@ -125,11 +151,11 @@ class client {
     asio::error_code ignored;
     socket_.close(ignored);
     if (!o_.reconnect || (o_.close_on_eof && stdin_done_ && pending_.empty() && was)) {
-      if (!was || why != "closed by the server") note(o_, "%s", why.c_str());
+      if (!was || why != "closed by the server") note("%s", why.c_str());
       finish(was ? 0 : 1);
       return;
     }
-    note(o_, "%s; reconnecting in %.1f s", why.c_str(), backoff_);
+    note("%s; reconnecting in %.1f s", why.c_str(), backoff_);
     timer_.expires_after(milliseconds(static_cast<long>(backoff_ * 1000)));
     timer_.async_wait([this](const asio::error_code& ec) {
       if (!ec && !done_) connect();
@@ -173,7 +199,10 @@ class client {
         pollfd p{1, POLLOUT, 0};  // stdout is non-blocking (someone else set it): wait
         (void)::poll(&p, 1, 1000);
       } else {
-        finish(0);  // the reader went away (a closed pipe): nothing left to do
+        // A closed pipe (EPIPE: SIGPIPE is ignored), a full disk: told, and the end.
+        const int e = n < 0 ? errno : EIO;
+        std::fprintf(stderr, "seawire-tcp: writing stdout: %s\n", std::strerror(e));
+        finish(1);
         return;
       }
     }
@@ -206,7 +235,14 @@ class client {
     };
     if (ec) {
       stdin_done_ = true;
-      while (const auto item = from_stdin_.finish()) take(*item);
+      // A last line without its line ending was cut off (the writer died, a truncated file):
+      // not sent as if whole.
+      bool cut = false;
+      while (from_stdin_.finish()) cut = true;
+      if (cut)
+        std::fprintf(stderr,
+                     "seawire-tcp: stdin ended in the middle of a line (no line ending after "
+                     "it): that line is not sent\n");
     } else {
       from_stdin_.feed(std::string_view(stdin_buf_.data(), n), take);
       while (const auto item = from_stdin_.flush()) take(*item);
@@ -255,10 +291,12 @@ class client {
   void finish(int status) {
     if (done_) return;
     done_ = true;
+    log_.flush([this](std::uint64_t n) { told(n); });
     status_ = status;
     asio::error_code ignored;
     signals_.cancel(ignored);
     timer_.cancel();
+    connect_timer_.cancel();
     resolver_.cancel();
     socket_.close(ignored);
     if (stdin_.is_open()) stdin_.close(ignored);
@@ -270,6 +308,9 @@ class client {
   asio::ip::tcp::resolver resolver_;
   asio::ip::tcp::socket socket_;
   asio::steady_timer timer_;
+  asio::steady_timer connect_timer_;
+  bool timed_out_ = false;
+  tools::log_limit log_{"connection messages"};  // the connect was closed by connect_timer_
   asio::signal_set signals_;
   asio::posix::stream_descriptor stdin_{io_};
   bool stdin_is_file_ = false;
@@ -301,9 +342,16 @@ int main(int argc, char** argv) {
                "when the connection fails or ends, connect again (backoff doubling from "
                "--min-backoff to --max-backoff)");
   app.add_option("--min-backoff", o.min_backoff, "first wait before reconnecting, seconds")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--max-backoff", o.max_backoff, "longest wait before reconnecting, seconds")
+      ->check(seawire::tools::finite_number)
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--connect-timeout", o.connect_timeout,
+                 "seconds to wait for the server to accept a connection")
+      ->check(seawire::tools::finite_number)
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_flag("--lf", o.lf, "end lines written to stdout with LF alone");
@@ -311,7 +359,7 @@ int main(int argc, char** argv) {
                "once stdin has ended and been sent, shut down the sending side and exit when the "
                "server closes (default: keep printing what the server sends)");
   app.add_flag("-q,--quiet", o.quiet, "no connection messages on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
   const auto where = net::parse_endpoint(o.server);
   if (!where || where->port == 0 || o.server.front() == ':') {
     std::fprintf(stderr, "seawire-tcp: %s: expected HOST:PORT\n", o.server.c_str());

@@ -2,14 +2,17 @@
 # SPDX-License-Identifier: BSL-1.0
 """seawire-tcp against servers written here, on 127.0.0.1 with ephemeral ports.
 
-    tcp_test.py TCP CASE      CASE: framing, send, reconnect, errors
+    tcp_test.py TCP CASE      CASE: framing, send, reconnect, errors, timeout, stdout, flood
 """
 
+import os
+import re
 import signal
 import socket
 import subprocess
 import os
 import sys
+import threading
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
@@ -38,6 +41,16 @@ def recv_all(conn, timeout=10):
         if not chunk:
             return data
         data += chunk
+
+
+def run_for(seconds, *args):
+    """Runs seawire-tcp with `args` (stdin at /dev/null) for `seconds`, then SIGTERM; returns its
+    exit status and stderr."""
+    p = subprocess.Popen([TCP, *args], stdin=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    time.sleep(seconds)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate(timeout=10)
+    return p.returncode, err
 
 
 def case_framing():
@@ -81,16 +94,19 @@ def case_send():
     p.stdin.flush()
     time.sleep(0.2)
     p.stdin.write(b"IR,45,55*57\n" + b"x" * 3000 + b"\n$PYCLT,1")
-    p.stdin.close()  # the last line has no ending: sent all the same
+    p.stdin.close()  # the last line has no ending: cut off, not sent, and said so
     got = recv_all(conn)  # -N: the client half-closes once stdin is sent
-    check(got == b"$PYDEV,90,1.5\r\n$PYDIR,45,55*57\r\n$PYCLT,1\r\n",
-          "stdin framed, garbled and overlong lines dropped: %r" % got)
+    check(got == b"$PYDEV,90,1.5\r\n$PYDIR,45,55*57\r\n",
+          "stdin framed, garbled, overlong and cut-off lines dropped: %r" % got)
     conn.sendall(b"$CPALT,120000.000,1*62\r\n")
     conn.close()
     out = p.stdout.read()
     p.wait(timeout=20)
     check(out == b"$CPALT,120000.000,1*62\r\n" and p.returncode == 0,
           "after the half close the server's lines still arrive: %r" % out)
+    err = p.stderr.read()
+    check(b"seawire-tcp: stdin ended in the middle of a line (no line ending after it): that "
+          b"line is not sent\n" in err, "the cut-off line told: %r" % err)
     # Without -N the client stays after stdin ends (a listener with stdin at /dev/null).
     p = subprocess.Popen([TCP, "127.0.0.1:%d" % port], stdin=subprocess.DEVNULL,
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE)
