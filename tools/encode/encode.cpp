@@ -522,8 +522,9 @@ class encoder {
             static_cast<std::uint8_t>(std::stoi(std::string(d.text.substr(i, 2)), nullptr, 16)));
     }
     const bool fast = info ? info->transport == nmea2000::framing::fast_packet : payload.size() > 8;
-    if (!fast || opt_.log == nmea2000::log_format::canboat) {
-      // One frame, or canboat's FAST line holding the whole payload.
+    if (!fast || opt_.log == nmea2000::log_format::canboat ||
+        opt_.log == nmea2000::log_format::actisense_n2k_ascii) {
+      // One frame, or a line holding the whole payload (canboat FAST, Actisense).
       (void)rec.assign(payload);
       put_record(type, rec);
       return;
@@ -772,11 +773,13 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", log,
                  "how NMEA 2000 messages (\"type\":\"PGN128259\") are written: candump_log "
                  "(default: candump -L lines, what canplayer reads), candump, canboat (FAST: a "
-                 "\"# format=FAST\" header, then one line per whole message) or yd_raw; fast "
-                 "packets are split into frames "
+                 "\"# format=FAST\" header, then one line per whole message), yd_raw or "
+                 "actisense_n2k_ascii (one line per whole message); other than canboat and "
+                 "Actisense, fast packets are split into frames "
                  "with a sequence counter per PGN and source (e.g. seawire-encode < speed.jsonl | "
                  "canplayer -I - vcan0=can0)")
-      ->check(CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw"}));
+      ->check(
+          CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw", "actisense_n2k_ascii"}));
   app.set_version_flag("--version", "seawire-encode (seawire " SEAWIRE_VERSION_STRING ")");
   if (const auto status = tools::parse_command_line(app, argc, argv)) return *status;
   o.log = *nmea2000::log_format_named(log);

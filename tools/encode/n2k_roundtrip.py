@@ -4,7 +4,8 @@
     n2k_roundtrip.py <seawire-decode> <seawire-encode> <tests/data/n2k>
 
 For every vector and every log format seawire-encode writes, the second decode gives the same
-messages as the first: the same values, and the same time to what the format keeps (yd_raw keeps
+messages as the first: the same values, and the same time to what the format keeps (yd_raw and
+Actisense keep
 milliseconds of the day). Then seawire-encode's refusals: each names the line, the field and why,
 and the good lines around them are still written. Then whatever decodes encodes: a short 127489
 (its flag words not sent), and random messages of every PGN of every length, times of 24 h and
@@ -22,7 +23,7 @@ import harness
 from harness import check
 
 DECODE, ENCODE, DATA = sys.argv[1], sys.argv[2], sys.argv[3]
-FORMATS = ["candump_log", "candump", "canboat", "yd_raw"]
+FORMATS = ["candump_log", "candump", "canboat", "yd_raw", "actisense_n2k_ascii"]
 
 
 def run(prog, args, data):
@@ -36,7 +37,7 @@ def comparable(obj, fmt):
     o.pop("interface", None)
     o.pop("direction", None)
     t = o.pop("time_s", None)
-    if t is not None and fmt == "yd_raw":
+    if t is not None and fmt in ("yd_raw", "actisense_n2k_ascii"):
         t = int(round(t * 1e6)) // 1000 % 86400000 / 1000  # milliseconds of the day, cut
     return o, t
 
@@ -62,7 +63,8 @@ for path in sorted(glob.glob(os.path.join(DATA, "*.in"))):
                       f"{name} -> {fmt} message {i + 1}: time {ta} != {tb}")
     # Same format in and out: every message, interface and time included, is identical.
     fmt = {"01": "canboat", "02": "candump_log", "03": "candump_log", "04": "yd_raw",
-           "08": "canboat", "09": "candump_log", "10": "yd_raw"}.get(name[:2])
+           "08": "canboat", "09": "candump_log", "10": "yd_raw",
+           "30": "actisense_n2k_ascii"}.get(name[:2])
     if fmt:
         enc = run(ENCODE, ["--output", fmt], first.stdout)
         second = run(DECODE, [], enc.stdout)
