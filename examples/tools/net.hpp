@@ -30,6 +30,8 @@
 #include <string_view>
 #include <utility>
 
+#include "log_limit.hpp"
+
 namespace seawire::tools::net {
 
 /// "ADDR:PORT", "[v6addr]:PORT" or ":PORT" (all interfaces). nullopt when malformed.
@@ -176,6 +178,21 @@ class line_server {
     std::fputc('\n', stderr);
     std::fflush(stderr);
   }
+  /// What writes `limit`'s note ("... K more <what> suppressed") to the log.
+  static auto note(const log_limit& limit) {
+    return [&limit](std::uint64_t n) { log("%s", limit.note_text(n).c_str()); };
+  }
+  /// log() for a line of `limit`'s category (one per event a client can repeat at line rate):
+  /// written while the category is within its rate, else counted, and the count logged as
+  /// "... K more <what> suppressed" when the next window opens.
+  template <class... A>
+  static void log_limited(log_limit& limit, const char* format, A... args) {
+    if (limit.allow(note(limit))) log(format, args...);
+  }
+  /// From a timer: logs the count of a window that is over (a flood that stopped).
+  static void poll_log(log_limit& limit) { limit.poll(note(limit)); }
+  /// At exit: logs what is suppressed and not yet told.
+  static void flush_log(log_limit& limit) { limit.flush(note(limit)); }
 
  private:
   friend class client;
