@@ -7,7 +7,8 @@
 // corrupts the next sentence, and each sentence is handed to the program. What the program sends
 // goes into each client's queue, bounded in lines: when a client does not read, its oldest
 // unsent lines are dropped and counted, and once more than `max_drops` lines have been dropped
-// it is disconnected. A client that ends its sending side (half close) gets what is already
+// it is disconnected. Bytes the reader gives up on are skipped, or handed to the program when it
+// asks (on_drop). A client that ends its sending side (half close) gets what is already
 // queued for it (within 10 s), then the connection is closed. One line per connection event is
 // logged to stderr.
 //
@@ -134,6 +135,9 @@ class line_server {
   using sentence_handler = std::function<void(client&, const nmea::framed_line& sentence)>;
   using client_handler = std::function<void(client&)>;
   using closed_handler = std::function<void(client&, std::string_view why)>;
+  /// Bytes the stream reader gave up on (no '$' first, a byte outside printable ASCII, longer
+  /// than the reader holds, cut short by the next '$'), as nmea::stream_reader reports them.
+  using drop_handler = std::function<void(client&, const nmea::stream_drop& drop)>;
 
   line_server(asio::io_context& io, const asio::ip::tcp::endpoint& where, server_limits limits)
       : acceptor_(io), retry_(io), limits_(limits) {
@@ -151,6 +155,8 @@ class line_server {
   void on_sentence(sentence_handler h) { on_sentence_ = std::move(h); }
   void on_connect(client_handler h) { on_connect_ = std::move(h); }
   void on_close(closed_handler h) { on_close_ = std::move(h); }
+  /// With a handler, every client's dropped bytes are reported (without, they are only skipped).
+  void on_drop(drop_handler h) { on_drop_ = std::move(h); }
 
   void start() { accept(); }
 
@@ -247,6 +253,7 @@ class line_server {
   sentence_handler on_sentence_;
   client_handler on_connect_;
   closed_handler on_close_;
+  drop_handler on_drop_;
 };
 
 inline client::client(line_server& server, asio::ip::tcp::socket socket, std::uint64_t id)
@@ -260,11 +267,19 @@ inline client::client(line_server& server, asio::ip::tcp::socket socket, std::ui
     socket_.set_option(asio::socket_base::send_buffer_size(server_.limits_.send_buffer), ec);
 }
 
-inline void client::start() { read(); }
+inline void client::start() {
+  reader_.report_drops(static_cast<bool>(server_.on_drop_));
+  read();
+}
 
 template <class Item>
 void client::deliver(const Item& item) {
-  if (!item.is_sentence() || closed_) return;
+  if (closed_) return;
+  if (item.is_drop()) {
+    if (server_.on_drop_) server_.on_drop_(*this, item.drop);
+    return;
+  }
+  if (!item.is_sentence()) return;
   ++sentences_in;
   if (server_.on_sentence_) server_.on_sentence_(*this, item.sentence);
 }
