@@ -80,6 +80,8 @@ class simulator {
     timer_.cancel();
     server_.stop(why);
     if (on_stopped) on_stopped();
+    net::line_server::flush_log(rejected_log_);
+    net::line_server::flush_log(watchdog_log_);
     net::line_server::log(
         "stopped (%.*s) after %llu ticks: %llu connections, %llu commands applied, %llu "
         "rejected, %llu watchdog stops",
@@ -106,10 +108,13 @@ class simulator {
       model_.step(dt(), now);
       if (model_.watchdog_trips() != trips_seen_) {
         trips_seen_ = model_.watchdog_trips();
-        net::line_server::log("watchdog: no command for %.3g s, thrusters stopped",
-                              o_.vehicle.watchdog_s);
+        net::line_server::log_limited(watchdog_log_,
+                                      "watchdog: no command for %.3g s, thrusters stopped",
+                                      o_.vehicle.watchdog_s);
       }
       emit(now);
+      net::line_server::poll_log(rejected_log_);
+      net::line_server::poll_log(watchdog_log_);
       if (o_.duration > 0 && now >= o_.duration) {
         stop("--duration reached");
         return;
@@ -246,16 +251,13 @@ class simulator {
     if (!r) {
       ++c.rejected_in;
       ++rejected_;
-      if (c.rejected_in <= 3) {
-        char why[200];
-        // Told with the policy it was read with: a command that ends "*" without a checksum
-        // splits into its fields only under the vehicle's policy, and so has its field named.
-        const auto text = nmea::error_text<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
-        net::line_server::log("client %llu: rejected: %.*s%s",
-                              static_cast<unsigned long long>(c.id()),
-                              static_cast<int>(text.size()), text.data(),
-                              c.rejected_in == 3 ? " (further rejections counted, not shown)" : "");
-      }
+      char why[200];
+      // Told with the policy it was read with: a command that ends "*" without a checksum
+      // splits into its fields only under the vehicle's policy, and so has its field named.
+      const auto text = nmea::error_text<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
+      net::line_server::log_limited(rejected_log_, "client %llu: rejected: %.*s",
+                                    static_cast<unsigned long long>(c.id()),
+                                    static_cast<int>(text.size()), text.data());
       return;
     }
     // Applied at once, stamped with the current tick's time: the model's clock (so runs with
@@ -294,6 +296,9 @@ class simulator {
   std::uint64_t rejected_ = 0;
   std::uint64_t encode_failures_ = 0;
   bool stopped_ = false;
+  // Lines clients can cause as fast as they send: at most 20 a second each.
+  tools::log_limit rejected_log_{"rejected commands"};
+  tools::log_limit watchdog_log_{"watchdog stops"};
 };
 
 // "2026-11-25T12:00:00Z" (seconds may have a fraction; the Z may be left out).
