@@ -73,6 +73,7 @@ class simulator {
 
   /// Called once the simulator has stopped (to cancel the signal wait).
   std::function<void()> on_stopped;
+  void signalled(int signo) { stop(net::signal_name(signo)); }
 
   void stop(std::string_view why) {
     if (stopped_) return;
@@ -379,12 +380,8 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  const auto where = net::parse_endpoint(o.listen);
-  if (!where) {
-    std::fprintf(stderr, "seawire-kingfisher-sim: --listen %s: expected ADDR:PORT\n",
-                 o.listen.c_str());
-    return 2;
-  }
+  const auto where = net::listen_option("seawire-kingfisher-sim", o.listen);
+  if (!where) return 2;
   double lat = 0, lon = 0;
   char tail = 0;
   if (std::sscanf(o.start.c_str(), "%lf,%lf%c", &lat, &lon, &tail) != 2 || !(lat >= -85) ||
@@ -407,25 +404,8 @@ int main(int argc, char** argv) {
     start_time = *t;
   }
 
-  try {
-    asio::io_context io;
-    asio::error_code ec;
-    const auto address = asio::ip::make_address(where->host, ec);
-    if (ec) {
-      std::fprintf(stderr, "seawire-kingfisher-sim: --listen %s: %s\n", o.listen.c_str(),
-                   ec.message().c_str());
-      return 2;
-    }
-    simulator sim(io, o, asio::ip::tcp::endpoint(address, where->port), lat, lon, start_time);
-    net::line_server::log("listening on %s", net::to_string(sim.local_endpoint()).c_str());
-    net::stop_signals signals(io,
-                              [&](int signo) { sim.stop(signo == SIGINT ? "SIGINT" : "SIGTERM"); });
-    sim.on_stopped = [&] { signals.cancel(); };
-    sim.start();
-    io.run();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "seawire-kingfisher-sim: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  return net::serve("seawire-kingfisher-sim", o.listen, *where,
+                    [&](asio::io_context& io, const asio::ip::tcp::endpoint& at) {
+                      return std::make_unique<simulator>(io, o, at, lat, lon, start_time);
+                    });
 }

@@ -12,6 +12,9 @@
 // queued for it (within 10 s), then the connection is closed. One line per connection event is
 // logged to stderr.
 //
+// serve() is the main of every server once its options are read: listen, log "listening on",
+// start, hand SIGINT and SIGTERM to the program, run, and the exit status.
+//
 // Closing a client never removes it inside the call that closed it: the removal (and the
 // program's on_close) runs as a posted handler, so code that is iterating clients or holding a
 // reference to a client's state while it sends can never see it freed under its feet.
@@ -19,6 +22,8 @@
 #include <asio.hpp>
 
 #include <chrono>
+#include <concepts>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <deque>
@@ -29,6 +34,7 @@
 #include <seawire/nmea/stream.hpp>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "log_limit.hpp"
@@ -375,24 +381,65 @@ inline void client::close(std::string_view why) {
   });
 }
 
-/// Stops `io` on SIGINT or SIGTERM after calling `on_stop` (which may post more work first).
-class stop_signals {
- public:
-  stop_signals(asio::io_context& io, std::function<void(int)> on_stop)
-      : signals_(io, SIGINT, SIGTERM), on_stop_(std::move(on_stop)) {
-    signals_.async_wait([this](const asio::error_code& ec, int signo) {
-      if (!ec) on_stop_(signo);
-    });
-  }
-  /// Stops waiting (the program ends for another reason).
-  void cancel() {
-    asio::error_code ignored;
-    signals_.cancel(ignored);
-  }
+/// "SIGINT" or "SIGTERM": how the servers name the signal that stops them.
+inline const char* signal_name(int signo) { return signo == SIGINT ? "SIGINT" : "SIGTERM"; }
 
- private:
-  asio::signal_set signals_;
-  std::function<void(int)> on_stop_;
+/// --listen's ADDR:PORT, or nullopt after saying "PROGRAM: --listen TEXT: expected ADDR:PORT".
+inline std::optional<endpoint_text> listen_option(const char* program, const std::string& listen) {
+  auto where = parse_endpoint(listen);
+  if (!where)
+    std::fprintf(stderr, "%s: --listen %s: expected ADDR:PORT\n", program, listen.c_str());
+  return where;
+}
+
+/// What serve() runs: a server program built on line_server.
+template <class S>
+concept server_program = requires(S& s, int signo) {
+  { s.local_endpoint() } -> std::convertible_to<asio::ip::tcp::endpoint>;
+  s.start();
+  s.signalled(signo);  ///< SIGINT or SIGTERM (each one, until the program has stopped)
+  s.on_stopped = std::function<void()>();  ///< called once the program has stopped
 };
+
+/// The main of every server, once its options are read: `make(io, endpoint)` builds the program
+/// (a std::unique_ptr to a server_program) listening on `where`; "listening on ADDR:PORT" is
+/// the first line of the log; SIGINT and SIGTERM go to its signalled() until it calls
+/// on_stopped; the event loop runs until nothing is left to do. The exit status: 0, 2 for an
+/// address that is none (`listen` is the option's text, for the message), 1 when the address
+/// cannot be listened on (or anything else fails).
+template <class Make>
+int serve(const char* program, const std::string& listen, const endpoint_text& where, Make make) {
+  try {
+    asio::io_context io;
+    asio::error_code ec;
+    const auto address = asio::ip::make_address(where.host, ec);
+    if (ec) {
+      std::fprintf(stderr, "%s: --listen %s: %s\n", program, listen.c_str(), ec.message().c_str());
+      return 2;
+    }
+    const auto server = make(io, asio::ip::tcp::endpoint(address, where.port));
+    static_assert(server_program<std::remove_reference_t<decltype(*server)>>);
+    line_server::log("listening on %s", to_string(server->local_endpoint()).c_str());
+    asio::signal_set signals(io, SIGINT, SIGTERM);
+    std::function<void()> wait = [&] {
+      signals.async_wait([&](const asio::error_code& e, int signo) {
+        if (e) return;
+        wait();  // a second signal may mean more (the Sandshark closes at once)
+        server->signalled(signo);
+      });
+    };
+    wait();
+    server->on_stopped = [&] {
+      asio::error_code ignored;
+      signals.cancel(ignored);
+    };
+    server->start();
+    io.run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", program, e.what());
+    return 1;
+  }
+  return 0;
+}
 
 }  // namespace seawire::tools::net

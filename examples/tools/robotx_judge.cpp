@@ -166,6 +166,7 @@ class judge {
 
   [[nodiscard]] asio::ip::tcp::endpoint local_endpoint() const { return server_.local_endpoint(); }
   std::function<void()> on_stopped;
+  void signalled(int signo) { stop(net::signal_name(signo)); }
 
   void start() {
     server_.start();
@@ -476,31 +477,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
-  const auto where = net::parse_endpoint(o.listen);
-  if (!where) {
-    std::fprintf(stderr, "seawire-robotx-judge: --listen %s: expected ADDR:PORT\n",
-                 o.listen.c_str());
-    return 2;
-  }
-  try {
-    asio::io_context io;
-    asio::error_code ec;
-    const auto address = asio::ip::make_address(where->host, ec);
-    if (ec) {
-      std::fprintf(stderr, "seawire-robotx-judge: --listen %s: %s\n", o.listen.c_str(),
-                   ec.message().c_str());
-      return 2;
-    }
-    judge j(io, o, asio::ip::tcp::endpoint(address, where->port));
-    net::line_server::log("listening on %s", net::to_string(j.local_endpoint()).c_str());
-    net::stop_signals signals(io,
-                              [&](int signo) { j.stop(signo == SIGINT ? "SIGINT" : "SIGTERM"); });
-    j.on_stopped = [&] { signals.cancel(); };
-    j.start();
-    io.run();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "seawire-robotx-judge: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  const auto where = net::listen_option("seawire-robotx-judge", o.listen);
+  if (!where) return 2;
+  return net::serve("seawire-robotx-judge", o.listen, *where,
+                    [&](asio::io_context& io, const asio::ip::tcp::endpoint& at) {
+                      return std::make_unique<judge>(io, o, at);
+                    });
 }

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <seawire/nmea/build.hpp>
 #include <seawire/nmea/heading.hpp>
 #include <seawire/nmea/time.hpp>
@@ -246,7 +247,6 @@ class simulator {
         model_(params(), lat, lon, o.seed),
         timer_(io),
         shutdown_timer_(io),
-        signals_(io, SIGINT, SIGTERM),
         timeline_(std::move(timeline)),
         names_(std::move(names)) {
     server_.on_connect([this](net::client& c) { connected(c); });
@@ -267,8 +267,30 @@ class simulator {
     t0_ = steady::now();
     session_.set_utc(t0_, std::chrono::system_clock::now());
     server_.start();
-    wait_signal();
     tick();
+  }
+
+  /// Called once the simulator has stopped (to cancel the signal wait).
+  std::function<void()> on_stopped;
+
+  // The first signal: BFSHT to every payload, closing after --shutdown-wait; a second one
+  // closes at once.
+  void signalled(int signo) {
+    const char* name = net::signal_name(signo);
+    if (shutting_down_) {
+      stop(std::string(name) + " again");
+      return;
+    }
+    shutting_down_ = true;
+    session_.shutdown(steady::now());
+    drain();
+    net::line_server::log("%s: BFSHT sent to %zu client(s), closing in %.3g s", name,
+                          server_.client_count(), o_.shutdown_wait);
+    shutdown_timer_.expires_after(std::chrono::duration_cast<steady::duration>(
+        std::chrono::duration<double>(o_.shutdown_wait)));
+    shutdown_timer_.async_wait([this, name](const asio::error_code& e) {
+      if (!e) stop(name);
+    });
   }
 
  private:
@@ -303,40 +325,17 @@ class simulator {
            (it != names_.end() ? " (" + it->second + ")" : std::string());
   }
 
-  void wait_signal() {
-    signals_.async_wait([this](const asio::error_code& ec, int signo) {
-      if (ec) return;
-      const char* name = signo == SIGINT ? "SIGINT" : "SIGTERM";
-      if (shutting_down_) {
-        stop(std::string(name) + " again");
-        return;
-      }
-      shutting_down_ = true;
-      session_.shutdown(steady::now());
-      drain();
-      net::line_server::log("%s: BFSHT sent to %zu client(s), closing in %.3g s", name,
-                            server_.client_count(), o_.shutdown_wait);
-      shutdown_timer_.expires_after(std::chrono::duration_cast<steady::duration>(
-          std::chrono::duration<double>(o_.shutdown_wait)));
-      shutdown_timer_.async_wait([this, name](const asio::error_code& e) {
-        if (!e) stop(name);
-      });
-      wait_signal();  // a second signal closes at once
-    });
-  }
-
   void stop(const std::string& why) {
     if (stopped_) return;
     stopped_ = true;
     timer_.cancel();
     shutdown_timer_.cancel();
-    asio::error_code ignored;
-    signals_.cancel(ignored);
     server_.stop(why);
     net::line_server::flush_log(invalid_log_);
     net::line_server::flush_log(command_log_);
     net::line_server::log("stopped (%s): %llu connections", why.c_str(),
                           static_cast<unsigned long long>(server_.connections()));
+    if (on_stopped) on_stopped();
   }
 
   void connected(net::client& c) {
@@ -624,7 +623,6 @@ class simulator {
   tools::vehicle_model model_;
   asio::steady_timer timer_;
   asio::steady_timer shutdown_timer_;
-  asio::signal_set signals_;
   std::vector<mission_step> timeline_;
   std::map<std::string, std::string> names_;
   std::map<std::uint64_t, ss::client_id> ids_;
@@ -689,8 +687,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "seawire-sandshark-sim: %s\n", what.c_str());
     return 2;
   };
-  const auto where = net::parse_endpoint(o.listen);
-  if (!where) return fail("--listen " + o.listen + ": expected ADDR:PORT");
+  const auto where = net::listen_option("seawire-sandshark-sim", o.listen);
+  if (!where) return 2;
   double lat = 0, lon = 0;
   char tail = 0;
   if (std::sscanf(o.start.c_str(), "%lf,%lf%c", &lat, &lon, &tail) != 2 || !(lat >= -85) ||
@@ -726,19 +724,9 @@ int main(int argc, char** argv) {
   }
   o.limits.max_clients = max_clients;
 
-  try {
-    asio::io_context io;
-    asio::error_code ec;
-    const auto address = asio::ip::make_address(where->host, ec);
-    if (ec) return fail("--listen " + o.listen + ": " + ec.message());
-    simulator sim(io, o, asio::ip::tcp::endpoint(address, where->port), lat, lon,
-                  std::move(timeline), std::move(names));
-    net::line_server::log("listening on %s", net::to_string(sim.local_endpoint()).c_str());
-    sim.start();
-    io.run();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "seawire-sandshark-sim: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  return net::serve("seawire-sandshark-sim", o.listen, *where,
+                    [&](asio::io_context& io, const asio::ip::tcp::endpoint& at) {
+                      return std::make_unique<simulator>(io, o, at, lat, lon, std::move(timeline),
+                                                         std::move(names));
+                    });
 }
