@@ -100,10 +100,16 @@ TIMELINE = """# a short mission
 """
 
 
-def case_session():
-    fd, mission = tempfile.mkstemp(suffix=".mission")
-    os.write(fd, TIMELINE.encode())
+def mission_file(text):
+    """A mission timeline file holding `text` (bytes or str); the caller removes it."""
+    fd, path = tempfile.mkstemp(suffix=".mission")
+    os.write(fd, text.encode() if isinstance(text, str) else text)
     os.close(fd)
+    return path
+
+
+def case_session():
+    mission = mission_file(TIMELINE.encode())
     sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--client", "backseat=127.0.0.1",
               "--shutdown-wait", "1")
     p = Payload(sim.port)
@@ -193,9 +199,7 @@ def case_session():
 def case_backseat():
     # The backseat example takes control when the mission hands it over and keeps its request
     # alive; when it stops, the request lapses and the vehicle takes control back.
-    fd, mission = tempfile.mkstemp(suffix=".mission")
-    os.write(fd, b"0 mission Running dive1.xml\n0.5 control on\n")
-    os.close(fd)
+    mission = mission_file(b"0 mission Running dive1.xml\n0.5 control on\n")
     sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
     watcher = Payload(sim.port)
     watcher.send("BPLOG,NVG,ON")
@@ -297,9 +301,7 @@ def ack_of(p, code, mark):
 def case_refusals():
     # Commands that decode but ask what the vehicle cannot do are acknowledged invalid (0) and
     # not acted on; a payload subscribing to BFCTL is told at once whether it has control.
-    fd, mission = tempfile.mkstemp(suffix=".mission")
-    os.write(fd, b"0 mission Running dive1.xml\n1.0 control on\n")
-    os.close(fd)
+    mission = mission_file(b"0 mission Running dive1.xml\n1.0 control on\n")
     sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
     p = Payload(sim.port)
     p.wait_for(r"^\$BFVER,")
@@ -363,18 +365,12 @@ def case_refusals():
 
 
 def case_usage():
-    fd, bad = tempfile.mkstemp(suffix=".mission")
-    os.write(fd, b"0 mission Waiting\n2 launch now\n")
-    os.close(fd)
+    bad = mission_file(b"0 mission Waiting\n2 launch now\n")
     # Mission steps a BFMIS cannot carry are refused at start with their line, not published
     # blank: a reserved character, a text over 256 characters, a line over the session's 512.
-    unsendable = []
-    for step in (b"1 mission Run*ning", b"1 mission Running dive,1.xml",
-                 b"1 mission Running " + b"d" * 257, b"1 mission " + b"R" * 250 + b" " + b"d" * 250):
-        fd, path = tempfile.mkstemp(suffix=".mission")
-        os.write(fd, b"0 mission Waiting\n" + step + b"\n")
-        os.close(fd)
-        unsendable.append(path)
+    unsendable = [mission_file(b"0 mission Waiting\n" + step + b"\n") for step in (
+        b"1 mission Run*ning", b"1 mission Running dive,1.xml", b"1 mission Running " + b"d" * 257,
+        b"1 mission " + b"R" * 250 + b" " + b"d" * 250)]
     refusals(SIM, b"--mission",
              ((["--listen", "x"], b"expected ADDR:PORT"),
               (["--client", "backseat=nowhere"], b"not an IP address"),
