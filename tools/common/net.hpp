@@ -7,9 +7,13 @@
 // corrupts the next sentence, and each sentence is handed to the program. What the program sends
 // goes into each client's queue, bounded in lines: when a client does not read, its oldest
 // unsent lines are dropped and counted, and once more than `max_drops` lines have been dropped
-// it is disconnected. A client that ends its sending side (half close) gets what is already
+// it is disconnected. Bytes the reader gives up on are skipped, or handed to the program when it
+// asks (on_drop). A client that ends its sending side (half close) gets what is already
 // queued for it (within 10 s), then the connection is closed. One line per connection event is
 // logged to stderr.
+//
+// serve() is the main of every server once its options are read: listen, log "listening on",
+// start, hand SIGINT and SIGTERM to the program, run, and the exit status.
 //
 // Closing a client never removes it inside the call that closed it: the removal (and the
 // program's on_close) runs as a posted handler, so code that is iterating clients or holding a
@@ -18,6 +22,8 @@
 #include <asio.hpp>
 
 #include <chrono>
+#include <concepts>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <deque>
@@ -28,7 +34,10 @@
 #include <seawire/nmea/stream.hpp>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
+
+#include "log_limit.hpp"
 
 namespace seawire::tools::net {
 
@@ -132,6 +141,9 @@ class line_server {
   using sentence_handler = std::function<void(client&, const nmea::framed_line& sentence)>;
   using client_handler = std::function<void(client&)>;
   using closed_handler = std::function<void(client&, std::string_view why)>;
+  /// Bytes the stream reader gave up on (no '$' first, a byte outside printable ASCII, longer
+  /// than the reader holds, cut short by the next '$'), as nmea::stream_reader reports them.
+  using drop_handler = std::function<void(client&, const nmea::stream_drop& drop)>;
 
   line_server(asio::io_context& io, const asio::ip::tcp::endpoint& where, server_limits limits)
       : acceptor_(io), retry_(io), limits_(limits) {
@@ -149,6 +161,8 @@ class line_server {
   void on_sentence(sentence_handler h) { on_sentence_ = std::move(h); }
   void on_connect(client_handler h) { on_connect_ = std::move(h); }
   void on_close(closed_handler h) { on_close_ = std::move(h); }
+  /// With a handler, every client's dropped bytes are reported (without, they are only skipped).
+  void on_drop(drop_handler h) { on_drop_ = std::move(h); }
 
   void start() { accept(); }
 
@@ -176,6 +190,21 @@ class line_server {
     std::fputc('\n', stderr);
     std::fflush(stderr);
   }
+  /// What writes `limit`'s note ("... K more <what> suppressed") to the log.
+  static auto note(const log_limit& limit) {
+    return [&limit](std::uint64_t n) { log("%s", limit.note_text(n).c_str()); };
+  }
+  /// log() for a line of `limit`'s category (one per event a client can repeat at line rate):
+  /// written while the category is within its rate, else counted, and the count logged as
+  /// "... K more <what> suppressed" when the next window opens.
+  template <class... A>
+  static void log_limited(log_limit& limit, const char* format, A... args) {
+    if (limit.allow(note(limit))) log(format, args...);
+  }
+  /// From a timer: logs the count of a window that is over (a flood that stopped).
+  static void poll_log(log_limit& limit) { limit.poll(note(limit)); }
+  /// At exit: logs what is suppressed and not yet told.
+  static void flush_log(log_limit& limit) { limit.flush(note(limit)); }
 
  private:
   friend class client;
@@ -230,6 +259,7 @@ class line_server {
   sentence_handler on_sentence_;
   client_handler on_connect_;
   closed_handler on_close_;
+  drop_handler on_drop_;
 };
 
 inline client::client(line_server& server, asio::ip::tcp::socket socket, std::uint64_t id)
@@ -243,11 +273,19 @@ inline client::client(line_server& server, asio::ip::tcp::socket socket, std::ui
     socket_.set_option(asio::socket_base::send_buffer_size(server_.limits_.send_buffer), ec);
 }
 
-inline void client::start() { read(); }
+inline void client::start() {
+  reader_.report_drops(static_cast<bool>(server_.on_drop_));
+  read();
+}
 
 template <class Item>
 void client::deliver(const Item& item) {
-  if (!item.is_sentence() || closed_) return;
+  if (closed_) return;
+  if (item.is_drop()) {
+    if (server_.on_drop_) server_.on_drop_(*this, item.drop);
+    return;
+  }
+  if (!item.is_sentence()) return;
   ++sentences_in;
   if (server_.on_sentence_) server_.on_sentence_(*this, item.sentence);
 }
@@ -343,24 +381,65 @@ inline void client::close(std::string_view why) {
   });
 }
 
-/// Stops `io` on SIGINT or SIGTERM after calling `on_stop` (which may post more work first).
-class stop_signals {
- public:
-  stop_signals(asio::io_context& io, std::function<void(int)> on_stop)
-      : signals_(io, SIGINT, SIGTERM), on_stop_(std::move(on_stop)) {
-    signals_.async_wait([this](const asio::error_code& ec, int signo) {
-      if (!ec) on_stop_(signo);
-    });
-  }
-  /// Stops waiting (the program ends for another reason).
-  void cancel() {
-    asio::error_code ignored;
-    signals_.cancel(ignored);
-  }
+/// "SIGINT" or "SIGTERM": how the servers name the signal that stops them.
+inline const char* signal_name(int signo) { return signo == SIGINT ? "SIGINT" : "SIGTERM"; }
 
- private:
-  asio::signal_set signals_;
-  std::function<void(int)> on_stop_;
+/// --listen's ADDR:PORT, or nullopt after saying "PROGRAM: --listen TEXT: expected ADDR:PORT".
+inline std::optional<endpoint_text> listen_option(const char* program, const std::string& listen) {
+  auto where = parse_endpoint(listen);
+  if (!where)
+    std::fprintf(stderr, "%s: --listen %s: expected ADDR:PORT\n", program, listen.c_str());
+  return where;
+}
+
+/// What serve() runs: a server program built on line_server.
+template <class S>
+concept server_program = requires(S& s, int signo) {
+  { s.local_endpoint() } -> std::convertible_to<asio::ip::tcp::endpoint>;
+  s.start();
+  s.signalled(signo);  ///< SIGINT or SIGTERM (each one, until the program has stopped)
+  s.on_stopped = std::function<void()>();  ///< called once the program has stopped
 };
+
+/// The main of every server, once its options are read: `make(io, endpoint)` builds the program
+/// (a std::unique_ptr to a server_program) listening on `where`; "listening on ADDR:PORT" is
+/// the first line of the log; SIGINT and SIGTERM go to its signalled() until it calls
+/// on_stopped; the event loop runs until nothing is left to do. The exit status: 0, 2 for an
+/// address that is none (`listen` is the option's text, for the message), 1 when the address
+/// cannot be listened on (or anything else fails).
+template <class Make>
+int serve(const char* program, const std::string& listen, const endpoint_text& where, Make make) {
+  try {
+    asio::io_context io;
+    asio::error_code ec;
+    const auto address = asio::ip::make_address(where.host, ec);
+    if (ec) {
+      std::fprintf(stderr, "%s: --listen %s: %s\n", program, listen.c_str(), ec.message().c_str());
+      return 2;
+    }
+    const auto server = make(io, asio::ip::tcp::endpoint(address, where.port));
+    static_assert(server_program<std::remove_reference_t<decltype(*server)>>);
+    line_server::log("listening on %s", to_string(server->local_endpoint()).c_str());
+    asio::signal_set signals(io, SIGINT, SIGTERM);
+    std::function<void()> wait = [&] {
+      signals.async_wait([&](const asio::error_code& e, int signo) {
+        if (e) return;
+        wait();  // a second signal may mean more (the Sandshark closes at once)
+        server->signalled(signo);
+      });
+    };
+    wait();
+    server->on_stopped = [&] {
+      asio::error_code ignored;
+      signals.cancel(ignored);
+    };
+    server->start();
+    io.run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", program, e.what());
+    return 1;
+  }
+  return 0;
+}
 
 }  // namespace seawire::tools::net

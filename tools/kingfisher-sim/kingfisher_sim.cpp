@@ -74,6 +74,7 @@ class simulator {
 
   /// Called once the simulator has stopped (to cancel the signal wait).
   std::function<void()> on_stopped;
+  void signalled(int signo) { stop(net::signal_name(signo)); }
 
   void stop(std::string_view why) {
     if (stopped_) return;
@@ -81,6 +82,8 @@ class simulator {
     timer_.cancel();
     server_.stop(why);
     if (on_stopped) on_stopped();
+    net::line_server::flush_log(rejected_log_);
+    net::line_server::flush_log(watchdog_log_);
     net::line_server::log(
         "stopped (%.*s) after %llu ticks: %llu connections, %llu commands applied, %llu "
         "rejected, %llu watchdog stops",
@@ -107,10 +110,13 @@ class simulator {
       model_.step(dt(), now);
       if (model_.watchdog_trips() != trips_seen_) {
         trips_seen_ = model_.watchdog_trips();
-        net::line_server::log("watchdog: no command for %.3g s, thrusters stopped",
-                              o_.vehicle.watchdog_s);
+        net::line_server::log_limited(watchdog_log_,
+                                      "watchdog: no command for %.3g s, thrusters stopped",
+                                      o_.vehicle.watchdog_s);
       }
       emit(now);
+      net::line_server::poll_log(rejected_log_);
+      net::line_server::poll_log(watchdog_log_);
       if (o_.duration > 0 && now >= o_.duration) {
         stop("--duration reached");
         return;
@@ -247,16 +253,13 @@ class simulator {
     if (!r) {
       ++c.rejected_in;
       ++rejected_;
-      if (c.rejected_in <= 3) {
-        char why[200];
-        // Told with the policy it was read with: a command that ends "*" without a checksum
-        // splits into its fields only under the vehicle's policy, and so has its field named.
-        const auto text = nmea::error_text<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
-        net::line_server::log("client %llu: rejected: %.*s%s",
-                              static_cast<unsigned long long>(c.id()),
-                              static_cast<int>(text.size()), text.data(),
-                              c.rejected_in == 3 ? " (further rejections counted, not shown)" : "");
-      }
+      char why[200];
+      // Told with the policy it was read with: a command that ends "*" without a checksum
+      // splits into its fields only under the vehicle's policy, and so has its field named.
+      const auto text = nmea::error_text<kf::to_vehicle>(why, r, sentence, kf::vehicle_policy());
+      net::line_server::log_limited(rejected_log_, "client %llu: rejected: %.*s",
+                                    static_cast<unsigned long long>(c.id()),
+                                    static_cast<int>(text.size()), text.data());
       return;
     }
     // Applied at once, stamped with the current tick's time: the model's clock (so runs with
@@ -295,6 +298,9 @@ class simulator {
   std::uint64_t rejected_ = 0;
   std::uint64_t encode_failures_ = 0;
   bool stopped_ = false;
+  // Lines clients can cause as fast as they send: at most 20 a second each.
+  tools::log_limit rejected_log_{"rejected commands"};
+  tools::log_limit watchdog_log_{"watchdog stops"};
 };
 
 // "2026-11-25T12:00:00Z" (seconds may have a fraction; the Z may be left out).
@@ -382,12 +388,8 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  const auto where = net::parse_endpoint(o.listen);
-  if (!where) {
-    std::fprintf(stderr, "seawire-kingfisher-sim: --listen %s: expected ADDR:PORT\n",
-                 o.listen.c_str());
-    return 2;
-  }
+  const auto where = net::listen_option("seawire-kingfisher-sim", o.listen);
+  if (!where) return 2;
   double lat = 0, lon = 0;
   char tail = 0;
   if (std::sscanf(o.start.c_str(), "%lf,%lf%c", &lat, &lon, &tail) != 2 || !(lat >= -85) ||
@@ -410,25 +412,8 @@ int main(int argc, char** argv) {
     start_time = *t;
   }
 
-  try {
-    asio::io_context io;
-    asio::error_code ec;
-    const auto address = asio::ip::make_address(where->host, ec);
-    if (ec) {
-      std::fprintf(stderr, "seawire-kingfisher-sim: --listen %s: %s\n", o.listen.c_str(),
-                   ec.message().c_str());
-      return 2;
-    }
-    simulator sim(io, o, asio::ip::tcp::endpoint(address, where->port), lat, lon, start_time);
-    net::line_server::log("listening on %s", net::to_string(sim.local_endpoint()).c_str());
-    net::stop_signals signals(io,
-                              [&](int signo) { sim.stop(signo == SIGINT ? "SIGINT" : "SIGTERM"); });
-    sim.on_stopped = [&] { signals.cancel(); };
-    sim.start();
-    io.run();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "seawire-kingfisher-sim: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  return net::serve("seawire-kingfisher-sim", o.listen, *where,
+                    [&](asio::io_context& io, const asio::ip::tcp::endpoint& at) {
+                      return std::make_unique<simulator>(io, o, at, lat, lon, start_time);
+                    });
 }

@@ -197,7 +197,6 @@ def case_commands():
     pump_all([c], 1.2)
     check(c.of("CPALT")[-1][2] == "1", "PYCLT 1: CPALT reports lights on")
     # Refused commands change nothing and are logged with the field.
-    # (the first three per client are logged).
     c.send(seal("PYDIR,150,0") + "$PYDIR,0,-150*\r\n" + "$PYDIR,10,10*00\r\n" +
            "$PYXYZ,1*00\r\n")
     pump_all([c], 0.3)
@@ -294,6 +293,44 @@ def case_churn():
           % (connected, disconnected, others[:5]))
     check(len(c.of("CPNVG")) >= 5 and not c.bad, "still serving after the churn")
     check(rss_after < rss_before + 32 * 1024, "memory bounded: %d -> %d KiB" % (rss_before, rss_after))
+
+
+def case_flood():
+    # Refused commands are logged at most 20 a second, whoever sends them (many clients a few
+    # each, or one as fast as it can), and every one left out is counted in the log.
+    sim = Sim("--nav-rate", "10")
+    size0 = len(sim.log())
+    start = time.monotonic()
+    bad = seal("PYDIR,150,0")
+    for _ in range(50):
+        s = socket.create_connection(("127.0.0.1", sim.port), timeout=10)
+        s.sendall((bad * 10).encode())
+        s.close()
+    s = socket.create_connection(("127.0.0.1", sim.port), timeout=30)
+    block = (bad * 1000).encode()
+    while time.monotonic() - start < 2:
+        s.sendall(block)
+    s.shutdown(socket.SHUT_WR)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and sim.log().count("disconnected:") < 51:
+        time.sleep(0.1)
+    elapsed = time.monotonic() - start
+    check(sim.stop() == 0, "exit status 0")
+    s.close()
+    log = sim.log()
+    m = re.search(r"stopped \(SIGTERM\) after \d+ ticks: 51 connections, 0 commands applied, "
+                  r"(\d+) rejected", log)
+    rejected = int(m.group(1)) if m else -1
+    logged = len(re.findall(r"^client \d+: rejected: PYDIR field 1", log, re.M))
+    noted = sum(int(n) for n in re.findall(r"^\.\.\. (\d+) more rejected commands suppressed$",
+                                           log, re.M))
+    rate = (len(log) - size0) / elapsed
+    print("flood: %d rejected in %.1f s; %d logged, %d noted suppressed; %.0f bytes/s of log"
+          % (rejected, elapsed, logged, noted, rate))
+    check(rejected > 500, "all 51 clients' commands rejected: %d\n%s" % (rejected, log[-600:]))
+    check(logged + noted == rejected, "each logged or counted: %d + %d != %d"
+          % (logged, noted, rejected))
+    check(logged <= 20 * (elapsed + 2), "at most 20 a second: %d in %.1f s" % (logged, elapsed))
 
 
 def free_port():

@@ -9,15 +9,21 @@
 #include <asio.hpp>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <seawire/nmea/stream.hpp>
+#include <seawire/nmea/writer.hpp>
 #include <seawire/robotx/messages.hpp>
 #include <seawire/robotx/validator.hpp>
 #include <string>
+#include <string_view>
 #include <variant>
+#include <vector>
 
 #include "cli.hpp"
+#include "log_limit.hpp"
 #include "net.hpp"
 
 namespace {
@@ -53,17 +59,61 @@ std::string iso(rx::instant t) {
 
 double seconds(std::chrono::nanoseconds d) { return std::chrono::duration<double>(d).count(); }
 
+// What the stream reader gave up on, shown as text: bytes outside printable ASCII as \xHH.
+std::string shown(std::string_view bytes) {
+  std::string out;
+  for (const char ch : bytes) {
+    const auto b = static_cast<unsigned char>(ch);
+    if (b >= 0x20 && b <= 0x7E && b != '\\') {
+      out += ch;
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", unsigned{b});
+      out += hex;
+    }
+  }
+  return out;
+}
+
+// A report the stream reader dropped, as a framing finding: the decoder's reason and why.
+struct dropped_report {
+  errc ec = errc::ok;
+  std::string why;
+};
+dropped_report judged(const nmea::stream_drop& d, std::size_t capacity) {
+  const std::string_view b = d.bytes;
+  switch (d.reason) {
+    case nmea::drop_reason::invalid_byte: {
+      std::size_t at = 0;
+      while (at < b.size() && static_cast<unsigned char>(b[at]) >= 0x20 &&
+             static_cast<unsigned char>(b[at]) <= 0x7E)
+        ++at;
+      char why[96];
+      std::snprintf(why, sizeof why, "a byte outside printable ASCII (0x%02X at byte %zu)",
+                    at < b.size() ? unsigned{static_cast<unsigned char>(b[at])} : 0U, at + 1);
+      return {errc::bad_character, why};
+    }
+    case nmea::drop_reason::overlong:
+      return {errc::too_long, "longer than " + std::to_string(capacity) + " bytes (" +
+                                  std::to_string(d.size) + " bytes dropped)"};
+    case nmea::drop_reason::interrupted:
+      return {errc::truncated, "cut short: a '$' came before its checksum and line ending"};
+    default: return {errc::missing_start, "not a sentence: no '$' first"};
+  }
+}
+
 // One connection: its own validator (heartbeat gaps and rates are per link).
 struct team_link {
   std::uint64_t id = 0;
   std::string peer;
   std::string team;  // the first team id it reported
   rx::validator validator;
+  std::uint64_t dropped = 0;  // reports the stream reader dropped (framing findings)
 };
 
 // A team's totals over all its connections.
 struct team_summary {
-  std::vector<std::string> peers;
+  std::vector<std::string> peers;  // the last max_peers connections' addresses
   std::uint64_t connections = 0;
   std::uint64_t lines = 0;
   std::uint64_t accepted = 0;
@@ -71,10 +121,22 @@ struct team_summary {
   std::map<std::string, std::uint64_t> reports;  // accepted reports by address
 };
 
+// The summary is bounded whatever the teams send: so many teams (ids first reported) by name,
+// those after them summed as one, and the addresses of each team's last connections.
+constexpr std::size_t max_teams = 100;
+constexpr std::size_t max_peers = 10;
+constexpr const char* other_teams = "(other teams)";
+// Findings printed per rule: at most 20 a second, the rest counted ("... K more rate findings
+// suppressed"); the summary counts them all.
+constexpr std::uint32_t findings_per_second = 20;
+
 class judge {
  public:
   judge(asio::io_context& io, const options& o, const asio::ip::tcp::endpoint& where)
       : o_(o), server_(io, where, o.limits), timer_(io) {
+    for (std::size_t i = 0; i < rx::rule_count; ++i)
+      limits_.emplace_back(std::string(name(static_cast<rx::rule>(i))) + " findings",
+                           findings_per_second);
     config_.heartbeat_gap_limit = std::chrono::duration_cast<std::chrono::nanoseconds>(
         std::chrono::duration<double>(o.gap_limit));
     if (!o.team.empty()) config_.expected_team = rx::team(o.team);
@@ -93,6 +155,7 @@ class judge {
     });
     server_.on_sentence(
         [this](net::client& c, const nmea::framed_line& line) { received(c, line); });
+    server_.on_drop([this](net::client& c, const nmea::stream_drop& d) { dropped(c, d); });
     server_.on_close([this](net::client& c, std::string_view) {
       const auto it = links_.find(c.id());
       if (it == links_.end()) return;
@@ -104,6 +167,7 @@ class judge {
 
   [[nodiscard]] asio::ip::tcp::endpoint local_endpoint() const { return server_.local_endpoint(); }
   std::function<void()> on_stopped;
+  void signalled(int signo) { stop(net::signal_name(signo)); }
 
   void start() {
     server_.start();
@@ -123,6 +187,7 @@ class judge {
     }
     links_.clear();
     server_.stop(why);
+    for (tools::log_limit& l : limits_) l.flush(note(l));
     net::line_server::log("stopped (%.*s): %llu connections", static_cast<int>(why.size()),
                           why.data(), static_cast<unsigned long long>(server_.connections()));
     summary();
@@ -141,6 +206,7 @@ class judge {
       if (ec || stopped_) return;
       const auto t = now();
       for (auto& [id, link] : links_) print(*link, link->validator.advance(t));
+      for (tools::log_limit& l : limits_) l.poll(note(l));
       if (o_.duration > 0 && seconds(t - started_) >= o_.duration) {
         stop("--duration reached");
         return;
@@ -183,14 +249,69 @@ class judge {
     print(link, verdict.findings, line.text);
   }
 
-  void print(const team_link& link, const rx::finding_list& findings, std::string_view line = {}) {
+  // A report the stream reader dropped (a tab, a byte outside ASCII, a NUL, too long, no '$'):
+  // the team sent it, so it is judged, as a framing finding, and counted in the summary.
+  void dropped(net::client& c, const nmea::stream_drop& d) {
+    // Line breaks alone (a blank line) are no report.
+    if (d.size == d.bytes.size() && d.bytes.find_first_not_of("\r\n") == std::string_view::npos)
+      return;
+    const auto it = links_.find(c.id());
+    if (it == links_.end()) return;
+    team_link& link = *it->second;
+    ++link.dropped;
+    ++c.rejected_in;
+    const dropped_report r = judged(d, reader_capacity);
+    rx::finding f;
+    f.broken = rx::rule::framing;
+    f.ec = r.ec;
+    f.at = now();
+    // The address, when the bytes start as a sentence does ("$RXHRB,").
+    if (d.bytes.size() > 1 && d.bytes[0] == '$') {
+      const std::string_view rest = d.bytes.substr(1);
+      const auto end = rest.find(',');
+      if (end != std::string_view::npos && nmea::is_address(rest.substr(0, end)))
+        (void)f.address.assign(rest.substr(0, end));
+    }
+    rx::finding_list one;
+    one.push(f);
+    std::string input = shown(d.bytes);
+    if (d.size > d.bytes.size()) input += "...";
+    print(link, one, {}, r.why, input);
+  }
+  static constexpr std::size_t reader_capacity = 512;  // net::client's stream reader
+
+  // What writes a rule's "... K more X suppressed" among the findings.
+  [[nodiscard]] std::function<void(std::uint64_t)> note(const tools::log_limit& l) const {
+    return [this, &l](std::uint64_t n) {
+      if (o_.report == "json") {
+        json j;
+        j["type"] = "suppressed";
+        j["what"] = l.what();
+        j["count"] = n;
+        std::printf("%s\n", j.dump().c_str());
+      } else {
+        std::printf("%s\n", l.note_text(n).c_str());
+      }
+      std::fflush(stdout);
+    };
+  }
+
+  // `why` and `input`, when given, stand for what the finding's error and line would show.
+  void print(const team_link& link, const rx::finding_list& findings, std::string_view line = {},
+             std::string_view given_why = {}, std::string_view input = {}) {
+    if (input.empty()) input = line;
     for (const rx::finding& f : findings) {
+      if (!limits_[static_cast<std::size_t>(f.broken)].allow(
+              note(limits_[static_cast<std::size_t>(f.broken)])))
+        continue;
       const std::string_view rule = name(f.broken);
       const std::string_view address = f.address.view();
       const nmea::field_about about =
           f.field != 0 ? rx::reports::about_field(address, f.field) : nmea::field_about{};
       const std::string_view field = about.name;
-      std::string why = f.ec != errc::ok ? std::string(message(f.ec)) : std::string();
+      std::string why = !given_why.empty() ? std::string(given_why)
+                        : f.ec != errc::ok ? std::string(message(f.ec))
+                                           : std::string();
       if (f.field != 0 && about.explain != nullptr && !line.empty()) {
         // What the field's text shows is wrong (a sign before a position, a blank letter).
         nmea::parse_policy lax;
@@ -218,7 +339,7 @@ class judge {
         if (!about.part.empty()) j["field_part"] = about.part;
         if (!why.empty()) j["error"] = why;
         if (f.elapsed.count() != 0) j["elapsed_s"] = seconds(f.elapsed);
-        if (!line.empty()) j["input"] = line;
+        if (!input.empty()) j["input"] = input;
         std::printf("%s\n", j.dump().c_str());
       } else {
         std::string text = iso(f.at) + " client " + std::to_string(link.id) + " " + link.peer +
@@ -233,6 +354,7 @@ class judge {
           }
         }
         if (!why.empty()) text += ": " + why;
+        if (!given_why.empty() && !input.empty()) text += ": " + std::string(input);
         char secs[32];
         std::snprintf(secs, sizeof secs, "%.3f", seconds(f.elapsed));
         if (f.broken == rx::rule::rate) text += ": " + std::string(secs) + " s after the last";
@@ -247,14 +369,17 @@ class judge {
   }
 
   void add_to_summary(const team_link& link) {
-    const std::string key = link.team.empty() ? "(no team id)" : link.team;
+    std::string key = link.team.empty() ? "(no team id)" : link.team;
+    if (!teams_.contains(key) && teams_.size() >= max_teams) key = other_teams;
     team_summary& s = teams_[key];
     s.peers.push_back(link.peer);
+    if (s.peers.size() > max_peers) s.peers.erase(s.peers.begin());
     ++s.connections;
     const auto& t = link.validator.totals();
-    s.lines += t.lines;
+    s.lines += t.lines + link.dropped;
     s.accepted += t.accepted;
     for (std::size_t i = 0; i < rx::rule_count; ++i) s.findings[i] += t.findings[i];
+    s.findings[static_cast<std::size_t>(rx::rule::framing)] += link.dropped;
     for (const auto& [address, n] : reports_seen_[link.id]) s.reports[address] += n;
     reports_seen_.erase(link.id);
   }
@@ -308,7 +433,8 @@ class judge {
   rx::instant started_{};
   std::map<std::uint64_t, std::unique_ptr<team_link>> links_;
   std::map<std::uint64_t, std::map<std::string, std::uint64_t>> reports_seen_;
-  std::map<std::string, team_summary> teams_;
+  std::map<std::string, team_summary> teams_;  // at most max_teams + 1 (other_teams)
+  std::vector<tools::log_limit> limits_;       // per rule
   bool stopped_ = false;
 };
 
@@ -358,31 +484,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
 
-  const auto where = net::parse_endpoint(o.listen);
-  if (!where) {
-    std::fprintf(stderr, "seawire-robotx-judge: --listen %s: expected ADDR:PORT\n",
-                 o.listen.c_str());
-    return 2;
-  }
-  try {
-    asio::io_context io;
-    asio::error_code ec;
-    const auto address = asio::ip::make_address(where->host, ec);
-    if (ec) {
-      std::fprintf(stderr, "seawire-robotx-judge: --listen %s: %s\n", o.listen.c_str(),
-                   ec.message().c_str());
-      return 2;
-    }
-    judge j(io, o, asio::ip::tcp::endpoint(address, where->port));
-    net::line_server::log("listening on %s", net::to_string(j.local_endpoint()).c_str());
-    net::stop_signals signals(io,
-                              [&](int signo) { j.stop(signo == SIGINT ? "SIGINT" : "SIGTERM"); });
-    j.on_stopped = [&] { signals.cancel(); };
-    j.start();
-    io.run();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "seawire-robotx-judge: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  const auto where = net::listen_option("seawire-robotx-judge", o.listen);
+  if (!where) return 2;
+  return net::serve("seawire-robotx-judge", o.listen, *where,
+                    [&](asio::io_context& io, const asio::ip::tcp::endpoint& at) {
+                      return std::make_unique<judge>(io, o, at);
+                    });
 }

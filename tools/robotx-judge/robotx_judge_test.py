@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSL-1.0
 """seawire-robotx-judge over loopback: teams written here connect and report.
 
-    robotx_judge_test.py JUDGE CASE      CASE: live, text, usage
+    robotx_judge_test.py JUDGE CASE      CASE: live, text, usage, heartbeat, reasons, dropped,
+                                        flood, summaries
 """
 
 import json
@@ -179,6 +180,97 @@ def case_reasons():
     check(number.get("field_name") == "longitude" and "field_part" not in number and
           number.get("error") == "a sign is not allowed: the hemisphere letter carries it",
           "JSON: the sign: %r" % number)
+
+
+def case_dropped():
+    # Reports the stream reader drops are judged too: each is a framing finding, with why and
+    # what was sent, and counted in the summary.
+    bad = [
+        (hrb().replace(",AUVSI,", ",AUV\tI,").encode(), "bad_character", "0x09"),
+        (hrb().encode().replace(b"AUVSI", b"AUV\xc3\xa9"), "bad_character", "0xC3"),
+        (hrb().encode().replace(b"AUVSI", b"AUV\x00I"), "bad_character", "0x00"),
+        (seal("RXHRB," + "1" * 600).encode(), "too_long", "longer than 512 bytes"),
+        (hrb().encode()[1:], "missing_start", "no '$' first"),
+    ]
+    for report in ("json", "text"):
+        j = Judge("--team", "AUVSI", "--report", report, "--duration", "2", "--gap-limit", "10")
+        a = team_socket(j.port)
+        a.sendall(hrb().encode() + b"".join(b for b, _, _ in bad) + b"\r\n\n")
+        j.proc.wait(timeout=20)
+        time.sleep(0.3)
+        a.close()
+        if report == "json":
+            found = [f for f in j.findings() if f["rule"] == "framing"]
+            if not check(len(found) == len(bad), "one framing finding per dropped report: %r" % found):
+                continue
+            for f, (_, ec, why) in zip(found, bad):
+                check(why in f.get("error", "") and f.get("field") == 0 and f.get("input"),
+                      "%s: %r" % (why, f))
+            check(found[0].get("address") == "RXHRB", "the address when it shows: %r" % found[0])
+            check("\\x00" in found[2]["input"], "a NUL shown escaped: %r" % found[2]["input"])
+            check(found[3]["input"].endswith("..."), "a long report shown cut: %r" % found[3])
+            summary = json.loads(j.out[-1][1])
+            team = summary["teams"][0]
+            check(team["findings"].get("framing") == len(bad) and team["lines"] == 1 + len(bad),
+                  "the summary counts them: %r" % team)
+        else:
+            text = [l for _, l in j.out]
+            check(sum(re.search(r"team AUVSI: framing\b", l) is not None for l in text) == len(bad),
+                  "text: %r" % text)
+            check(text[-1].endswith("findings: framing %d" % len(bad)),
+                  "not 'findings: none': %r" % text[-1])
+
+
+def case_flood():
+    # Heartbeats as fast as the network carries them: every one after the first in a second
+    # breaks the rate rule, and the findings printed keep to 20 a second, the rest counted.
+    j = Judge("--team", "AUVSI", "--report", "json")
+    a = team_socket(j.port)
+    block = hrb().encode() * 2000
+    start = time.monotonic()
+    sent = 0
+    while time.monotonic() - start < 2:
+        a.sendall(block)
+        sent += 2000
+    a.close()
+    check(j.wait_log("disconnected: end of stream", timeout=60), "every heartbeat read")
+    elapsed = time.monotonic() - start
+    check(j.stop() == 0, "exit 0")
+    objs = [json.loads(l) for _, l in j.out]
+    out_bytes = sum(len(l) + 1 for _, l in j.out)
+    printed = sum(1 for o in objs if o["type"] == "finding" and o["rule"] == "rate")
+    noted = sum(o["count"] for o in objs if o["type"] == "suppressed" and o["what"] == "rate findings")
+    summary = objs[-1]
+    total = summary["teams"][0]["findings"].get("rate", 0)
+    print("flood: %d heartbeats in %.1f s; %d rate findings printed, %d suppressed; %.0f bytes/s"
+          % (sent, elapsed, printed, noted, out_bytes / elapsed), file=sys.stderr)
+    check(total == sent - 1, "each heartbeat but the first is too soon: %r" % summary)
+    check(printed + noted == total, "printed %d + suppressed %d == %d" % (printed, noted, total))
+    check(printed <= 20 * (elapsed + 2), "at most 20 a second: %d in %.1f s" % (printed, elapsed))
+
+
+def case_summaries():
+    # The summary is bounded: 100 teams by name, the rest together, each team's last 10 peers.
+    j = Judge("--report", "json")
+    for _ in range(12):
+        s = team_socket(j.port)
+        s.sendall(hrb("AUVSI").encode())
+        s.close()
+    for n in range(115):
+        s = team_socket(j.port)
+        s.sendall(hrb("T%04d" % n).encode())
+        s.close()
+    check(j.wait_log(r"client 127 \S+ disconnected", timeout=30), "127 connections closed")
+    time.sleep(0.3)
+    check(j.stop() == 0, "exit 0")
+    teams = {t["team"]: t for t in json.loads(j.out[-1][1])["teams"]}
+    check(len(teams) == 101, "100 teams and the rest: %d" % len(teams))
+    check(teams.get("(other teams)", {}).get("connections") == 16,
+          "the 16 teams after the first 100 summed: %r" % teams.get("(other teams)"))
+    auvsi = teams.get("AUVSI", {})
+    check(auvsi.get("connections") == 12 and len(auvsi.get("peers", [])) == 10,
+          "12 connections, the last 10 peers: %r" % auvsi)
+    check(sum(t["connections"] for t in teams.values()) == 127, "every connection counted")
 
 
 def case_usage():

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <seawire/nmea/build.hpp>
 #include <seawire/nmea/heading.hpp>
 #include <seawire/nmea/time.hpp>
@@ -52,6 +53,29 @@ std::vector<mission_step> default_timeline() {
           {2, mission_step::mission, "Running", "demo.dive", false},
           {3, mission_step::control, "", "", true},
           {3600, mission_step::mission, "Completed", "demo.dive", false}};
+}
+
+// What the vehicle publishes for a mission step: its BFMIS, with the longest details text the
+// simulator or the session gives one (an abort), in the session's line buffer.
+constexpr std::string_view longest_mission_details = "abort requested by the payload";
+constexpr std::size_t mission_line_size = 512;
+
+// Why a mission step's status or dive file cannot be sent in a BFMIS (empty when it can): a
+// character a text field may not carry, or a line too long for the session.
+std::string unsendable(const mission_step& s) {
+  ss::bfmis m;
+  m.timestamp = nmea::time_of_day{23, 59, 59, 999, 3};
+  if (!m.status.assign(s.status) || !m.dive_file.assign(s.dive_file))
+    return "BFMIS cannot carry this step: a status or dive file longer than 256 characters";
+  (void)m.details.assign(longest_mission_details);
+  const auto line = nmea::encode<mission_line_size>(m);
+  if (line.ec == errc::ok) return {};
+  return "BFMIS cannot carry this step: " + std::string(message(line.ec)) + " (field " +
+         std::to_string(line.field) + ", " +
+         (line.field == 2   ? "the dive file"
+          : line.field == 3 ? "the status"
+                            : "the line") +
+         ")";
 }
 
 // "T mission STATUS [DIVE_FILE]" or "T control on|off"; '#' starts a comment.
@@ -94,6 +118,12 @@ std::optional<std::vector<mission_step>> read_timeline(const std::string& path,
           path + ":" + std::to_string(n) + ": expected 'mission STATUS [DIVE]' or 'control on|off'";
       return std::nullopt;
     }
+    if (s.kind == mission_step::mission) {
+      if (const std::string why = unsendable(s); !why.empty()) {
+        error = path + ":" + std::to_string(n) + ": " + why;
+        return std::nullopt;
+      }
+    }
     if (!steps.empty() && s.at_s < steps.back().at_s) {
       error = path + ":" + std::to_string(n) + ": times must not go backwards";
       return std::nullopt;
@@ -101,6 +131,95 @@ std::optional<std::vector<mission_step>> read_timeline(const std::string& path,
     steps.push_back(s);
   }
   return steps;
+}
+
+// What the vehicle can be asked. The SPI: a BPRMB "can not be used to command the vehicle beyond
+// its safe operating parameters", and the payload only turns status messages on or off.
+constexpr double rated_depth_m = 200;  // a Sandshark's rated depth
+constexpr double max_speed_mps = 2.0;  // the vehicle model's top speed
+constexpr double max_rpm = 2000;       // the model's thruster: 1000 RPM a metre a second
+constexpr double max_angle_deg = 90;   // rudder, pitch and elevator, either way
+
+// The status messages a BPLOG may turn on or off (BFSHT and BFVER are commands, always sent).
+constexpr std::array<std::string_view, 6> log_codes{"NVG", "NVR", "MIS", "ACK", "CTL", "ALL"};
+
+// A command the vehicle refuses although it decodes: acknowledged invalid (0, "improper
+// parameters"), and not acted on.
+struct refusal {
+  std::string_view address;
+  std::optional<nmea::time_of_day> command_timestamp;
+  errc error = errc::ok;
+  std::uint16_t field = 0;
+  std::string_view field_name;
+  std::string why;
+};
+
+std::string number(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.15g", v);
+  return b;
+}
+
+// The BPRMB fields outside what the vehicle can do; nullopt when all are within.
+std::optional<refusal> out_of_range(const ss::bprmb& m) {
+  const auto check = [&](const std::optional<nmea::decimal>& v, std::uint16_t field,
+                         std::string_view name, std::string_view what, double lo, double hi,
+                         bool hi_open, std::string_view unit) -> std::optional<refusal> {
+    if (!v) return std::nullopt;
+    const double x = v->to_double();
+    if (x >= lo && (hi_open ? x < hi : x <= hi)) return std::nullopt;
+    return refusal{ss::bprmb::nmea.address,
+                   m.timestamp,
+                   errc::out_of_range,
+                   field,
+                   name,
+                   std::string(what) + " " + number(x) + " " + std::string(unit) + " outside " +
+                       number(lo) + " to " + number(hi) + (hi_open ? " (excluded)" : "") + " " +
+                       std::string(unit)};
+  };
+  const bool rudder = m.horizontal_mode == ss::horizontal_mode::rudder;
+  auto r =
+      rudder ? check(m.heading, 2, "heading", "rudder", -max_angle_deg, max_angle_deg, false, "deg")
+             : check(m.heading, 2, "heading", "heading", 0, 360, true, "deg");
+  if (r) return r;
+  switch (m.depth_mode.value_or(ss::depth_mode::depth)) {
+    case ss::depth_mode::depth:
+      r = check(m.depth, 3, "depth", "depth", 0, rated_depth_m, false, "m");
+      break;
+    case ss::depth_mode::altitude:
+      r = check(m.depth, 3, "depth", "altitude", 0, rated_depth_m, false, "m");
+      break;
+    case ss::depth_mode::pitch:
+      r = check(m.depth, 3, "depth", "pitch", -max_angle_deg, max_angle_deg, false, "deg");
+      break;
+    case ss::depth_mode::elevator:
+      r = check(m.depth, 3, "depth", "elevator", -max_angle_deg, max_angle_deg, false, "deg");
+      break;
+  }
+  if (r) return r;
+  if (m.speed_mode == ss::speed_mode::rpm)
+    return check(m.speed, 5, "speed", "thruster", 0, max_rpm, false, "RPM");
+  return check(m.speed, 5, "speed", "speed", 0, max_speed_mps, false, "m/s");
+}
+
+// What the vehicle refuses of a line that decodes: a BPRMB beyond the vehicle, a BPLOG code of
+// no status message.
+std::optional<refusal> refused(std::string_view line) {
+  const auto r = ss::decode_to_vehicle(line);
+  if (!r) return std::nullopt;  // the session acknowledges it invalid
+  if (const auto* rmb = std::get_if<ss::bprmb>(&r.value)) return out_of_range(*rmb);
+  if (const auto* log = std::get_if<ss::bplog>(&r.value)) {
+    for (const std::string_view code : log_codes)
+      if (log->code.view() == code) return std::nullopt;
+    return refusal{
+        ss::bplog::nmea.address,
+        std::nullopt,
+        errc::bad_enum,
+        1,
+        "code",
+        "no status message " + std::string(log->code.view()) + " (NVG NVR MIS ACK CTL or ALL)"};
+  }
+  return std::nullopt;
 }
 
 struct options {
@@ -129,7 +248,6 @@ class simulator {
         model_(params(), lat, lon, o.seed),
         timer_(io),
         shutdown_timer_(io),
-        signals_(io, SIGINT, SIGTERM),
         timeline_(std::move(timeline)),
         names_(std::move(names)) {
     server_.on_connect([this](net::client& c) { connected(c); });
@@ -150,8 +268,30 @@ class simulator {
     t0_ = steady::now();
     session_.set_utc(t0_, std::chrono::system_clock::now());
     server_.start();
-    wait_signal();
     tick();
+  }
+
+  /// Called once the simulator has stopped (to cancel the signal wait).
+  std::function<void()> on_stopped;
+
+  // The first signal: BFSHT to every payload, closing after --shutdown-wait; a second one
+  // closes at once.
+  void signalled(int signo) {
+    const char* name = net::signal_name(signo);
+    if (shutting_down_) {
+      stop(std::string(name) + " again");
+      return;
+    }
+    shutting_down_ = true;
+    session_.shutdown(steady::now());
+    drain();
+    net::line_server::log("%s: BFSHT sent to %zu client(s), closing in %.3g s", name,
+                          server_.client_count(), o_.shutdown_wait);
+    shutdown_timer_.expires_after(std::chrono::duration_cast<steady::duration>(
+        std::chrono::duration<double>(o_.shutdown_wait)));
+    shutdown_timer_.async_wait([this, name](const asio::error_code& e) {
+      if (!e) stop(name);
+    });
   }
 
  private:
@@ -186,38 +326,17 @@ class simulator {
            (it != names_.end() ? " (" + it->second + ")" : std::string());
   }
 
-  void wait_signal() {
-    signals_.async_wait([this](const asio::error_code& ec, int signo) {
-      if (ec) return;
-      const char* name = signo == SIGINT ? "SIGINT" : "SIGTERM";
-      if (shutting_down_) {
-        stop(std::string(name) + " again");
-        return;
-      }
-      shutting_down_ = true;
-      session_.shutdown(steady::now());
-      drain();
-      net::line_server::log("%s: BFSHT sent to %zu client(s), closing in %.3g s", name,
-                            server_.client_count(), o_.shutdown_wait);
-      shutdown_timer_.expires_after(std::chrono::duration_cast<steady::duration>(
-          std::chrono::duration<double>(o_.shutdown_wait)));
-      shutdown_timer_.async_wait([this, name](const asio::error_code& e) {
-        if (!e) stop(name);
-      });
-      wait_signal();  // a second signal closes at once
-    });
-  }
-
   void stop(const std::string& why) {
     if (stopped_) return;
     stopped_ = true;
     timer_.cancel();
     shutdown_timer_.cancel();
-    asio::error_code ignored;
-    signals_.cancel(ignored);
     server_.stop(why);
+    net::line_server::flush_log(invalid_log_);
+    net::line_server::flush_log(command_log_);
     net::line_server::log("stopped (%s): %llu connections", why.c_str(),
                           static_cast<unsigned long long>(server_.connections()));
+    if (on_stopped) on_stopped();
   }
 
   void connected(net::client& c) {
@@ -239,8 +358,12 @@ class simulator {
     const auto it = ids_.find(c.id());
     if (it == ids_.end()) return;
     const auto now = steady::now();
+    if (const auto no = refused(line)) {
+      refuse(c, it->second, *no, now);
+      return;
+    }
     const auto r = session_.receive(it->second, line, now);
-    if (!r) ++c.rejected_in;
+    bool tell_control = false;
     if (r) {
       std::visit(
           [&](const auto& m) {
@@ -250,23 +373,58 @@ class simulator {
             std::string at;
             if constexpr (requires { m.timestamp; }) at = " " + stamped(m.timestamp, now);
             if constexpr (std::is_same_v<T, ss::bplog>) {
-              net::line_server::log("%s: BPLOG %s %s", who(c).c_str(),
-                                    std::string(m.code.view()).c_str(),
-                                    m.state == ss::log_state::on ? "ON" : "OFF");
+              net::line_server::log_limited(command_log_, "%s: BPLOG %s %s", who(c).c_str(),
+                                            std::string(m.code.view()).c_str(),
+                                            m.state == ss::log_state::on ? "ON" : "OFF");
+              tell_control = m.state == ss::log_state::on && (m.code == "CTL" || m.is_all());
             } else if constexpr (std::is_same_v<T, ss::bpver>) {
-              net::line_server::log("%s: BPVER %s%s", who(c).c_str(),
-                                    std::string(m.version.view()).c_str(), at.c_str());
+              net::line_server::log_limited(command_log_, "%s: BPVER %s%s", who(c).c_str(),
+                                            std::string(m.version.view()).c_str(), at.c_str());
             } else if constexpr (std::is_same_v<T, ss::bpsts>) {
-              net::line_server::log("%s: BPSTS %s %s%s", who(c).c_str(), m.all_ok ? "OK" : "FAILED",
-                                    std::string(m.message.view()).c_str(), at.c_str());
+              net::line_server::log_limited(command_log_, "%s: BPSTS %s %s%s", who(c).c_str(),
+                                            m.all_ok ? "OK" : "FAILED",
+                                            std::string(m.message.view()).c_str(), at.c_str());
             } else if constexpr (std::is_same_v<T, ss::bpabt>) {
-              net::line_server::log("%s: BPABT %s%s", who(c).c_str(),
-                                    std::string(m.message.view()).c_str(), at.c_str());
+              net::line_server::log_limited(command_log_, "%s: BPABT %s%s", who(c).c_str(),
+                                            std::string(m.message.view()).c_str(), at.c_str());
             }
           },
           r.value);
     }
     drain();
+    // BFCTL is sent when control changes hands: a payload that subscribes to it (a payload
+    // reconnecting in the middle of a mission) is told at once whether it has control.
+    if (tell_control && session_.should_send(it->second, "CTL"))
+      send_to(c, ss::bfctl{session_.utc().at(now), session_.control_allowed()});
+  }
+
+  // A command that decodes but that the vehicle will not carry out: acknowledged invalid (when
+  // the payload asked for acks), logged, and not acted on.
+  void refuse(net::client& c, ss::client_id id, const refusal& no, steady::time_point now) {
+    ++c.rejected_in;
+    net::line_server::log_limited(invalid_log_, "%s: invalid %s: %s (field %u): %s", who(c).c_str(),
+                                  std::string(no.address).c_str(),
+                                  std::string(message(no.error)).c_str(), unsigned{no.field},
+                                  no.why.c_str());
+    drain();  // what the session queued before this line goes first
+    if (!session_.subscriptions(id).acks()) return;
+    ss::bfack a;
+    a.timestamp = session_.utc().at(now);
+    (void)a.command.assign(ss::message_code(no.address));
+    a.command_timestamp = no.command_timestamp;
+    a.status = ss::ack_status::invalid;
+    // As the session describes an invalid command: "out_of_range in field 3 (depth)".
+    const std::string description = std::string(name(no.error)) + " in field " +
+                                    std::to_string(no.field) + " (" + std::string(no.field_name) +
+                                    ")";
+    (void)a.description->assign(description);
+    send_to(c, a);
+  }
+
+  template <class M>
+  void send_to(net::client& c, const M& m) {
+    const auto line = nmea::encode<512>(m);
+    if (line.ec == errc::ok) c.send(std::string(line.view()), 1);
   }
 
   // "[stamped 231300.125, vehicle 231300.127]": a payload's timestamp and the vehicle's UTC.
@@ -309,18 +467,22 @@ class simulator {
             running_ = false;           // no longer Running: the mission wraps up
             take_control_back_ = true;  // and backseat control ends with it
           } else {
-            net::line_server::log("%s: abort requested with no mission to abort", name.c_str());
+            net::line_server::log_limited(
+                command_log_, "%s: abort requested with no mission to abort", name.c_str());
           }
           break;
         }
         case ss::vehicle_event_kind::invalid_command:
-          net::line_server::log("%s: invalid %s: %s (field %u)", name.c_str(),
-                                std::string(e->command.view()).c_str(),
-                                std::string(message(e->error)).c_str(), unsigned{e->field});
+          // A line that does not decode or names no command: rejected (acknowledged invalid).
+          if (cl != clients_.end()) ++cl->second->rejected_in;
+          net::line_server::log_limited(invalid_log_, "%s: invalid %s: %s (field %u)", name.c_str(),
+                                        std::string(e->command.view()).c_str(),
+                                        std::string(message(e->error)).c_str(), unsigned{e->field});
           break;
         default:
-          net::line_server::log("%s: %s %s", name.c_str(), std::string(name_of(e->kind)).c_str(),
-                                std::string(e->command.view()).c_str());
+          net::line_server::log_limited(command_log_, "%s: %s %s", name.c_str(),
+                                        std::string(name_of(e->kind)).c_str(),
+                                        std::string(e->command.view()).c_str());
       }
     }
     if (take_control_back_) {
@@ -377,6 +539,8 @@ class simulator {
         aborted_ = true;
         publish_mission("Aborted", dive_, "aborted by the payload");
       }
+      net::line_server::poll_log(invalid_log_);
+      net::line_server::poll_log(command_log_);
       steer(now);
       session_.tick(steady::now());
       publish_navigation();
@@ -460,7 +624,6 @@ class simulator {
   tools::vehicle_model model_;
   asio::steady_timer timer_;
   asio::steady_timer shutdown_timer_;
-  asio::signal_set signals_;
   std::vector<mission_step> timeline_;
   std::map<std::string, std::string> names_;
   std::map<std::uint64_t, ss::client_id> ids_;
@@ -476,6 +639,9 @@ class simulator {
   bool take_control_back_ = false;
   bool shutting_down_ = false;
   bool stopped_ = false;
+  // Lines a payload can cause at its line rate, each category at most 20 a second.
+  tools::log_limit invalid_log_{"invalid commands"};
+  tools::log_limit command_log_{"command lines"};
 };
 
 }  // namespace
@@ -527,8 +693,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "seawire-sandshark-sim: %s\n", what.c_str());
     return 2;
   };
-  const auto where = net::parse_endpoint(o.listen);
-  if (!where) return fail("--listen " + o.listen + ": expected ADDR:PORT");
+  const auto where = net::listen_option("seawire-sandshark-sim", o.listen);
+  if (!where) return 2;
   double lat = 0, lon = 0;
   char tail = 0;
   if (std::sscanf(o.start.c_str(), "%lf,%lf%c", &lat, &lon, &tail) != 2 || !(lat >= -85) ||
@@ -564,19 +730,9 @@ int main(int argc, char** argv) {
   }
   o.limits.max_clients = max_clients;
 
-  try {
-    asio::io_context io;
-    asio::error_code ec;
-    const auto address = asio::ip::make_address(where->host, ec);
-    if (ec) return fail("--listen " + o.listen + ": " + ec.message());
-    simulator sim(io, o, asio::ip::tcp::endpoint(address, where->port), lat, lon,
-                  std::move(timeline), std::move(names));
-    net::line_server::log("listening on %s", net::to_string(sim.local_endpoint()).c_str());
-    sim.start();
-    io.run();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "seawire-sandshark-sim: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  return net::serve("seawire-sandshark-sim", o.listen, *where,
+                    [&](asio::io_context& io, const asio::ip::tcp::endpoint& at) {
+                      return std::make_unique<simulator>(io, o, at, lat, lon, std::move(timeline),
+                                                         std::move(names));
+                    });
 }

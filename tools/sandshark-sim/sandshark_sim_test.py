@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSL-1.0
 """seawire-sandshark-sim over loopback: a payload written here against the simulated BAM.
 
-    sandshark_sim_test.py SIM CASE      CASE: session, shutdown, usage
+    sandshark_sim_test.py SIM CASE      CASE: session, backseat, usage, flood, refusals
 
 Every step is checked from both sides: what the payload receives and what the simulator logs.
 """
@@ -101,10 +101,16 @@ TIMELINE = """# a short mission
 """
 
 
-def case_session():
-    fd, mission = tempfile.mkstemp(suffix=".mission")
-    os.write(fd, TIMELINE.encode())
+def mission_file(text):
+    """A mission timeline file holding `text` (bytes or str); the caller removes it."""
+    fd, path = tempfile.mkstemp(suffix=".mission")
+    os.write(fd, text.encode() if isinstance(text, str) else text)
     os.close(fd)
+    return path
+
+
+def case_session():
+    mission = mission_file(TIMELINE.encode())
     sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--client", "backseat=127.0.0.1",
               "--shutdown-wait", "1")
     p = Payload(sim.port)
@@ -194,9 +200,7 @@ def case_session():
 def case_backseat():
     # The backseat example takes control when the mission hands it over and keeps its request
     # alive; when it stops, the request lapses and the vehicle takes control back.
-    fd, mission = tempfile.mkstemp(suffix=".mission")
-    os.write(fd, b"0 mission Running dive1.xml\n0.5 control on\n")
-    os.close(fd)
+    mission = mission_file(b"0 mission Running dive1.xml\n0.5 control on\n")
     sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
     watcher = Payload(sim.port)
     watcher.send("BPLOG,NVG,ON")
@@ -249,18 +253,138 @@ def case_backseat():
     os.remove(mission)
 
 
+def invalid_counts(log, what):
+    """The invalid-command lines logged and the sum of the suppressed counts noted."""
+    logged = len(re.findall(r"^client \d+: invalid ", log, re.M))
+    noted = sum(int(n) for n in re.findall(r"^\.\.\. (\d+) more %s suppressed$" % what, log,
+                                           re.M))
+    return logged, noted
+
+
+def case_flood():
+    # A payload sending nothing but bad commands as fast as it can: the log keeps to its rate
+    # (20 lines a second per kind), and says how many lines it left out, to the line.
+    sim = Server(SIM, "--nav-rate", "10", "--shutdown-wait", "0")
+    p = Payload(sim.port)
+    lines = (seal("BPXYZ,%s,1" % stamp()) * 1000).encode()
+    sent = 0
+    start = time.monotonic()
+    size0 = len(sim.log())
+    p.sock.settimeout(30)
+    while time.monotonic() - start < 2:
+        p.sock.sendall(lines)
+        sent += 1000
+    p.sock.shutdown(socket.SHUT_WR)
+    check(sim.wait_log(r"client 1 \S+ disconnected: end of stream; .* %d sentences in, %d rejected"
+                       % (sent, sent), timeout=60),
+          "every line read and rejected: %d sent" % sent)
+    elapsed = time.monotonic() - start
+    # The count of a window that was over shows without another line (the flood stopped).
+    check(sim.wait_log(r"more invalid commands suppressed", timeout=5), "the count is logged")
+    check(sim.stop(timeout=20) == 0, "exit 0")
+    log = sim.log()
+    rate = (len(log) - size0) / elapsed
+    logged, noted = invalid_counts(log, "invalid commands")
+    print("flood: %d lines in %.1f s; %d logged, %d noted suppressed; %.0f bytes/s of log"
+          % (sent, elapsed, logged, noted, rate), file=sys.stderr)
+    check(logged + noted == sent, "every invalid line logged or counted: %d + %d != %d"
+          % (logged, noted, sent))
+    check(logged <= 20 * (elapsed + 2), "at most 20 lines a second: %d in %.1f s" % (logged, elapsed))
+    check(rate < 20000, "the log grows by less than 20 kB/s under a flood: %.0f B/s" % rate)
+
+
+def ack_of(p, code, mark):
+    """The fields of the first BFACK for `code` after line `mark`, or None."""
+    line = p.wait_for(r"^\$BFACK,[^,]*,%s," % code, start=mark)
+    return line.split("*")[0].split(",") if line else None
+
+
+def case_refusals():
+    # Commands that decode but ask what the vehicle cannot do are acknowledged invalid (0) and
+    # not acted on; a payload subscribing to BFCTL is told at once whether it has control.
+    mission = mission_file(b"0 mission Running dive1.xml\n1.0 control on\n")
+    sim = Server(SIM, "--mission", mission, "--nav-rate", "10", "--shutdown-wait", "0")
+    p = Payload(sim.port)
+    p.wait_for(r"^\$BFVER,")
+    p.send("BPLOG,ACK,ON")
+    mark = len(p.lines)
+    p.send("BPLOG,ALL,ON")
+    first = p.wait_for(r"^\$BFCTL,", start=mark)
+    check(first is not None and first.split("*")[0].endswith(",0"),
+          "subscribing before the hand-over: told BFCTL 0 at once: %r" % first)
+    check(p.wait_for(r"^\$BFCTL,[^,]*,1\*", timeout=5) is not None, "then BFCTL 1")
+    # A payload connecting after the hand-over learns it has control when it subscribes.
+    q = Payload(sim.port)
+    q.wait_for(r"^\$BFVER,")
+    q.pump(0.3)
+    check(q.of("BFCTL") == [], "no BFCTL before it asks")
+    q.send("BPLOG,CTL,ON")
+    told = q.wait_for(r"^\$BFCTL,", timeout=3)
+    check(told is not None and told.split("*")[0].endswith(",1"),
+          "a payload subscribing during the hand-over: told BFCTL 1: %r" % told)
+    q.close()
+    # Out of the vehicle's range: invalid, the command's timestamp echoed, the reason logged.
+    for body, field, reason in (
+            ("%s,90.0,99999999999,0,1.0,1,0", "depth", r"depth 99999999999 m outside 0 to 200 m"),
+            ("%s,90.0,-99999,0,1.0,1,0", "depth", r"depth -99999 m outside 0 to 200 m"),
+            ("%s,90.0,200.1,,1.0,1,0", "depth", r"depth 200.1 m outside"),
+            ("%s,90.0,250,1,1.0,1,0", "depth", r"altitude 250 m outside"),
+            ("%s,90.0,95,2,1.0,1,0", "depth", r"pitch 95 deg outside -90 to 90 deg"),
+            ("%s,360.0,5,0,1.0,1,0", "heading", r"heading 360 deg outside 0 to 360 \(excluded\)"),
+            ("%s,-100,5,0,1.0,1,1", "heading", r"rudder -100 deg outside -90 to 90 deg"),
+            ("%s,90.0,5,0,30,1,0", "speed", r"speed 30 m/s outside 0 to 2 m/s"),
+            ("%s,90.0,5,0,-1,1,0", "speed", r"speed -1 m/s outside"),
+            ("%s,90.0,5,0,5000,0,0", "speed", r"thruster 5000 RPM outside 0 to 2000 RPM")):
+        t = stamp()
+        mark = len(p.lines)
+        p.send("BPRMB," + body % t)
+        a = ack_of(p, "RMB", mark)
+        check(a is not None and a[5] == "0" and a[3] == t and field in a[7],
+              "BPRMB %s refused invalid: %r" % (body % t, a))
+        check(sim.wait_log(r"invalid BPRMB: .*: " + reason), "logged: %s\n%s" % (reason, sim.log()[-800:]))
+    p.pump(1)
+    check("BPRMB request started" not in sim.log(), "no refused request steers the vehicle")
+    depths = [float(f[8]) for f in p.of("BFNVG")]
+    check(depths and max(depths) < 5, "the vehicle stays near its mission depth: %r" % depths[-3:])
+    # Within range: ok, and it steers (altitude 45 m in 50 m of water is 5 m deep).
+    for body in ("%s,90.0,200,0,2.0,1,0", "%s,90.0,45,1,2000,0,0", "%s,-90,-90,3,0,1,1"):
+        mark = len(p.lines)
+        p.send("BPRMB," + body % stamp())
+        a = ack_of(p, "RMB", mark)
+        check(a is not None and a[5] == "2", "BPRMB %s acknowledged ok: %r" % (body, a))
+    check(sim.wait_log("BPRMB request started"), "the request in range steers")
+    # BPLOG: a code of no status message is invalid and turns nothing on; the real ones are ok.
+    for code, status in (("XYZ", "0"), ("SHT", "0"), ("NVG", "2"), ("MIS", "2"), ("ALL", "2")):
+        mark = len(p.lines)
+        p.send("BPLOG,%s,ON" % code)
+        a = ack_of(p, "LOG", mark)
+        check(a is not None and a[5] == status, "BPLOG,%s,ON acknowledged %s: %r" % (code, status, a))
+    check(sim.wait_log(r"invalid BPLOG: .*\(field 1\): no status message XYZ"), "the code logged")
+    p.close()
+    check(sim.stop(timeout=20) == 0, "exit 0")
+    os.remove(mission)
+
+
 def case_usage():
-    fd, bad = tempfile.mkstemp(suffix=".mission")
-    os.write(fd, b"0 mission Waiting\n2 launch now\n")
-    os.close(fd)
+    bad = mission_file(b"0 mission Waiting\n2 launch now\n")
+    # Mission steps a BFMIS cannot carry are refused at start with their line, not published
+    # blank: a reserved character, a text over 256 characters, a line over the session's 512.
+    unsendable = [mission_file(b"0 mission Waiting\n" + step + b"\n") for step in (
+        b"1 mission Run*ning", b"1 mission Running dive,1.xml", b"1 mission Running " + b"d" * 257,
+        b"1 mission " + b"R" * 250 + b" " + b"d" * 250)]
     refusals(SIM, b"--mission",
              ((["--listen", "x"], b"expected ADDR:PORT"),
               (["--client", "backseat=nowhere"], b"not an IP address"),
               (["--mission", bad], b":2: expected"),
               (["--mission", "/nonexistent"], b"cannot be read"),
               (["--pending", "ABT,XYZ"], b"XYZ is none of"),
-              (["--version-text", "1,0"], b"at most 32 printable")), rc=2)
+              (["--version-text", "1,0"], b"at most 32 printable"))
+             # (--duration: a simulator that took the file ends, and the case fails.)
+             + tuple((["--mission", path, "--duration", "1"], b":2: BFMIS cannot carry")
+                     for path in unsendable), rc=2)
     os.remove(bad)
+    for path in unsendable:
+        os.remove(path)
 
 
 run_case(globals(), CASE)
