@@ -66,6 +66,10 @@ using seawire::tools::n2k_pgns;
 // A CAN log line longer than this is no line of any log format (a canboat FAST line of 223
 // bytes has about 700 characters).
 constexpr std::size_t max_log_line = 4096;
+// --input auto decides within this much input, or this many lines neither a sentence nor a CAN
+// log line: it then reads sentences.
+constexpr std::size_t max_undecided = 64 * 1024;
+constexpr int max_undecided_lines = 16;
 
 // Whether `line` is a CAN log line of a format seawire reads (and not a sentence).
 bool is_can_log_line(std::string_view line) {
@@ -358,33 +362,43 @@ class decoder {
   // ---- which input ----
 
   // Keeps what came until a line says what the input is: a CAN log line, or a sentence (or
-  // anything else once 16 lines or 64 KiB have said nothing either way), and reads it so.
+  // anything else once max_undecided_lines lines or max_undecided bytes have said nothing either
+  // way), and reads it so. Each byte is looked at once, however the input is cut: what was
+  // scanned is not scanned again when more comes.
   void decide(std::string_view chunk, bool at_end) {
     pending_.append(chunk);
-    std::string_view rest = pending_;
+    std::string_view rest = std::string_view(pending_).substr(scanned_);
     std::optional<bool> can;
     // A sentence or a binary frame needs no whole line to be recognised (a live binary stream
-    // may have no newline for a long time).
-    if (const std::size_t at = rest.find_first_not_of(" \t\r\n"); at != std::string_view::npos) {
-      const auto c = static_cast<unsigned char>(rest[at]);
-      if (c == '$' || c == '!' || c == 0xAB) can = false;
+    // may have no newline for a long time): the first byte that is not blank says so.
+    if (!seen_text_) {
+      if (const std::size_t at = rest.find_first_not_of(" \t\r\n"); at != std::string_view::npos) {
+        const auto c = static_cast<unsigned char>(rest[at]);
+        if (c == '$' || c == '!' || c == 0xAB) can = false;
+        seen_text_ = true;
+      }
     }
-    int lines = 0;
     while (!rest.empty() && !can) {
       const std::size_t nl = rest.find('\n');
       if (nl == std::string_view::npos && !at_end && rest.size() <= max_log_line) break;
       const std::string_view line = rest.substr(0, nl);
-      rest.remove_prefix(nl == std::string_view::npos ? rest.size() : nl + 1);
+      const std::size_t used = nl == std::string_view::npos ? rest.size() : nl + 1;
+      rest.remove_prefix(used);
+      scanned_ += used;
       const std::size_t at = line.find_first_not_of(" \t\r");
       if (at == std::string_view::npos) continue;
       if (line[at] == '$' || line[at] == '!') {
         can = false;
       } else if (is_can_log_line(line)) {
         can = true;
-      } else if (++lines >= 16) {
+      } else if (++undecided_lines_ >= max_undecided_lines) {
         can = false;
       }
     }
+    // Noise without a line ending says nothing either way: past this much, the stream reader
+    // takes it (it drops what is outside sentences and frames, and resyncs at '$', '!' and AB),
+    // so what comes after the noise is read, and memory stays bounded.
+    if (!can && pending_.size() >= max_undecided) can = false;
     if (!can && !at_end) return;
     in_ = can.value_or(false) ? input::n2k : input::nmea;
     if (in_ == input::n2k && opt_.fmt == format::nmea) {
@@ -813,7 +827,10 @@ class decoder {
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
   input in_;
-  std::string pending_;  // input kept until the first line says what it is
+  std::string pending_;      // input kept until the first line says what it is
+  std::size_t scanned_ = 0;  // pending_'s bytes already looked at (whole lines)
+  bool seen_text_ = false;   // a byte not blank was looked at
+  int undecided_lines_ = 0;  // lines that were neither a sentence nor a CAN log line
   bool unusable_ = false;
   nmea2000::log_reader<n2k_pgns> n2k_;
   std::string carry_;      // a CAN log line cut by the chunk boundary

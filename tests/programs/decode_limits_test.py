@@ -1,0 +1,122 @@
+# SPDX-License-Identifier: BSL-1.0
+"""seawire-decode stays bounded and stoppable, as a real process fed what a bad link sends.
+
+    decode_limits_test.py <seawire-decode> <examples/data> <case>
+
+noise    megabytes of zeros or random bytes without a line ending, then sentences: decided on,
+         read in linear time and bounded memory, the sentences after the noise all decoded.
+"""
+
+import os
+import random
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+import harness
+from harness import check, run_case
+
+DECODE, DATA, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+MB = 1024 * 1024
+
+
+def sentences(family="kingfisher"):
+    with open(os.path.join(DATA, family + ".nmea"), "rb") as f:
+        return f.read()
+
+
+def measured(args, chunks, tmp):
+    """Runs seawire-decode with args, the chunks written to its stdin one after the other; returns
+    (exit status, seconds, peak RSS in KiB of this run alone, stdout, stderr)."""
+    out_path, err_path = os.path.join(tmp, "out"), os.path.join(tmp, "err")
+    with open(out_path, "wb") as out, open(err_path, "wb") as err:
+        start = time.monotonic()
+        # Under AddressSanitizer, freed memory is held back (up to 256 MiB) to catch late uses:
+        # a little is enough here, so the peak shows what the program keeps.
+        env = dict(os.environ)
+        env["ASAN_OPTIONS"] = env.get("ASAN_OPTIONS", "") + ":quarantine_size_mb=4"
+        p = subprocess.Popen([DECODE, "--quiet", *args], stdin=subprocess.PIPE, stdout=out,
+                             stderr=err, env=env)
+
+        def write():
+            try:
+                for c in chunks:
+                    p.stdin.write(c)
+            except BrokenPipeError:
+                pass
+            p.stdin.close()
+
+        writer = threading.Thread(target=write)
+        writer.start()
+        # The peak RSS of the program itself: VmHWM of its own memory, read while it runs
+        # (rusage would count this script's memory too, which the child had before its exec).
+        deadline = start + 120
+        peak = 0
+        while True:
+            try:
+                with open(f"/proc/{p.pid}/status") as f:
+                    for line in f:
+                        if line.startswith("VmHWM:"):
+                            peak = max(peak, int(line.split()[1]))
+            except (OSError, ValueError):
+                pass
+            pid, status = os.waitpid(p.pid, os.WNOHANG)
+            if pid != 0:
+                break
+            if time.monotonic() > deadline:
+                p.kill()
+                pid, status = os.waitpid(p.pid, 0)
+                check(False, f"{args}: still running after 120 s")
+                break
+            time.sleep(0.005)
+        p.returncode = os.waitstatus_to_exitcode(status)
+        seconds = time.monotonic() - start
+        writer.join()
+    with open(out_path, "rb") as f:
+        stdout = f.read()
+    with open(err_path, "rb") as f:
+        stderr = f.read()
+    return p.returncode, seconds, peak, stdout, stderr
+
+
+def case_noise():
+    good = sentences()
+    want_nmea = subprocess.run([DECODE, "--quiet", "--format", "nmea"], input=good,
+                               capture_output=True, timeout=60).stdout
+    want_json = subprocess.run([DECODE, "--quiet"], input=good, capture_output=True,
+                               timeout=60).stdout
+    check(len(want_nmea) > 1000 and len(want_json) > 1000, "the sample decodes")
+    zeros = bytes(MB)
+    rng = random.Random(20)
+    noise = rng.randbytes(32 * MB)
+    with tempfile.TemporaryDirectory() as tmp:
+        _, _, small_rss, _, _ = measured([], [good], tmp)
+        # 64 MiB of zeros, no line ending in them: input auto must decide within a bounded prefix
+        # (a CAN log or sentences), not keep the noise and scan it again as more comes.
+        for fmt, want in (("json", want_json), ("nmea", want_nmea)):
+            rc, seconds, rss, out, err = measured(["--format", fmt], [zeros] * 64 + [good], tmp)
+            print(f"64 MiB of zeros then the sample, --format {fmt}: {seconds:.2f} s, "
+                  f"peak RSS {rss // 1024} MiB (the sample alone: {small_rss // 1024} MiB)")
+            check(rc == 1, f"zeros --format {fmt}: exit status {rc} (noise is rejected input)")
+            check(seconds < 20, f"zeros --format {fmt}: {seconds:.1f} s")
+            check(rss - small_rss < 32 * 1024,
+                  f"zeros --format {fmt}: peak RSS {rss} KiB vs {small_rss} KiB for the sample")
+            check(out.endswith(want), f"zeros --format {fmt}: the sentences after the noise")
+            if fmt == "json":
+                # The noise itself is reported: one missing_start of every byte of it.
+                first = out.split(b"\n")[0]
+                check(b'"error":"missing_start"' in first and b"67108864 bytes" in first,
+                      f"zeros reported: {first[:160]!r}")
+        # 32 MiB of random bytes (some '\n', '$' and 0xAB among them) then the sentences.
+        rc, seconds, rss, out, err = measured(["--format", "nmea"], [noise, b"\r\n", good], tmp)
+        print(f"32 MiB of random bytes then the sample: {seconds:.2f} s, peak RSS {rss // 1024} "
+              f"MiB, {len(err)} bytes on stderr")
+        check(rc == 1, f"random: exit status {rc}")
+        check(seconds < 20, f"random: {seconds:.1f} s")
+        check(rss - small_rss < 32 * 1024, f"random: peak RSS {rss} KiB vs {small_rss} KiB")
+        check(out.endswith(want_nmea), "random: the sentences after the noise")
+
+
+run_case({"noise": case_noise}, CASE)
