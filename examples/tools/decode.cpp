@@ -8,6 +8,7 @@
 // and CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp, which gathers
 // positions from the same walk. See --help, and docs/seawire-decode.md for the manual.
 
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -16,6 +17,7 @@
 #include <array>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -848,6 +850,63 @@ class decoder {
   tools::tracks tracks_;
 };
 
+// SIGINT or SIGTERM, once one came (0 before): reading stops, and what was read is decoded and
+// written as at the end of the input.
+volatile std::sig_atomic_t stop_signal = 0;
+extern "C" void on_stop_signal(int sig) { stop_signal = sig; }
+
+// SIGINT and SIGTERM are blocked but while waiting for input (ppoll lets them in atomically, so
+// one that comes while a chunk is decoded is not lost, and none interrupts a write).
+class stop_signals {
+ public:
+  stop_signals() {
+    sigemptyset(&stop_);
+    sigaddset(&stop_, SIGINT);
+    sigaddset(&stop_, SIGTERM);
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+    sigprocmask(SIG_BLOCK, &stop_, &waiting_);
+    sigdelset(&waiting_, SIGINT);
+    sigdelset(&waiting_, SIGTERM);
+  }
+  stop_signals(const stop_signals&) = delete;
+  stop_signals& operator=(const stop_signals&) = delete;
+  // A second signal, while the output is written, ends the program at once. One that came while
+  // the input ended (held back since) counts as the first.
+  ~stop_signals() {
+    const timespec now{0, 0};
+    for (int sig = 0; (sig = sigtimedwait(&stop_, nullptr, &now)) > 0;) {
+      if (stop_signal == 0) stop_signal = sig;
+    }
+    struct sigaction sa {};
+    sa.sa_handler = SIG_DFL;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+    sigprocmask(SIG_UNBLOCK, &stop_, nullptr);
+  }
+
+  // Waits for input on `fd` (or its end, or an error), `ms` milliseconds at most (-1: no limit):
+  // true when there is some, false after `ms` or when a stop signal came.
+  [[nodiscard]] bool wait_input(int fd, int ms) const {
+    pollfd p{fd, POLLIN, 0};
+    for (;;) {
+      if (stop_signal != 0) return false;
+      timespec t{ms / 1000, static_cast<long>(ms % 1000) * 1000000L};
+      const int n = ::ppoll(&p, 1, ms < 0 ? nullptr : &t, &waiting_);
+      if (n < 0 && errno == EINTR) continue;
+      return n != 0;  // a poll error too: the read says what it is
+    }
+  }
+
+ private:
+  sigset_t stop_{};
+  sigset_t waiting_{};  // the mask while waiting: the one before, SIGINT and SIGTERM let in
+};
+
 int run(const options& o) {
   if (!o.output_dir.empty()) {
     std::error_code ec;
@@ -863,12 +922,18 @@ int run(const options& o) {
   tools::chunk_reader in(0);
   // Live streams: a line whose CR ended the input so far is let out after 50 ms without more.
   constexpr int quiet_ms = 50;
-  for (;;) {
-    if (o.line_buffered && !in.ready_within(quiet_ms)) d.quiet();
-    const std::string_view chunk = in.next();
-    if (chunk.empty()) break;
-    d.feed(chunk);
-    shown.update(chunk.size(), d.decoded(), d.rejected());
+  {
+    const stop_signals signals;
+    for (;;) {
+      if (o.line_buffered && !signals.wait_input(0, quiet_ms) && stop_signal == 0) d.quiet();
+      // read() is called only once input is there, so it does not block with the signals
+      // held back.
+      if (!signals.wait_input(0, -1)) break;
+      const std::string_view chunk = in.next();
+      if (chunk.empty()) break;
+      d.feed(chunk);
+      shown.update(chunk.size(), d.decoded(), d.rejected());
+    }
   }
   shown.done();
   d.finish();
@@ -882,6 +947,8 @@ int run(const options& o) {
     std::fprintf(stderr, "seawire-decode: writing stdout: %s\n", std::strerror(d.stdout_error()));
     return 1;
   }
+  // Stopped by a signal: the shell's status for it (128 + its number), whatever was decoded.
+  if (stop_signal != 0) return 128 + static_cast<int>(stop_signal);
   return d.all_good() ? 0 : 1;
 }
 
@@ -904,7 +971,8 @@ int main(int argc, char** argv) {
       "  seawire-decode --format none --stats < mission.nmea      # check a log\n"
       "  seawire-decode --format nmea < raw.nmea > clean.nmea     # canonical sentences only\n"
       "  candump -L can0 | seawire-decode --line-buffered         # NMEA 2000 from a CAN bus\n"
-      "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error.",
+      "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error, 130/143 "
+      "stopped by SIGINT/SIGTERM (what was read is decoded and written first).",
       "seawire-decode"};
   std::string fmt = "json";
   std::string checksum;
@@ -962,8 +1030,9 @@ int main(int argc, char** argv) {
                "at the end, print counts by message type and by error, and the stream reader's "
                "dropped-byte counters, to stderr (e.g. --format none --stats)");
   app.add_flag("--line-buffered", o.line_buffered,
-               "flush stdout after each message, for live streams (default: large buffers, "
-               "for speed); a sentence ended by CR alone is let out once the input has been "
+               "flush stdout after each message, for live streams (the default when stdin or "
+               "stdout is a terminal; otherwise large buffers, for speed); a sentence ended by CR "
+               "alone is let out once the input has been "
                "quiet for 50 ms (e.g. nc vehicle 29500 | seawire-decode --line-buffered)");
   app.set_version_flag("--version", "seawire-decode (seawire " SEAWIRE_VERSION_STRING ")");
   if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
@@ -978,6 +1047,8 @@ int main(int argc, char** argv) {
     o.log_format = nmea2000::log_format_named(log_format);
     if (o.in == input::automatic) o.in = input::n2k;
   }
+  // Output a person watches, or input a person types (a terminal or pty), goes out line by line.
+  if (::isatty(0) == 1 || ::isatty(1) == 1) o.line_buffered = true;
   if (o.in == input::n2k && o.fmt == format::nmea) {
     std::fprintf(stderr,
                  "seawire-decode: --format nmea re-encodes sentences; a CAN log has none (use "

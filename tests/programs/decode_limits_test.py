@@ -3,17 +3,24 @@
 
     decode_limits_test.py <seawire-decode> <examples/data> <case>
 
+signals  SIGTERM or SIGINT while reading a terminal or a pipe that stays open: what was read is
+         decoded and written, --stats printed, exit status 128 + the signal's number; output
+         line by line when stdin is a terminal, in blocks to a pipe.
 noise    megabytes of zeros or random bytes without a line ending, then sentences: decided on,
          read in linear time and bounded memory, the sentences after the noise all decoded.
 """
 
 import os
+import pty
 import random
+import select
+import signal
 import subprocess
 import sys
 import tempfile
 import threading
 import time
+import tty
 
 import harness
 from harness import check, run_case
@@ -119,4 +126,86 @@ def case_noise():
         check(out.endswith(want_nmea), "random: the sentences after the noise")
 
 
-run_case({"noise": case_noise}, CASE)
+def read_for(fd, seconds, until=None):
+    """What `fd` gives within `seconds` (sooner once `until` is in it)."""
+    got = b""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline and (until is None or until not in got):
+        r, _, _ = select.select([fd], [], [], max(0, deadline - time.monotonic()))
+        if not r:
+            break
+        piece = os.read(fd, 65536)
+        if not piece:
+            break
+        got += piece
+    return got
+
+
+def caught(pid, sig, seconds=20):
+    """Waits until process `pid` catches signal `sig` (its handler installed: it started)."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        with open(f"/proc/{pid}/status") as f:
+            for line in f:
+                if line.startswith("SigCgt:") and int(line.split()[1], 16) >> (sig - 1) & 1:
+                    return True
+        time.sleep(0.01)
+    return False
+
+
+def case_signals():
+    lines = sentences().splitlines(keepends=True)[:6]
+    check(all(line.endswith(b"\r\n") for line in lines), "the sample's lines end in CR LF")
+    want = subprocess.run([DECODE, "--quiet"], input=b"".join(lines), capture_output=True,
+                          timeout=60).stdout.splitlines(keepends=True)
+    check(len(want) == 6, "six messages")
+
+    # stdin a terminal (a pty in raw mode, as a serial port is): each message goes out as its
+    # line comes; SIGTERM then decodes the sentence still without its line ending.
+    master, slave = pty.openpty()
+    tty.setraw(slave)
+    p = subprocess.Popen([DECODE, "--quiet", "--stats"], stdin=slave, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE)
+    os.close(slave)
+    os.write(master, b"".join(lines[:5]))
+    os.write(master, lines[5].rstrip(b"\r\n"))
+    early = read_for(p.stdout.fileno(), 20, until=want[4])
+    check(early == b"".join(want[:5]), f"pty: five messages before the signal: {early[-200:]!r}")
+    p.send_signal(signal.SIGTERM)
+    try:
+        out, err = p.communicate(timeout=20)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        out, err = p.communicate()
+        check(False, "pty: still running 20 s after SIGTERM")
+    os.close(master)
+    check(p.returncode == 143, f"pty: SIGTERM: exit status {p.returncode}, expected 143")
+    check(out == want[5], f"pty: the sixth message after the signal: {out[:200]!r}")
+    check(b"6 messages decoded, 0 rejected" in err, f"pty: --stats: {err[:300]!r}")
+
+    # stdin a pipe that stays open, stdout a pipe: nothing is written until the buffer fills or
+    # the input ends; SIGINT ends it, and everything decoded is written, the stats after it.
+    p = subprocess.Popen([DECODE, "--quiet", "--stats"], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    p.stdin.write(b"".join(lines) + b"$GPRMC,1*")  # a last sentence cut short
+    p.stdin.flush()
+    caught(p.pid, signal.SIGINT)
+    early = read_for(p.stdout.fileno(), 1)
+    check(early == b"", f"pipe: block-buffered, nothing written yet: {early[:200]!r}")
+    time.sleep(0.5)  # the chunk read before the signal comes
+    p.send_signal(signal.SIGINT)
+    try:
+        out, err = p.communicate(timeout=20)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        out, err = p.communicate()
+        check(False, "pipe: still running 20 s after SIGINT")
+    check(p.returncode == 130, f"pipe: SIGINT: exit status {p.returncode}, expected 130")
+    out_lines = out.splitlines(keepends=True)
+    check(out_lines[:6] == want, f"pipe: every message after the signal: {out[:300]!r}")
+    check(len(out_lines) == 7 and out_lines[6].startswith(b'{"line":7,"error":'),
+          f"pipe: the cut sentence reported: {out_lines[6:]!r}")
+    check(b"6 messages decoded, 1 rejected" in err, f"pipe: --stats: {err[:300]!r}")
+
+
+run_case({"noise": case_noise, "signals": case_signals}, CASE)
