@@ -152,12 +152,14 @@ struct csv_headers<nmea::message_set<Ms...>> {
 };
 using all_headers = csv_headers<all_messages>;
 
-// One CSV table: a file of its own (--output-dir) with its header written once.
+// One CSV table: a file of its own (--output-dir) with its header written once, or stdout.
 struct csv_table {
   std::string name;  // for errors: the file's path, or "stdout"
   std::FILE* file = nullptr;
-  std::unique_ptr<tools::output> out;
+  std::unique_ptr<tools::output> out;  // while the table is open
   bool header = false;
+  bool created = false;         // the file was created (later opened to append)
+  std::uint64_t last_used = 0;  // when a row last went to it, for closing the least recent
   csv_table() = default;
   csv_table(const csv_table&) = delete;
   csv_table& operator=(const csv_table&) = delete;
@@ -166,6 +168,10 @@ struct csv_table {
     if (file != nullptr) std::fclose(file);
   }
 };
+
+// At most this many tables' files are open at once (and fewer when the process may open fewer
+// files): the least recently used one is closed to open another, and opened again to append.
+constexpr std::size_t max_open_tables = 32;
 
 // Rejected input shows at most this much of its line.
 constexpr std::size_t max_input_shown = 256;
@@ -268,7 +274,12 @@ class decoder {
       case format::svg: tracks_.write_svg(out_); break;
       case format::csv:
         for (auto& [type, t] : tables_) {
-          if (t == nullptr) continue;  // could not be created: reported then
+          // Not created, or closed: reported then.
+          if (t == nullptr || t->out == nullptr) continue;
+          if (t->file != nullptr) {
+            close_table(*t);
+            continue;
+          }
           t->out->flush();
           if (t->out->failed()) {
             std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
@@ -701,11 +712,21 @@ class decoder {
     return (std::filesystem::path(opt_.output_dir) / (type + ".csv")).string();
   }
 
-  // The table of a type: stdout when there is no output directory (one type only), else the
-  // type's file, created when its first message comes. nullptr when it cannot be created.
+  // The table of a type, open: stdout when there is no output directory (one type only), else
+  // the type's file, created when its first message comes. nullptr when it cannot be created
+  // (or opened again, or was not written).
   csv_table* table(std::string_view type) {
+    ++table_clock_;
     auto it = tables_.find(type);
-    if (it != tables_.end()) return it->second.get();
+    if (it != tables_.end()) {
+      csv_table* t = it->second.get();
+      if (t != nullptr && t->out == nullptr && !open_table(*t)) {
+        it->second.reset();
+        return nullptr;
+      }
+      if (t != nullptr) t->last_used = table_clock_;
+      return t;
+    }
     auto t = std::make_unique<csv_table>();
     if (opt_.output_dir.empty()) {
       t->name = "stdout";
@@ -713,20 +734,66 @@ class decoder {
       stdout_table_ = t.get();
     } else {
       t->name = table_path(std::string(type));
-      t->file = std::fopen(t->name.c_str(), "w");
-      if (t->file == nullptr) {
-        const int e = errno;
-        progress_.erase();
-        std::fprintf(stderr, "seawire-decode: cannot create %s: %s\n", t->name.c_str(),
-                     std::strerror(e));
-        ++table_failures_;
+      if (!open_table(*t)) {
         tables_.emplace(std::string(type), nullptr);
         return nullptr;
       }
-      // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
-      t->out = std::make_unique<tools::output>(t->file, 16 * 1024);
     }
+    t->last_used = table_clock_;
     return tables_.emplace(std::string(type), std::move(t)).first->second.get();
+  }
+
+  // Opens a table's file: created (replacing a file of its name) the first time, appended to
+  // after. The least recently used table is closed first when max_open_tables are open, or when
+  // the process may open no more files. False, reported, when it cannot be opened.
+  bool open_table(csv_table& t) {
+    if (open_tables_ >= max_open_tables) close_least_used();
+    for (;;) {
+      t.file = std::fopen(t.name.c_str(), t.created ? "a" : "w");
+      if (t.file != nullptr) break;
+      const int e = errno;
+      if ((e == EMFILE || e == ENFILE) && close_least_used()) continue;
+      progress_.erase();
+      std::fprintf(stderr, "seawire-decode: cannot %s %s: %s\n", t.created ? "reopen" : "create",
+                   t.name.c_str(), std::strerror(e));
+      ++table_failures_;
+      return false;
+    }
+    t.created = true;
+    ++open_tables_;
+    // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
+    t.out = std::make_unique<tools::output>(t.file, 16 * 1024);
+    return true;
+  }
+
+  // Writes out a table and closes its file; false, reported, when the writing failed (the
+  // table is then written no more). The table stays, to be opened again.
+  bool close_table(csv_table& t) {
+    t.out->flush();
+    const bool ok = !t.out->failed();
+    if (!ok) {
+      progress_.erase();
+      std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t.name.c_str(),
+                   std::strerror(t.out->error()));
+      ++table_failures_;
+    }
+    t.out.reset();
+    std::fclose(t.file);
+    t.file = nullptr;
+    --open_tables_;
+    return ok;
+  }
+
+  // Closes the open file table used least recently; false when none is open.
+  bool close_least_used() {
+    std::unique_ptr<csv_table>* least = nullptr;
+    for (auto& [type, t] : tables_) {
+      if (t == nullptr || t->file == nullptr) continue;
+      if (least == nullptr || t->last_used < (*least)->last_used) least = &t;
+    }
+    if (least == nullptr) return false;
+    if (!close_table(**least)) least->reset();
+    return true;
   }
 
   // ---- errors ----
@@ -844,6 +911,8 @@ class decoder {
   std::map<std::string, std::uint64_t> by_type_;
   std::array<std::uint64_t, 256> by_error_{};
   std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
+  std::size_t open_tables_ = 0;                      // tables whose file is open
+  std::uint64_t table_clock_ = 0;                    // counts the rows, for last_used
   std::map<std::string, std::uint64_t> not_tabled_;  // unknown sentences, by address
   std::uint64_t table_failures_ = 0;
   csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists

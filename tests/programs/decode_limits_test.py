@@ -6,6 +6,8 @@
 signals  SIGTERM or SIGINT while reading a terminal or a pipe that stays open: what was read is
          decoded and written, --stats printed, exit status 128 + the signal's number; output
          line by line when stdin is a terminal, in blocks to a pipe.
+tables   --format csv --output-dir with more types than files may be open (RLIMIT_NOFILE 12, and
+         more than the 32 kept open): every table whole, its header once, rows in input order.
 noise    megabytes of zeros or random bytes without a line ending, then sentences: decided on,
          read in linear time and bounded memory, the sentences after the noise all decoded.
 """
@@ -13,6 +15,7 @@ noise    megabytes of zeros or random bytes without a line ending, then sentence
 import os
 import pty
 import random
+import resource
 import select
 import signal
 import subprocess
@@ -23,7 +26,7 @@ import time
 import tty
 
 import harness
-from harness import check, run_case
+from harness import check, run_case, seal
 
 DECODE, DATA, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 MB = 1024 * 1024
@@ -208,4 +211,42 @@ def case_signals():
     check(b"6 messages decoded, 1 rejected" in err, f"pipe: --stats: {err[:300]!r}")
 
 
-run_case({"noise": case_noise, "signals": case_signals}, CASE)
+def case_tables():
+    # 48 tables: RMC and GGA from 24 talkers, round after round, so that files are closed and
+    # opened again many times.
+    talkers = [a + b for a in "ABCDEFGHIJKL" for b in "PQ"]
+    rounds = 6
+    lines = []
+    for r in range(rounds):
+        for t in talkers:
+            lines.append(seal(f"{t}RMC,16495{r}.00,A,4221.71114,N,07105.44878,W,0.145,156.78,"
+                              "311214,,,A"))
+            lines.append(seal(f"{t}GGA,16495{r}.00,4221.71114,N,07105.44878,W,1,06,2.80,46.6,"
+                              "M,-33.2,M,,"))
+    data = "".join(lines).encode()
+
+    def low_limit():
+        resource.setrlimit(resource.RLIMIT_NOFILE, (12, 12))
+
+    with tempfile.TemporaryDirectory() as tmp:
+        for what, limit in (("the default limit", None), ("RLIMIT_NOFILE 12", low_limit)):
+            d = os.path.join(tmp, "limited" if limit else "default")
+            p = subprocess.run([DECODE, "--quiet", "--format", "csv", "--output-dir", d],
+                               input=data, capture_output=True, timeout=60, preexec_fn=limit)
+            check(p.returncode == 0, f"{what}: exit status {p.returncode}: {p.stderr[:300]!r}")
+            files = sorted(os.listdir(d)) if os.path.isdir(d) else []
+            want_files = sorted(f"{t}{k}.csv" for t in talkers for k in ("RMC", "GGA"))
+            check(files == want_files, f"{what}: {len(files)} tables of {len(want_files)}")
+            for name in files:
+                with open(os.path.join(d, name), encoding="ascii") as f:
+                    rows = f.read().splitlines()
+                check(len(rows) == rounds + 1, f"{what}: {name}: {len(rows)} rows")
+                check(rows[0].startswith("time,") and
+                      sum(1 for row in rows if row.startswith("time,")) == 1,
+                      f"{what}: {name}: one header row: {rows[:3]}")
+                times = [row.split(",")[0] for row in rows[1:]]
+                check(times == [f"16:49:5{r}.00" for r in range(rounds)],
+                      f"{what}: {name}: rows in input order: {times}")
+
+
+run_case({"noise": case_noise, "signals": case_signals, "tables": case_tables}, CASE)
