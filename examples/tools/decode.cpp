@@ -236,9 +236,76 @@ class progress {
   std::chrono::steady_clock::time_point last_{};
 };
 
+// What seawire-decode says on stderr about the input, line by line (rejected lines with every
+// format but json, tables that cannot be written, sentences left out of the tables): at most
+// max_log_lines lines a second, so that a flood of bad input cannot flood stderr. The lines held
+// back are counted, and their number said before the next line let out, and at the end.
+class stderr_log {
+ public:
+  static constexpr std::uint64_t max_log_lines = 100;
+
+  explicit stderr_log(progress& shown) : progress_(shown) {}
+  stderr_log(const stderr_log&) = delete;
+  stderr_log& operator=(const stderr_log&) = delete;
+  ~stderr_log() { finish(); }
+
+  // Whether a line may be written now (the caller writes it); false counts it as held back.
+  [[nodiscard]] bool allow() {
+    const auto now = std::chrono::steady_clock::now();
+    if (written_ == 0 || now - since_ >= std::chrono::seconds(1)) {
+      finish();
+      since_ = now;
+      written_ = 0;
+    }
+    if (written_ >= max_log_lines) {
+      ++held_;
+      return false;
+    }
+    ++written_;
+    progress_.erase();
+    return true;
+  }
+
+  // Says how many lines were held back since the last it said, if any.
+  void finish() {
+    if (held_ == 0) return;
+    progress_.erase();
+    std::fprintf(stderr,
+                 "seawire-decode: ... %llu more line%s like these not shown (at most %llu a "
+                 "second are; --stats counts every rejected line by error)\n",
+                 static_cast<unsigned long long>(held_), held_ == 1 ? "" : "s",
+                 static_cast<unsigned long long>(max_log_lines));
+    held_ = 0;
+  }
+
+ private:
+  progress& progress_;
+  std::chrono::steady_clock::time_point since_{};  // the start of this second's lines
+  std::uint64_t written_ = 0;                      // lines written since then
+  std::uint64_t held_ = 0;                         // lines held back, not said yet
+};
+
+// --stats counts messages by type, and --format csv sentences left out of the tables by
+// address, for at most this many types each: garbage that parses as sentences of ever new
+// addresses is counted as "other types" beyond, so memory stays bounded.
+constexpr std::size_t max_counted_types = 4096;
+
+// Adds one to `counts[key]`, or to `others` once `counts` holds max_counted_types keys.
+void count_type(std::map<std::string, std::uint64_t, std::less<>>& counts, std::uint64_t& others,
+                std::string_view key) {
+  if (const auto it = counts.find(key); it != counts.end()) {
+    ++it->second;
+  } else if (counts.size() < max_counted_types) {
+    counts.emplace(std::string(key), 1);
+  } else {
+    ++others;
+  }
+}
+
 class decoder {
  public:
-  decoder(const options& o, progress& shown) : opt_(o), out_(stdout), progress_(shown), in_(o.in) {
+  decoder(const options& o, progress& shown)
+      : opt_(o), out_(stdout), progress_(shown), log_(shown), in_(o.in) {
     // What the reader drops comes as items of its own, in order with the messages.
     reader_.report_drops(true);
     // The one table on stdout has its header even when no message of its type comes.
@@ -282,21 +349,30 @@ class decoder {
           }
           t->out->flush();
           if (t->out->failed()) {
-            std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
-                         std::strerror(t->out->error()));
+            if (log_.allow())
+              std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
+                           std::strerror(t->out->error()));
             ++table_failures_;
           }
         }
         for (const auto& [type, n] : not_tabled_) {
+          if (!log_.allow()) continue;
           std::fprintf(stderr,
                        "seawire-decode: %llu %s sentence%s left out of the CSV output: no "
                        "message describes their fields\n",
                        static_cast<unsigned long long>(n), type.c_str(), n == 1 ? "" : "s");
         }
+        if (other_not_tabled_ > 0 && log_.allow()) {
+          std::fprintf(stderr,
+                       "seawire-decode: %llu more sentences of other types left out of the CSV "
+                       "output: no message describes their fields\n",
+                       static_cast<unsigned long long>(other_not_tabled_));
+        }
         break;
       default: break;
     }
     out_.flush();
+    log_.finish();
   }
 
   [[nodiscard]] std::uint64_t decoded() const { return decoded_; }
@@ -326,6 +402,9 @@ class decoder {
     if (!by_type_.empty()) std::fprintf(stderr, "  by type:\n");
     for (const auto& [type, n] : by_type_)
       std::fprintf(stderr, "    %-20s %llu\n", type.c_str(), static_cast<unsigned long long>(n));
+    if (other_types_ > 0)
+      std::fprintf(stderr, "    %-20s %llu\n", "(other types)",
+                   static_cast<unsigned long long>(other_types_));
     bool any_error = false;
     for (std::size_t e = 0; e < by_error_.size(); ++e) {
       if (by_error_[e] == 0) continue;
@@ -652,7 +731,7 @@ class decoder {
             if (opt_.line_buffered) t->out->flush();
           }
         } else {
-          ++not_tabled_[std::string(type)];
+          count_type(not_tabled_, other_not_tabled_, type);
         }
         break;
       case format::geojson:
@@ -663,7 +742,7 @@ class decoder {
       case format::none: break;
     }
     ++decoded_;
-    if (opt_.stats) ++by_type_[std::string(counted)];
+    if (opt_.stats) count_type(by_type_, other_types_, counted);
     if (opt_.line_buffered) out_.flush();
   }
 
@@ -753,9 +832,9 @@ class decoder {
       if (t.file != nullptr) break;
       const int e = errno;
       if ((e == EMFILE || e == ENFILE) && close_least_used()) continue;
-      progress_.erase();
-      std::fprintf(stderr, "seawire-decode: cannot %s %s: %s\n", t.created ? "reopen" : "create",
-                   t.name.c_str(), std::strerror(e));
+      if (log_.allow())
+        std::fprintf(stderr, "seawire-decode: cannot %s %s: %s\n", t.created ? "reopen" : "create",
+                     t.name.c_str(), std::strerror(e));
       ++table_failures_;
       return false;
     }
@@ -772,9 +851,9 @@ class decoder {
     t.out->flush();
     const bool ok = !t.out->failed();
     if (!ok) {
-      progress_.erase();
-      std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t.name.c_str(),
-                   std::strerror(t.out->error()));
+      if (log_.allow())
+        std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t.name.c_str(),
+                     std::strerror(t.out->error()));
       ++table_failures_;
     }
     t.out.reset();
@@ -821,9 +900,9 @@ class decoder {
       if (opt_.line_buffered) out_.flush();
     } else {
       // stdout keeps only good sentences; the reasons go to stderr, in order with them.
+      if (!log_.allow()) return;
       out_.flush();
       if (stdout_table_ != nullptr) stdout_table_->out->flush();
-      progress_.erase();
       std::fprintf(stderr, "seawire-decode: line %llu: %.*s: %.*s\n",
                    static_cast<unsigned long long>(line), static_cast<int>(name(e).size()),
                    name(e).data(), static_cast<int>(detail.size()), detail.data());
@@ -893,6 +972,7 @@ class decoder {
   std::size_t policy_address_size_ = policy_address_.size() + 1;  // none yet
   tools::output out_;
   progress& progress_;
+  stderr_log log_;
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
   input in_;
@@ -908,12 +988,14 @@ class decoder {
   std::uint64_t decoded_ = 0;
   std::uint64_t rejected_ = 0;
   std::uint64_t reencode_failures_ = 0;
-  std::map<std::string, std::uint64_t> by_type_;
+  std::map<std::string, std::uint64_t, std::less<>> by_type_;
+  std::uint64_t other_types_ = 0;  // messages of types past max_counted_types
   std::array<std::uint64_t, 256> by_error_{};
   std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
-  std::size_t open_tables_ = 0;                      // tables whose file is open
-  std::uint64_t table_clock_ = 0;                    // counts the rows, for last_used
-  std::map<std::string, std::uint64_t> not_tabled_;  // unknown sentences, by address
+  std::size_t open_tables_ = 0;                                   // tables whose file is open
+  std::uint64_t table_clock_ = 0;                                 // counts the rows, for last_used
+  std::map<std::string, std::uint64_t, std::less<>> not_tabled_;  // unknown sentences, by address
+  std::uint64_t other_not_tabled_ = 0;  // those of addresses past max_counted_types
   std::uint64_t table_failures_ = 0;
   csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
   tools::tracks tracks_;

@@ -8,11 +8,15 @@ signals  SIGTERM or SIGINT while reading a terminal or a pipe that stays open: w
          line by line when stdin is a terminal, in blocks to a pipe.
 tables   --format csv --output-dir with more types than files may be open (RLIMIT_NOFILE 12, and
          more than the 32 kept open): every table whole, its header once, rows in input order.
+logs     a flood of bad lines (and of sentences no table has): stderr shows at most 100 lines a
+         second, and says how many it held back; the two add up to every line.
 noise    megabytes of zeros or random bytes without a line ending, then sentences: decided on,
          read in linear time and bounded memory, the sentences after the noise all decoded.
 """
 
+import math
 import os
+import re
 import pty
 import random
 import resource
@@ -249,4 +253,59 @@ def case_tables():
                       f"{what}: {name}: rows in input order: {times}")
 
 
-run_case({"noise": case_noise, "signals": case_signals, "tables": case_tables}, CASE)
+def said(err):
+    """(lines shown, lines held back as the program says) of seawire-decode's stderr."""
+    shown = held = 0
+    for line in err.decode().splitlines():
+        m = re.fullmatch(r"seawire-decode: \.\.\. (\d+) more lines? like these not shown \(at most "
+                         r"100 a second are; --stats counts every rejected line by error\)", line)
+        if m:
+            held += int(m.group(1))
+        elif line.startswith("seawire-decode: ") and " decoded, " not in line:
+            shown += 1
+    return shown, held
+
+
+def case_logs():
+    n = 300000
+    bad = seal("GPRMC,16495x.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A").encode()
+    good = sentences()
+    data = bad * n + good
+    start = time.monotonic()
+    p = subprocess.run([DECODE, "--quiet", "--format", "nmea", "--stats"], input=data,
+                       capture_output=True, timeout=120)
+    seconds = time.monotonic() - start
+    shown, held = said(p.stderr)
+    print(f"{n} bad lines: {seconds:.2f} s, {shown} lines shown, {held} held back, "
+          f"{len(p.stderr)} bytes on stderr")
+    check(p.returncode == 1, f"bad lines: exit status {p.returncode}")
+    check(shown + held == n, f"bad lines: {shown} shown + {held} held back != {n}")
+    check(100 <= shown <= 100 * (math.ceil(seconds) + 1),
+          f"bad lines: {shown} shown in {seconds:.1f} s")
+    lines = p.stderr.decode().splitlines()
+    check(lines[0].startswith("seawire-decode: line 1: bad_time: GPRMC field 1 (time)"),
+          f"bad lines: the first shown: {lines[0]!r}")
+    check(f"0 messages decoded, {n} rejected".encode() in p.stderr or
+          b"messages decoded, %d rejected" % n in p.stderr, "bad lines: --stats counts them all")
+    check(p.stdout == subprocess.run([DECODE, "--quiet", "--format", "nmea"], input=good,
+                                     capture_output=True, timeout=60).stdout,
+          "bad lines: the good sentences after them")
+
+    # Sentences of 6000 addresses no message describes, to CSV tables: one line each on stderr,
+    # the addresses past the 4096 counted one by one counted together.
+    def address(i):
+        return "PZ" + "".join("ABCDEFGHIJKLMNOPQRSTUVWXYZ"[i // 26 ** k % 26] for k in range(3))
+    data = "".join(seal(f"{address(i)},1,2") for i in range(6000)).encode()
+    with tempfile.TemporaryDirectory() as tmp:
+        p = subprocess.run([DECODE, "--quiet", "--format", "csv", "--output-dir", tmp, "--stats"],
+                           input=data, capture_output=True, timeout=120)
+    shown, held = said(p.stderr)
+    print(f"6000 unknown addresses: {shown} lines shown, {held} held back")
+    check(p.returncode == 0, f"unknown addresses: exit status {p.returncode}")
+    check(shown + held == 4097, f"unknown addresses: {shown} shown + {held} held back")
+    check(shown <= 300, f"unknown addresses: {shown} shown")
+    check(b"(other types)" in p.stderr and re.search(rb"\(other types\) +1904\n", p.stderr),
+          f"unknown addresses: --stats: {p.stderr[-400:]!r}")
+
+
+run_case({"logs": case_logs, "noise": case_noise, "signals": case_signals, "tables": case_tables}, CASE)
