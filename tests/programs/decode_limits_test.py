@@ -3,6 +3,8 @@
 
     decode_limits_test.py <seawire-decode> <examples/data> <case>
 
+noise    megabytes of zeros or random bytes without a line ending, then sentences: decided on,
+         read in linear time and bounded memory, the sentences after the noise all decoded.
 signals  SIGTERM or SIGINT while reading a terminal or a pipe that stays open: what was read is
          decoded and written, --stats printed, exit status 128 + the signal's number; output
          line by line when stdin is a terminal, in blocks to a pipe.
@@ -10,15 +12,13 @@ tables   --format csv --output-dir with more types than files may be open (RLIMI
          more than the 32 kept open): every table whole, its header once, rows in input order.
 logs     a flood of bad lines (and of sentences no table has): stderr shows at most 100 lines a
          second, and says how many it held back; the two add up to every line.
-noise    megabytes of zeros or random bytes without a line ending, then sentences: decided on,
-         read in linear time and bounded memory, the sentences after the noise all decoded.
 """
 
 import math
 import os
-import re
 import pty
 import random
+import re
 import resource
 import select
 import signal
@@ -29,7 +29,6 @@ import threading
 import time
 import tty
 
-import harness
 from harness import check, run_case, seal
 
 DECODE, DATA, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -160,6 +159,17 @@ def caught(pid, sig, seconds=20):
     return False
 
 
+def stopped(p, sig, what):
+    """Sends `sig` to `p` and returns its (stdout, stderr) once it exits (killed after 20 s)."""
+    p.send_signal(sig)
+    try:
+        return p.communicate(timeout=20)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        check(False, f"{what}: still running 20 s after signal {sig}")
+        return p.communicate()
+
+
 def case_signals():
     lines = sentences().splitlines(keepends=True)[:6]
     check(all(line.endswith(b"\r\n") for line in lines), "the sample's lines end in CR LF")
@@ -178,13 +188,7 @@ def case_signals():
     os.write(master, lines[5].rstrip(b"\r\n"))
     early = read_for(p.stdout.fileno(), 20, until=want[4])
     check(early == b"".join(want[:5]), f"pty: five messages before the signal: {early[-200:]!r}")
-    p.send_signal(signal.SIGTERM)
-    try:
-        out, err = p.communicate(timeout=20)
-    except subprocess.TimeoutExpired:
-        p.kill()
-        out, err = p.communicate()
-        check(False, "pty: still running 20 s after SIGTERM")
+    out, err = stopped(p, signal.SIGTERM, "pty")
     os.close(master)
     check(p.returncode == 143, f"pty: SIGTERM: exit status {p.returncode}, expected 143")
     check(out == want[5], f"pty: the sixth message after the signal: {out[:200]!r}")
@@ -200,13 +204,7 @@ def case_signals():
     early = read_for(p.stdout.fileno(), 1)
     check(early == b"", f"pipe: block-buffered, nothing written yet: {early[:200]!r}")
     time.sleep(0.5)  # the chunk read before the signal comes
-    p.send_signal(signal.SIGINT)
-    try:
-        out, err = p.communicate(timeout=20)
-    except subprocess.TimeoutExpired:
-        p.kill()
-        out, err = p.communicate()
-        check(False, "pipe: still running 20 s after SIGINT")
+    out, err = stopped(p, signal.SIGINT, "pipe")
     check(p.returncode == 130, f"pipe: SIGINT: exit status {p.returncode}, expected 130")
     out_lines = out.splitlines(keepends=True)
     check(out_lines[:6] == want, f"pipe: every message after the signal: {out[:300]!r}")
@@ -308,4 +306,5 @@ def case_logs():
           f"unknown addresses: --stats: {p.stderr[-400:]!r}")
 
 
-run_case({"logs": case_logs, "noise": case_noise, "signals": case_signals, "tables": case_tables}, CASE)
+run_case({"logs": case_logs, "noise": case_noise, "signals": case_signals,
+          "tables": case_tables}, CASE)
