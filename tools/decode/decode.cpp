@@ -8,6 +8,7 @@
 // and CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp, which gathers
 // positions from the same walk. See --help, and tools/decode/README.md for the manual.
 
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -16,6 +17,7 @@
 #include <array>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -66,6 +68,10 @@ using seawire::tools::n2k_pgns;
 // A CAN log line longer than this is no line of any log format (a canboat FAST line of 223
 // bytes has about 700 characters).
 constexpr std::size_t max_log_line = 4096;
+// --input auto decides within this much input, or this many lines neither a sentence nor a CAN
+// log line: it then reads sentences.
+constexpr std::size_t max_undecided = 64 * 1024;
+constexpr int max_undecided_lines = 16;
 
 // Whether `line` is a CAN log line of a format seawire reads (and not a sentence).
 bool is_can_log_line(std::string_view line) {
@@ -146,12 +152,14 @@ struct csv_headers<nmea::message_set<Ms...>> {
 };
 using all_headers = csv_headers<all_messages>;
 
-// One CSV table: a file of its own (--output-dir) with its header written once.
+// One CSV table: a file of its own (--output-dir) with its header written once, or stdout.
 struct csv_table {
   std::string name;  // for errors: the file's path, or "stdout"
   std::FILE* file = nullptr;
-  std::unique_ptr<tools::output> out;
+  std::unique_ptr<tools::output> out;  // while the table is open
   bool header = false;
+  bool created = false;         // the file was created (later opened to append)
+  std::uint64_t last_used = 0;  // when a row last went to it, for closing the least recent
   csv_table() = default;
   csv_table(const csv_table&) = delete;
   csv_table& operator=(const csv_table&) = delete;
@@ -160,6 +168,10 @@ struct csv_table {
     if (file != nullptr) std::fclose(file);
   }
 };
+
+// At most this many tables' files are open at once (and fewer when the process may open fewer
+// files): the least recently used one is closed to open another, and opened again to append.
+constexpr std::size_t max_open_tables = 32;
 
 // Rejected input shows at most this much of its line.
 constexpr std::size_t max_input_shown = 256;
@@ -224,9 +236,76 @@ class progress {
   std::chrono::steady_clock::time_point last_{};
 };
 
+// What seawire-decode says on stderr about the input, line by line (rejected lines with every
+// format but json, tables that cannot be written, sentences left out of the tables): at most
+// max_log_lines lines a second, so that a flood of bad input cannot flood stderr. The lines held
+// back are counted, and their number said before the next line let out, and at the end.
+class stderr_log {
+ public:
+  static constexpr std::uint64_t max_log_lines = 100;
+
+  explicit stderr_log(progress& shown) : progress_(shown) {}
+  stderr_log(const stderr_log&) = delete;
+  stderr_log& operator=(const stderr_log&) = delete;
+  ~stderr_log() { finish(); }
+
+  // Whether a line may be written now (the caller writes it); false counts it as held back.
+  [[nodiscard]] bool allow() {
+    const auto now = std::chrono::steady_clock::now();
+    if (written_ == 0 || now - since_ >= std::chrono::seconds(1)) {
+      finish();
+      since_ = now;
+      written_ = 0;
+    }
+    if (written_ >= max_log_lines) {
+      ++held_;
+      return false;
+    }
+    ++written_;
+    progress_.erase();
+    return true;
+  }
+
+  // Says how many lines were held back since the last it said, if any.
+  void finish() {
+    if (held_ == 0) return;
+    progress_.erase();
+    std::fprintf(stderr,
+                 "seawire-decode: ... %llu more line%s like these not shown (at most %llu a "
+                 "second are; --stats counts every rejected line by error)\n",
+                 static_cast<unsigned long long>(held_), held_ == 1 ? "" : "s",
+                 static_cast<unsigned long long>(max_log_lines));
+    held_ = 0;
+  }
+
+ private:
+  progress& progress_;
+  std::chrono::steady_clock::time_point since_{};  // the start of this second's lines
+  std::uint64_t written_ = 0;                      // lines written since then
+  std::uint64_t held_ = 0;                         // lines held back, not said yet
+};
+
+// --stats counts messages by type, and --format csv sentences left out of the tables by
+// address, for at most this many types each: garbage that parses as sentences of ever new
+// addresses is counted as "other types" beyond, so memory stays bounded.
+constexpr std::size_t max_counted_types = 4096;
+
+// Adds one to `counts[key]`, or to `others` once `counts` holds max_counted_types keys.
+void count_type(std::map<std::string, std::uint64_t, std::less<>>& counts, std::uint64_t& others,
+                std::string_view key) {
+  if (const auto it = counts.find(key); it != counts.end()) {
+    ++it->second;
+  } else if (counts.size() < max_counted_types) {
+    counts.emplace(std::string(key), 1);
+  } else {
+    ++others;
+  }
+}
+
 class decoder {
  public:
-  decoder(const options& o, progress& shown) : opt_(o), out_(stdout), progress_(shown), in_(o.in) {
+  decoder(const options& o, progress& shown)
+      : opt_(o), out_(stdout), progress_(shown), log_(shown), in_(o.in) {
     // What the reader drops comes as items of its own, in order with the messages.
     reader_.report_drops(true);
     // The one table on stdout has its header even when no message of its type comes.
@@ -262,24 +341,38 @@ class decoder {
       case format::svg: tracks_.write_svg(out_); break;
       case format::csv:
         for (auto& [type, t] : tables_) {
-          if (t == nullptr) continue;  // could not be created: reported then
+          // Not created, or closed: reported then.
+          if (t == nullptr || t->out == nullptr) continue;
+          if (t->file != nullptr) {
+            close_table(*t);
+            continue;
+          }
           t->out->flush();
           if (t->out->failed()) {
-            std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
-                         std::strerror(t->out->error()));
+            if (log_.allow())
+              std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
+                           std::strerror(t->out->error()));
             ++table_failures_;
           }
         }
         for (const auto& [type, n] : not_tabled_) {
+          if (!log_.allow()) continue;
           std::fprintf(stderr,
                        "seawire-decode: %llu %s sentence%s left out of the CSV output: no "
                        "message describes their fields\n",
                        static_cast<unsigned long long>(n), type.c_str(), n == 1 ? "" : "s");
         }
+        if (other_not_tabled_ > 0 && log_.allow()) {
+          std::fprintf(stderr,
+                       "seawire-decode: %llu more sentences of other types left out of the CSV "
+                       "output: no message describes their fields\n",
+                       static_cast<unsigned long long>(other_not_tabled_));
+        }
         break;
       default: break;
     }
     out_.flush();
+    log_.finish();
   }
 
   [[nodiscard]] std::uint64_t decoded() const { return decoded_; }
@@ -309,6 +402,9 @@ class decoder {
     if (!by_type_.empty()) std::fprintf(stderr, "  by type:\n");
     for (const auto& [type, n] : by_type_)
       std::fprintf(stderr, "    %-20s %llu\n", type.c_str(), static_cast<unsigned long long>(n));
+    if (other_types_ > 0)
+      std::fprintf(stderr, "    %-20s %llu\n", "(other types)",
+                   static_cast<unsigned long long>(other_types_));
     bool any_error = false;
     for (std::size_t e = 0; e < by_error_.size(); ++e) {
       if (by_error_[e] == 0) continue;
@@ -358,33 +454,43 @@ class decoder {
   // ---- which input ----
 
   // Keeps what came until a line says what the input is: a CAN log line, or a sentence (or
-  // anything else once 16 lines or 64 KiB have said nothing either way), and reads it so.
+  // anything else once max_undecided_lines lines or max_undecided bytes have said nothing either
+  // way), and reads it so. Each byte is looked at once, however the input is cut: what was
+  // scanned is not scanned again when more comes.
   void decide(std::string_view chunk, bool at_end) {
     pending_.append(chunk);
-    std::string_view rest = pending_;
+    std::string_view rest = std::string_view(pending_).substr(scanned_);
     std::optional<bool> can;
     // A sentence or a binary frame needs no whole line to be recognised (a live binary stream
-    // may have no newline for a long time).
-    if (const std::size_t at = rest.find_first_not_of(" \t\r\n"); at != std::string_view::npos) {
-      const auto c = static_cast<unsigned char>(rest[at]);
-      if (c == '$' || c == '!' || c == 0xAB) can = false;
+    // may have no newline for a long time): the first byte that is not blank says so.
+    if (!seen_text_) {
+      if (const std::size_t at = rest.find_first_not_of(" \t\r\n"); at != std::string_view::npos) {
+        const auto c = static_cast<unsigned char>(rest[at]);
+        if (c == '$' || c == '!' || c == 0xAB) can = false;
+        seen_text_ = true;
+      }
     }
-    int lines = 0;
     while (!rest.empty() && !can) {
       const std::size_t nl = rest.find('\n');
       if (nl == std::string_view::npos && !at_end && rest.size() <= max_log_line) break;
       const std::string_view line = rest.substr(0, nl);
-      rest.remove_prefix(nl == std::string_view::npos ? rest.size() : nl + 1);
+      const std::size_t used = nl == std::string_view::npos ? rest.size() : nl + 1;
+      rest.remove_prefix(used);
+      scanned_ += used;
       const std::size_t at = line.find_first_not_of(" \t\r");
       if (at == std::string_view::npos) continue;
       if (line[at] == '$' || line[at] == '!') {
         can = false;
       } else if (is_can_log_line(line)) {
         can = true;
-      } else if (++lines >= 16) {
+      } else if (++undecided_lines_ >= max_undecided_lines) {
         can = false;
       }
     }
+    // Noise without a line ending says nothing either way: past this much, the stream reader
+    // takes it (it drops what is outside sentences and frames, and resyncs at '$', '!' and AB),
+    // so what comes after the noise is read, and memory stays bounded.
+    if (!can && pending_.size() >= max_undecided) can = false;
     if (!can && !at_end) return;
     in_ = can.value_or(false) ? input::n2k : input::nmea;
     if (in_ == input::n2k && opt_.fmt == format::nmea) {
@@ -625,7 +731,7 @@ class decoder {
             if (opt_.line_buffered) t->out->flush();
           }
         } else {
-          ++not_tabled_[std::string(type)];
+          count_type(not_tabled_, other_not_tabled_, type);
         }
         break;
       case format::geojson:
@@ -636,7 +742,7 @@ class decoder {
       case format::none: break;
     }
     ++decoded_;
-    if (opt_.stats) ++by_type_[std::string(counted)];
+    if (opt_.stats) count_type(by_type_, other_types_, counted);
     if (opt_.line_buffered) out_.flush();
   }
 
@@ -685,11 +791,21 @@ class decoder {
     return (std::filesystem::path(opt_.output_dir) / (type + ".csv")).string();
   }
 
-  // The table of a type: stdout when there is no output directory (one type only), else the
-  // type's file, created when its first message comes. nullptr when it cannot be created.
+  // The table of a type, open: stdout when there is no output directory (one type only), else
+  // the type's file, created when its first message comes. nullptr when it cannot be created
+  // (or opened again, or was not written).
   csv_table* table(std::string_view type) {
+    ++table_clock_;
     auto it = tables_.find(type);
-    if (it != tables_.end()) return it->second.get();
+    if (it != tables_.end()) {
+      csv_table* t = it->second.get();
+      if (t != nullptr && t->out == nullptr && !open_table(*t)) {
+        it->second.reset();
+        return nullptr;
+      }
+      if (t != nullptr) t->last_used = table_clock_;
+      return t;
+    }
     auto t = std::make_unique<csv_table>();
     if (opt_.output_dir.empty()) {
       t->name = "stdout";
@@ -697,20 +813,66 @@ class decoder {
       stdout_table_ = t.get();
     } else {
       t->name = table_path(std::string(type));
-      t->file = std::fopen(t->name.c_str(), "w");
-      if (t->file == nullptr) {
-        const int e = errno;
-        progress_.erase();
-        std::fprintf(stderr, "seawire-decode: cannot create %s: %s\n", t->name.c_str(),
-                     std::strerror(e));
-        ++table_failures_;
+      if (!open_table(*t)) {
         tables_.emplace(std::string(type), nullptr);
         return nullptr;
       }
-      // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
-      t->out = std::make_unique<tools::output>(t->file, 16 * 1024);
     }
+    t->last_used = table_clock_;
     return tables_.emplace(std::string(type), std::move(t)).first->second.get();
+  }
+
+  // Opens a table's file: created (replacing a file of its name) the first time, appended to
+  // after. The least recently used table is closed first when max_open_tables are open, or when
+  // the process may open no more files. False, reported, when it cannot be opened.
+  bool open_table(csv_table& t) {
+    if (open_tables_ >= max_open_tables) close_least_used();
+    for (;;) {
+      t.file = std::fopen(t.name.c_str(), t.created ? "a" : "w");
+      if (t.file != nullptr) break;
+      const int e = errno;
+      if ((e == EMFILE || e == ENFILE) && close_least_used()) continue;
+      if (log_.allow())
+        std::fprintf(stderr, "seawire-decode: cannot %s %s: %s\n", t.created ? "reopen" : "create",
+                     t.name.c_str(), std::strerror(e));
+      ++table_failures_;
+      return false;
+    }
+    t.created = true;
+    ++open_tables_;
+    // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
+    t.out = std::make_unique<tools::output>(t.file, 16 * 1024);
+    return true;
+  }
+
+  // Writes out a table and closes its file; false, reported, when the writing failed (the
+  // table is then written no more). The table stays, to be opened again.
+  bool close_table(csv_table& t) {
+    t.out->flush();
+    const bool ok = !t.out->failed();
+    if (!ok) {
+      if (log_.allow())
+        std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t.name.c_str(),
+                     std::strerror(t.out->error()));
+      ++table_failures_;
+    }
+    t.out.reset();
+    std::fclose(t.file);
+    t.file = nullptr;
+    --open_tables_;
+    return ok;
+  }
+
+  // Closes the open file table used least recently; false when none is open.
+  bool close_least_used() {
+    std::unique_ptr<csv_table>* least = nullptr;
+    for (auto& [type, t] : tables_) {
+      if (t == nullptr || t->file == nullptr) continue;
+      if (least == nullptr || t->last_used < (*least)->last_used) least = &t;
+    }
+    if (least == nullptr) return false;
+    if (!close_table(**least)) least->reset();
+    return true;
   }
 
   // ---- errors ----
@@ -738,9 +900,9 @@ class decoder {
       if (opt_.line_buffered) out_.flush();
     } else {
       // stdout keeps only good sentences; the reasons go to stderr, in order with them.
+      if (!log_.allow()) return;
       out_.flush();
       if (stdout_table_ != nullptr) stdout_table_->out->flush();
-      progress_.erase();
       std::fprintf(stderr, "seawire-decode: line %llu: %.*s: %.*s\n",
                    static_cast<unsigned long long>(line), static_cast<int>(name(e).size()),
                    name(e).data(), static_cast<int>(detail.size()), detail.data());
@@ -810,10 +972,14 @@ class decoder {
   std::size_t policy_address_size_ = policy_address_.size() + 1;  // none yet
   tools::output out_;
   progress& progress_;
+  stderr_log log_;
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
   input in_;
-  std::string pending_;  // input kept until the first line says what it is
+  std::string pending_;      // input kept until the first line says what it is
+  std::size_t scanned_ = 0;  // pending_'s bytes already looked at (whole lines)
+  bool seen_text_ = false;   // a byte not blank was looked at
+  int undecided_lines_ = 0;  // lines that were neither a sentence nor a CAN log line
   bool unusable_ = false;
   nmea2000::log_reader<n2k_pgns> n2k_;
   std::string carry_;      // a CAN log line cut by the chunk boundary
@@ -822,13 +988,74 @@ class decoder {
   std::uint64_t decoded_ = 0;
   std::uint64_t rejected_ = 0;
   std::uint64_t reencode_failures_ = 0;
-  std::map<std::string, std::uint64_t> by_type_;
+  std::map<std::string, std::uint64_t, std::less<>> by_type_;
+  std::uint64_t other_types_ = 0;  // messages of types past max_counted_types
   std::array<std::uint64_t, 256> by_error_{};
   std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
-  std::map<std::string, std::uint64_t> not_tabled_;  // unknown sentences, by address
+  std::size_t open_tables_ = 0;                                   // tables whose file is open
+  std::uint64_t table_clock_ = 0;                                 // counts the rows, for last_used
+  std::map<std::string, std::uint64_t, std::less<>> not_tabled_;  // unknown sentences, by address
+  std::uint64_t other_not_tabled_ = 0;  // those of addresses past max_counted_types
   std::uint64_t table_failures_ = 0;
   csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
   tools::tracks tracks_;
+};
+
+// SIGINT or SIGTERM, once one came (0 before): reading stops, and what was read is decoded and
+// written as at the end of the input.
+volatile std::sig_atomic_t stop_signal = 0;
+extern "C" void on_stop_signal(int sig) { stop_signal = sig; }
+
+// SIGINT and SIGTERM are blocked but while waiting for input (ppoll lets them in atomically, so
+// one that comes while a chunk is decoded is not lost, and none interrupts a write).
+class stop_signals {
+ public:
+  stop_signals() {
+    sigemptyset(&stop_);
+    sigaddset(&stop_, SIGINT);
+    sigaddset(&stop_, SIGTERM);
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+    sigprocmask(SIG_BLOCK, &stop_, &waiting_);
+    sigdelset(&waiting_, SIGINT);
+    sigdelset(&waiting_, SIGTERM);
+  }
+  stop_signals(const stop_signals&) = delete;
+  stop_signals& operator=(const stop_signals&) = delete;
+  // A second signal, while the output is written, ends the program at once. One that came while
+  // the input ended (held back since) counts as the first.
+  ~stop_signals() {
+    const timespec now{0, 0};
+    for (int sig = 0; (sig = sigtimedwait(&stop_, nullptr, &now)) > 0;) {
+      if (stop_signal == 0) stop_signal = sig;
+    }
+    struct sigaction sa {};
+    sa.sa_handler = SIG_DFL;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+    sigprocmask(SIG_UNBLOCK, &stop_, nullptr);
+  }
+
+  // Waits for input on `fd` (or its end, or an error), `ms` milliseconds at most (-1: no limit):
+  // true when there is some, false after `ms` or when a stop signal came.
+  [[nodiscard]] bool wait_input(int fd, int ms) const {
+    pollfd p{fd, POLLIN, 0};
+    for (;;) {
+      if (stop_signal != 0) return false;
+      timespec t{ms / 1000, static_cast<long>(ms % 1000) * 1000000L};
+      const int n = ::ppoll(&p, 1, ms < 0 ? nullptr : &t, &waiting_);
+      if (n < 0 && errno == EINTR) continue;
+      return n != 0;  // a poll error too: the read says what it is
+    }
+  }
+
+ private:
+  sigset_t stop_{};
+  sigset_t waiting_{};  // the mask while waiting: the one before, SIGINT and SIGTERM let in
 };
 
 int run(const options& o) {
@@ -846,12 +1073,18 @@ int run(const options& o) {
   tools::chunk_reader in(0);
   // Live streams: a line whose CR ended the input so far is let out after 50 ms without more.
   constexpr int quiet_ms = 50;
-  for (;;) {
-    if (o.line_buffered && !in.ready_within(quiet_ms)) d.quiet();
-    const std::string_view chunk = in.next();
-    if (chunk.empty()) break;
-    d.feed(chunk);
-    shown.update(chunk.size(), d.decoded(), d.rejected());
+  {
+    const stop_signals signals;
+    for (;;) {
+      if (o.line_buffered && !signals.wait_input(0, quiet_ms) && stop_signal == 0) d.quiet();
+      // read() is called only once input is there, so it does not block with the signals
+      // held back.
+      if (!signals.wait_input(0, -1)) break;
+      const std::string_view chunk = in.next();
+      if (chunk.empty()) break;
+      d.feed(chunk);
+      shown.update(chunk.size(), d.decoded(), d.rejected());
+    }
   }
   shown.done();
   d.finish();
@@ -865,6 +1098,8 @@ int run(const options& o) {
     std::fprintf(stderr, "seawire-decode: writing stdout: %s\n", std::strerror(d.stdout_error()));
     return 1;
   }
+  // Stopped by a signal: the shell's status for it (128 + its number), whatever was decoded.
+  if (stop_signal != 0) return 128 + static_cast<int>(stop_signal);
   return d.all_good() ? 0 : 1;
 }
 
@@ -887,7 +1122,8 @@ int main(int argc, char** argv) {
       "  seawire-decode --format none --stats < mission.nmea      # check a log\n"
       "  seawire-decode --format nmea < raw.nmea > clean.nmea     # canonical sentences only\n"
       "  candump -L can0 | seawire-decode --line-buffered         # NMEA 2000 from a CAN bus\n"
-      "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error.",
+      "Exit status: 0 every message decoded, 1 some input rejected, 2 usage error, 130/143 "
+      "stopped by SIGINT/SIGTERM (what was read is decoded and written first).",
       "seawire-decode"};
   std::string fmt = "json";
   std::string checksum;
@@ -945,8 +1181,9 @@ int main(int argc, char** argv) {
                "at the end, print counts by message type and by error, and the stream reader's "
                "dropped-byte counters, to stderr (e.g. --format none --stats)");
   app.add_flag("--line-buffered", o.line_buffered,
-               "flush stdout after each message, for live streams (default: large buffers, "
-               "for speed); a sentence ended by CR alone is let out once the input has been "
+               "flush stdout after each message, for live streams (the default when stdin or "
+               "stdout is a terminal; otherwise large buffers, for speed); a sentence ended by CR "
+               "alone is let out once the input has been "
                "quiet for 50 ms (e.g. nc vehicle 29500 | seawire-decode --line-buffered)");
   app.set_version_flag("--version", "seawire-decode (seawire " SEAWIRE_VERSION_STRING ")");
   if (const auto status = seawire::tools::parse_command_line(app, argc, argv)) return *status;
@@ -961,6 +1198,8 @@ int main(int argc, char** argv) {
     o.log_format = nmea2000::log_format_named(log_format);
     if (o.in == input::automatic) o.in = input::n2k;
   }
+  // Output a person watches, or input a person types (a terminal or pty), goes out line by line.
+  if (::isatty(0) == 1 || ::isatty(1) == 1) o.line_buffered = true;
   if (o.in == input::n2k && o.fmt == format::nmea) {
     std::fprintf(stderr,
                  "seawire-decode: --format nmea re-encodes sentences; a CAN log has none (use "
