@@ -1149,14 +1149,17 @@ int main(int argc, char** argv) {
   std::string log_format;
   app.add_option("-i,--input", in,
                  "what stdin holds: nmea (sentences and ANELLO binary frames), n2k (a CAN log of "
-                 "NMEA 2000 frames: candump -L, candump, canboat PLAIN/FAST or Yacht Devices RAW, "
-                 "told apart line by line), or auto (default: the first sentence or CAN log "
+                 "NMEA 2000 frames: candump -L, candump, canboat PLAIN/FAST, Yacht Devices RAW or "
+                 "Actisense N2K ASCII, told apart line by line), or auto (default: the first "
+                 "sentence or CAN log "
                  "line decides; e.g. --input n2k)")
       ->check(CLI::IsMember({"auto", "nmea", "n2k"}));
   app.add_option("--log-format", log_format,
                  "read every line of the CAN log in this format rather than telling them apart: "
-                 "candump_log, candump, canboat or yd_raw (implies --input n2k)")
-      ->check(CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw"}));
+                 "candump_log, candump, canboat, yd_raw or actisense_n2k_ascii (implies --input "
+                 "n2k)")
+      ->check(
+          CLI::IsMember({"candump_log", "candump", "canboat", "yd_raw", "actisense_n2k_ascii"}));
   app.add_flag("-q,--quiet", o.quiet,
                "no progress line (shown on stderr when it is a terminal and stdin a file)");
   CLI::Option* checksum_opt =
