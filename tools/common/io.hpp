@@ -15,9 +15,6 @@
 #include <string_view>
 #include <vector>
 
-// The library's copy of short pieces, without a call (an internal header: the programs use its
-// public API otherwise).
-#include "seawire/detail/copy.hpp"
 
 namespace seawire::tools {
 
@@ -171,11 +168,12 @@ class output {
     if (size_ == buf_.size()) flush();
     buf_[size_++] = c;
   }
-  // Inline for the short pieces JSON is made of (at most 32 bytes, while 32 are free); the
-  // rest, and every piece near the end of the buffer, goes out of line.
+  // Inline for the short pieces JSON is made of (at most 32 bytes, while 32 are free; memcpy of
+  // them measured as fast as a hand-made copy); the rest, and every piece near the end of the
+  // buffer, goes out of line.
   [[gnu::always_inline]] void put(std::string_view s) {
     if (s.size() <= 32 && buf_.size() - size_ >= 32) [[likely]] {
-      seawire::detail::copy_bytes(buf_.data() + size_, s.data(), s.size());
+      std::memcpy(buf_.data() + size_, s.data(), s.size());
       size_ += s.size();
       return;
     }

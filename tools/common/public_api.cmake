@@ -1,8 +1,6 @@
 # SPDX-License-Identifier: BSL-1.0
 # The programs and examples are written against the public API only: no seawire detail
-# namespace, no header under seawire/detail/. One exception: the programs' output buffer
-# (tools/common/io.hpp) copies its short pieces with the library's own copy_bytes, rather than
-# keeping a second copy of it. Run: cmake -DSOURCE_DIR=<root> -P public_api.cmake
+# namespace, no header under seawire/detail/. Run: cmake -DSOURCE_DIR=<root> -P public_api.cmake
 file(GLOB_RECURSE sources "${SOURCE_DIR}/tools/*.cpp" "${SOURCE_DIR}/tools/*.hpp"
      "${SOURCE_DIR}/examples/*.cpp" "${SOURCE_DIR}/examples/*.hpp")
 set(found "")
@@ -13,9 +11,6 @@ foreach(source IN LISTS sources)
     math(EXPR n "${n} + 1")
     # Other libraries' detail namespaces (nlohmann::detail::exception) are theirs to expose.
     string(REGEX REPLACE "nlohmann::detail::" "" line "${line}")
-    if(source MATCHES "/tools/common/io\\.hpp$")
-      string(REGEX REPLACE "seawire/detail/copy\\.hpp|seawire::detail::copy_bytes" "" line "${line}")
-    endif()
     if(line MATCHES "detail::" OR line MATCHES "seawire/detail/")
       string(APPEND found "\n  ${source}:${n}: ${line}")
     endif()
