@@ -15,7 +15,6 @@
 #include <string_view>
 #include <vector>
 
-
 namespace seawire::tools {
 
 inline constexpr std::size_t read_chunk = 64 * 1024;
