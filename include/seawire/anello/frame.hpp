@@ -70,16 +70,6 @@ template <class T>
 inline constexpr T not_available = std::numeric_limits<T>::max();
 }  // namespace detail
 
-struct sensor_frame_raw;
-
-namespace detail {
-// One field of `frame` in physical units, read through its table row alone (defined below the
-// table).
-template <auto ValueMember>
-[[nodiscard]] constexpr seawire::detail::member_type_t<ValueMember> physical_of(
-    const sensor_frame_raw& frame) noexcept;
-}  // namespace detail
-
 /// The payload as the wire carries it, in wire order. Each member: field number, spec name,
 /// wire resolution. A default-constructed frame says "nothing available" in every field.
 struct sensor_frame_raw {
@@ -103,66 +93,28 @@ struct sensor_frame_raw {
   std::int16_t air_temp = detail::not_available<std::int16_t>;          // 18 0.1 degC
   std::uint16_t pressure = detail::not_available<std::uint16_t>;        // 19 1 hPa
 
-  // Physical values, each its sensor_fields row; nullopt when the field says "not available".
-  [[nodiscard]] constexpr std::optional<double> heading_deg() const noexcept {
-    return detail::physical_of<&sensor_values::heading_deg>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> latitude_deg() const noexcept {
-    return detail::physical_of<&sensor_values::latitude_deg>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> longitude_deg() const noexcept {
-    return detail::physical_of<&sensor_values::longitude_deg>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> sog_mps() const noexcept {
-    return detail::physical_of<&sensor_values::sog_mps>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> cog_deg() const noexcept {
-    return detail::physical_of<&sensor_values::cog_deg>(*this);
-  }
+  // Physical values; nullopt when the field says "not available".
+  [[nodiscard]] constexpr std::optional<double> heading_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> latitude_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> longitude_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> sog_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> cog_deg() const noexcept;
   /// Also nullopt for a time past the year 292 million, which time_ms cannot hold.
-  [[nodiscard]] constexpr std::optional<time_ms> gps_time() const noexcept {
-    return detail::physical_of<&sensor_values::gps_time>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> alt_msl_m() const noexcept {
-    return detail::physical_of<&sensor_values::alt_msl_m>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> geoid_sep_m() const noexcept {
-    return detail::physical_of<&sensor_values::geoid_sep_m>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> hdop() const noexcept {
-    return detail::physical_of<&sensor_values::hdop>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<int> fix_quality() const noexcept {
-    return detail::physical_of<&sensor_values::fix_quality>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> motor_pct() const noexcept {
-    return detail::physical_of<&sensor_values::motor_pct>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> rudder_pct() const noexcept {
-    return detail::physical_of<&sensor_values::rudder_pct>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> stw_mps() const noexcept {
-    return detail::physical_of<&sensor_values::stw_mps>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> wind_speed_abs_mps() const noexcept {
-    return detail::physical_of<&sensor_values::wind_speed_abs_mps>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> wind_dir_abs_deg() const noexcept {
-    return detail::physical_of<&sensor_values::wind_dir_abs_deg>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> wind_speed_rel_mps() const noexcept {
-    return detail::physical_of<&sensor_values::wind_speed_rel_mps>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> wind_dir_rel_deg() const noexcept {
-    return detail::physical_of<&sensor_values::wind_dir_rel_deg>(*this);
-  }
+  [[nodiscard]] constexpr std::optional<time_ms> gps_time() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> alt_msl_m() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> geoid_sep_m() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> hdop() const noexcept;
+  [[nodiscard]] constexpr std::optional<int> fix_quality() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> motor_pct() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> rudder_pct() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> stw_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_speed_abs_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_dir_abs_deg() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_speed_rel_mps() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> wind_dir_rel_deg() const noexcept;
   /// Both 0x7FFF and 0xFFFF are "not available": see the air_temp_c row of sensor_fields.
-  [[nodiscard]] constexpr std::optional<double> air_temp_c() const noexcept {
-    return detail::physical_of<&sensor_values::air_temp_c>(*this);
-  }
-  [[nodiscard]] constexpr std::optional<double> pressure_hpa() const noexcept {
-    return detail::physical_of<&sensor_values::pressure_hpa>(*this);
-  }
+  [[nodiscard]] constexpr std::optional<double> air_temp_c() const noexcept;
+  [[nodiscard]] constexpr std::optional<double> pressure_hpa() const noexcept;
 
   [[nodiscard]] constexpr bool operator==(const sensor_frame_raw&) const noexcept = default;
 };
@@ -390,7 +342,8 @@ consteval std::size_t row_of() noexcept {
   (std::make_index_sequence<sensor_field_count>{});
 }
 
-// An accessor costs the compiler one row, not a walk over all 19.
+// One field of `frame` in physical units, read through its row alone (an accessor costs the
+// compiler one row, not a walk over all 19).
 template <auto ValueMember>
 [[nodiscard]] constexpr seawire::detail::member_type_t<ValueMember> physical_of(
     const sensor_frame_raw& frame) noexcept {
@@ -515,6 +468,65 @@ constexpr void for_each_field(const sensor_frame_raw& frame, Fn&& fn) {
     fn(field.name, field.to_physical(frame.*field_type::raw_member));
     return true;
   });
+}
+
+// The accessors: each is its table row read through detail::physical_of.
+constexpr std::optional<double> sensor_frame_raw::heading_deg() const noexcept {
+  return detail::physical_of<&sensor_values::heading_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::latitude_deg() const noexcept {
+  return detail::physical_of<&sensor_values::latitude_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::longitude_deg() const noexcept {
+  return detail::physical_of<&sensor_values::longitude_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::sog_mps() const noexcept {
+  return detail::physical_of<&sensor_values::sog_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::cog_deg() const noexcept {
+  return detail::physical_of<&sensor_values::cog_deg>(*this);
+}
+constexpr std::optional<time_ms> sensor_frame_raw::gps_time() const noexcept {
+  return detail::physical_of<&sensor_values::gps_time>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::alt_msl_m() const noexcept {
+  return detail::physical_of<&sensor_values::alt_msl_m>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::geoid_sep_m() const noexcept {
+  return detail::physical_of<&sensor_values::geoid_sep_m>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::hdop() const noexcept {
+  return detail::physical_of<&sensor_values::hdop>(*this);
+}
+constexpr std::optional<int> sensor_frame_raw::fix_quality() const noexcept {
+  return detail::physical_of<&sensor_values::fix_quality>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::motor_pct() const noexcept {
+  return detail::physical_of<&sensor_values::motor_pct>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::rudder_pct() const noexcept {
+  return detail::physical_of<&sensor_values::rudder_pct>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::stw_mps() const noexcept {
+  return detail::physical_of<&sensor_values::stw_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_speed_abs_mps() const noexcept {
+  return detail::physical_of<&sensor_values::wind_speed_abs_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_dir_abs_deg() const noexcept {
+  return detail::physical_of<&sensor_values::wind_dir_abs_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_speed_rel_mps() const noexcept {
+  return detail::physical_of<&sensor_values::wind_speed_rel_mps>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::wind_dir_rel_deg() const noexcept {
+  return detail::physical_of<&sensor_values::wind_dir_rel_deg>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::air_temp_c() const noexcept {
+  return detail::physical_of<&sensor_values::air_temp_c>(*this);
+}
+constexpr std::optional<double> sensor_frame_raw::pressure_hpa() const noexcept {
+  return detail::physical_of<&sensor_values::pressure_hpa>(*this);
 }
 
 }  // namespace seawire::anello
