@@ -4,8 +4,9 @@
 // a GeoJSON or SVG track, or nothing but a verdict). A thin program over the library:
 // anello::stream_reader cuts the stream into sentences and frames, message_set::visit decodes each
 // sentence by its address; a CAN log goes through nmea2000::log_reader (lines, fast packets).
-// Every message, of every wire, goes out through one place (decoder::deliver): the library's JSON
-// and CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp, which gathers
+// The decoder finds the messages and counts them; every message, of every wire, goes to the
+// writer of the format asked for (one class per format, behind `sink`): the library's JSON and
+// CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp, which gathers
 // positions from the same walk. See --help, and tools/decode/README.md for the manual.
 
 #include <poll.h>
@@ -30,6 +31,7 @@
 #include <string_view>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "cli.hpp"
@@ -302,17 +304,439 @@ void count_type(std::map<std::string, std::uint64_t, std::less<>>& counts, std::
   }
 }
 
-class decoder {
+// ---- the output formats ----
+//
+// Each format is a writer of its own: it is given every message decoded (message), every line
+// rejected and every run of bytes the stream reader dropped (rejected), and the end of the input
+// (finish). The decoder decides what is a message, and counts; the writer what goes out, where.
+
+// Where a message came from, for the writers that need more than the message: a sentence's line
+// and view (--format nmea re-encodes it), a PGN's CAN frame header (JSON and CSV write it).
+struct origin {
+  const nmea::framed_line* line = nullptr;
+  const nmea::sentence_view* sentence = nullptr;
+  const nmea2000::message_header* head = nullptr;
+};
+
+// A line rejected, or a run of bytes dropped: where, why, and at most max_input_shown bytes of
+// it.
+struct rejection {
+  std::uint64_t line = 0;
+  errc ec = errc::ok;
+  std::uint16_t field = 0;
+  std::string_view detail;
+  std::string_view input;
+};
+
+// Why a writer could not write a message (a sentence --format nmea cannot re-encode): its line
+// is rejected for it.
+struct refusal {
+  errc ec = errc::ok;
+  std::uint16_t field = 0;
+  std::string detail;
+};
+
+// What every format has: stdout, and the stderr log, where rejected input is said (at the log's
+// rate, after stdout is written out, so that the two stay in order where they meet).
+class stdio_writer {
  public:
-  decoder(const options& o, progress& shown)
-      : opt_(o), out_(stdout), progress_(shown), log_(shown), in_(o.in) {
-    // What the reader drops comes as items of its own, in order with the messages.
-    reader_.report_drops(true);
+  // Why a writer cannot write a CAN log (nullptr: it can).
+  static constexpr const char* refuses_can_log = nullptr;
+
+  stdio_writer(const options& o, progress& shown) : log_(shown), line_buffered_(o.line_buffered) {}
+  stdio_writer(const stdio_writer&) = delete;
+  stdio_writer& operator=(const stdio_writer&) = delete;
+
+  void rejected(const rejection& r) {
+    if (!log_.allow()) return;
+    out_.flush();
+    say(r);
+  }
+
+  void finish() {
+    out_.flush();
+    log_.finish();
+  }
+
+  [[nodiscard]] const tools::output& out() const { return out_; }
+  // Whether every table was written (the formats without tables: true).
+  [[nodiscard]] static bool tables_written() { return true; }
+
+ protected:
+  static void say(const rejection& r) {
+    const std::string_view e = name(r.ec);
+    std::fprintf(stderr, "seawire-decode: line %llu: %.*s: %.*s\n",
+                 static_cast<unsigned long long>(r.line), static_cast<int>(e.size()), e.data(),
+                 static_cast<int>(r.detail.size()), r.detail.data());
+  }
+
+  // After each message: out at once on a live stream.
+  void written() {
+    if (line_buffered_) out_.flush();
+  }
+
+  tools::output out_{stdout};
+  stderr_log log_;
+  bool line_buffered_;
+};
+
+// --format json: one JSON object a line per message, and per rejected line, on stdout in order.
+class json_writer : public stdio_writer {
+ public:
+  using stdio_writer::stdio_writer;
+
+  template <class M>
+  std::optional<refusal> message(std::string_view /*type*/, const M& msg, const origin& from) {
+    if constexpr (nmea2000::pgn_like<M>) {
+      nmea2000::write_json(out_, *from.head, msg);
+    } else if constexpr (std::is_same_v<M, raw_pgn>) {
+      nmea2000::write_json_raw(out_, *from.head, msg.payload);
+    } else if constexpr (std::is_same_v<M, anello::sensor_frame_raw>) {
+      anello::write_json(out_, msg);
+    } else {
+      nmea::write_json(out_, msg);
+    }
+    out_.put('\n');
+    written();
+    return std::nullopt;
+  }
+
+  void rejected(const rejection& r) {
+    nmea::write_json_error(out_, r.line, r.ec, r.field, r.detail, r.input);
+    out_.put('\n');
+    written();
+  }
+};
+
+// --format nmea: each sentence re-encoded by the rules seawire sends by, each frame as its bytes.
+class nmea_writer : public stdio_writer {
+ public:
+  static constexpr const char* refuses_can_log =
+      "seawire-decode: the input is a CAN log (NMEA 2000), which has no sentences to re-encode: "
+      "use --format json (and seawire-encode --output FORMAT to write a log again)\n";
+
+  using stdio_writer::stdio_writer;
+
+  template <class M>
+  std::optional<refusal> message(std::string_view /*type*/, const M& msg, const origin& from) {
+    if constexpr (std::is_same_v<M, anello::sensor_frame_raw>) {
+      const anello::frame_bytes bytes = anello::encode_frame(msg);
+      out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    } else if constexpr (!nmea2000::pgn_like<M> && !std::is_same_v<M, raw_pgn>) {
+      if (std::optional<refusal> no = reencode(*from.sentence, msg)) return no;
+    }
+    written();
+    return std::nullopt;
+  }
+
+ private:
+  template <class M>
+  std::optional<refusal> reencode(const nmea::sentence_view& s, const M& msg) {
+    std::array<char, 1100> buf;
+    result<std::size_t> r;
+    if constexpr (std::is_same_v<M, nmea::unknown_sentence>) {
+      // Not ours to interpret: the same start ('$' or '!') and fields, sealed the way seawire
+      // seals.
+      nmea::writer w(std::span<char>(buf.data(), buf.size()));
+      w.begin(s.address, s.start);
+      if (s.field_count > 0) {
+        w.next_field();
+        w.put(s.body);
+      }
+      r = w.seal();
+    } else {
+      r = nmea::encode_to(msg, std::span<char>(buf.data(), buf.size()));
+    }
+    if (!r) {
+      std::string detail = std::string(s.address) + " cannot be re-encoded";
+      if (r.field != 0) {
+        const nmea::field_about a = all_messages::about_field(s.address, r.field, s.field_count);
+        detail += ": field " + std::to_string(r.field) + " (" + std::string(a.name);
+        if (!a.part.empty()) detail += "'s " + std::string(a.part);
+        detail += ")";
+      }
+      detail += ": " + std::string(seawire::message(r.ec));
+      return refusal{r.ec, r.field, std::move(detail)};
+    }
+    out_.put(std::string_view(buf.data(), r.value));
+    return std::nullopt;
+  }
+};
+
+// --format none: nothing on stdout (the verdict is the exit status, and --stats).
+class none_writer : public stdio_writer {
+ public:
+  using stdio_writer::stdio_writer;
+
+  template <class M>
+  std::optional<refusal> message(std::string_view /*type*/, const M& /*msg*/,
+                                 const origin& /*from*/) {
+    written();
+    return std::nullopt;
+  }
+};
+
+// --format csv: a table per type, in a file of its own (--output-dir) or the one on stdout.
+class csv_writer : public stdio_writer {
+ public:
+  csv_writer(const options& o, progress& shown) : stdio_writer(o, shown), dir_(o.output_dir) {
     // The one table on stdout has its header even when no message of its type comes.
-    if (o.fmt == format::csv && o.output_dir.empty() && o.types.size() == 1) {
+    if (o.output_dir.empty() && o.types.size() == 1) {
       if (csv_table* t = table(o.types.front()))
         t->header = all_headers::write(o.types.front(), *t->out);
     }
+  }
+
+  template <class M>
+  std::optional<refusal> message(std::string_view type, const M& msg, const origin& from) {
+    if constexpr (walkable<M>) {
+      if (csv_table* t = table(type)) {
+        if (!t->header) csv_header<M>(*t->out);
+        t->header = true;
+        csv_row(*t->out, msg, from.head);
+        if (line_buffered_) t->out->flush();
+      }
+    } else {
+      count_type(not_tabled_, other_not_tabled_, type);
+    }
+    written();
+    return std::nullopt;
+  }
+
+  void rejected(const rejection& r) {
+    if (!log_.allow()) return;
+    out_.flush();
+    if (stdout_table_ != nullptr) stdout_table_->out->flush();
+    say(r);
+  }
+
+  void finish() {
+    for (auto& [type, t] : tables_) {
+      // Not created, or closed: reported then.
+      if (t == nullptr || t->out == nullptr) continue;
+      if (t->file != nullptr) {
+        close_table(*t);
+        continue;
+      }
+      t->out->flush();
+      if (t->out->failed()) {
+        if (log_.allow())
+          std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
+                       std::strerror(t->out->error()));
+        ++table_failures_;
+      }
+    }
+    for (const auto& [type, n] : not_tabled_) {
+      if (!log_.allow()) continue;
+      std::fprintf(stderr,
+                   "seawire-decode: %llu %s sentence%s left out of the CSV output: no "
+                   "message describes their fields\n",
+                   static_cast<unsigned long long>(n), type.c_str(), n == 1 ? "" : "s");
+    }
+    if (other_not_tabled_ > 0 && log_.allow()) {
+      std::fprintf(stderr,
+                   "seawire-decode: %llu more sentences of other types left out of the CSV "
+                   "output: no message describes their fields\n",
+                   static_cast<unsigned long long>(other_not_tabled_));
+    }
+    stdio_writer::finish();
+  }
+
+  [[nodiscard]] bool tables_written() const { return table_failures_ == 0; }
+
+ private:
+  [[nodiscard]] std::string table_path(const std::string& type) const {
+    return (std::filesystem::path(dir_) / (type + ".csv")).string();
+  }
+
+  // The table of a type, open: stdout when there is no output directory (one type only), else
+  // the type's file, created when its first message comes. nullptr when it cannot be created
+  // (or opened again, or was not written).
+  csv_table* table(std::string_view type) {
+    ++table_clock_;
+    auto it = tables_.find(type);
+    if (it != tables_.end()) {
+      csv_table* t = it->second.get();
+      if (t != nullptr && t->out == nullptr && !open_table(*t)) {
+        it->second.reset();
+        return nullptr;
+      }
+      if (t != nullptr) t->last_used = table_clock_;
+      return t;
+    }
+    auto t = std::make_unique<csv_table>();
+    if (dir_.empty()) {
+      t->name = "stdout";
+      t->out = std::make_unique<tools::output>(stdout);
+      stdout_table_ = t.get();
+    } else {
+      t->name = table_path(std::string(type));
+      if (!open_table(*t)) {
+        tables_.emplace(std::string(type), nullptr);
+        return nullptr;
+      }
+    }
+    t->last_used = table_clock_;
+    return tables_.emplace(std::string(type), std::move(t)).first->second.get();
+  }
+
+  // Opens a table's file: created (replacing a file of its name) the first time, appended to
+  // after. The least recently used table is closed first when max_open_tables are open, or when
+  // the process may open no more files. False, reported, when it cannot be opened.
+  bool open_table(csv_table& t) {
+    if (open_tables_ >= max_open_tables) close_least_used();
+    for (;;) {
+      t.file = std::fopen(t.name.c_str(), t.created ? "a" : "w");
+      if (t.file != nullptr) break;
+      const int e = errno;
+      if ((e == EMFILE || e == ENFILE) && close_least_used()) continue;
+      if (log_.allow())
+        std::fprintf(stderr, "seawire-decode: cannot %s %s: %s\n", t.created ? "reopen" : "create",
+                     t.name.c_str(), std::strerror(e));
+      ++table_failures_;
+      return false;
+    }
+    t.created = true;
+    ++open_tables_;
+    // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
+    t.out = std::make_unique<tools::output>(t.file, 16 * 1024);
+    return true;
+  }
+
+  // Writes out a table and closes its file; false, reported, when the writing failed (the
+  // table is then written no more). The table stays, to be opened again.
+  bool close_table(csv_table& t) {
+    t.out->flush();
+    const bool ok = !t.out->failed();
+    if (!ok) {
+      if (log_.allow())
+        std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t.name.c_str(),
+                     std::strerror(t.out->error()));
+      ++table_failures_;
+    }
+    t.out.reset();
+    std::fclose(t.file);
+    t.file = nullptr;
+    --open_tables_;
+    return ok;
+  }
+
+  // Closes the open file table used least recently; false when none is open.
+  bool close_least_used() {
+    std::unique_ptr<csv_table>* least = nullptr;
+    for (auto& [type, t] : tables_) {
+      if (t == nullptr || t->file == nullptr) continue;
+      if (least == nullptr || t->last_used < (*least)->last_used) least = &t;
+    }
+    if (least == nullptr) return false;
+    if (!close_table(**least)) least->reset();
+    return true;
+  }
+
+  std::string dir_;  // --output-dir; empty: the one table goes to stdout
+  std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
+  std::size_t open_tables_ = 0;                                   // tables whose file is open
+  std::uint64_t table_clock_ = 0;                                 // counts the rows, for last_used
+  std::map<std::string, std::uint64_t, std::less<>> not_tabled_;  // unknown sentences, by address
+  std::uint64_t other_not_tabled_ = 0;  // those of addresses past max_counted_types
+  std::uint64_t table_failures_ = 0;
+  csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
+};
+
+// --format geojson and svg: the tracks of every source of positions (track.hpp), written at the
+// end.
+class track_writer : public stdio_writer {
+ public:
+  using stdio_writer::stdio_writer;
+
+  template <class M>
+  std::optional<refusal> message(std::string_view type, const M& msg, const origin& /*from*/) {
+    if constexpr (walkable<M>) tracks_.add(type, msg);
+    written();
+    return std::nullopt;
+  }
+
+ protected:
+  tools::tracks tracks_;
+};
+
+class geojson_writer : public track_writer {
+ public:
+  using track_writer::track_writer;
+  void finish() {
+    tracks_.write_geojson(out_);
+    stdio_writer::finish();
+  }
+};
+
+class svg_writer : public track_writer {
+ public:
+  using track_writer::track_writer;
+  void finish() {
+    tracks_.write_svg(out_);
+    stdio_writer::finish();
+  }
+};
+
+// The writer of the format asked for: the one place the formats are told apart.
+class sink {
+ public:
+  sink(const options& o, progress& shown) : w_(make(o, shown)) {}
+
+  // A message decoded (a sentence, known or not; a PGN, described or not; a frame), of JSON type
+  // `type`; a refusal when it cannot be written.
+  template <class M>
+  [[nodiscard]] std::optional<refusal> message(std::string_view type, const M& msg,
+                                               const origin& from) {
+    return std::visit([&](auto& w) { return w.message(type, msg, from); }, w_);
+  }
+  void rejected(const rejection& r) {
+    std::visit([&](auto& w) { w.rejected(r); }, w_);
+  }
+  void finish() {
+    std::visit([](auto& w) { w.finish(); }, w_);
+  }
+
+  // Why the format cannot be written of a CAN log (nullptr: it can).
+  [[nodiscard]] const char* refuses_can_log() const {
+    return std::visit(
+        [](const auto& w) { return std::remove_cvref_t<decltype(w)>::refuses_can_log; }, w_);
+  }
+  // stdout failed (the tables' failures are reported as they are found).
+  [[nodiscard]] const tools::output& out() const {
+    return std::visit([](const stdio_writer& w) -> const tools::output& { return w.out(); }, w_);
+  }
+  // Everything written: stdout and every table.
+  [[nodiscard]] bool all_written() const {
+    return !out().failed() && std::visit([](const auto& w) { return w.tables_written(); }, w_);
+  }
+
+ private:
+  using writers =
+      std::variant<json_writer, nmea_writer, none_writer, csv_writer, geojson_writer, svg_writer>;
+
+  static writers make(const options& o, progress& shown) {
+    switch (o.fmt) {
+      case format::nmea: return writers(std::in_place_type<nmea_writer>, o, shown);
+      case format::none: return writers(std::in_place_type<none_writer>, o, shown);
+      case format::csv: return writers(std::in_place_type<csv_writer>, o, shown);
+      case format::geojson: return writers(std::in_place_type<geojson_writer>, o, shown);
+      case format::svg: return writers(std::in_place_type<svg_writer>, o, shown);
+      case format::json: break;
+    }
+    return writers(std::in_place_type<json_writer>, o, shown);
+  }
+
+  writers w_;
+};
+
+class decoder {
+ public:
+  // Every message, rejected line and dropped run of bytes, and the end of the input, goes to
+  // `out`.
+  decoder(const options& o, sink& out) : opt_(o), out_(out), in_(o.in) {
+    // What the reader drops comes as items of its own, in order with the messages.
+    reader_.report_drops(true);
   }
 
   void feed(std::string_view chunk) {
@@ -336,43 +760,7 @@ class decoder {
       n2k_.flush();
     }
     while (const std::optional<anello::stream_item> item = reader_.finish()) handle(*item);
-    switch (opt_.fmt) {
-      case format::geojson: tracks_.write_geojson(out_); break;
-      case format::svg: tracks_.write_svg(out_); break;
-      case format::csv:
-        for (auto& [type, t] : tables_) {
-          // Not created, or closed: reported then.
-          if (t == nullptr || t->out == nullptr) continue;
-          if (t->file != nullptr) {
-            close_table(*t);
-            continue;
-          }
-          t->out->flush();
-          if (t->out->failed()) {
-            if (log_.allow())
-              std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
-                           std::strerror(t->out->error()));
-            ++table_failures_;
-          }
-        }
-        for (const auto& [type, n] : not_tabled_) {
-          if (!log_.allow()) continue;
-          std::fprintf(stderr,
-                       "seawire-decode: %llu %s sentence%s left out of the CSV output: no "
-                       "message describes their fields\n",
-                       static_cast<unsigned long long>(n), type.c_str(), n == 1 ? "" : "s");
-        }
-        if (other_not_tabled_ > 0 && log_.allow()) {
-          std::fprintf(stderr,
-                       "seawire-decode: %llu more sentences of other types left out of the CSV "
-                       "output: no message describes their fields\n",
-                       static_cast<unsigned long long>(other_not_tabled_));
-        }
-        break;
-      default: break;
-    }
-    out_.flush();
-    log_.finish();
+    out_.finish();
   }
 
   [[nodiscard]] std::uint64_t decoded() const { return decoded_; }
@@ -385,15 +773,8 @@ class decoder {
     if (const std::optional<anello::stream_item> item = reader_.flush()) handle(*item);
   }
 
-  [[nodiscard]] bool all_good() const {
-    return rejected_ == 0 && !out_.failed() && table_failures_ == 0;
-  }
   // The input cannot be written in the format asked for (a CAN log with --format nmea).
   [[nodiscard]] bool unusable() const { return unusable_; }
-  // stdout failed (the tables' failures are reported as they are found).
-  [[nodiscard]] bool stdout_failed() const { return out_.failed(); }
-  [[nodiscard]] int stdout_error() const { return out_.error(); }
-
   void print_stats() const {
     const anello::stream_stats& f = reader_.stats();
     std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected\n",
@@ -414,9 +795,9 @@ class decoder {
       std::fprintf(stderr, "    %-20.*s %llu\n", static_cast<int>(n.size()), n.data(),
                    static_cast<unsigned long long>(by_error_[e]));
     }
-    if (reencode_failures_ > 0)
+    if (refused_ > 0)
       std::fprintf(stderr, "    (%llu of them refused when re-encoded)\n",
-                   static_cast<unsigned long long>(reencode_failures_));
+                   static_cast<unsigned long long>(refused_));
     std::fprintf(
         stderr,
         "  input: %llu sentences, %llu frames; %llu noise bytes, %llu dropped bytes; "
@@ -493,11 +874,8 @@ class decoder {
     if (!can && pending_.size() >= max_undecided) can = false;
     if (!can && !at_end) return;
     in_ = can.value_or(false) ? input::n2k : input::nmea;
-    if (in_ == input::n2k && opt_.fmt == format::nmea) {
-      std::fprintf(stderr,
-                   "seawire-decode: the input is a CAN log (NMEA 2000), which has no sentences "
-                   "to re-encode: use --format json (and seawire-encode --output FORMAT to write "
-                   "a log again)\n");
+    if (const char* why = in_ == input::n2k ? out_.refuses_can_log() : nullptr) {
+      std::fputs(why, stderr);
       unusable_ = true;
       in_ = input::nmea;
       pending_.clear();
@@ -577,9 +955,10 @@ class decoder {
         std::snprintf(type_buf, sizeof type_buf, "PGN%u", static_cast<unsigned>(h.id.pgn));
     const std::string_view type(type_buf, static_cast<std::size_t>(n));
     if (!wanted(type)) return;
-    const bool known =
-        n2k_pgns::visit(h.id.pgn, payload, [&](const auto& msg) { deliver(type, type, msg, &h); });
-    if (!known) deliver(type, type, raw_pgn{payload}, &h);
+    const origin from{nullptr, nullptr, &h};
+    const bool known = n2k_pgns::visit(h.id.pgn, payload,
+                                       [&](const auto& msg) { deliver(type, type, msg, from); });
+    if (!known) deliver(type, type, raw_pgn{payload}, from);
   }
 
   void handle(const anello::stream_item& item) {
@@ -601,11 +980,7 @@ class decoder {
       return;
     }
     if (!wanted(anello::frame_json_type)) return;
-    if (opt_.fmt == format::nmea) {
-      const anello::frame_bytes bytes = anello::encode_frame(item.frame);
-      out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-    }
-    deliver(anello::frame_json_type, anello::frame_json_type, item.frame, nullptr);
+    deliver(anello::frame_json_type, anello::frame_json_type, item.frame, origin{});
   }
 
   // "AB00 field 1 (heading_deg) 361: value outside the range the spec allows", the value as
@@ -690,189 +1065,32 @@ class decoder {
   template <class M>
   void emit(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
     nmea::json_buffer<16> type_buf;
-    if (!opt_.types.empty() && !wanted(type_of(s, msg, type_buf))) return;
-    if (opt_.fmt == format::nmea && !reencode(l, s, msg)) return;
-    // The type names tables and tracks; the other formats have no use for it.
-    std::string_view type = type_buf.view();
-    if (type.empty() &&
-        (opt_.fmt == format::csv || opt_.fmt == format::geojson || opt_.fmt == format::svg))
-      type = type_of(s, msg, type_buf);
-    deliver(type, s.address, msg, nullptr);
+    const std::string_view type = type_of(s, msg, type_buf);
+    if (!wanted(type)) return;
+    deliver(type, s.address, msg, origin{&l, &s, nullptr});
   }
 
   // ---- every message, of every wire ----
 
-  // A message decoded (a sentence, known or not; a PGN, described or not; a frame) in the format
-  // asked for, the one place the formats are told apart (--format nmea is the caller's: it
-  // re-encodes by the wire). `type` is its JSON "type", `counted` what --stats counts it under,
-  // `head` the CAN frame's header of a PGN (nullptr for the others).
+  // A message decoded (a sentence, known or not; a PGN, described or not; a frame), to the
+  // writer. `type` is its JSON "type", `counted` what --stats counts it under. A sentence the
+  // writer refuses (--format nmea cannot re-encode it) is rejected.
   template <class M>
-  void deliver(std::string_view type, std::string_view counted, const M& msg,
-               const nmea2000::message_header* head) {
-    switch (opt_.fmt) {
-      case format::json:
-        if constexpr (nmea2000::pgn_like<M>) {
-          nmea2000::write_json(out_, *head, msg);
-        } else if constexpr (std::is_same_v<M, raw_pgn>) {
-          nmea2000::write_json_raw(out_, *head, msg.payload);
-        } else if constexpr (std::is_same_v<M, anello::sensor_frame_raw>) {
-          anello::write_json(out_, msg);
-        } else {
-          nmea::write_json(out_, msg);
-        }
-        out_.put('\n');
-        break;
-      case format::csv:
-        if constexpr (walkable<M>) {
-          if (csv_table* t = table(type)) {
-            if (!t->header) csv_header<M>(*t->out);
-            t->header = true;
-            csv_row(*t->out, msg, head);
-            if (opt_.line_buffered) t->out->flush();
-          }
-        } else {
-          count_type(not_tabled_, other_not_tabled_, type);
-        }
-        break;
-      case format::geojson:
-      case format::svg:
-        if constexpr (walkable<M>) tracks_.add(type, msg);
-        break;
-      case format::nmea:
-      case format::none: break;
+  void deliver(std::string_view type, std::string_view counted, const M& msg, const origin& from) {
+    if (const std::optional<refusal> no = out_.message(type, msg, from)) {
+      ++refused_;
+      reject(from.line->line, no->ec, no->field, no->detail, from.line->text);
+      return;
     }
     ++decoded_;
     if (opt_.stats) count_type(by_type_, other_types_, counted);
-    if (opt_.line_buffered) out_.flush();
   }
 
-  template <class M>
-  bool reencode(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
-    std::array<char, 1100> buf;
-    result<std::size_t> r;
-    if constexpr (std::is_same_v<M, nmea::unknown_sentence>) {
-      // Not ours to interpret: the same start ('$' or '!') and fields, sealed the way seawire
-      // seals.
-      nmea::writer w(std::span<char>(buf.data(), buf.size()));
-      w.begin(s.address, s.start);
-      if (s.field_count > 0) {
-        w.next_field();
-        w.put(s.body);
-      }
-      r = w.seal();
-    } else {
-      r = nmea::encode_to(msg, std::span<char>(buf.data(), buf.size()));
-    }
-    if (!r) {
-      ++reencode_failures_;
-      std::string detail = std::string(s.address) + " cannot be re-encoded";
-      if (r.field != 0) {
-        const nmea::field_about a = all_messages::about_field(s.address, r.field, s.field_count);
-        detail += ": field " + std::to_string(r.field) + " (" + std::string(a.name);
-        if (!a.part.empty()) detail += "'s " + std::string(a.part);
-        detail += ")";
-      }
-      detail += ": " + std::string(message(r.ec));
-      reject(l.line, r.ec, r.field, detail, l.text);
-      return false;
-    }
-    out_.put(std::string_view(buf.data(), r.value));
-    return true;
-  }
-
-  // ---- types, tables and tracks ----
+  // ---- types ----
 
   [[nodiscard]] bool wanted(std::string_view type) const {
     return opt_.types.empty() ||
            std::find(opt_.types.begin(), opt_.types.end(), type) != opt_.types.end();
-  }
-
-  [[nodiscard]] std::string table_path(const std::string& type) const {
-    return (std::filesystem::path(opt_.output_dir) / (type + ".csv")).string();
-  }
-
-  // The table of a type, open: stdout when there is no output directory (one type only), else
-  // the type's file, created when its first message comes. nullptr when it cannot be created
-  // (or opened again, or was not written).
-  csv_table* table(std::string_view type) {
-    ++table_clock_;
-    auto it = tables_.find(type);
-    if (it != tables_.end()) {
-      csv_table* t = it->second.get();
-      if (t != nullptr && t->out == nullptr && !open_table(*t)) {
-        it->second.reset();
-        return nullptr;
-      }
-      if (t != nullptr) t->last_used = table_clock_;
-      return t;
-    }
-    auto t = std::make_unique<csv_table>();
-    if (opt_.output_dir.empty()) {
-      t->name = "stdout";
-      t->out = std::make_unique<tools::output>(stdout);
-      stdout_table_ = t.get();
-    } else {
-      t->name = table_path(std::string(type));
-      if (!open_table(*t)) {
-        tables_.emplace(std::string(type), nullptr);
-        return nullptr;
-      }
-    }
-    t->last_used = table_clock_;
-    return tables_.emplace(std::string(type), std::move(t)).first->second.get();
-  }
-
-  // Opens a table's file: created (replacing a file of its name) the first time, appended to
-  // after. The least recently used table is closed first when max_open_tables are open, or when
-  // the process may open no more files. False, reported, when it cannot be opened.
-  bool open_table(csv_table& t) {
-    if (open_tables_ >= max_open_tables) close_least_used();
-    for (;;) {
-      t.file = std::fopen(t.name.c_str(), t.created ? "a" : "w");
-      if (t.file != nullptr) break;
-      const int e = errno;
-      if ((e == EMFILE || e == ENFILE) && close_least_used()) continue;
-      if (log_.allow())
-        std::fprintf(stderr, "seawire-decode: cannot %s %s: %s\n", t.created ? "reopen" : "create",
-                     t.name.c_str(), std::strerror(e));
-      ++table_failures_;
-      return false;
-    }
-    t.created = true;
-    ++open_tables_;
-    // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
-    t.out = std::make_unique<tools::output>(t.file, 16 * 1024);
-    return true;
-  }
-
-  // Writes out a table and closes its file; false, reported, when the writing failed (the
-  // table is then written no more). The table stays, to be opened again.
-  bool close_table(csv_table& t) {
-    t.out->flush();
-    const bool ok = !t.out->failed();
-    if (!ok) {
-      if (log_.allow())
-        std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t.name.c_str(),
-                     std::strerror(t.out->error()));
-      ++table_failures_;
-    }
-    t.out.reset();
-    std::fclose(t.file);
-    t.file = nullptr;
-    --open_tables_;
-    return ok;
-  }
-
-  // Closes the open file table used least recently; false when none is open.
-  bool close_least_used() {
-    std::unique_ptr<csv_table>* least = nullptr;
-    for (auto& [type, t] : tables_) {
-      if (t == nullptr || t->file == nullptr) continue;
-      if (least == nullptr || t->last_used < (*least)->last_used) least = &t;
-    }
-    if (least == nullptr) return false;
-    if (!close_table(**least)) least->reset();
-    return true;
   }
 
   // ---- errors ----
@@ -894,19 +1112,7 @@ class decoder {
     ++rejected_;
     ++by_error_[static_cast<std::size_t>(e)];
     if (input.size() > max_input_shown) input = input.substr(0, max_input_shown);
-    if (opt_.fmt == format::json) {
-      nmea::write_json_error(out_, line, e, field, detail, input);
-      out_.put('\n');
-      if (opt_.line_buffered) out_.flush();
-    } else {
-      // stdout keeps only good sentences; the reasons go to stderr, in order with them.
-      if (!log_.allow()) return;
-      out_.flush();
-      if (stdout_table_ != nullptr) stdout_table_->out->flush();
-      std::fprintf(stderr, "seawire-decode: line %llu: %.*s: %.*s\n",
-                   static_cast<unsigned long long>(line), static_cast<int>(name(e).size()),
-                   name(e).data(), static_cast<int>(detail.size()), detail.data());
-    }
+    out_.rejected(rejection{line, e, field, detail, input});
   }
 
   // ---- what the reader dropped ----
@@ -970,9 +1176,7 @@ class decoder {
   nmea::parse_policy policy_;  // policy_for's, for the address below
   std::array<char, 16> policy_address_{};
   std::size_t policy_address_size_ = policy_address_.size() + 1;  // none yet
-  tools::output out_;
-  progress& progress_;
-  stderr_log log_;
+  sink& out_;
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
   input in_;
@@ -987,18 +1191,10 @@ class decoder {
   std::uint64_t log_lines_ = 0;
   std::uint64_t decoded_ = 0;
   std::uint64_t rejected_ = 0;
-  std::uint64_t reencode_failures_ = 0;
+  std::uint64_t refused_ = 0;
   std::map<std::string, std::uint64_t, std::less<>> by_type_;
   std::uint64_t other_types_ = 0;  // messages of types past max_counted_types
   std::array<std::uint64_t, 256> by_error_{};
-  std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
-  std::size_t open_tables_ = 0;                                   // tables whose file is open
-  std::uint64_t table_clock_ = 0;                                 // counts the rows, for last_used
-  std::map<std::string, std::uint64_t, std::less<>> not_tabled_;  // unknown sentences, by address
-  std::uint64_t other_not_tabled_ = 0;  // those of addresses past max_counted_types
-  std::uint64_t table_failures_ = 0;
-  csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
-  tools::tracks tracks_;
 };
 
 // SIGINT or SIGTERM, once one came (0 before): reading stops, and what was read is decoded and
@@ -1069,7 +1265,8 @@ int run(const options& o) {
     }
   }
   progress shown(!o.quiet);
-  decoder d(o, shown);
+  sink out(o, shown);
+  decoder d(o, out);
   tools::chunk_reader in(0);
   // Live streams: a line whose CR ended the input so far is let out after 50 ms without more.
   constexpr int quiet_ms = 50;
@@ -1094,13 +1291,13 @@ int run(const options& o) {
     std::perror("seawire-decode: reading stdin");
     return 1;
   }
-  if (d.stdout_failed()) {
-    std::fprintf(stderr, "seawire-decode: writing stdout: %s\n", std::strerror(d.stdout_error()));
+  if (out.out().failed()) {
+    std::fprintf(stderr, "seawire-decode: writing stdout: %s\n", std::strerror(out.out().error()));
     return 1;
   }
   // Stopped by a signal: the shell's status for it (128 + its number), whatever was decoded.
   if (stop_signal != 0) return 128 + static_cast<int>(stop_signal);
-  return d.all_good() ? 0 : 1;
+  return d.rejected() == 0 && out.all_written() ? 0 : 1;
 }
 
 }  // namespace
