@@ -1300,9 +1300,9 @@ int run(const options& o) {
   return d.rejected() == 0 && out.all_written() ? 0 : 1;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// Reads the command line into `o`: the exit status when the program ends here (--help,
+// --version, a usage error), nullopt when it is to run.
+std::optional<int> parse_options(int argc, char** argv, options& o) {
   CLI::App app{
       "seawire-decode: decode NMEA-style sentences (Kingfisher CP*/PY*, Sandshark BF*/BP*, "
       "RobotX RX*, ANELLO inputs, standard RMC/GGA/RPM/RSA/VHW/VBW/VWR) and ANELLO 0xAB00 "
@@ -1325,7 +1325,6 @@ int main(int argc, char** argv) {
   std::string fmt = "json";
   std::string checksum;
   bool strict = false;
-  options o;
   app.add_option("-f,--format", fmt,
                  "json: one JSON object per message (default); nmea: each message re-encoded "
                  "canonically (uppercase checksum, CR LF); none: decode and validate only (e.g. "
@@ -1434,5 +1433,13 @@ int main(int argc, char** argv) {
                  : checksum == "ignore" ? nmea::checksum_policy::ignore
                                         : nmea::checksum_policy::verify_if_present;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  options o;
+  if (const std::optional<int> status = parse_options(argc, argv, o)) return *status;
   return run(o);
 }
