@@ -4,31 +4,29 @@
 // a GeoJSON or SVG track, or nothing but a verdict). A thin program over the library:
 // anello::stream_reader cuts the stream into sentences and frames, message_set::visit decodes each
 // sentence by its address; a CAN log goes through nmea2000::log_reader (lines, fast packets).
-// Every message, of every wire, goes out through one place (decoder::deliver): the library's JSON
-// and CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp, which gathers
-// positions from the same walk. See --help, and tools/decode/README.md for the manual.
+// The decoder finds the messages and counts them; every message, of every wire, goes to the
+// writer of the format asked for (writers.hpp: one class per format, behind `sink`): the
+// library's JSON and CSV writers, loops over the walk of its fields (walk.hpp), and track.hpp,
+// which gathers positions from the same walk. See --help, and tools/decode/README.md for the
+// manual.
 
 #include <poll.h>
-#include <sys/stat.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <chrono>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <map>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -39,27 +37,25 @@
 #include "seawire/anello/frame_json.hpp"
 #include "seawire/anello/stream.hpp"
 #include "seawire/error.hpp"
-#include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/error_text.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/sentence.hpp"
-#include "seawire/nmea/writer.hpp"
-#include "seawire/nmea2000/json.hpp"
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/nmea2000/pgns.hpp"
 #include "seawire/nmea2000/reader.hpp"
 #include "seawire/version.hpp"
-#include "seawire/walk.hpp"
-#include "track.hpp"
+#include "writers.hpp"
 
 namespace {
 
 using namespace seawire;
 using seawire::tools::all_messages;
+using seawire::tools::format;
+using seawire::tools::origin;
+using seawire::tools::sink;
 
-enum class format { json, nmea, none, csv, geojson, svg };
 // What stdin holds: sentences and ANELLO frames, or a CAN log (NMEA 2000); auto: the first line
 // that is not blank decides.
 enum class input { automatic, nmea, n2k };
@@ -82,237 +78,28 @@ bool is_can_log_line(std::string_view line) {
   return static_cast<bool>(nmea2000::parse_log_line(line));
 }
 
-struct options {
-  format fmt = format::json;
+// The output's options (writers.hpp), and the input's.
+struct options : tools::output_options {
   input in = input::automatic;
   // Sentences are read by the policy of the role that receives them (tools::receiving_policy);
   // these options change it for every role.
   bool strict = false;                            // the rules seawire sends by (CR LF too)
   std::optional<nmea::checksum_policy> checksum;  // this checksum rule
   bool stats = false;
-  bool line_buffered = false;
   bool quiet = false;
   std::optional<nmea2000::log_format> log_format;  // CAN logs: every line in this format
-  std::vector<std::string> types;  // only these types (the JSON "type"); empty: every type
-  std::string output_dir;          // --format csv: one <TYPE>.csv per type here
 };
-
-// A message of a PGN without a description: its payload, written as its bytes.
-struct raw_pgn {
-  std::span<const std::uint8_t> payload;
-};
-
-// The CSV table of a message type of any wire: its header row, and a message's row. A PGN's table
-// begins with the columns of the CAN frame's header (nmea2000::write_csv_header); every other
-// table is the message's fields alone.
-template <class M>
-void csv_header(tools::output& out) {
-  if constexpr (nmea2000::pgn_like<M>) {
-    nmea2000::write_csv_header<M>(out);
-  } else {
-    write_csv_columns<M>(out);
-  }
-}
-template <class M>
-void csv_row(tools::output& out, const M& msg, const nmea2000::message_header* head) {
-  if constexpr (nmea2000::pgn_like<M>) {
-    nmea2000::write_csv(out, *head, msg);
-  } else {
-    write_csv_cells(out, msg);
-  }
-}
-
-// Writes the CSV header of the type JSON calls `type` (GPRMC, CPNVG, AB00); false when no
-// message of the set, nor the frame, has that type.
-template <class Set>
-struct csv_headers;
-template <class... Ms>
-struct csv_headers<nmea::message_set<Ms...>> {
-  static bool write(std::string_view type, tools::output& out) {
-    if (type == anello::frame_json_type) {
-      csv_header<anello::sensor_frame_raw>(out);
-      return true;
-    }
-    if (const auto pgn = nmea2000::pgn_of_type(type)) {
-      bool found = false;
-      n2k_pgns::for_each_type([&](const auto& tag) {
-        using P = std::remove_cvref_t<decltype(tag)>;
-        if (P::n2k.info.pgn != *pgn) return;
-        csv_header<P>(out);
-        found = true;
-      });
-      return found;
-    }
-    return ((Ms::nmea.matches(type) ? (csv_header<Ms>(out), true) : false) || ...);
-  }
-  static bool knows(std::string_view type) {
-    if (const auto pgn = nmea2000::pgn_of_type(type)) return n2k_pgns::knows(*pgn);
-    return type == anello::frame_json_type || (Ms::nmea.matches(type) || ...);
-  }
-};
-using all_headers = csv_headers<all_messages>;
-
-// One CSV table: a file of its own (--output-dir) with its header written once, or stdout.
-struct csv_table {
-  std::string name;  // for errors: the file's path, or "stdout"
-  std::FILE* file = nullptr;
-  std::unique_ptr<tools::output> out;  // while the table is open
-  bool header = false;
-  bool created = false;         // the file was created (later opened to append)
-  std::uint64_t last_used = 0;  // when a row last went to it, for closing the least recent
-  csv_table() = default;
-  csv_table(const csv_table&) = delete;
-  csv_table& operator=(const csv_table&) = delete;
-  ~csv_table() {
-    out.reset();
-    if (file != nullptr) std::fclose(file);
-  }
-};
-
-// At most this many tables' files are open at once (and fewer when the process may open fewer
-// files): the least recently used one is closed to open another, and opened again to append.
-constexpr std::size_t max_open_tables = 32;
 
 // Rejected input shows at most this much of its line.
 constexpr std::size_t max_input_shown = 256;
 
-// The progress line: on stderr when it is a terminal, stdin a regular file (whose size is known)
-// and stdout not a terminal (whose output would run into the line); at most ten times a second,
-// erased at the end and before anything else is written to stderr.
-class progress {
- public:
-  explicit progress(bool wanted) {
-    struct stat st {};
-    if (wanted && ::isatty(2) == 1 && ::isatty(1) == 0 && ::fstat(0, &st) == 0 &&
-        S_ISREG(st.st_mode)) {
-      total_ = static_cast<std::uint64_t>(st.st_size);
-      on_ = true;
-    }
-  }
-  progress(const progress&) = delete;
-  progress& operator=(const progress&) = delete;
-  ~progress() { done(); }
-
-  void update(std::uint64_t bytes, std::uint64_t decoded, std::uint64_t rejected) {
-    if (!on_) return;
-    read_ += bytes;
-    const auto now = std::chrono::steady_clock::now();
-    if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
-    last_ = now;
-    shown_ = true;
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    const double rate = seconds > 0 ? static_cast<double>(decoded) / seconds : 0;
-    std::fprintf(
-        stderr,
-        "\rseawire-decode: %.1f of %.1f MB (%.0f%%), %llu messages, %.0f messages/s, "
-        "%llu rejected\033[K",
-        static_cast<double>(read_) / 1e6, static_cast<double>(total_) / 1e6,
-        total_ > 0 ? 100.0 * static_cast<double>(read_) / static_cast<double>(total_) : 100.0,
-        static_cast<unsigned long long>(decoded), rate, static_cast<unsigned long long>(rejected));
-    std::fflush(stderr);
-  }
-
-  // Erases the line (shown again at the next update), so a message on stderr starts clean.
-  void erase() {
-    if (on_ && shown_) {
-      std::fputs("\r\033[K", stderr);
-      std::fflush(stderr);
-    }
-    shown_ = false;
-  }
-
-  // Erases the line for good.
-  void done() {
-    erase();
-    on_ = false;
-  }
-
- private:
-  bool on_ = false;
-  bool shown_ = false;
-  std::uint64_t total_ = 0;
-  std::uint64_t read_ = 0;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point last_{};
-};
-
-// What seawire-decode says on stderr about the input, line by line (rejected lines with every
-// format but json, tables that cannot be written, sentences left out of the tables): at most
-// max_log_lines lines a second, so that a flood of bad input cannot flood stderr. The lines held
-// back are counted, and their number said before the next line let out, and at the end.
-class stderr_log {
- public:
-  static constexpr std::uint64_t max_log_lines = 100;
-
-  explicit stderr_log(progress& shown) : progress_(shown) {}
-  stderr_log(const stderr_log&) = delete;
-  stderr_log& operator=(const stderr_log&) = delete;
-  ~stderr_log() { finish(); }
-
-  // Whether a line may be written now (the caller writes it); false counts it as held back.
-  [[nodiscard]] bool allow() {
-    const auto now = std::chrono::steady_clock::now();
-    if (written_ == 0 || now - since_ >= std::chrono::seconds(1)) {
-      finish();
-      since_ = now;
-      written_ = 0;
-    }
-    if (written_ >= max_log_lines) {
-      ++held_;
-      return false;
-    }
-    ++written_;
-    progress_.erase();
-    return true;
-  }
-
-  // Says how many lines were held back since the last it said, if any.
-  void finish() {
-    if (held_ == 0) return;
-    progress_.erase();
-    std::fprintf(stderr,
-                 "seawire-decode: ... %llu more line%s like these not shown (at most %llu a "
-                 "second are; --stats counts every rejected line by error)\n",
-                 static_cast<unsigned long long>(held_), held_ == 1 ? "" : "s",
-                 static_cast<unsigned long long>(max_log_lines));
-    held_ = 0;
-  }
-
- private:
-  progress& progress_;
-  std::chrono::steady_clock::time_point since_{};  // the start of this second's lines
-  std::uint64_t written_ = 0;                      // lines written since then
-  std::uint64_t held_ = 0;                         // lines held back, not said yet
-};
-
-// --stats counts messages by type, and --format csv sentences left out of the tables by
-// address, for at most this many types each: garbage that parses as sentences of ever new
-// addresses is counted as "other types" beyond, so memory stays bounded.
-constexpr std::size_t max_counted_types = 4096;
-
-// Adds one to `counts[key]`, or to `others` once `counts` holds max_counted_types keys.
-void count_type(std::map<std::string, std::uint64_t, std::less<>>& counts, std::uint64_t& others,
-                std::string_view key) {
-  if (const auto it = counts.find(key); it != counts.end()) {
-    ++it->second;
-  } else if (counts.size() < max_counted_types) {
-    counts.emplace(std::string(key), 1);
-  } else {
-    ++others;
-  }
-}
-
 class decoder {
  public:
-  decoder(const options& o, progress& shown)
-      : opt_(o), out_(stdout), progress_(shown), log_(shown), in_(o.in) {
+  // Every message, rejected line and dropped run of bytes, and the end of the input, goes to
+  // `out`.
+  decoder(const options& o, sink& out) : opt_(o), out_(out), in_(o.in) {
     // What the reader drops comes as items of its own, in order with the messages.
     reader_.report_drops(true);
-    // The one table on stdout has its header even when no message of its type comes.
-    if (o.fmt == format::csv && o.output_dir.empty() && o.types.size() == 1) {
-      if (csv_table* t = table(o.types.front()))
-        t->header = all_headers::write(o.types.front(), *t->out);
-    }
   }
 
   void feed(std::string_view chunk) {
@@ -336,43 +123,7 @@ class decoder {
       n2k_.flush();
     }
     while (const std::optional<anello::stream_item> item = reader_.finish()) handle(*item);
-    switch (opt_.fmt) {
-      case format::geojson: tracks_.write_geojson(out_); break;
-      case format::svg: tracks_.write_svg(out_); break;
-      case format::csv:
-        for (auto& [type, t] : tables_) {
-          // Not created, or closed: reported then.
-          if (t == nullptr || t->out == nullptr) continue;
-          if (t->file != nullptr) {
-            close_table(*t);
-            continue;
-          }
-          t->out->flush();
-          if (t->out->failed()) {
-            if (log_.allow())
-              std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t->name.c_str(),
-                           std::strerror(t->out->error()));
-            ++table_failures_;
-          }
-        }
-        for (const auto& [type, n] : not_tabled_) {
-          if (!log_.allow()) continue;
-          std::fprintf(stderr,
-                       "seawire-decode: %llu %s sentence%s left out of the CSV output: no "
-                       "message describes their fields\n",
-                       static_cast<unsigned long long>(n), type.c_str(), n == 1 ? "" : "s");
-        }
-        if (other_not_tabled_ > 0 && log_.allow()) {
-          std::fprintf(stderr,
-                       "seawire-decode: %llu more sentences of other types left out of the CSV "
-                       "output: no message describes their fields\n",
-                       static_cast<unsigned long long>(other_not_tabled_));
-        }
-        break;
-      default: break;
-    }
-    out_.flush();
-    log_.finish();
+    out_.finish();
   }
 
   [[nodiscard]] std::uint64_t decoded() const { return decoded_; }
@@ -385,15 +136,8 @@ class decoder {
     if (const std::optional<anello::stream_item> item = reader_.flush()) handle(*item);
   }
 
-  [[nodiscard]] bool all_good() const {
-    return rejected_ == 0 && !out_.failed() && table_failures_ == 0;
-  }
   // The input cannot be written in the format asked for (a CAN log with --format nmea).
   [[nodiscard]] bool unusable() const { return unusable_; }
-  // stdout failed (the tables' failures are reported as they are found).
-  [[nodiscard]] bool stdout_failed() const { return out_.failed(); }
-  [[nodiscard]] int stdout_error() const { return out_.error(); }
-
   void print_stats() const {
     const anello::stream_stats& f = reader_.stats();
     std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected\n",
@@ -414,9 +158,9 @@ class decoder {
       std::fprintf(stderr, "    %-20.*s %llu\n", static_cast<int>(n.size()), n.data(),
                    static_cast<unsigned long long>(by_error_[e]));
     }
-    if (reencode_failures_ > 0)
+    if (refused_ > 0)
       std::fprintf(stderr, "    (%llu of them refused when re-encoded)\n",
-                   static_cast<unsigned long long>(reencode_failures_));
+                   static_cast<unsigned long long>(refused_));
     std::fprintf(
         stderr,
         "  input: %llu sentences, %llu frames; %llu noise bytes, %llu dropped bytes; "
@@ -493,11 +237,8 @@ class decoder {
     if (!can && pending_.size() >= max_undecided) can = false;
     if (!can && !at_end) return;
     in_ = can.value_or(false) ? input::n2k : input::nmea;
-    if (in_ == input::n2k && opt_.fmt == format::nmea) {
-      std::fprintf(stderr,
-                   "seawire-decode: the input is a CAN log (NMEA 2000), which has no sentences "
-                   "to re-encode: use --format json (and seawire-encode --output FORMAT to write "
-                   "a log again)\n");
+    if (const char* why = in_ == input::n2k ? out_.refuses_can_log() : nullptr) {
+      std::fputs(why, stderr);
       unusable_ = true;
       in_ = input::nmea;
       pending_.clear();
@@ -577,9 +318,10 @@ class decoder {
         std::snprintf(type_buf, sizeof type_buf, "PGN%u", static_cast<unsigned>(h.id.pgn));
     const std::string_view type(type_buf, static_cast<std::size_t>(n));
     if (!wanted(type)) return;
-    const bool known =
-        n2k_pgns::visit(h.id.pgn, payload, [&](const auto& msg) { deliver(type, type, msg, &h); });
-    if (!known) deliver(type, type, raw_pgn{payload}, &h);
+    const origin from{nullptr, nullptr, &h};
+    const bool known = n2k_pgns::visit(h.id.pgn, payload,
+                                       [&](const auto& msg) { deliver(type, type, msg, from); });
+    if (!known) deliver(type, type, tools::raw_pgn{payload}, from);
   }
 
   void handle(const anello::stream_item& item) {
@@ -601,11 +343,7 @@ class decoder {
       return;
     }
     if (!wanted(anello::frame_json_type)) return;
-    if (opt_.fmt == format::nmea) {
-      const anello::frame_bytes bytes = anello::encode_frame(item.frame);
-      out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-    }
-    deliver(anello::frame_json_type, anello::frame_json_type, item.frame, nullptr);
+    deliver(anello::frame_json_type, anello::frame_json_type, item.frame, origin{});
   }
 
   // "AB00 field 1 (heading_deg) 361: value outside the range the spec allows", the value as
@@ -690,189 +428,32 @@ class decoder {
   template <class M>
   void emit(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
     nmea::json_buffer<16> type_buf;
-    if (!opt_.types.empty() && !wanted(type_of(s, msg, type_buf))) return;
-    if (opt_.fmt == format::nmea && !reencode(l, s, msg)) return;
-    // The type names tables and tracks; the other formats have no use for it.
-    std::string_view type = type_buf.view();
-    if (type.empty() &&
-        (opt_.fmt == format::csv || opt_.fmt == format::geojson || opt_.fmt == format::svg))
-      type = type_of(s, msg, type_buf);
-    deliver(type, s.address, msg, nullptr);
+    const std::string_view type = type_of(s, msg, type_buf);
+    if (!wanted(type)) return;
+    deliver(type, s.address, msg, origin{&l, &s, nullptr});
   }
 
   // ---- every message, of every wire ----
 
-  // A message decoded (a sentence, known or not; a PGN, described or not; a frame) in the format
-  // asked for, the one place the formats are told apart (--format nmea is the caller's: it
-  // re-encodes by the wire). `type` is its JSON "type", `counted` what --stats counts it under,
-  // `head` the CAN frame's header of a PGN (nullptr for the others).
+  // A message decoded (a sentence, known or not; a PGN, described or not; a frame), to the
+  // writer. `type` is its JSON "type", `counted` what --stats counts it under. A sentence the
+  // writer refuses (--format nmea cannot re-encode it) is rejected.
   template <class M>
-  void deliver(std::string_view type, std::string_view counted, const M& msg,
-               const nmea2000::message_header* head) {
-    switch (opt_.fmt) {
-      case format::json:
-        if constexpr (nmea2000::pgn_like<M>) {
-          nmea2000::write_json(out_, *head, msg);
-        } else if constexpr (std::is_same_v<M, raw_pgn>) {
-          nmea2000::write_json_raw(out_, *head, msg.payload);
-        } else if constexpr (std::is_same_v<M, anello::sensor_frame_raw>) {
-          anello::write_json(out_, msg);
-        } else {
-          nmea::write_json(out_, msg);
-        }
-        out_.put('\n');
-        break;
-      case format::csv:
-        if constexpr (walkable<M>) {
-          if (csv_table* t = table(type)) {
-            if (!t->header) csv_header<M>(*t->out);
-            t->header = true;
-            csv_row(*t->out, msg, head);
-            if (opt_.line_buffered) t->out->flush();
-          }
-        } else {
-          count_type(not_tabled_, other_not_tabled_, type);
-        }
-        break;
-      case format::geojson:
-      case format::svg:
-        if constexpr (walkable<M>) tracks_.add(type, msg);
-        break;
-      case format::nmea:
-      case format::none: break;
+  void deliver(std::string_view type, std::string_view counted, const M& msg, const origin& from) {
+    if (const std::optional<tools::refusal> no = out_.message(type, msg, from)) {
+      ++refused_;
+      reject(from.line->line, no->ec, no->field, no->detail, from.line->text);
+      return;
     }
     ++decoded_;
-    if (opt_.stats) count_type(by_type_, other_types_, counted);
-    if (opt_.line_buffered) out_.flush();
+    if (opt_.stats) tools::count_type(by_type_, other_types_, counted);
   }
 
-  template <class M>
-  bool reencode(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
-    std::array<char, 1100> buf;
-    result<std::size_t> r;
-    if constexpr (std::is_same_v<M, nmea::unknown_sentence>) {
-      // Not ours to interpret: the same start ('$' or '!') and fields, sealed the way seawire
-      // seals.
-      nmea::writer w(std::span<char>(buf.data(), buf.size()));
-      w.begin(s.address, s.start);
-      if (s.field_count > 0) {
-        w.next_field();
-        w.put(s.body);
-      }
-      r = w.seal();
-    } else {
-      r = nmea::encode_to(msg, std::span<char>(buf.data(), buf.size()));
-    }
-    if (!r) {
-      ++reencode_failures_;
-      std::string detail = std::string(s.address) + " cannot be re-encoded";
-      if (r.field != 0) {
-        const nmea::field_about a = all_messages::about_field(s.address, r.field, s.field_count);
-        detail += ": field " + std::to_string(r.field) + " (" + std::string(a.name);
-        if (!a.part.empty()) detail += "'s " + std::string(a.part);
-        detail += ")";
-      }
-      detail += ": " + std::string(message(r.ec));
-      reject(l.line, r.ec, r.field, detail, l.text);
-      return false;
-    }
-    out_.put(std::string_view(buf.data(), r.value));
-    return true;
-  }
-
-  // ---- types, tables and tracks ----
+  // ---- types ----
 
   [[nodiscard]] bool wanted(std::string_view type) const {
     return opt_.types.empty() ||
            std::find(opt_.types.begin(), opt_.types.end(), type) != opt_.types.end();
-  }
-
-  [[nodiscard]] std::string table_path(const std::string& type) const {
-    return (std::filesystem::path(opt_.output_dir) / (type + ".csv")).string();
-  }
-
-  // The table of a type, open: stdout when there is no output directory (one type only), else
-  // the type's file, created when its first message comes. nullptr when it cannot be created
-  // (or opened again, or was not written).
-  csv_table* table(std::string_view type) {
-    ++table_clock_;
-    auto it = tables_.find(type);
-    if (it != tables_.end()) {
-      csv_table* t = it->second.get();
-      if (t != nullptr && t->out == nullptr && !open_table(*t)) {
-        it->second.reset();
-        return nullptr;
-      }
-      if (t != nullptr) t->last_used = table_clock_;
-      return t;
-    }
-    auto t = std::make_unique<csv_table>();
-    if (opt_.output_dir.empty()) {
-      t->name = "stdout";
-      t->out = std::make_unique<tools::output>(stdout);
-      stdout_table_ = t.get();
-    } else {
-      t->name = table_path(std::string(type));
-      if (!open_table(*t)) {
-        tables_.emplace(std::string(type), nullptr);
-        return nullptr;
-      }
-    }
-    t->last_used = table_clock_;
-    return tables_.emplace(std::string(type), std::move(t)).first->second.get();
-  }
-
-  // Opens a table's file: created (replacing a file of its name) the first time, appended to
-  // after. The least recently used table is closed first when max_open_tables are open, or when
-  // the process may open no more files. False, reported, when it cannot be opened.
-  bool open_table(csv_table& t) {
-    if (open_tables_ >= max_open_tables) close_least_used();
-    for (;;) {
-      t.file = std::fopen(t.name.c_str(), t.created ? "a" : "w");
-      if (t.file != nullptr) break;
-      const int e = errno;
-      if ((e == EMFILE || e == ENFILE) && close_least_used()) continue;
-      if (log_.allow())
-        std::fprintf(stderr, "seawire-decode: cannot %s %s: %s\n", t.created ? "reopen" : "create",
-                     t.name.c_str(), std::strerror(e));
-      ++table_failures_;
-      return false;
-    }
-    t.created = true;
-    ++open_tables_;
-    // Small buffers: a log may hold many types (one per talker of RMC, GGA, ...).
-    t.out = std::make_unique<tools::output>(t.file, 16 * 1024);
-    return true;
-  }
-
-  // Writes out a table and closes its file; false, reported, when the writing failed (the
-  // table is then written no more). The table stays, to be opened again.
-  bool close_table(csv_table& t) {
-    t.out->flush();
-    const bool ok = !t.out->failed();
-    if (!ok) {
-      if (log_.allow())
-        std::fprintf(stderr, "seawire-decode: writing %s: %s\n", t.name.c_str(),
-                     std::strerror(t.out->error()));
-      ++table_failures_;
-    }
-    t.out.reset();
-    std::fclose(t.file);
-    t.file = nullptr;
-    --open_tables_;
-    return ok;
-  }
-
-  // Closes the open file table used least recently; false when none is open.
-  bool close_least_used() {
-    std::unique_ptr<csv_table>* least = nullptr;
-    for (auto& [type, t] : tables_) {
-      if (t == nullptr || t->file == nullptr) continue;
-      if (least == nullptr || t->last_used < (*least)->last_used) least = &t;
-    }
-    if (least == nullptr) return false;
-    if (!close_table(**least)) least->reset();
-    return true;
   }
 
   // ---- errors ----
@@ -894,19 +475,7 @@ class decoder {
     ++rejected_;
     ++by_error_[static_cast<std::size_t>(e)];
     if (input.size() > max_input_shown) input = input.substr(0, max_input_shown);
-    if (opt_.fmt == format::json) {
-      nmea::write_json_error(out_, line, e, field, detail, input);
-      out_.put('\n');
-      if (opt_.line_buffered) out_.flush();
-    } else {
-      // stdout keeps only good sentences; the reasons go to stderr, in order with them.
-      if (!log_.allow()) return;
-      out_.flush();
-      if (stdout_table_ != nullptr) stdout_table_->out->flush();
-      std::fprintf(stderr, "seawire-decode: line %llu: %.*s: %.*s\n",
-                   static_cast<unsigned long long>(line), static_cast<int>(name(e).size()),
-                   name(e).data(), static_cast<int>(detail.size()), detail.data());
-    }
+    out_.rejected(tools::rejection{line, e, field, detail, input});
   }
 
   // ---- what the reader dropped ----
@@ -970,9 +539,7 @@ class decoder {
   nmea::parse_policy policy_;  // policy_for's, for the address below
   std::array<char, 16> policy_address_{};
   std::size_t policy_address_size_ = policy_address_.size() + 1;  // none yet
-  tools::output out_;
-  progress& progress_;
-  stderr_log log_;
+  sink& out_;
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
   input in_;
@@ -987,18 +554,10 @@ class decoder {
   std::uint64_t log_lines_ = 0;
   std::uint64_t decoded_ = 0;
   std::uint64_t rejected_ = 0;
-  std::uint64_t reencode_failures_ = 0;
+  std::uint64_t refused_ = 0;
   std::map<std::string, std::uint64_t, std::less<>> by_type_;
   std::uint64_t other_types_ = 0;  // messages of types past max_counted_types
   std::array<std::uint64_t, 256> by_error_{};
-  std::map<std::string, std::unique_ptr<csv_table>, std::less<>> tables_;
-  std::size_t open_tables_ = 0;                                   // tables whose file is open
-  std::uint64_t table_clock_ = 0;                                 // counts the rows, for last_used
-  std::map<std::string, std::uint64_t, std::less<>> not_tabled_;  // unknown sentences, by address
-  std::uint64_t other_not_tabled_ = 0;  // those of addresses past max_counted_types
-  std::uint64_t table_failures_ = 0;
-  csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
-  tools::tracks tracks_;
 };
 
 // SIGINT or SIGTERM, once one came (0 before): reading stops, and what was read is decoded and
@@ -1068,8 +627,9 @@ int run(const options& o) {
       return 1;
     }
   }
-  progress shown(!o.quiet);
-  decoder d(o, shown);
+  tools::progress shown(!o.quiet);
+  sink out(o, shown);
+  decoder d(o, out);
   tools::chunk_reader in(0);
   // Live streams: a line whose CR ended the input so far is let out after 50 ms without more.
   constexpr int quiet_ms = 50;
@@ -1094,18 +654,18 @@ int run(const options& o) {
     std::perror("seawire-decode: reading stdin");
     return 1;
   }
-  if (d.stdout_failed()) {
-    std::fprintf(stderr, "seawire-decode: writing stdout: %s\n", std::strerror(d.stdout_error()));
+  if (out.out().failed()) {
+    std::fprintf(stderr, "seawire-decode: writing stdout: %s\n", std::strerror(out.out().error()));
     return 1;
   }
   // Stopped by a signal: the shell's status for it (128 + its number), whatever was decoded.
   if (stop_signal != 0) return 128 + static_cast<int>(stop_signal);
-  return d.all_good() ? 0 : 1;
+  return d.rejected() == 0 && out.all_written() ? 0 : 1;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// Reads the command line into `o`: the exit status when the program ends here (--help,
+// --version, a usage error), nullopt when it is to run.
+std::optional<int> parse_options(int argc, char** argv, options& o) {
   CLI::App app{
       "seawire-decode: decode NMEA-style sentences (Kingfisher CP*/PY*, Sandshark BF*/BP*, "
       "RobotX RX*, ANELLO inputs, standard RMC/GGA/RPM/RSA/VHW/VBW/VWR) and ANELLO 0xAB00 "
@@ -1128,7 +688,6 @@ int main(int argc, char** argv) {
   std::string fmt = "json";
   std::string checksum;
   bool strict = false;
-  options o;
   app.add_option("-f,--format", fmt,
                  "json: one JSON object per message (default); nmea: each message re-encoded "
                  "canonically (uppercase checksum, CR LF); none: decode and validate only (e.g. "
@@ -1218,7 +777,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (o.fmt == format::csv && dir_opt->count() == 0 && o.types.size() == 1 &&
-      !all_headers::knows(o.types.front())) {
+      !tools::all_headers::knows(o.types.front())) {
     std::fprintf(stderr,
                  "seawire-decode: --type %s: no message seawire describes has this type, so it "
                  "has no table (types are as JSON names them: CPNVG, GPRMC, AB00)\n",
@@ -1237,5 +796,13 @@ int main(int argc, char** argv) {
                  : checksum == "ignore" ? nmea::checksum_policy::ignore
                                         : nmea::checksum_policy::verify_if_present;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  options o;
+  if (const std::optional<int> status = parse_options(argc, argv, o)) return *status;
   return run(o);
 }
