@@ -150,7 +150,10 @@ struct append_pgns<nmea2000::pgn_list<P...>, More...> {
 
 /// Every NMEA 2000 PGN declared: decoded and encoded by name ("type":"PGN128259"). The ANELLO
 /// INS's inputs, then the others.
-using pgns = detail::append_pgns<nmea2000::ins_input_pgns, nmea2000::vessel_heading>::type;
+using pgns =
+    detail::append_pgns<nmea2000::ins_input_pgns, nmea2000::vessel_heading, nmea2000::rate_of_turn,
+                        nmea2000::attitude, nmea2000::magnetic_variation, nmea2000::water_depth,
+                        nmea2000::position_rapid, nmea2000::cog_sog_rapid>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

@@ -98,6 +98,7 @@ ENGINE_STATUS_2 = {
     "sub_or_secondary_throttle": "Sub or Secondary Throttle",
     "neutral_start_protect": "Neutral Start Protect",
     "engine_shutting_down": "Engine Shutting Down"}
+VARIATION_SOURCE = {"manual": "Manual", "automatic_chart": "Automatic Chart", "automatic_table": "Automatic Table", "automatic_calculation": "Automatic Calculation", "wmm_2000": "WMM 2000", "wmm_2005": "WMM 2005", "wmm_2010": "WMM 2010", "wmm_2015": "WMM 2015", "wmm_2020": "WMM 2020", "wmm_2025": "WMM 2025"}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -171,6 +172,17 @@ def hours(ours, theirs):
     if not is_number(ours):
         return "ours not a number"
     return None if hms_seconds(theirs) == ours else f"canboat {hms_seconds(theirs)} s"
+
+
+def duration(ours, theirs):
+    """canboat "[-]h:mm:ss" text (any number of hours); ours seconds."""
+    r = null_rule(ours, theirs)
+    if r != "continue":
+        return r
+    if not is_number(ours):
+        return "ours not a number"
+    s = hms_seconds(theirs.lstrip("-")) * (-1 if theirs.startswith("-") else 1)
+    return None if s == ours else f"canboat {s} s"
 
 
 def date(ours, theirs):
@@ -255,10 +267,44 @@ CANBOAT_FIELDS = {
         "variation_rad": ("variation", num("0.0001")),
         "reference": ("reference", lookup(DIRECTION_REFERENCE)),
     },
+    127251: {
+        "sid": ("sid", num("1")),
+        "rate_radps": ("rate", num("3.125e-8")),
+    },
+    127257: {
+        "sid": ("sid", num("1")),
+        "yaw_rad": ("yaw", num("0.0001")),
+        "pitch_rad": ("pitch", num("0.0001")),
+        "roll_rad": ("roll", num("0.0001")),
+    },
+    127258: {
+        "sid": ("sid", num("1")),
+        "source": ("source", lookup(VARIATION_SOURCE)),
+        "age_of_service": ("ageOfService", date),
+        "variation_rad": ("variation", num("0.0001")),
+    },
+    128267: {
+        "sid": ("sid", num("1")),
+        "depth_m": ("depth", num("0.01")),
+        "offset_m": ("offset", num("0.001")),
+        "range_m": ("range", num("10")),
+    },
+    129025: {
+        "latitude_deg": ("latitude", num("0.0000001")),
+        "longitude_deg": ("longitude", num("0.0000001")),
+    },
+    129026: {
+        "sid": ("sid", num("1")),
+        "cog_reference": ("cogReference", lookup(DIRECTION_REFERENCE)),
+        "cog_rad": ("cog", num("0.0001")),
+        "sog_mps": ("sog", num("0.01")),
+    },
 }
-# canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones;
-# seawire ignores reserved bits on receive (N2K.md section 1), so it has no such field.
-CANBOAT_IGNORED = {"reserved"}
+# canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones, named
+# "reserved" and, for a PGN's later reserved fields, "reserved" with the field's number
+# ("reserved6"); seawire ignores reserved bits on receive (N2K.md section 1), so it has no such
+# field.
+CANBOAT_IGNORED = re.compile(r"reserved\d*")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -423,6 +469,7 @@ F_STATUS_1 = ["check_engine", "over_temperature", "low_oil_pressure", "low_oil_l
 F_STATUS_2 = ["warning_level_1", "warning_level_2", "power_reduction", "maintenance_needed",
               "engine_comm_error", "sub_or_secondary_throttle", "neutral_start_protect",
               "engine_shutting_down"]  # bits 8-15 unnamed: bit_8 ... bit_15
+L_VARIATION_SOURCE = ["manual", "automatic_chart", "automatic_table", "automatic_calculation", "wmm_2000", "wmm_2005", "wmm_2010", "wmm_2015", "wmm_2020", "wmm_2025"]
 
 LAYOUT = {
     127488: [("instance", 0, 8, U, "1"),
@@ -470,6 +517,26 @@ LAYOUT = {
              ("deviation_rad", 24, 16, S, "0.0001"),
              ("variation_rad", 40, 16, S, "0.0001"),
              ("reference", 56, 2, "lookup", L_DIRECTION)],
+    127251: [("sid", 0, 8, U, "1"),
+             ("rate_radps", 8, 32, S, "3.125e-8")],
+    127257: [("sid", 0, 8, U, "1"),
+             ("yaw_rad", 8, 16, S, "0.0001"),
+             ("pitch_rad", 24, 16, S, "0.0001"),
+             ("roll_rad", 40, 16, S, "0.0001")],
+    127258: [("sid", 0, 8, U, "1"),
+             ("source", 8, 4, "lookup", L_VARIATION_SOURCE),
+             ("age_of_service", 16, 16, "date", None),
+             ("variation_rad", 32, 16, S, "0.0001")],
+    128267: [("sid", 0, 8, U, "1"),
+             ("depth_m", 8, 32, U, "0.01"),
+             ("offset_m", 40, 16, S, "0.001"),
+             ("range_m", 56, 8, U, "10")],
+    129025: [("latitude_deg", 0, 32, S, "0.0000001"),
+             ("longitude_deg", 32, 32, S, "0.0000001")],
+    129026: [("sid", 0, 8, U, "1"),
+             ("cog_reference", 8, 2, "lookup", L_DIRECTION),
+             ("cog_rad", 16, 16, U, "0.0001"),
+             ("sog_mps", 32, 16, U, "0.01")],
 }
 
 
@@ -661,7 +728,8 @@ def case_canboat():
             check(set(o) - META == set(table),
                   f"{where}: our fields {sorted(set(o) - META)} vs mapping {sorted(table)}")
             fields = t.get("fields", {})  # none at all for a frame of no data
-            unmapped = set(fields) - CANBOAT_IGNORED - {c for c, _ in table.values()}
+            unmapped = ({f for f in fields if not CANBOAT_IGNORED.fullmatch(f)}
+                        - {c for c, _ in table.values()})
             check(not unmapped, f"{where}: canboat fields not in the mapping: {sorted(unmapped)}")
             for ours_name, (their_name, cmp) in table.items():
                 compared += 1

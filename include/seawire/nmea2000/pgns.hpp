@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The NMEA 2000 PGNs the ANELLO Maritime INS takes as sensor input, and the vessel heading; each
-// struct is one PGN, its members in wire order, then its table (field.hpp). Values are SI as on
-// the wire (Pa, K, m/s, rad, plus rpm, L/h, %, s). Where ANELLO's field lists differ from what
-// devices send (128259's speed direction, 130311's source lookups, 127489's reserved byte), these
-// follow the wire: docs/nmea2000.md.
+// The NMEA 2000 PGNs seawire describes: those the ANELLO Maritime INS takes as sensor input, the
+// vessel heading, and the navigation, steering, environment and power PGNs of a vessel's bus.
+// Each struct is one PGN, its members in wire order, then its table (field.hpp). Values are SI
+// as on the wire (Pa, K, m/s, rad, rad/s, V, A, L, plus degrees of latitude and longitude, rpm,
+// L/h, %, Ah, s, min). Where ANELLO's field lists differ from what devices send (128259's speed
+// direction, 130311's source lookups, 127489's reserved byte), these follow the wire:
+// docs/nmea2000.md.
 
 #include <array>
 #include <cstddef>
@@ -130,18 +132,41 @@ constexpr std::array<std::string_view, 2> lookup_names(heading_reference) noexce
   return {"true", "magnetic"};
 }
 
+/// Where a magnetic variation comes from (127258): entered by hand, from a chart or table,
+/// computed, or a World Magnetic Model epoch.
+enum class variation_source : std::uint8_t {
+  manual = 0,
+  automatic_chart = 1,
+  automatic_table = 2,
+  automatic_calculation = 3,
+  wmm_2000 = 4,
+  wmm_2005 = 5,
+  wmm_2010 = 6,
+  wmm_2015 = 7,
+  wmm_2020 = 8,
+  wmm_2025 = 9,
+};
+constexpr std::array<std::string_view, 10> lookup_names(variation_source) noexcept {
+  return {"manual",   "automatic_chart", "automatic_table", "automatic_calculation",
+          "wmm_2000", "wmm_2005",        "wmm_2010",        "wmm_2015",
+          "wmm_2020", "wmm_2025"};
+}
 // ---------------------------------------------------------------------------------------------
 // the PGNs
 
 namespace res {
-inline constexpr resolution quarter{25, -2};    ///< 0.25
-inline constexpr resolution hundred{1, 2};      ///< 100
-inline constexpr resolution thousand{1, 3};     ///< 1000
-inline constexpr resolution tenth{1, -1};       ///< 0.1
-inline constexpr resolution hundredth{1, -2};   ///< 0.01
-inline constexpr resolution thousandth{1, -3};  ///< 0.001
-inline constexpr resolution humidity{4, -3};    ///< 0.004
-inline constexpr resolution radian{1, -4};      ///< 0.0001 rad
+inline constexpr resolution quarter{25, -2};       ///< 0.25
+inline constexpr resolution hundred{1, 2};         ///< 100
+inline constexpr resolution thousand{1, 3};        ///< 1000
+inline constexpr resolution tenth{1, -1};          ///< 0.1
+inline constexpr resolution hundredth{1, -2};      ///< 0.01
+inline constexpr resolution thousandth{1, -3};     ///< 0.001
+inline constexpr resolution humidity{4, -3};       ///< 0.004
+inline constexpr resolution radian{1, -4};         ///< 0.0001 rad
+inline constexpr resolution turn_rate{3125, -11};  ///< 3.125e-8 rad/s
+inline constexpr resolution ten{1, 1};             ///< 10
+inline constexpr resolution degree_e7{1, -7};      ///< 1e-7 degree
+inline constexpr resolution minute{6, 1};          ///< 60 s
 }  // namespace res
 
 /// PGN 127488 Engine Parameters, Rapid Update: 8 bytes, single frame, priority 2, 10 Hz.
@@ -315,6 +340,100 @@ struct vessel_heading {
       field<&vessel_heading::variation_rad>("variation_rad", "Variation"),
       field<&vessel_heading::reference>("reference", "Reference"), reserved<6>);
   [[nodiscard]] constexpr bool operator==(const vessel_heading&) const noexcept = default;
+};
+
+/// PGN 127251 Rate of Turn: 8 bytes, single frame, priority 2, 10 Hz. Positive turning to
+/// starboard, in rad/s at 3.125e-8 rad/s (1/32 of 1e-6).
+struct rate_of_turn {
+  unsigned_number<8> sid;
+  signed_number<32, res::turn_rate> rate_radps;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{127251, "rate_of_turn", "Rate of Turn", 2, framing::single_frame, 100},
+                   field<&rate_of_turn::sid>("sid", "Sequence ID"),
+                   field<&rate_of_turn::rate_radps>("rate_radps", "Rate"), reserved<24>);
+  [[nodiscard]] constexpr bool operator==(const rate_of_turn&) const noexcept = default;
+};
+
+/// PGN 127257 Attitude: 8 bytes, single frame, priority 3, 1 Hz. Angles in radians: yaw (heading),
+/// pitch positive bow up, roll positive starboard down.
+struct attitude {
+  unsigned_number<8> sid;
+  signed_number<16, res::radian> yaw_rad;
+  signed_number<16, res::radian> pitch_rad;
+  signed_number<16, res::radian> roll_rad;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127257, "attitude", "Attitude", 3, framing::single_frame, 1000},
+      field<&attitude::sid>("sid", "Sequence ID"), field<&attitude::yaw_rad>("yaw_rad", "Yaw"),
+      field<&attitude::pitch_rad>("pitch_rad", "Pitch"),
+      field<&attitude::roll_rad>("roll_rad", "Roll"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const attitude&) const noexcept = default;
+};
+
+/// PGN 127258 Magnetic Variation: 8 bytes, single frame, priority 7, 1 Hz. The variation (positive
+/// east) at the vessel, where it comes from and the date it is valid from.
+struct magnetic_variation {
+  unsigned_number<8> sid;
+  lookup<nmea2000::variation_source, 4> source;
+  nmea2000::day_count age_of_service;
+  signed_number<16, res::radian> variation_rad;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127258, "magnetic_variation", "Magnetic Variation", 7, framing::single_frame, 1000},
+      field<&magnetic_variation::sid>("sid", "Sequence ID"),
+      field<&magnetic_variation::source>("source", "Source"), reserved<4>,
+      field<&magnetic_variation::age_of_service>("age_of_service", "Age of Service"),
+      field<&magnetic_variation::variation_rad>("variation_rad", "Variation"), reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const magnetic_variation&) const noexcept = default;
+};
+
+/// PGN 128267 Water Depth: 8 bytes, single frame, priority 3, 1 Hz. Depth below the transducer; the
+/// offset from the transducer to the surface (positive) or the keel (negative), and the sounder's
+/// range.
+struct water_depth {
+  unsigned_number<8> sid;
+  unsigned_number<32, res::hundredth> depth_m;
+  signed_number<16, res::thousandth> offset_m;
+  unsigned_number<8, res::ten> range_m;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{128267, "water_depth", "Water Depth", 3, framing::single_frame, 1000},
+                   field<&water_depth::sid>("sid", "Sequence ID"),
+                   field<&water_depth::depth_m>("depth_m", "Depth"),
+                   field<&water_depth::offset_m>("offset_m", "Offset"),
+                   field<&water_depth::range_m>("range_m", "Range"));
+  [[nodiscard]] constexpr bool operator==(const water_depth&) const noexcept = default;
+};
+
+/// PGN 129025 Position, Rapid Update: 8 bytes, single frame, priority 2, 10 Hz. Latitude and
+/// longitude in degrees (WGS 84) at 1e-7 degree, north and east positive.
+struct position_rapid {
+  signed_number<32, res::degree_e7> latitude_deg;
+  signed_number<32, res::degree_e7> longitude_deg;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129025, "position_rapid", "Position, Rapid Update", 2, framing::single_frame, 100},
+      field<&position_rapid::latitude_deg>("latitude_deg", "Latitude"),
+      field<&position_rapid::longitude_deg>("longitude_deg", "Longitude"));
+  [[nodiscard]] constexpr bool operator==(const position_rapid&) const noexcept = default;
+};
+
+/// PGN 129026 COG & SOG, Rapid Update: 8 bytes, single frame, priority 2, 4 Hz. Course and speed
+/// over the ground; the course is from the reference named.
+struct cog_sog_rapid {
+  unsigned_number<8> sid;
+  lookup<nmea2000::heading_reference, 2> cog_reference;
+  unsigned_number<16, res::radian> cog_rad;
+  unsigned_number<16, res::hundredth> sog_mps;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129026, "cog_sog_rapid", "COG & SOG, Rapid Update", 2, framing::single_frame, 250},
+      field<&cog_sog_rapid::sid>("sid", "Sequence ID"),
+      field<&cog_sog_rapid::cog_reference>("cog_reference", "COG Reference"), reserved<6>,
+      field<&cog_sog_rapid::cog_rad>("cog_rad", "COG"),
+      field<&cog_sog_rapid::sog_mps>("sog_mps", "SOG"), reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const cog_sog_rapid&) const noexcept = default;
 };
 
 // ---------------------------------------------------------------------------------------------
