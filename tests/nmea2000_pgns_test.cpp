@@ -152,3 +152,120 @@ TEST_CASE("129026 COG & SOG, Rapid Update: a capture decoded by hand, encoded ba
   CHECK(*m.sog_mps.exact() == dec(313, 2));  // 3.13
   check_codec(m, wire);
 }
+
+TEST_CASE("127245 Rudder: a capture decoded by hand, encoded back", "[127245]") {
+  check_info<n2k::rudder>(127245, 2, n2k::framing::single_frame, 100, 8);
+  // 2024-02-17T05:15:49.768Z, source 204; canboat:
+  // {"instance":0,"directionOrder":null,"angleOrder":0.2595,"position":0.2554}
+  constexpr std::array<std::uint8_t, 8> wire{0x00, 0xff, 0x23, 0x0a, 0xfa, 0x09, 0xff, 0xff};
+  const auto m = n2k::decode<n2k::rudder>(wire);
+  // byte 0: 00, 0x0 = 0
+  CHECK(m.instance.raw() == 0);
+  // byte 1 bits 0-2: ff
+  CHECK(m.direction_order.state() == field_state::not_available);
+  // bytes 2-3: 23 0a, 0xa23 = 2595, x 0.0001
+  CHECK(m.angle_order_rad.raw() == 2595);
+  CHECK(*m.angle_order_rad.exact() == dec(2595, 4));  // 0.2595
+  // bytes 4-5: fa 09, 0x9fa = 2554, x 0.0001
+  CHECK(m.position_rad.raw() == 2554);
+  CHECK(*m.position_rad.exact() == dec(2554, 4));  // 0.2554
+  check_codec(m, wire);
+}
+
+TEST_CASE("130306 Wind Data: a capture decoded by hand, encoded back", "[130306]") {
+  check_info<n2k::wind_data>(130306, 2, n2k::framing::single_frame, 100, 8);
+  // 2026-07-02T06:01:32.997Z, source 38; canboat:
+  // {"sid":79,"windSpeed":8.11,"windAngle":2.7581,"reference":"True (boat referenced)"}
+  constexpr std::array<std::uint8_t, 8> wire{0x4f, 0x2b, 0x03, 0xbd, 0x6b, 0xfb, 0xff, 0xff};
+  const auto m = n2k::decode<n2k::wind_data>(wire);
+  // byte 0: 4f, 0x4f = 79
+  CHECK(m.sid.raw() == 79);
+  // bytes 1-2: 2b 03, 0x32b = 811, x 0.01
+  CHECK(m.wind_speed_mps.raw() == 811);
+  CHECK(*m.wind_speed_mps.exact() == dec(811, 2));  // 8.11
+  // bytes 3-4: bd 6b, 0x6bbd = 27581, x 0.0001
+  CHECK(m.wind_angle_rad.raw() == 27581);
+  CHECK(*m.wind_angle_rad.exact() == dec(27581, 4));     // 2.7581
+  CHECK(m.reference == n2k::wind_reference::true_boat);  // byte 5 bits 0-2: fb, raw 3
+  CHECK(m.reference.name() == "true_boat");
+  check_codec(m, wire);
+}
+
+TEST_CASE("130312 Temperature: a capture decoded by hand, encoded back", "[130312]") {
+  check_info<n2k::temperature>(130312, 5, n2k::framing::single_frame, 2000, 8);
+  // 2016-02-28T19:57:02.827Z, source 42; canboat:
+  // {"sid":174,"instance":1,"source":143,"actualTemperature":327.94,"setTemperature":null}
+  constexpr std::array<std::uint8_t, 8> wire{0xae, 0x01, 0x8f, 0x1a, 0x80, 0xff, 0xff, 0xff};
+  const auto m = n2k::decode<n2k::temperature>(wire);
+  // byte 0: ae, 0xae = 174
+  CHECK(m.sid.raw() == 174);
+  // byte 1: 01, 0x1 = 1
+  CHECK(m.instance.raw() == 1);
+  CHECK(m.source.raw() == 143);  // byte 2: 8f, a value the standard has not named
+  CHECK(m.source.name().empty());
+  // bytes 3-4: 1a 80, 0x801a = 32794, x 0.01
+  CHECK(m.actual_temperature_k.raw() == 32794);
+  CHECK(*m.actual_temperature_k.exact() == dec(32794, 2));  // 327.94
+  // bytes 5-6: ff ff
+  CHECK(m.set_temperature_k.state() == field_state::not_available);
+  check_codec(m, wire);
+}
+
+TEST_CASE("130313 Humidity: a capture decoded by hand, encoded back", "[130313]") {
+  check_info<n2k::humidity>(130313, 5, n2k::framing::single_frame, 2000, 8);
+  // 2016-02-28T19:57:03.053Z, source 130; canboat:
+  // {"sid":23,"instance":0,"source":"Outside","actualHumidity":60.116,"setHumidity":null}
+  constexpr std::array<std::uint8_t, 8> wire{0x17, 0x00, 0x01, 0xb5, 0x3a, 0xff, 0x7f, 0xff};
+  const auto m = n2k::decode<n2k::humidity>(wire);
+  // byte 0: 17, 0x17 = 23
+  CHECK(m.sid.raw() == 23);
+  // byte 1: 00, 0x0 = 0
+  CHECK(m.instance.raw() == 0);
+  CHECK(m.source == n2k::humidity_source::outside);  // byte 2: 01, raw 1
+  CHECK(m.source.name() == "outside");
+  // bytes 3-4: b5 3a, 0x3ab5 = 15029, x 0.004
+  CHECK(m.actual_humidity_pct.raw() == 15029);
+  CHECK(*m.actual_humidity_pct.exact() == dec(60116, 3));  // 60.116
+  // bytes 5-6: ff 7f
+  CHECK(m.set_humidity_pct.state() == field_state::not_available);
+  check_codec(m, wire);
+}
+
+TEST_CASE("130314 Actual Pressure: a capture decoded by hand, encoded back", "[130314]") {
+  check_info<n2k::actual_pressure>(130314, 5, n2k::framing::single_frame, 2000, 8);
+  // 2016-02-28T19:57:02.825Z, source 88; canboat:
+  // {"sid":100,"instance":0,"source":"Hydraulic","pressure":93633.0}
+  constexpr std::array<std::uint8_t, 8> wire{0x64, 0x00, 0x04, 0x8a, 0x49, 0x0e, 0x00, 0xff};
+  const auto m = n2k::decode<n2k::actual_pressure>(wire);
+  // byte 0: 64, 0x64 = 100
+  CHECK(m.sid.raw() == 100);
+  // byte 1: 00, 0x0 = 0
+  CHECK(m.instance.raw() == 0);
+  CHECK(m.source == n2k::pressure_source::hydraulic);  // byte 2: 04, raw 4
+  CHECK(m.source.name() == "hydraulic");
+  // bytes 3-6: 8a 49 0e 00, 0xe498a = 936330, x 0.1
+  CHECK(m.pressure_pa.raw() == 936330);
+  CHECK(*m.pressure_pa.exact() == dec(936330, 1));  // 93633.0
+  check_codec(m, wire);
+}
+
+TEST_CASE("130316 Temperature Extended Range: a capture decoded by hand, encoded back",
+          "[130316]") {
+  check_info<n2k::temperature_extended>(130316, 5, n2k::framing::single_frame, 2000, 8);
+  // 2026-07-02T06:01:33.433Z, source 35; canboat: {"sid":null,"instance":0,"source":"Sea
+  // Temperature","temperature":303.064,"setTemperature":null}
+  constexpr std::array<std::uint8_t, 8> wire{0xff, 0x00, 0x00, 0xd8, 0x9f, 0x04, 0xff, 0xff};
+  const auto m = n2k::decode<n2k::temperature_extended>(wire);
+  // byte 0: ff
+  CHECK(m.sid.state() == field_state::not_available);
+  // byte 1: 00, 0x0 = 0
+  CHECK(m.instance.raw() == 0);
+  CHECK(m.source == n2k::temperature_source::sea);  // byte 2: 00, raw 0
+  CHECK(m.source.name() == "sea");
+  // bytes 3-5: d8 9f 04, 0x49fd8 = 303064, x 0.001
+  CHECK(m.temperature_k.raw() == 303064);
+  CHECK(*m.temperature_k.exact() == dec(303064, 3));  // 303.064
+  // bytes 6-7: ff ff
+  CHECK(m.set_temperature_k.state() == field_state::not_available);
+  check_codec(m, wire);
+}

@@ -153,7 +153,9 @@ struct append_pgns<nmea2000::pgn_list<P...>, More...> {
 using pgns =
     detail::append_pgns<nmea2000::ins_input_pgns, nmea2000::vessel_heading, nmea2000::rate_of_turn,
                         nmea2000::attitude, nmea2000::magnetic_variation, nmea2000::water_depth,
-                        nmea2000::position_rapid, nmea2000::cog_sog_rapid>::type;
+                        nmea2000::position_rapid, nmea2000::cog_sog_rapid, nmea2000::rudder,
+                        nmea2000::wind_data, nmea2000::temperature, nmea2000::humidity,
+                        nmea2000::actual_pressure, nmea2000::temperature_extended>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

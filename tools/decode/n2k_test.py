@@ -99,6 +99,9 @@ ENGINE_STATUS_2 = {
     "neutral_start_protect": "Neutral Start Protect",
     "engine_shutting_down": "Engine Shutting Down"}
 VARIATION_SOURCE = {"manual": "Manual", "automatic_chart": "Automatic Chart", "automatic_table": "Automatic Table", "automatic_calculation": "Automatic Calculation", "wmm_2000": "WMM 2000", "wmm_2005": "WMM 2005", "wmm_2010": "WMM 2010", "wmm_2015": "WMM 2015", "wmm_2020": "WMM 2020", "wmm_2025": "WMM 2025"}
+RUDDER_DIRECTION = {"no_order": "No Order", "to_starboard": "Move to starboard", "to_port": "Move to port"}
+WIND_REFERENCE = {"true_north": "True (ground referenced to North)", "magnetic": "Magnetic (ground referenced to Magnetic North)", "apparent": "Apparent", "true_boat": "True (boat referenced)", "true_water": "True (water referenced)"}
+PRESSURE_SOURCE = {"atmospheric": "Atmospheric", "water": "Water", "steam": "Steam", "compressed_air": "Compressed Air", "hydraulic": "Hydraulic", "filter": "Filter", "altimeter_setting": "AltimeterSetting", "oil": "Oil", "fuel": "Fuel"}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -299,6 +302,45 @@ CANBOAT_FIELDS = {
         "cog_rad": ("cog", num("0.0001")),
         "sog_mps": ("sog", num("0.01")),
     },
+    127245: {
+        "instance": ("instance", num("1")),
+        "direction_order": ("directionOrder", lookup(RUDDER_DIRECTION)),
+        "angle_order_rad": ("angleOrder", num("0.0001")),
+        "position_rad": ("position", num("0.0001")),
+    },
+    130306: {
+        "sid": ("sid", num("1")),
+        "wind_speed_mps": ("windSpeed", num("0.01")),
+        "wind_angle_rad": ("windAngle", num("0.0001")),
+        "reference": ("reference", lookup(WIND_REFERENCE)),
+    },
+    130312: {
+        "sid": ("sid", num("1")),
+        "instance": ("instance", num("1")),
+        "source": ("source", lookup(TEMPERATURE_SOURCE)),
+        "actual_temperature_k": ("actualTemperature", num("0.01")),
+        "set_temperature_k": ("setTemperature", num("0.01")),
+    },
+    130313: {
+        "sid": ("sid", num("1")),
+        "instance": ("instance", num("1")),
+        "source": ("source", lookup(HUMIDITY_SOURCE)),
+        "actual_humidity_pct": ("actualHumidity", num("0.004")),
+        "set_humidity_pct": ("setHumidity", num("0.004")),
+    },
+    130314: {
+        "sid": ("sid", num("1")),
+        "instance": ("instance", num("1")),
+        "source": ("source", lookup(PRESSURE_SOURCE)),
+        "pressure_pa": ("pressure", num("0.1")),
+    },
+    130316: {
+        "sid": ("sid", num("1")),
+        "instance": ("instance", num("1")),
+        "source": ("source", lookup(TEMPERATURE_SOURCE)),
+        "temperature_k": ("temperature", num("0.001")),
+        "set_temperature_k": ("setTemperature", num("0.1")),
+    },
 }
 # canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones, named
 # "reserved" and, for a PGN's later reserved fields, "reserved" with the field's number
@@ -470,6 +512,9 @@ F_STATUS_2 = ["warning_level_1", "warning_level_2", "power_reduction", "maintena
               "engine_comm_error", "sub_or_secondary_throttle", "neutral_start_protect",
               "engine_shutting_down"]  # bits 8-15 unnamed: bit_8 ... bit_15
 L_VARIATION_SOURCE = ["manual", "automatic_chart", "automatic_table", "automatic_calculation", "wmm_2000", "wmm_2005", "wmm_2010", "wmm_2015", "wmm_2020", "wmm_2025"]
+L_RUDDER_DIRECTION = ["no_order", "to_starboard", "to_port"]
+L_WIND_REFERENCE = ["true_north", "magnetic", "apparent", "true_boat", "true_water"]
+L_PRESSURE_SOURCE = ["atmospheric", "water", "steam", "compressed_air", "hydraulic", "filter", "altimeter_setting", "oil", "fuel"]
 
 LAYOUT = {
     127488: [("instance", 0, 8, U, "1"),
@@ -537,6 +582,33 @@ LAYOUT = {
              ("cog_reference", 8, 2, "lookup", L_DIRECTION),
              ("cog_rad", 16, 16, U, "0.0001"),
              ("sog_mps", 32, 16, U, "0.01")],
+    127245: [("instance", 0, 8, U, "1"),
+             ("direction_order", 8, 3, "lookup", L_RUDDER_DIRECTION),
+             ("angle_order_rad", 16, 16, S, "0.0001"),
+             ("position_rad", 32, 16, S, "0.0001")],
+    130306: [("sid", 0, 8, U, "1"),
+             ("wind_speed_mps", 8, 16, U, "0.01"),
+             ("wind_angle_rad", 24, 16, U, "0.0001"),
+             ("reference", 40, 3, "lookup", L_WIND_REFERENCE)],
+    130312: [("sid", 0, 8, U, "1"),
+             ("instance", 8, 8, U, "1"),
+             ("source", 16, 8, "lookup", L_TEMP),
+             ("actual_temperature_k", 24, 16, U, "0.01"),
+             ("set_temperature_k", 40, 16, U, "0.01")],
+    130313: [("sid", 0, 8, U, "1"),
+             ("instance", 8, 8, U, "1"),
+             ("source", 16, 8, "lookup", L_HUM),
+             ("actual_humidity_pct", 24, 16, S, "0.004"),
+             ("set_humidity_pct", 40, 16, S, "0.004")],
+    130314: [("sid", 0, 8, U, "1"),
+             ("instance", 8, 8, U, "1"),
+             ("source", 16, 8, "lookup", L_PRESSURE_SOURCE),
+             ("pressure_pa", 24, 32, S, "0.1")],
+    130316: [("sid", 0, 8, U, "1"),
+             ("instance", 8, 8, U, "1"),
+             ("source", 16, 8, "lookup", L_TEMP),
+             ("temperature_k", 24, 24, U, "0.001"),
+             ("set_temperature_k", 48, 16, U, "0.1")],
 }
 
 

@@ -151,6 +151,47 @@ constexpr std::array<std::string_view, 10> lookup_names(variation_source) noexce
           "wmm_2000", "wmm_2005",        "wmm_2010",        "wmm_2015",
           "wmm_2020", "wmm_2025"};
 }
+
+/// Which way a rudder is ordered to move (127245).
+enum class rudder_direction : std::uint8_t {
+  no_order = 0,
+  to_starboard = 1,
+  to_port = 2,
+};
+constexpr std::array<std::string_view, 3> lookup_names(rudder_direction) noexcept {
+  return {"no_order", "to_starboard", "to_port"};
+}
+
+/// What a wind speed and angle are measured against (130306): true over the ground from north,
+/// magnetic over the ground, apparent, true relative to the bow over the ground or through the
+/// water.
+enum class wind_reference : std::uint8_t {
+  true_north = 0,
+  magnetic = 1,
+  apparent = 2,
+  true_boat = 3,
+  true_water = 4,
+};
+constexpr std::array<std::string_view, 5> lookup_names(wind_reference) noexcept {
+  return {"true_north", "magnetic", "apparent", "true_boat", "true_water"};
+}
+
+/// What a pressure is measured in (130314).
+enum class pressure_source : std::uint8_t {
+  atmospheric = 0,
+  water = 1,
+  steam = 2,
+  compressed_air = 3,
+  hydraulic = 4,
+  filter = 5,
+  altimeter_setting = 6,
+  oil = 7,
+  fuel = 8,
+};
+constexpr std::array<std::string_view, 9> lookup_names(pressure_source) noexcept {
+  return {"atmospheric",       "water", "steam", "compressed_air", "hydraulic", "filter",
+          "altimeter_setting", "oil",   "fuel"};
+}
 // ---------------------------------------------------------------------------------------------
 // the PGNs
 
@@ -434,6 +475,115 @@ struct cog_sog_rapid {
       field<&cog_sog_rapid::cog_rad>("cog_rad", "COG"),
       field<&cog_sog_rapid::sog_mps>("sog_mps", "SOG"), reserved<16>);
   [[nodiscard]] constexpr bool operator==(const cog_sog_rapid&) const noexcept = default;
+};
+
+/// PGN 127245 Rudder: 8 bytes, single frame, priority 2, 10 Hz. The rudder's position and the order
+/// given to it, in radians, positive to starboard.
+struct rudder {
+  unsigned_number<8> instance;
+  lookup<nmea2000::rudder_direction, 3> direction_order;
+  signed_number<16, res::radian> angle_order_rad;
+  signed_number<16, res::radian> position_rad;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{127245, "rudder", "Rudder", 2, framing::single_frame, 100},
+                   field<&rudder::instance>("instance", "Instance"),
+                   field<&rudder::direction_order>("direction_order", "Direction Order"),
+                   reserved<5>, field<&rudder::angle_order_rad>("angle_order_rad", "Angle Order"),
+                   field<&rudder::position_rad>("position_rad", "Position"), reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const rudder&) const noexcept = default;
+};
+
+/// PGN 130306 Wind Data: 8 bytes, single frame, priority 2, 10 Hz. Wind speed and the angle it
+/// comes from, against the reference named.
+struct wind_data {
+  unsigned_number<8> sid;
+  unsigned_number<16, res::hundredth> wind_speed_mps;
+  unsigned_number<16, res::radian> wind_angle_rad;
+  lookup<nmea2000::wind_reference, 3> reference;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{130306, "wind_data", "Wind Data", 2, framing::single_frame, 100},
+                   field<&wind_data::sid>("sid", "Sequence ID"),
+                   field<&wind_data::wind_speed_mps>("wind_speed_mps", "Wind Speed"),
+                   field<&wind_data::wind_angle_rad>("wind_angle_rad", "Wind Angle"),
+                   field<&wind_data::reference>("reference", "Reference"), reserved<21>);
+  [[nodiscard]] constexpr bool operator==(const wind_data&) const noexcept = default;
+};
+
+/// PGN 130312 Temperature: 8 bytes, single frame, priority 5, every 2 s. A measured temperature and
+/// its set point, in K at 0.01 K.
+struct temperature {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::temperature_source, 8> source;
+  unsigned_number<16, res::hundredth> actual_temperature_k;
+  unsigned_number<16, res::hundredth> set_temperature_k;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130312, "temperature", "Temperature", 5, framing::single_frame, 2000},
+      field<&temperature::sid>("sid", "Sequence ID"),
+      field<&temperature::instance>("instance", "Instance"),
+      field<&temperature::source>("source", "Source"),
+      field<&temperature::actual_temperature_k>("actual_temperature_k", "Actual Temperature"),
+      field<&temperature::set_temperature_k>("set_temperature_k", "Set Temperature"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const temperature&) const noexcept = default;
+};
+
+/// PGN 130313 Humidity: 8 bytes, single frame, priority 5, every 2 s. A measured relative humidity
+/// and its set point, in % at 0.004 %.
+struct humidity {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::humidity_source, 8> source;
+  signed_number<16, res::humidity> actual_humidity_pct;
+  signed_number<16, res::humidity> set_humidity_pct;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130313, "humidity", "Humidity", 5, framing::single_frame, 2000},
+      field<&humidity::sid>("sid", "Sequence ID"),
+      field<&humidity::instance>("instance", "Instance"),
+      field<&humidity::source>("source", "Source"),
+      field<&humidity::actual_humidity_pct>("actual_humidity_pct", "Actual Humidity"),
+      field<&humidity::set_humidity_pct>("set_humidity_pct", "Set Humidity"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const humidity&) const noexcept = default;
+};
+
+/// PGN 130314 Actual Pressure: 8 bytes, single frame, priority 5, every 2 s. A measured pressure in
+/// Pa at 0.1 Pa, signed (a gauge pressure may be negative).
+struct actual_pressure {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::pressure_source, 8> source;
+  signed_number<32, res::tenth> pressure_pa;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130314, "actual_pressure", "Actual Pressure", 5, framing::single_frame, 2000},
+      field<&actual_pressure::sid>("sid", "Sequence ID"),
+      field<&actual_pressure::instance>("instance", "Instance"),
+      field<&actual_pressure::source>("source", "Source"),
+      field<&actual_pressure::pressure_pa>("pressure_pa", "Pressure"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const actual_pressure&) const noexcept = default;
+};
+
+/// PGN 130316 Temperature Extended Range: 8 bytes, single frame, priority 5, every 2 s. A measured
+/// temperature in K at 0.001 K (24 bits: up to 16 777 K) and its set point at 0.1 K.
+struct temperature_extended {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::temperature_source, 8> source;
+  unsigned_number<24, res::thousandth> temperature_k;
+  unsigned_number<16, res::tenth> set_temperature_k;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130316, "temperature_extended", "Temperature Extended Range", 5,
+               framing::single_frame, 2000},
+      field<&temperature_extended::sid>("sid", "Sequence ID"),
+      field<&temperature_extended::instance>("instance", "Instance"),
+      field<&temperature_extended::source>("source", "Source"),
+      field<&temperature_extended::temperature_k>("temperature_k", "Temperature"),
+      field<&temperature_extended::set_temperature_k>("set_temperature_k", "Set Temperature"));
+  [[nodiscard]] constexpr bool operator==(const temperature_extended&) const noexcept = default;
 };
 
 // ---------------------------------------------------------------------------------------------
