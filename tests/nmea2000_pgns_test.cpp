@@ -517,3 +517,20 @@ TEST_CASE("59392 ISO Acknowledgement: a capture decoded by hand, encoded back", 
   CHECK(m.acknowledged_pgn.raw() == 126998);
   check_codec(m, wire);
 }
+
+TEST_CASE("126992 System Time: dates past 2038 and to the end of the 16-bit day count",
+          "[126992]") {
+  // days 0x7000 = 28672 since 1970-01-01: 2048-07-02 (canboat's analyzer shows 1912-05-26,
+  // its seconds wrapping at 32 bits); time 0
+  constexpr std::array<std::uint8_t, 8> wire{0x01, 0xf0, 0x00, 0x70, 0x00, 0x00, 0x00, 0x00};
+  const auto m = n2k::decode<n2k::system_time>(wire);
+  CHECK(m.date.raw() == 28672);
+  CHECK(m.date.value() == days(2048, 7, 2));
+  CHECK(m.time.raw() == 0);
+  check_codec(m, wire);
+  // 0xfffc = 65532 days, the last ordinary value: 2149-06-03
+  n2k::system_time last = m;
+  last.date = n2k::day_count::from_raw(0xfffc);
+  CHECK(last.date.value() == days(2149, 6, 3));
+  check_codec(last, std::array<std::uint8_t, 8>{0x01, 0xf0, 0xfc, 0xff, 0x00, 0x00, 0x00, 0x00});
+}

@@ -140,9 +140,13 @@ def num(resolution):
     return cmp
 
 
-def lookup(names):
-    """ours: a snake_case name, or the number when unnamed; canboat: its display name."""
+def lookup(names, error=None):
+    """ours: a snake_case name, or the number when unnamed; canboat: its display name. error:
+    canboat's name for raw value 2 of a 2-bit lookup, J1939's "error", which seawire reads as
+    out_of_range."""
     def cmp(ours, theirs):
+        if error is not None and ours == "out_of_range":
+            return None if theirs == error else f"expected canboat {error!r}"
         r = null_rule(ours, theirs)
         if r != "continue":
             return r
@@ -276,7 +280,7 @@ CANBOAT_FIELDS = {
         "heading_rad": ("heading", num("0.0001")),
         "deviation_rad": ("deviation", num("0.0001")),
         "variation_rad": ("variation", num("0.0001")),
-        "reference": ("reference", lookup(DIRECTION_REFERENCE)),
+        "reference": ("reference", lookup(DIRECTION_REFERENCE, "Error")),
     },
     127251: {
         "sid": ("sid", num("1")),
@@ -306,7 +310,7 @@ CANBOAT_FIELDS = {
     },
     129026: {
         "sid": ("sid", num("1")),
-        "cog_reference": ("cogReference", lookup(DIRECTION_REFERENCE)),
+        "cog_reference": ("cogReference", lookup(DIRECTION_REFERENCE, "Error")),
         "cog_rad": ("cog", num("0.0001")),
         "sog_mps": ("sog", num("0.01")),
     },
@@ -400,7 +404,7 @@ CANBOAT_FIELDS = {
     129284: {
         "sid": ("sid", num("1")),
         "distance_to_waypoint_m": ("distanceToWaypoint", num("0.01")),
-        "course_bearing_reference": ("courseBearingReference", lookup(DIRECTION_REFERENCE)),
+        "course_bearing_reference": ("courseBearingReference", lookup(DIRECTION_REFERENCE, "Error")),
         "perpendicular_crossed": ("perpendicularCrossed", lookup(YES_NO)),
         "arrival_circle_entered": ("arrivalCircleEntered", lookup(YES_NO)),
         "calculation_type": ("calculationType", lookup(BEARING_MODE)),
@@ -416,7 +420,7 @@ CANBOAT_FIELDS = {
     },
     130577: {
         "data_mode": ("dataMode", lookup(RESIDUAL_MODE)),
-        "cog_reference": ("cogReference", lookup(DIRECTION_REFERENCE)),
+        "cog_reference": ("cogReference", lookup(DIRECTION_REFERENCE, "Error")),
         "sid": ("sid", num("1")),
         "cog_rad": ("cog", num("0.0001")),
         "sog_mps": ("sog", num("0.01")),
@@ -852,6 +856,7 @@ LAYOUT_EXTRA = b"""\
 2024-07-03T15:42:58.000Z,6,129539,35,255,8,00,f5,00,80,fe,7f,fd,7f
 2024-07-03T15:42:58.000Z,3,129283,35,255,8,01,b4,00,00,00,80,ff,ff
 2024-07-03T15:42:58.000Z,3,129033,35,255,8,fe,ff,ff,ff,ff,ff,00,80
+2024-07-03T15:42:58.000Z,3,126992,35,255,8,01,f0,00,70,00,00,00,00
 """
 
 
