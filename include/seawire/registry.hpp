@@ -150,7 +150,15 @@ struct append_pgns<nmea2000::pgn_list<P...>, More...> {
 
 /// Every NMEA 2000 PGN declared: decoded and encoded by name ("type":"PGN128259"). The ANELLO
 /// INS's inputs, then the others.
-using pgns = detail::append_pgns<nmea2000::ins_input_pgns, nmea2000::vessel_heading>::type;
+using pgns = detail::append_pgns<
+    nmea2000::ins_input_pgns, nmea2000::vessel_heading, nmea2000::rate_of_turn, nmea2000::attitude,
+    nmea2000::magnetic_variation, nmea2000::water_depth, nmea2000::position_rapid,
+    nmea2000::cog_sog_rapid, nmea2000::rudder, nmea2000::wind_data, nmea2000::temperature,
+    nmea2000::humidity, nmea2000::actual_pressure, nmea2000::temperature_extended,
+    nmea2000::battery_status, nmea2000::fluid_level, nmea2000::dc_detailed_status,
+    nmea2000::cross_track_error, nmea2000::system_time, nmea2000::time_date, nmea2000::gnss_dops,
+    nmea2000::navigation_data, nmea2000::direction_data, nmea2000::iso_request,
+    nmea2000::iso_acknowledgement>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

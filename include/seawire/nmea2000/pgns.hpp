@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// The NMEA 2000 PGNs the ANELLO Maritime INS takes as sensor input, and the vessel heading; each
-// struct is one PGN, its members in wire order, then its table (field.hpp). Values are SI as on
-// the wire (Pa, K, m/s, rad, plus rpm, L/h, %, s). Where ANELLO's field lists differ from what
-// devices send (128259's speed direction, 130311's source lookups, 127489's reserved byte), these
-// follow the wire: docs/nmea2000.md.
+// The NMEA 2000 PGNs seawire describes: those the ANELLO Maritime INS takes as sensor input, the
+// vessel heading, and the navigation, steering, environment and power PGNs of a vessel's bus.
+// Each struct is one PGN, its members in wire order, then its table (field.hpp). Values are SI
+// as on the wire (Pa, K, m/s, rad, rad/s, V, A, L, plus degrees of latitude and longitude, rpm,
+// L/h, %, Ah, s, min). Where ANELLO's field lists differ from what devices send (128259's speed
+// direction, 130311's source lookups, 127489's reserved byte), these follow the wire:
+// docs/nmea2000.md.
 
 #include <array>
 #include <cstddef>
@@ -130,18 +132,175 @@ constexpr std::array<std::string_view, 2> lookup_names(heading_reference) noexce
   return {"true", "magnetic"};
 }
 
+/// Where a magnetic variation comes from (127258): entered by hand, from a chart or table,
+/// computed, or a World Magnetic Model epoch.
+enum class variation_source : std::uint8_t {
+  manual = 0,
+  automatic_chart = 1,
+  automatic_table = 2,
+  automatic_calculation = 3,
+  wmm_2000 = 4,
+  wmm_2005 = 5,
+  wmm_2010 = 6,
+  wmm_2015 = 7,
+  wmm_2020 = 8,
+  wmm_2025 = 9,
+};
+constexpr std::array<std::string_view, 10> lookup_names(variation_source) noexcept {
+  return {"manual",   "automatic_chart", "automatic_table", "automatic_calculation",
+          "wmm_2000", "wmm_2005",        "wmm_2010",        "wmm_2015",
+          "wmm_2020", "wmm_2025"};
+}
+
+/// Which way a rudder is ordered to move (127245).
+enum class rudder_direction : std::uint8_t {
+  no_order = 0,
+  to_starboard = 1,
+  to_port = 2,
+};
+constexpr std::array<std::string_view, 3> lookup_names(rudder_direction) noexcept {
+  return {"no_order", "to_starboard", "to_port"};
+}
+
+/// What a wind speed and angle are measured against (130306): true over the ground from north,
+/// magnetic over the ground, apparent, true relative to the bow over the ground or through the
+/// water.
+enum class wind_reference : std::uint8_t {
+  true_north = 0,
+  magnetic = 1,
+  apparent = 2,
+  true_boat = 3,
+  true_water = 4,
+};
+constexpr std::array<std::string_view, 5> lookup_names(wind_reference) noexcept {
+  return {"true_north", "magnetic", "apparent", "true_boat", "true_water"};
+}
+
+/// What a pressure is measured in (130314).
+enum class pressure_source : std::uint8_t {
+  atmospheric = 0,
+  water = 1,
+  steam = 2,
+  compressed_air = 3,
+  hydraulic = 4,
+  filter = 5,
+  altimeter_setting = 6,
+  oil = 7,
+  fuel = 8,
+};
+constexpr std::array<std::string_view, 9> lookup_names(pressure_source) noexcept {
+  return {"atmospheric",       "water", "steam", "compressed_air", "hydraulic", "filter",
+          "altimeter_setting", "oil",   "fuel"};
+}
+
+/// What a tank holds (127505).
+enum class tank_type : std::uint8_t {
+  fuel = 0,
+  water = 1,
+  gray_water = 2,
+  live_well = 3,
+  oil = 4,
+  black_water = 5,
+};
+constexpr std::array<std::string_view, 6> lookup_names(tank_type) noexcept {
+  return {"fuel", "water", "gray_water", "live_well", "oil", "black_water"};
+}
+
+/// The kind of DC source (127506).
+enum class dc_source : std::uint8_t {
+  battery = 0,
+  alternator = 1,
+  converter = 2,
+  solar_cell = 3,
+  wind_generator = 4,
+};
+constexpr std::array<std::string_view, 5> lookup_names(dc_source) noexcept {
+  return {"battery", "alternator", "converter", "solar_cell", "wind_generator"};
+}
+
+/// How a navigation value was obtained (129283, 130577).
+enum class residual_mode : std::uint8_t {
+  autonomous = 0,
+  differential = 1,
+  estimated = 2,
+  simulator = 3,
+  manual = 4,
+};
+constexpr std::array<std::string_view, 5> lookup_names(residual_mode) noexcept {
+  return {"autonomous", "differential", "estimated", "simulator", "manual"};
+}
+
+/// A two-bit yes or no (raw 2 is an error, 3 not available).
+enum class yes_no : std::uint8_t {
+  no = 0,
+  yes = 1,
+};
+constexpr std::array<std::string_view, 2> lookup_names(yes_no) noexcept { return {"no", "yes"}; }
+
+/// The clock a system time comes from (126992).
+enum class time_source : std::uint8_t {
+  gps = 0,
+  glonass = 1,
+  radio_station = 2,
+  local_cesium_clock = 3,
+  local_rubidium_clock = 4,
+  local_crystal_clock = 5,
+};
+constexpr std::array<std::string_view, 6> lookup_names(time_source) noexcept {
+  return {"gps",
+          "glonass",
+          "radio_station",
+          "local_cesium_clock",
+          "local_rubidium_clock",
+          "local_crystal_clock"};
+}
+
+/// A GNSS fix mode (129539): one, two or three dimensions, or chosen by the receiver.
+enum class gnss_mode : std::uint8_t {
+  fix_1d = 0,
+  fix_2d = 1,
+  fix_3d = 2,
+  automatic = 3,
+};
+constexpr std::array<std::string_view, 4> lookup_names(gnss_mode) noexcept {
+  return {"1d", "2d", "3d", "auto"};
+}
+
+/// How a bearing to a waypoint is computed (129284).
+enum class bearing_mode : std::uint8_t {
+  great_circle = 0,
+  rhumb_line = 1,
+};
+constexpr std::array<std::string_view, 2> lookup_names(bearing_mode) noexcept {
+  return {"great_circle", "rhumb_line"};
+}
+
+/// An ISO acknowledgement's answer (59392): acknowledged, refused, access denied, or busy.
+enum class iso_control : std::uint8_t {
+  ack = 0,
+  nak = 1,
+  access_denied = 2,
+  address_busy = 3,
+};
+constexpr std::array<std::string_view, 4> lookup_names(iso_control) noexcept {
+  return {"ack", "nak", "access_denied", "address_busy"};
+}
 // ---------------------------------------------------------------------------------------------
 // the PGNs
 
 namespace res {
-inline constexpr resolution quarter{25, -2};    ///< 0.25
-inline constexpr resolution hundred{1, 2};      ///< 100
-inline constexpr resolution thousand{1, 3};     ///< 1000
-inline constexpr resolution tenth{1, -1};       ///< 0.1
-inline constexpr resolution hundredth{1, -2};   ///< 0.01
-inline constexpr resolution thousandth{1, -3};  ///< 0.001
-inline constexpr resolution humidity{4, -3};    ///< 0.004
-inline constexpr resolution radian{1, -4};      ///< 0.0001 rad
+inline constexpr resolution quarter{25, -2};       ///< 0.25
+inline constexpr resolution hundred{1, 2};         ///< 100
+inline constexpr resolution thousand{1, 3};        ///< 1000
+inline constexpr resolution tenth{1, -1};          ///< 0.1
+inline constexpr resolution hundredth{1, -2};      ///< 0.01
+inline constexpr resolution thousandth{1, -3};     ///< 0.001
+inline constexpr resolution humidity{4, -3};       ///< 0.004
+inline constexpr resolution radian{1, -4};         ///< 0.0001 rad
+inline constexpr resolution turn_rate{3125, -11};  ///< 3.125e-8 rad/s
+inline constexpr resolution ten{1, 1};             ///< 10
+inline constexpr resolution degree_e7{1, -7};      ///< 1e-7 degree
+inline constexpr resolution minute{6, 1};          ///< 60 s
 }  // namespace res
 
 /// PGN 127488 Engine Parameters, Rapid Update: 8 bytes, single frame, priority 2, 10 Hz.
@@ -315,6 +474,446 @@ struct vessel_heading {
       field<&vessel_heading::variation_rad>("variation_rad", "Variation"),
       field<&vessel_heading::reference>("reference", "Reference"), reserved<6>);
   [[nodiscard]] constexpr bool operator==(const vessel_heading&) const noexcept = default;
+};
+
+/// PGN 127251 Rate of Turn: 8 bytes, single frame, priority 2, 10 Hz. Positive turning to
+/// starboard, in rad/s at 3.125e-8 rad/s (1/32 of 1e-6).
+struct rate_of_turn {
+  unsigned_number<8> sid;
+  signed_number<32, res::turn_rate> rate_radps;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{127251, "rate_of_turn", "Rate of Turn", 2, framing::single_frame, 100},
+                   field<&rate_of_turn::sid>("sid", "Sequence ID"),
+                   field<&rate_of_turn::rate_radps>("rate_radps", "Rate"), reserved<24>);
+  [[nodiscard]] constexpr bool operator==(const rate_of_turn&) const noexcept = default;
+};
+
+/// PGN 127257 Attitude: 8 bytes, single frame, priority 3, 1 Hz. Angles in radians: yaw (heading),
+/// pitch positive bow up, roll positive starboard down.
+struct attitude {
+  unsigned_number<8> sid;
+  signed_number<16, res::radian> yaw_rad;
+  signed_number<16, res::radian> pitch_rad;
+  signed_number<16, res::radian> roll_rad;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127257, "attitude", "Attitude", 3, framing::single_frame, 1000},
+      field<&attitude::sid>("sid", "Sequence ID"), field<&attitude::yaw_rad>("yaw_rad", "Yaw"),
+      field<&attitude::pitch_rad>("pitch_rad", "Pitch"),
+      field<&attitude::roll_rad>("roll_rad", "Roll"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const attitude&) const noexcept = default;
+};
+
+/// PGN 127258 Magnetic Variation: 8 bytes, single frame, priority 7, 1 Hz. The variation (positive
+/// east) at the vessel, where it comes from and the date it is valid from.
+struct magnetic_variation {
+  unsigned_number<8> sid;
+  lookup<nmea2000::variation_source, 4> source;
+  nmea2000::day_count age_of_service;
+  signed_number<16, res::radian> variation_rad;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127258, "magnetic_variation", "Magnetic Variation", 7, framing::single_frame, 1000},
+      field<&magnetic_variation::sid>("sid", "Sequence ID"),
+      field<&magnetic_variation::source>("source", "Source"), reserved<4>,
+      field<&magnetic_variation::age_of_service>("age_of_service", "Age of Service"),
+      field<&magnetic_variation::variation_rad>("variation_rad", "Variation"), reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const magnetic_variation&) const noexcept = default;
+};
+
+/// PGN 128267 Water Depth: 8 bytes, single frame, priority 3, 1 Hz. Depth below the transducer; the
+/// offset from the transducer to the surface (positive) or the keel (negative), and the sounder's
+/// range.
+struct water_depth {
+  unsigned_number<8> sid;
+  unsigned_number<32, res::hundredth> depth_m;
+  signed_number<16, res::thousandth> offset_m;
+  unsigned_number<8, res::ten> range_m;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{128267, "water_depth", "Water Depth", 3, framing::single_frame, 1000},
+                   field<&water_depth::sid>("sid", "Sequence ID"),
+                   field<&water_depth::depth_m>("depth_m", "Depth"),
+                   field<&water_depth::offset_m>("offset_m", "Offset"),
+                   field<&water_depth::range_m>("range_m", "Range"));
+  [[nodiscard]] constexpr bool operator==(const water_depth&) const noexcept = default;
+};
+
+/// PGN 129025 Position, Rapid Update: 8 bytes, single frame, priority 2, 10 Hz. Latitude and
+/// longitude in degrees (WGS 84) at 1e-7 degree, north and east positive.
+struct position_rapid {
+  signed_number<32, res::degree_e7> latitude_deg;
+  signed_number<32, res::degree_e7> longitude_deg;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129025, "position_rapid", "Position, Rapid Update", 2, framing::single_frame, 100},
+      field<&position_rapid::latitude_deg>("latitude_deg", "Latitude"),
+      field<&position_rapid::longitude_deg>("longitude_deg", "Longitude"));
+  [[nodiscard]] constexpr bool operator==(const position_rapid&) const noexcept = default;
+};
+
+/// PGN 129026 COG & SOG, Rapid Update: 8 bytes, single frame, priority 2, 4 Hz. Course and speed
+/// over the ground; the course is from the reference named.
+struct cog_sog_rapid {
+  unsigned_number<8> sid;
+  lookup<nmea2000::heading_reference, 2> cog_reference;
+  unsigned_number<16, res::radian> cog_rad;
+  unsigned_number<16, res::hundredth> sog_mps;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129026, "cog_sog_rapid", "COG & SOG, Rapid Update", 2, framing::single_frame, 250},
+      field<&cog_sog_rapid::sid>("sid", "Sequence ID"),
+      field<&cog_sog_rapid::cog_reference>("cog_reference", "COG Reference"), reserved<6>,
+      field<&cog_sog_rapid::cog_rad>("cog_rad", "COG"),
+      field<&cog_sog_rapid::sog_mps>("sog_mps", "SOG"), reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const cog_sog_rapid&) const noexcept = default;
+};
+
+/// PGN 127245 Rudder: 8 bytes, single frame, priority 2, 10 Hz. The rudder's position and the order
+/// given to it, in radians, positive to starboard.
+struct rudder {
+  unsigned_number<8> instance;
+  lookup<nmea2000::rudder_direction, 3> direction_order;
+  signed_number<16, res::radian> angle_order_rad;
+  signed_number<16, res::radian> position_rad;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{127245, "rudder", "Rudder", 2, framing::single_frame, 100},
+                   field<&rudder::instance>("instance", "Instance"),
+                   field<&rudder::direction_order>("direction_order", "Direction Order"),
+                   reserved<5>, field<&rudder::angle_order_rad>("angle_order_rad", "Angle Order"),
+                   field<&rudder::position_rad>("position_rad", "Position"), reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const rudder&) const noexcept = default;
+};
+
+/// PGN 130306 Wind Data: 8 bytes, single frame, priority 2, 10 Hz. Wind speed and the angle it
+/// comes from, against the reference named.
+struct wind_data {
+  unsigned_number<8> sid;
+  unsigned_number<16, res::hundredth> wind_speed_mps;
+  unsigned_number<16, res::radian> wind_angle_rad;
+  lookup<nmea2000::wind_reference, 3> reference;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{130306, "wind_data", "Wind Data", 2, framing::single_frame, 100},
+                   field<&wind_data::sid>("sid", "Sequence ID"),
+                   field<&wind_data::wind_speed_mps>("wind_speed_mps", "Wind Speed"),
+                   field<&wind_data::wind_angle_rad>("wind_angle_rad", "Wind Angle"),
+                   field<&wind_data::reference>("reference", "Reference"), reserved<21>);
+  [[nodiscard]] constexpr bool operator==(const wind_data&) const noexcept = default;
+};
+
+/// PGN 130312 Temperature: 8 bytes, single frame, priority 5, every 2 s. A measured temperature and
+/// its set point, in K at 0.01 K.
+struct temperature {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::temperature_source, 8> source;
+  unsigned_number<16, res::hundredth> actual_temperature_k;
+  unsigned_number<16, res::hundredth> set_temperature_k;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130312, "temperature", "Temperature", 5, framing::single_frame, 2000},
+      field<&temperature::sid>("sid", "Sequence ID"),
+      field<&temperature::instance>("instance", "Instance"),
+      field<&temperature::source>("source", "Source"),
+      field<&temperature::actual_temperature_k>("actual_temperature_k", "Actual Temperature"),
+      field<&temperature::set_temperature_k>("set_temperature_k", "Set Temperature"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const temperature&) const noexcept = default;
+};
+
+/// PGN 130313 Humidity: 8 bytes, single frame, priority 5, every 2 s. A measured relative humidity
+/// and its set point, in % at 0.004 %.
+struct humidity {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::humidity_source, 8> source;
+  signed_number<16, res::humidity> actual_humidity_pct;
+  signed_number<16, res::humidity> set_humidity_pct;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130313, "humidity", "Humidity", 5, framing::single_frame, 2000},
+      field<&humidity::sid>("sid", "Sequence ID"),
+      field<&humidity::instance>("instance", "Instance"),
+      field<&humidity::source>("source", "Source"),
+      field<&humidity::actual_humidity_pct>("actual_humidity_pct", "Actual Humidity"),
+      field<&humidity::set_humidity_pct>("set_humidity_pct", "Set Humidity"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const humidity&) const noexcept = default;
+};
+
+/// PGN 130314 Actual Pressure: 8 bytes, single frame, priority 5, every 2 s. A measured pressure in
+/// Pa at 0.1 Pa, signed (a gauge pressure may be negative).
+struct actual_pressure {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::pressure_source, 8> source;
+  signed_number<32, res::tenth> pressure_pa;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130314, "actual_pressure", "Actual Pressure", 5, framing::single_frame, 2000},
+      field<&actual_pressure::sid>("sid", "Sequence ID"),
+      field<&actual_pressure::instance>("instance", "Instance"),
+      field<&actual_pressure::source>("source", "Source"),
+      field<&actual_pressure::pressure_pa>("pressure_pa", "Pressure"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const actual_pressure&) const noexcept = default;
+};
+
+/// PGN 130316 Temperature Extended Range: 8 bytes, single frame, priority 5, every 2 s. A measured
+/// temperature in K at 0.001 K (24 bits: up to 16 777 K) and its set point at 0.1 K.
+struct temperature_extended {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::temperature_source, 8> source;
+  unsigned_number<24, res::thousandth> temperature_k;
+  unsigned_number<16, res::tenth> set_temperature_k;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130316, "temperature_extended", "Temperature Extended Range", 5,
+               framing::single_frame, 2000},
+      field<&temperature_extended::sid>("sid", "Sequence ID"),
+      field<&temperature_extended::instance>("instance", "Instance"),
+      field<&temperature_extended::source>("source", "Source"),
+      field<&temperature_extended::temperature_k>("temperature_k", "Temperature"),
+      field<&temperature_extended::set_temperature_k>("set_temperature_k", "Set Temperature"));
+  [[nodiscard]] constexpr bool operator==(const temperature_extended&) const noexcept = default;
+};
+
+/// PGN 127508 Battery Status: 8 bytes, single frame, priority 6, every 1.5 s. A battery's voltage,
+/// current (positive charging) and temperature; the sequence ID comes last.
+struct battery_status {
+  unsigned_number<8> instance;
+  signed_number<16, res::hundredth> voltage_v;
+  signed_number<16, res::tenth> current_a;
+  unsigned_number<16, res::hundredth> temperature_k;
+  unsigned_number<8> sid;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127508, "battery_status", "Battery Status", 6, framing::single_frame, 1500},
+      field<&battery_status::instance>("instance", "Instance"),
+      field<&battery_status::voltage_v>("voltage_v", "Voltage"),
+      field<&battery_status::current_a>("current_a", "Current"),
+      field<&battery_status::temperature_k>("temperature_k", "Temperature"),
+      field<&battery_status::sid>("sid", "Sequence ID"));
+  [[nodiscard]] constexpr bool operator==(const battery_status&) const noexcept = default;
+};
+
+/// PGN 127505 Fluid Level: 8 bytes, single frame, priority 6, every 2.5 s. A tank's level in % of
+/// its capacity (litres at 0.1 L); instance and type share the first byte.
+struct fluid_level {
+  unsigned_number<4> instance;
+  lookup<nmea2000::tank_type, 4> fluid_type;
+  signed_number<16, res::humidity> level_pct;
+  unsigned_number<32, res::tenth> capacity_l;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{127505, "fluid_level", "Fluid Level", 6, framing::single_frame, 2500},
+                   field<&fluid_level::instance>("instance", "Instance"),
+                   field<&fluid_level::fluid_type>("fluid_type", "Type"),
+                   field<&fluid_level::level_pct>("level_pct", "Level"),
+                   field<&fluid_level::capacity_l>("capacity_l", "Capacity"), reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const fluid_level&) const noexcept = default;
+};
+
+/// PGN 127506 DC Detailed Status: 11 bytes, fast packet, priority 6, every 1.5 s. A DC source's
+/// charge and health in %, the time left at the present rate (whole minutes, in s), the ripple
+/// voltage and the capacity left in Ah.
+struct dc_detailed_status {
+  unsigned_number<8> sid;
+  unsigned_number<8> instance;
+  lookup<nmea2000::dc_source, 8> dc_type;
+  unsigned_number<8> state_of_charge_pct;
+  unsigned_number<8> state_of_health_pct;
+  unsigned_number<16, res::minute> time_remaining_s;
+  unsigned_number<16, res::thousandth> ripple_voltage_v;
+  unsigned_number<16> remaining_capacity_ah;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127506, "dc_detailed_status", "DC Detailed Status", 6, framing::fast_packet, 1500},
+      field<&dc_detailed_status::sid>("sid", "Sequence ID"),
+      field<&dc_detailed_status::instance>("instance", "Instance"),
+      field<&dc_detailed_status::dc_type>("dc_type", "DC Type"),
+      field<&dc_detailed_status::state_of_charge_pct>("state_of_charge_pct", "State of Charge"),
+      field<&dc_detailed_status::state_of_health_pct>("state_of_health_pct", "State of Health"),
+      field<&dc_detailed_status::time_remaining_s>("time_remaining_s", "Time Remaining"),
+      field<&dc_detailed_status::ripple_voltage_v>("ripple_voltage_v", "Ripple Voltage"),
+      field<&dc_detailed_status::remaining_capacity_ah>("remaining_capacity_ah",
+                                                        "Remaining Capacity"));
+  [[nodiscard]] constexpr bool operator==(const dc_detailed_status&) const noexcept = default;
+};
+
+/// PGN 129283 Cross Track Error: 8 bytes, single frame, priority 3, 1 Hz. The distance off the
+/// track in m at 0.01 m (signed: the side is the sign), how it was obtained, and whether navigation
+/// has ended.
+struct cross_track_error {
+  unsigned_number<8> sid;
+  lookup<nmea2000::residual_mode, 4> xte_mode;
+  lookup<nmea2000::yes_no, 2> navigation_terminated;
+  signed_number<32, res::hundredth> xte_m;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129283, "cross_track_error", "Cross Track Error", 3, framing::single_frame, 1000},
+      field<&cross_track_error::sid>("sid", "Sequence ID"),
+      field<&cross_track_error::xte_mode>("xte_mode", "XTE Mode"), reserved<2>,
+      field<&cross_track_error::navigation_terminated>("navigation_terminated",
+                                                       "Navigation Terminated"),
+      field<&cross_track_error::xte_m>("xte_m", "XTE"), reserved<16>);
+  [[nodiscard]] constexpr bool operator==(const cross_track_error&) const noexcept = default;
+};
+
+/// PGN 126992 System Time: 8 bytes, single frame, priority 3, 1 Hz. The date and time (UTC) and the
+/// clock they come from.
+struct system_time {
+  unsigned_number<8> sid;
+  lookup<nmea2000::time_source, 4> source;
+  nmea2000::day_count date;
+  nmea2000::time_since_midnight time;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{126992, "system_time", "System Time", 3, framing::single_frame, 1000},
+      field<&system_time::sid>("sid", "Sequence ID"),
+      field<&system_time::source>("source", "Source"), reserved<4>,
+      field<&system_time::date>("date", "Date"), field<&system_time::time>("time", "Time"));
+  [[nodiscard]] constexpr bool operator==(const system_time&) const noexcept = default;
+};
+
+/// PGN 129033 Time & Date: 8 bytes, single frame, priority 3, 1 Hz. The date and time (UTC) and the
+/// local time's offset from it (whole minutes, in s).
+struct time_date {
+  nmea2000::day_count date;
+  nmea2000::time_since_midnight time;
+  signed_number<16, res::minute> local_offset_s;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{129033, "time_date", "Time & Date", 3, framing::single_frame, 1000},
+                   field<&time_date::date>("date", "Date"), field<&time_date::time>("time", "Time"),
+                   field<&time_date::local_offset_s>("local_offset_s", "Local Offset"));
+  [[nodiscard]] constexpr bool operator==(const time_date&) const noexcept = default;
+};
+
+/// PGN 129539 GNSS DOPs: 8 bytes, single frame, priority 6, 1 Hz. Dilutions of precision
+/// (horizontal, vertical, time) at 0.01, and the fix mode wanted and obtained.
+struct gnss_dops {
+  unsigned_number<8> sid;
+  lookup<nmea2000::gnss_mode, 3> desired_mode;
+  lookup<nmea2000::gnss_mode, 3> actual_mode;
+  signed_number<16, res::hundredth> hdop;
+  signed_number<16, res::hundredth> vdop;
+  signed_number<16, res::hundredth> tdop;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{129539, "gnss_dops", "GNSS DOPs", 6, framing::single_frame, 1000},
+                   field<&gnss_dops::sid>("sid", "Sequence ID"),
+                   field<&gnss_dops::desired_mode>("desired_mode", "Desired Mode"),
+                   field<&gnss_dops::actual_mode>("actual_mode", "Actual Mode"), reserved<2>,
+                   field<&gnss_dops::hdop>("hdop", "HDOP"), field<&gnss_dops::vdop>("vdop", "VDOP"),
+                   field<&gnss_dops::tdop>("tdop", "TDOP"));
+  [[nodiscard]] constexpr bool operator==(const gnss_dops&) const noexcept = default;
+};
+
+/// PGN 129284 Navigation Data: 34 bytes, fast packet, priority 3, 1 Hz. Progress toward the
+/// destination waypoint: distance, bearings, the estimated arrival (UTC), the waypoints' numbers
+/// and the destination's position.
+struct navigation_data {
+  unsigned_number<8> sid;
+  unsigned_number<32, res::hundredth> distance_to_waypoint_m;
+  lookup<nmea2000::heading_reference, 2> course_bearing_reference;
+  lookup<nmea2000::yes_no, 2> perpendicular_crossed;
+  lookup<nmea2000::yes_no, 2> arrival_circle_entered;
+  lookup<nmea2000::bearing_mode, 2> calculation_type;
+  nmea2000::time_since_midnight eta_time;
+  nmea2000::day_count eta_date;
+  unsigned_number<16, res::radian> bearing_origin_to_destination_rad;
+  unsigned_number<16, res::radian> bearing_position_to_destination_rad;
+  unsigned_number<32> origin_waypoint_number;
+  unsigned_number<32> destination_waypoint_number;
+  signed_number<32, res::degree_e7> destination_latitude_deg;
+  signed_number<32, res::degree_e7> destination_longitude_deg;
+  signed_number<16, res::hundredth> waypoint_closing_velocity_mps;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129284, "navigation_data", "Navigation Data", 3, framing::fast_packet, 1000},
+      field<&navigation_data::sid>("sid", "Sequence ID"),
+      field<&navigation_data::distance_to_waypoint_m>("distance_to_waypoint_m",
+                                                      "Distance to Waypoint"),
+      field<&navigation_data::course_bearing_reference>("course_bearing_reference",
+                                                        "Course/Bearing Reference"),
+      field<&navigation_data::perpendicular_crossed>("perpendicular_crossed",
+                                                     "Perpendicular Crossed"),
+      field<&navigation_data::arrival_circle_entered>("arrival_circle_entered",
+                                                      "Arrival Circle Entered"),
+      field<&navigation_data::calculation_type>("calculation_type", "Calculation Type"),
+      field<&navigation_data::eta_time>("eta_time", "ETA Time"),
+      field<&navigation_data::eta_date>("eta_date", "ETA Date"),
+      field<&navigation_data::bearing_origin_to_destination_rad>(
+          "bearing_origin_to_destination_rad", "Bearing, Origin to Destination Waypoint"),
+      field<&navigation_data::bearing_position_to_destination_rad>(
+          "bearing_position_to_destination_rad", "Bearing, Position to Destination Waypoint"),
+      field<&navigation_data::origin_waypoint_number>("origin_waypoint_number",
+                                                      "Origin Waypoint Number"),
+      field<&navigation_data::destination_waypoint_number>("destination_waypoint_number",
+                                                           "Destination Waypoint Number"),
+      field<&navigation_data::destination_latitude_deg>("destination_latitude_deg",
+                                                        "Destination Latitude"),
+      field<&navigation_data::destination_longitude_deg>("destination_longitude_deg",
+                                                         "Destination Longitude"),
+      field<&navigation_data::waypoint_closing_velocity_mps>("waypoint_closing_velocity_mps",
+                                                             "Waypoint Closing Velocity"));
+  [[nodiscard]] constexpr bool operator==(const navigation_data&) const noexcept = default;
+};
+
+/// PGN 130577 Direction Data: 14 bytes, fast packet, priority 3, 1 Hz. Course and speed over the
+/// ground, heading and speed through the water, and the current's set and drift.
+struct direction_data {
+  lookup<nmea2000::residual_mode, 4> data_mode;
+  lookup<nmea2000::heading_reference, 2> cog_reference;
+  unsigned_number<8> sid;
+  unsigned_number<16, res::radian> cog_rad;
+  unsigned_number<16, res::hundredth> sog_mps;
+  unsigned_number<16, res::radian> heading_rad;
+  unsigned_number<16, res::hundredth> speed_water_mps;
+  unsigned_number<16, res::radian> set_rad;
+  unsigned_number<16, res::hundredth> drift_mps;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{130577, "direction_data", "Direction Data", 3, framing::fast_packet, 1000},
+      field<&direction_data::data_mode>("data_mode", "Data Mode"),
+      field<&direction_data::cog_reference>("cog_reference", "COG Reference"), reserved<2>,
+      field<&direction_data::sid>("sid", "Sequence ID"),
+      field<&direction_data::cog_rad>("cog_rad", "COG"),
+      field<&direction_data::sog_mps>("sog_mps", "SOG"),
+      field<&direction_data::heading_rad>("heading_rad", "Heading"),
+      field<&direction_data::speed_water_mps>("speed_water_mps", "Speed through Water"),
+      field<&direction_data::set_rad>("set_rad", "Set"),
+      field<&direction_data::drift_mps>("drift_mps", "Drift"));
+  [[nodiscard]] constexpr bool operator==(const direction_data&) const noexcept = default;
+};
+
+/// PGN 59904 ISO Request: 3 bytes, single frame, priority 6, on demand. Asks the device addressed
+/// (or every device, destination 255) to send the PGN named. An addressed (PDU1) PGN: the
+/// destination is in the CAN identifier.
+struct iso_request {
+  unsigned_number<24> requested_pgn;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{59904, "iso_request", "ISO Request", 6, framing::single_frame, 0},
+                   field<&iso_request::requested_pgn>("requested_pgn", "PGN"));
+  [[nodiscard]] constexpr bool operator==(const iso_request&) const noexcept = default;
+};
+
+/// PGN 59392 ISO Acknowledgement: 8 bytes, single frame, priority 6, on demand. A device's answer
+/// to a request or command for the PGN named. An addressed (PDU1) PGN.
+struct iso_acknowledgement {
+  lookup<nmea2000::iso_control, 8> control;
+  unsigned_number<8> group_function;
+  unsigned_number<24> acknowledged_pgn;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{59392, "iso_acknowledgement", "ISO Acknowledgement", 6, framing::single_frame, 0},
+      field<&iso_acknowledgement::control>("control", "Control"),
+      field<&iso_acknowledgement::group_function>("group_function", "Group Function"), reserved<24>,
+      field<&iso_acknowledgement::acknowledged_pgn>("acknowledged_pgn", "PGN"));
+  [[nodiscard]] constexpr bool operator==(const iso_acknowledgement&) const noexcept = default;
 };
 
 // ---------------------------------------------------------------------------------------------
