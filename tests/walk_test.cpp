@@ -3,6 +3,7 @@
 // field once in wire order with its name, key, unit, wire facts, value and state; the layout
 // without a message; and the writers that are loops over it.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <optional>
@@ -275,6 +276,20 @@ TEST_CASE("walk: a frame field a strict sender could not have written is out_of_
   nmea::json_buffer<1024> csv;
   write_csv_cells(csv, f);
   CHECK(std::string_view(csv.view()).starts_with("361,,,,,,,,,9,-101,100,"));
+}
+
+TEST_CASE("walk: units from the name's last word, rates and charges too") {
+  const auto turn = layout<nmea2000::rate_of_turn>();
+  const auto rate =
+      std::find_if(turn.begin(), turn.end(), [](const seen& f) { return f.name == "rate_radps"; });
+  REQUIRE(rate != turn.end());
+  CHECK(rate->unit == "radps");
+  const auto dc = layout<nmea2000::dc_detailed_status>();
+  const auto charge = std::find_if(dc.begin(), dc.end(),
+                                   [](const seen& f) { return f.name == "remaining_capacity_ah"; });
+  REQUIRE(charge != dc.end());
+  CHECK(charge->unit == "ah");
+  CHECK(seawire::detail::unit_of_name("dc_instance").empty());
 }
 
 TEST_CASE("walk: the layout has the message's facts without a message") {

@@ -53,9 +53,9 @@ struct binary_field {
 /// The unit a field's name ends with, by seawire's naming rule (speed_water_mps, heading_deg,
 /// altitude_m); "" for a name that ends with no unit.
 [[nodiscard]] constexpr std::string_view unit_of_name(std::string_view name) noexcept {
-  constexpr std::string_view units[] = {"deg",  "mps", "m",   "pct", "hpa", "c",     "k",
-                                        "rpm",  "pa",  "s",   "v",   "a",   "knots", "kmh",
-                                        "degs", "rad", "kpa", "l",   "lph", "hz",    "ms"};
+  constexpr std::string_view units[] = {"deg", "mps", "m",   "pct", "hpa",   "c",     "k",    "rpm",
+                                        "pa",  "s",   "v",   "a",   "knots", "kmh",   "degs", "rad",
+                                        "kpa", "l",   "lph", "hz",  "ms",    "radps", "ah"};
   const std::size_t at = name.rfind('_');
   if (at == std::string_view::npos) return {};
   const std::string_view last = name.substr(at + 1);

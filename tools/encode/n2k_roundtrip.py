@@ -64,7 +64,7 @@ for path in sorted(glob.glob(os.path.join(DATA, "*.in"))):
     # Same format in and out: every message, interface and time included, is identical.
     fmt = {"01": "canboat", "02": "candump_log", "03": "candump_log", "04": "yd_raw",
            "08": "canboat", "09": "candump_log", "10": "yd_raw",
-           "30": "actisense_n2k_ascii"}.get(name[:2])
+           "40": "actisense_n2k_ascii"}.get(name[:2])
     if fmt:
         enc = run(ENCODE, ["--output", fmt], first.stdout)
         second = run(DECODE, [], enc.stdout)
