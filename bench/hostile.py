@@ -11,6 +11,7 @@ Nothing here is a test: the tests that fail when a bound is lost are the program
 (tools/*/..._test.py); these are the figures.
 """
 
+import fcntl
 import functools
 import os
 import re
@@ -108,9 +109,24 @@ def stuck_feed():
     """seawire-anello-feed writing to a pty nobody reads: how long SIGTERM takes to end it."""
     master, slave = os.openpty()
     name = os.ttyname(slave)
-    p = subprocess.Popen([program("anello-feed"), "--device", name, "--rate", "50"],
+    p = subprocess.Popen([program("anello-feed"), "--device", name, "--rate", "10"],
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    time.sleep(3)  # long enough to fill the pty's buffer
+    time.sleep(0.5)
+    # Fill the pty from here, never reading the other side, until a pause frees no room (the
+    # kernel moves written bytes on to the master side a moment later).
+    fcntl.fcntl(slave, fcntl.F_SETFL, fcntl.fcntl(slave, fcntl.F_GETFL) | os.O_NONBLOCK)
+    for _ in range(50):
+        wrote = 0
+        for size in (4096, 64, 1):
+            try:
+                while True:
+                    wrote += os.write(slave, b"x" * size)
+            except BlockingIOError:
+                pass
+        if wrote == 0:
+            break
+        time.sleep(0.1)
+    time.sleep(1)  # the feed's next writes find no room
     start = time.monotonic()
     p.send_signal(signal.SIGTERM)
     try:
