@@ -158,7 +158,11 @@ using pgns = detail::append_pgns<
     nmea2000::battery_status, nmea2000::fluid_level, nmea2000::dc_detailed_status,
     nmea2000::cross_track_error, nmea2000::system_time, nmea2000::time_date, nmea2000::gnss_dops,
     nmea2000::navigation_data, nmea2000::direction_data, nmea2000::iso_request,
-    nmea2000::iso_acknowledgement>::type;
+    nmea2000::iso_acknowledgement,
+    // ---- strings ----
+    nmea2000::product_information, nmea2000::configuration_information,
+    nmea2000::ais_class_a_static_data, nmea2000::ais_class_b_static_data_a,
+    nmea2000::ais_class_b_static_data_b>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

@@ -395,6 +395,10 @@ int main() {
                                "What a PGN field's raw value holds.", kind::value);
   table<nmea2000::framing>("seawire::nmea2000::framing", "nmea2000/field.hpp",
                            "How a PGN is carried: one CAN frame or a fast packet.", kind::value);
+  table<nmea2000::text_encoding>(
+      "seawire::nmea2000::text_encoding", "nmea2000/field.hpp",
+      "What a counted string's encoding byte says its characters are (`counted_text::control()`).",
+      kind::value);
   table<nmea2000::fast_packet_drop>("seawire::nmea2000::fast_packet_drop",
                                     "nmea2000/fast_packet.hpp",
                                     "Why a fast-packet assembler dropped frames.", kind::value);

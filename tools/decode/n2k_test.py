@@ -59,7 +59,8 @@ def is_number(v):
 
 NULLS = (None, "out_of_range", "reserved")  # all shown as null by canboat -empty
 META = {"type", "time_s", "interface", "direction", "prio", "src", "dst"}
-FAST_PACKET = {127489, 128275, 130578, 127506, 129284, 130577}
+FAST_PACKET = {127489, 128275, 130578, 127506, 129284, 130577,
+               126996, 126998, 129794, 129809, 129810}  # strings
 
 
 # ---------------------------------------------------------------------------------------------
@@ -110,6 +111,70 @@ TIME_SOURCE = {"gps": "GPS", "glonass": "GLONASS", "radio_station": "Radio Stati
 GNSS_MODE = {"1d": "1D", "2d": "2D", "3d": "3D", "auto": "Auto"}
 BEARING_MODE = {"great_circle": "Great Circle", "rhumb_line": "Rhumbline"}
 ISO_CONTROL = {"ack": "ACK", "nak": "NAK", "access_denied": "Access Denied", "address_busy": "Address Busy"}
+# strings: product information and AIS static data
+CERTIFICATION_LEVEL = {"level_a": "Level A", "level_b": "Level B"}
+AIS_MESSAGE_ID = {"static_and_voyage_related_data": "Static and voyage related data",
+                  "static_data_report": "Static data report"}
+REPEAT_INDICATOR = {"initial": "Initial", "first_retransmission": "First retransmission",
+                    "second_retransmission": "Second retransmission",
+                    "final_retransmission": "Final retransmission"}
+SHIP_TYPE = {"unavailable": "Unavailable", "wing_in_ground": "Wing In Ground",
+             "wing_in_ground_hazard_cat_x": "Wing In Ground (hazard cat X)",
+             "wing_in_ground_hazard_cat_y": "Wing In Ground (hazard cat Y)",
+             "wing_in_ground_hazard_cat_z": "Wing In Ground (hazard cat Z)",
+             "wing_in_ground_hazard_cat_os": "Wing In Ground (hazard cat OS)",
+             "wing_in_ground_no_additional_information": "Wing In Ground (no additional information)",
+             "fishing": "Fishing", "towing": "Towing",
+             "towing_exceeds_200m_or_wider_than_25m": "Towing exceeds 200m or wider than 25m",
+             "engaged_in_dredging_or_underwater_operations": "Engaged in dredging or underwater operations",
+             "engaged_in_diving_operations": "Engaged in diving operations",
+             "engaged_in_military_operations": "Engaged in military operations",
+             "sailing": "Sailing", "pleasure": "Pleasure", "high_speed_craft": "High speed craft",
+             "high_speed_craft_hazard_cat_x": "High speed craft (hazard cat X)",
+             "high_speed_craft_hazard_cat_y": "High speed craft (hazard cat Y)",
+             "high_speed_craft_hazard_cat_z": "High speed craft (hazard cat Z)",
+             "high_speed_craft_hazard_cat_os": "High speed craft (hazard cat OS)",
+             "high_speed_craft_no_additional_information": "High speed craft (no additional information)",
+             "pilot_vessel": "Pilot vessel", "sar": "SAR", "tug": "Tug",
+             "port_tender": "Port tender", "anti_pollution": "Anti-pollution",
+             "law_enforcement": "Law enforcement", "spare": "Spare", "spare_2": "Spare #2",
+             "medical": "Medical",
+             "ships_and_aircraft_of_states_not_parties_to_an_armed_conflict": "Ships and aircraft of States not parties to an armed conflict",
+             "passenger_ship": "Passenger ship",
+             "passenger_ship_hazard_cat_x": "Passenger ship (hazard cat X)",
+             "passenger_ship_hazard_cat_y": "Passenger ship (hazard cat Y)",
+             "passenger_ship_hazard_cat_z": "Passenger ship (hazard cat Z)",
+             "passenger_ship_hazard_cat_os": "Passenger ship (hazard cat OS)",
+             "passenger_ship_no_additional_information": "Passenger ship (no additional information)",
+             "cargo_ship": "Cargo ship", "cargo_ship_hazard_cat_x": "Cargo ship (hazard cat X)",
+             "cargo_ship_hazard_cat_y": "Cargo ship (hazard cat Y)",
+             "cargo_ship_hazard_cat_z": "Cargo ship (hazard cat Z)",
+             "cargo_ship_hazard_cat_os": "Cargo ship (hazard cat OS)",
+             "cargo_ship_no_additional_information": "Cargo ship (no additional information)",
+             "tanker": "Tanker", "tanker_hazard_cat_x": "Tanker (hazard cat X)",
+             "tanker_hazard_cat_y": "Tanker (hazard cat Y)",
+             "tanker_hazard_cat_z": "Tanker (hazard cat Z)",
+             "tanker_hazard_cat_os": "Tanker (hazard cat OS)",
+             "tanker_no_additional_information": "Tanker (no additional information)",
+             "other": "Other", "other_hazard_cat_x": "Other (hazard cat X)",
+             "other_hazard_cat_y": "Other (hazard cat Y)",
+             "other_hazard_cat_z": "Other (hazard cat Z)",
+             "other_hazard_cat_os": "Other (hazard cat OS)",
+             "other_no_additional_information": "Other (no additional information)"}
+AIS_VERSION = {"itu_r_m1371_1": "ITU-R M.1371-1", "itu_r_m1371_3": "ITU-R M.1371-3",
+               "itu_r_m1371_5": "ITU-R M.1371-5", "itu_r_m1371_future": "ITU-R M.1371 future edition"}
+POSITION_FIX_DEVICE = {"undefined": "Default: undefined", "gps": "GPS", "glonass": "GLONASS",
+                       "gps_glonass": "Combined GPS/GLONASS", "loran_c": "Loran-C",
+                       "chayka": "Chayka", "integrated_navigation_system":
+                           "Integrated navigation system", "surveyed": "Surveyed",
+                       "galileo": "Galileo"}
+DTE = {"available": "Available", "unavailable": "Not available"}
+AIS_TRANSCEIVER = {"channel_a_vdl_reception": "Channel A VDL reception",
+                   "channel_b_vdl_reception": "Channel B VDL reception",
+                   "channel_a_vdl_transmission": "Channel A VDL transmission",
+                   "channel_b_vdl_transmission": "Channel B VDL transmission",
+                   "own_information_not_broadcast": "Own information not broadcast",
+                   "reserved_5": "Reserved"}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -221,6 +286,22 @@ def time_of_day(ours, theirs):
 def same(ours, theirs):
     r = null_rule(ours, theirs)
     return r if r != "continue" else (None if ours == theirs else "differ")
+
+
+def text(ours, theirs):
+    """A string: the same characters (ours escaped in JSON, canboat's raw); null for both when
+    the text is empty (padding only) or not sent."""
+    if ours is None or theirs is None:
+        return None if ours is None and theirs is None else "one null, the other a text"
+    return None if ours == theirs else "texts differ"
+
+
+def mmsi(ours, theirs):
+    """canboat prints an MMSI as 9-digit text ("244100633"); ours the number."""
+    r = null_rule(ours, theirs)
+    if r != "continue":
+        return r
+    return None if is_number(ours) and int(theirs) == ours else "MMSIs differ"
 
 
 # Per PGN: our field -> (canboat field, converter). Resolutions are N2K.md's (sections 2-7).
@@ -437,12 +518,74 @@ CANBOAT_FIELDS = {
         "group_function": ("groupFunction", num("1")),
         "acknowledged_pgn": ("pgn", num("1")),
     },
+    # ---- strings ----
+    126996: {
+        "nmea2000_version": ("nmea2000Version", num("0.001")),
+        "product_code": ("productCode", num("1")),
+        "model_id": ("modelId", text),
+        "software_version_code": ("softwareVersionCode", text),
+        "model_version": ("modelVersion", text),
+        "model_serial_code": ("modelSerialCode", text),
+        "certification_level": ("certificationLevel", lookup(CERTIFICATION_LEVEL)),
+        "load_equivalency": ("loadEquivalency", num("1")),
+    },
+    126998: {
+        "installation_description_1": ("installationDescription1", text),
+        "installation_description_2": ("installationDescription2", text),
+        "manufacturer_information": ("manufacturerInformation", text),
+    },
+    129794: {
+        "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
+        "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
+        "user_id": ("userId", mmsi),
+        "imo_number": ("imoNumber", num("1")),
+        "callsign": ("callsign", text),
+        "name": ("name", text),
+        "type_of_ship": ("typeOfShip", lookup(SHIP_TYPE)),
+        "length_m": ("length", num("0.1")),
+        "beam_m": ("beam", num("0.1")),
+        "position_reference_from_starboard_m": ("positionReferenceFromStarboard", num("0.1")),
+        "position_reference_from_bow_m": ("positionReferenceFromBow", num("0.1")),
+        "eta_date": ("etaDate", date),
+        "eta_time": ("etaTime", time_of_day),
+        "draft_m": ("draft", num("0.01")),
+        "destination": ("destination", text),
+        "ais_version_indicator": ("aisVersionIndicator", lookup(AIS_VERSION)),
+        "gnss_type": ("gnssType", lookup(POSITION_FIX_DEVICE)),
+        "dte": ("dte", lookup(DTE)),
+        "ais_transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
+        "sequence_id": ("sequenceId", num("1")),
+    },
+    129809: {
+        "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
+        "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
+        "user_id": ("userId", mmsi),
+        "name": ("name", text),
+        "ais_transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
+        "sequence_id": ("sequenceId", num("1")),
+    },
+    129810: {
+        "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
+        "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
+        "user_id": ("userId", mmsi),
+        "type_of_ship": ("typeOfShip", lookup(SHIP_TYPE)),
+        "vendor_id": ("vendorId", text),
+        "callsign": ("callsign", text),
+        "length_m": ("length", num("0.1")),
+        "beam_m": ("beam", num("0.1")),
+        "position_reference_from_starboard_m": ("positionReferenceFromStarboard", num("0.1")),
+        "position_reference_from_bow_m": ("positionReferenceFromBow", num("0.1")),
+        "mothership_user_id": ("mothershipUserId", mmsi),
+        "gnss_type": ("gnssType", lookup(POSITION_FIX_DEVICE)),
+        "ais_transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
+        "sequence_id": ("sequenceId", num("1")),
+    },
 }
 # canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones, named
 # "reserved" and, for a PGN's later reserved fields, "reserved" with the field's number
 # ("reserved6"); seawire ignores reserved bits on receive (N2K.md section 1), so it has no such
 # field.
-CANBOAT_IGNORED = re.compile(r"reserved\d*")
+CANBOAT_IGNORED = re.compile(r"reserved\d*|spare\d*")  # AIS spare bits: as reserved ones
 
 
 # ---------------------------------------------------------------------------------------------
@@ -634,6 +777,46 @@ L_TIME_SOURCE = ["gps", "glonass", "radio_station", "local_cesium_clock", "local
 L_GNSS_MODE = ["1d", "2d", "3d", "auto"]
 L_BEARING_MODE = ["great_circle", "rhumb_line"]
 L_ISO_CONTROL = ["ack", "nak", "access_denied", "address_busy"]
+# strings: lookups of 126996 and the AIS PGNs, by value (None: no name, shown as the number)
+L_CERTIFICATION = ["level_a", "level_b"]
+L_AIS_MESSAGE = [None, "scheduled_class_a_position_report",
+                 "assigned_scheduled_class_a_position_report",
+                 "interrogated_class_a_position_report", "base_station_report",
+                 "static_and_voyage_related_data", "binary_addressed_message",
+                 "binary_acknowledgement", "binary_broadcast_message",
+                 "standard_sar_aircraft_position_report", "utc_date_inquiry", "utc_date_response",
+                 "safety_related_addressed_message", "safety_related_acknowledgement",
+                 "safety_related_broadcast_message", "interrogation", "assignment_mode_command",
+                 "dgnss_broadcast_binary_message", "standard_class_b_position_report",
+                 "extended_class_b_position_report", "data_link_management_message",
+                 "aton_report", "channel_management", "group_assignment_command",
+                 "static_data_report", "single_slot_binary_message",
+                 "multiple_slot_binary_message", "position_report_for_long_range_applications"]
+L_REPEAT = ["initial", "first_retransmission", "second_retransmission", "final_retransmission"]
+L_SHIP_TYPE = [None] * 100
+L_SHIP_TYPE[0] = "unavailable"
+for _base, _kind in ((20, "wing_in_ground"), (40, "high_speed_craft"), (60, "passenger_ship"),
+                     (70, "cargo_ship"), (80, "tanker"), (90, "other")):
+    L_SHIP_TYPE[_base] = _kind
+    for _k, _cat in enumerate(("x", "y", "z", "os"), 1):
+        L_SHIP_TYPE[_base + _k] = f"{_kind}_hazard_cat_{_cat}"
+    L_SHIP_TYPE[_base + 9] = f"{_kind}_no_additional_information"
+for _k, _n in enumerate(["fishing", "towing", "towing_exceeds_200m_or_wider_than_25m",
+                         "engaged_in_dredging_or_underwater_operations",
+                         "engaged_in_diving_operations", "engaged_in_military_operations",
+                         "sailing", "pleasure"], 30):
+    L_SHIP_TYPE[_k] = _n
+for _k, _n in enumerate(["pilot_vessel", "sar", "tug", "port_tender", "anti_pollution",
+                         "law_enforcement", "spare", "spare_2", "medical",
+                         "ships_and_aircraft_of_states_not_parties_to_an_armed_conflict"], 50):
+    L_SHIP_TYPE[_k] = _n
+L_AIS_VERSION = ["itu_r_m1371_1", "itu_r_m1371_3", "itu_r_m1371_5", "itu_r_m1371_future"]
+L_FIX_DEVICE = ["undefined", "gps", "glonass", "gps_glonass", "loran_c", "chayka",
+                "integrated_navigation_system", "surveyed", "galileo"]
+L_DTE = ["available", "unavailable"]
+L_TRANSCEIVER = ["channel_a_vdl_reception", "channel_b_vdl_reception",
+                 "channel_a_vdl_transmission", "channel_b_vdl_transmission",
+                 "own_information_not_broadcast", "reserved_5"]
 
 LAYOUT = {
     127488: [("instance", 0, 8, U, "1"),
@@ -790,7 +973,113 @@ LAYOUT = {
     59392: [("control", 0, 8, "lookup", L_ISO_CONTROL),
              ("group_function", 8, 8, U, "1"),
              ("acknowledged_pgn", 40, 24, U, "1")],
+    # ---- strings: "text" = a fixed string of width / 8 bytes; "lau" = a counted string, at
+    # the bit where the row before it ended (offset and width None); "lookup_all" = a lookup
+    # whose every raw value is a value (AIS fields).
+    126996: [("nmea2000_version", 0, 16, U, "0.001"),
+             ("product_code", 16, 16, U, "1"),
+             ("model_id", 32, 256, "text", None),
+             ("software_version_code", 288, 256, "text", None),
+             ("model_version", 544, 256, "text", None),
+             ("model_serial_code", 800, 256, "text", None),
+             ("certification_level", 1056, 8, "lookup", L_CERTIFICATION),
+             ("load_equivalency", 1064, 8, U, "1")],
+    126998: [("installation_description_1", None, None, "lau", None),
+             ("installation_description_2", None, None, "lau", None),
+             ("manufacturer_information", None, None, "lau", None)],
+    129794: [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
+             ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
+             ("user_id", 8, 32, U, "1"),
+             ("imo_number", 40, 32, U, "1"),
+             ("callsign", 72, 56, "text", None),
+             ("name", 128, 160, "text", None),
+             ("type_of_ship", 288, 8, "lookup", L_SHIP_TYPE),
+             ("length_m", 296, 16, U, "0.1"),
+             ("beam_m", 312, 16, U, "0.1"),
+             ("position_reference_from_starboard_m", 328, 16, U, "0.1"),
+             ("position_reference_from_bow_m", 344, 16, U, "0.1"),
+             ("eta_date", 360, 16, "date", None),
+             ("eta_time", 376, 32, "time", None),
+             ("draft_m", 408, 16, U, "0.01"),
+             ("destination", 424, 160, "text", None),
+             ("ais_version_indicator", 584, 2, "lookup_all", L_AIS_VERSION),
+             ("gnss_type", 586, 4, "lookup", L_FIX_DEVICE),
+             ("dte", 590, 1, "lookup_all", L_DTE),
+             ("ais_transceiver_information", 592, 5, "lookup", L_TRANSCEIVER),
+             ("sequence_id", 600, 8, U, "1")],
+    129809: [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
+             ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
+             ("user_id", 8, 32, U, "1"),
+             ("name", 40, 160, "text", None),
+             ("ais_transceiver_information", 200, 5, "lookup", L_TRANSCEIVER),
+             ("sequence_id", 208, 8, U, "1")],
+    129810: [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
+             ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
+             ("user_id", 8, 32, U, "1"),
+             ("type_of_ship", 40, 8, "lookup", L_SHIP_TYPE),
+             ("vendor_id", 48, 56, "text", None),
+             ("callsign", 104, 56, "text", None),
+             ("length_m", 160, 16, U, "0.1"),
+             ("beam_m", 176, 16, U, "0.1"),
+             ("position_reference_from_starboard_m", 192, 16, U, "0.1"),
+             ("position_reference_from_bow_m", 208, 16, U, "0.1"),
+             ("mothership_user_id", 224, 32, U, "1"),
+             ("gnss_type", 260, 4, "lookup", L_FIX_DEVICE),
+             ("ais_transceiver_information", 264, 5, "lookup", L_TRANSCEIVER),
+             ("sequence_id", 272, 8, U, "1")],
 }
+
+
+# Strings (canboat's STRING_FIX and STRING_LAU), from the byte layouts: the text is the bytes
+# before the first 0x00 or 0xFF, less its trailing padding (0xFF, 0x00, '@', whitespace); a byte
+# is the character of its value (Latin-1); an empty text is null. A counted string: a length byte
+# (counting itself and the next), an encoding byte (0 = UTF-16LE, else one byte a character),
+# the bytes; a length past the payload takes what there is; a length below 2 ends the message
+# (that field and the rest null).
+STRING_PADDING = {0xFF, 0x00, ord("@"), ord(" "), 9, 10, 11, 12, 13}
+
+
+def single_byte_text(raw):
+    end = len(raw)
+    for i, b in enumerate(raw):
+        if b in (0x00, 0xFF):
+            end = i
+            break
+    while end > 0 and raw[end - 1] in STRING_PADDING:
+        end -= 1
+    return raw[:end].decode("latin-1") or None
+
+
+def utf16_text(raw):
+    units = [raw[i] | raw[i + 1] << 8 for i in range(0, len(raw) - 1, 2)]
+    end = len(units)
+    for i, u in enumerate(units):
+        if u in (0x0000, 0xFFFF):
+            end = i
+            break
+    while end > 0 and units[end - 1] in STRING_PADDING - {0xFF}:
+        end -= 1
+    data = b"".join(u.to_bytes(2, "little") for u in units[:end])
+    return data.decode("utf-16-le", "surrogatepass") or None
+
+
+def string_rows(data, layout):
+    """{name: expected} for the string rows of `layout`, the counted ones at running offsets."""
+    out, at, stop = {}, 0, False
+    for name, offset, width, kind, _ in layout:
+        if kind == "text":
+            start = offset // 8
+            out[name] = single_byte_text(data[start:start + width // 8]) if start < len(data) else None
+        elif kind == "lau":
+            if stop or at >= len(data) or data[at] < 2 or len(data) - at < 2:
+                stop = stop or at < len(data)
+                out[name] = None
+                continue
+            taken = min(data[at], len(data) - at)
+            body = data[at + 2:at + taken]
+            out[name] = utf16_text(body) if data[at + 1] == 0 else single_byte_text(body)
+            at += taken
+    return out
 
 
 def bits(data, offset, width):
@@ -818,6 +1107,8 @@ def field_value(data, offset, width, kind, arg):
     raw = bits(data, offset, width)
     if kind == "flags":  # no sentinel: every bit is a flag
         return [arg[b] if b < len(arg) else f"bit_{b}" for b in range(width) if raw >> b & 1]
+    if kind == "lookup_all":  # every raw value is a value
+        return arg[raw] if raw < len(arg) else raw
     signed = kind == S
     if signed and raw >> (width - 1):
         raw -= 1 << width
@@ -834,7 +1125,7 @@ def field_value(data, offset, width, kind, arg):
     if kind in (U, S):
         return raw * Decimal(arg)
     if kind == "lookup":
-        return arg[raw] if raw < len(arg) else raw
+        return arg[raw] if raw < len(arg) and arg[raw] is not None else raw
     if kind == "date":
         return (datetime.date(1970, 1, 1) + datetime.timedelta(days=raw)).isoformat()
     if kind == "time":
@@ -872,6 +1163,11 @@ LAYOUT_EXTRA = b"""\
 2024-07-03T15:42:58.000Z,3,129283,35,255,8,01,b4,00,00,00,80,ff,ff
 2024-07-03T15:42:58.000Z,3,129033,35,255,8,fe,ff,ff,ff,ff,ff,00,80
 2024-07-03T15:42:58.000Z,3,126992,35,255,8,01,f0,00,70,00,00,00,00
+2024-07-03T15:42:58.000Z,6,126996,40,255,134,34,08,01,00,43,61,66,e9,20,01,7f,80,fe,21,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,41,42,ff,43,44,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,09,40,20,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,71,22,5c,2f,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,01,02
+2024-07-03T15:42:58.000Z,6,126998,40,255,23,0d,00,48,00,e9,00,ac,20,3d,d8,00,de,41,06,00,00,d8,41,00,04,01,e9,7f
+2024-07-03T15:42:58.000Z,6,126998,40,255,9,01,01,41,42,05,01,43,44,45
+2024-07-03T15:42:58.000Z,6,126998,40,255,14,0a,00,61,00,62,00,20,00,40,00,03,01,7a,09
+2024-07-03T15:42:58.000Z,6,129809,40,255,7,18,47,38,8c,0e,c4,d6
 """
 
 
@@ -899,9 +1195,11 @@ def compare_layout(where, ours, want):
     names = {f[0] for f in layout}
     check(set(ours) - META == names, f"{where}: fields {sorted(set(ours) - META)}, "
           f"expected {sorted(names)}")
+    strings = string_rows(want["data"], layout)
     for name, offset, width, kind, arg in layout:
         compared += 1
-        expected = field_value(want["data"], offset, width, kind, arg)
+        expected = (strings[name] if name in strings
+                    else field_value(want["data"], offset, width, kind, arg))
         got = ours.get(name, "<missing>")
         if is_number(expected):
             ok = is_number(got) and Decimal(got) == expected
