@@ -818,6 +818,24 @@ L_TRANSCEIVER = ["channel_a_vdl_reception", "channel_b_vdl_reception",
                  "channel_a_vdl_transmission", "channel_b_vdl_transmission",
                  "own_information_not_broadcast", "reserved_5"]
 
+# AIS PGNs: the rows they share (the message header; the ship's dimensions at bit `at`, 0.1 m;
+# the transceiver and sequence ID that end them, 3 reserved bits between)
+AIS_HEAD = [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
+            ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
+            ("user_id", 8, 32, U, "1")]
+
+
+def ais_dimensions(at):
+    names = ("length_m", "beam_m", "position_reference_from_starboard_m",
+             "position_reference_from_bow_m")
+    return [(n, at + 16 * i, 16, U, "0.1") for i, n in enumerate(names)]
+
+
+def ais_end(at):
+    return [("ais_transceiver_information", at, 5, "lookup", L_TRANSCEIVER),
+            ("sequence_id", at + 8, 8, U, "1")]
+
+
 LAYOUT = {
     127488: [("instance", 0, 8, U, "1"),
              ("speed_rpm", 8, 16, U, "0.25"),
@@ -987,46 +1005,23 @@ LAYOUT = {
     126998: [("installation_description_1", None, None, "lau", None),
              ("installation_description_2", None, None, "lau", None),
              ("manufacturer_information", None, None, "lau", None)],
-    129794: [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
-             ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
-             ("user_id", 8, 32, U, "1"),
-             ("imo_number", 40, 32, U, "1"),
-             ("callsign", 72, 56, "text", None),
-             ("name", 128, 160, "text", None),
-             ("type_of_ship", 288, 8, "lookup", L_SHIP_TYPE),
-             ("length_m", 296, 16, U, "0.1"),
-             ("beam_m", 312, 16, U, "0.1"),
-             ("position_reference_from_starboard_m", 328, 16, U, "0.1"),
-             ("position_reference_from_bow_m", 344, 16, U, "0.1"),
-             ("eta_date", 360, 16, "date", None),
-             ("eta_time", 376, 32, "time", None),
-             ("draft_m", 408, 16, U, "0.01"),
-             ("destination", 424, 160, "text", None),
-             ("ais_version_indicator", 584, 2, "lookup_all", L_AIS_VERSION),
-             ("gnss_type", 586, 4, "lookup", L_FIX_DEVICE),
-             ("dte", 590, 1, "lookup_all", L_DTE),
-             ("ais_transceiver_information", 592, 5, "lookup", L_TRANSCEIVER),
-             ("sequence_id", 600, 8, U, "1")],
-    129809: [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
-             ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
-             ("user_id", 8, 32, U, "1"),
-             ("name", 40, 160, "text", None),
-             ("ais_transceiver_information", 200, 5, "lookup", L_TRANSCEIVER),
-             ("sequence_id", 208, 8, U, "1")],
-    129810: [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
-             ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
-             ("user_id", 8, 32, U, "1"),
-             ("type_of_ship", 40, 8, "lookup", L_SHIP_TYPE),
-             ("vendor_id", 48, 56, "text", None),
-             ("callsign", 104, 56, "text", None),
-             ("length_m", 160, 16, U, "0.1"),
-             ("beam_m", 176, 16, U, "0.1"),
-             ("position_reference_from_starboard_m", 192, 16, U, "0.1"),
-             ("position_reference_from_bow_m", 208, 16, U, "0.1"),
-             ("mothership_user_id", 224, 32, U, "1"),
-             ("gnss_type", 260, 4, "lookup", L_FIX_DEVICE),
-             ("ais_transceiver_information", 264, 5, "lookup", L_TRANSCEIVER),
-             ("sequence_id", 272, 8, U, "1")],
+    129794: AIS_HEAD + [("imo_number", 40, 32, U, "1"),
+                        ("callsign", 72, 56, "text", None),
+                        ("name", 128, 160, "text", None),
+                        ("type_of_ship", 288, 8, "lookup", L_SHIP_TYPE)]
+            + ais_dimensions(296) + [("eta_date", 360, 16, "date", None),
+                                     ("eta_time", 376, 32, "time", None),
+                                     ("draft_m", 408, 16, U, "0.01"),
+                                     ("destination", 424, 160, "text", None),
+                                     ("ais_version_indicator", 584, 2, "lookup_all", L_AIS_VERSION),
+                                     ("gnss_type", 586, 4, "lookup", L_FIX_DEVICE),
+                                     ("dte", 590, 1, "lookup_all", L_DTE)] + ais_end(592),
+    129809: AIS_HEAD + [("name", 40, 160, "text", None)] + ais_end(200),
+    129810: AIS_HEAD + [("type_of_ship", 40, 8, "lookup", L_SHIP_TYPE),
+                        ("vendor_id", 48, 56, "text", None),
+                        ("callsign", 104, 56, "text", None)]
+            + ais_dimensions(160) + [("mothership_user_id", 224, 32, U, "1"),
+                                     ("gnss_type", 260, 4, "lookup", L_FIX_DEVICE)] + ais_end(264),
 }
 
 

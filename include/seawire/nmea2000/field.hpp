@@ -746,12 +746,9 @@ inline constexpr reserved_bits<Bits> reserved{};
 
 /// `Bits` spare bits (AIS messages): sent as zeros, ignored when received.
 template <unsigned Bits>
-struct spare_bits {
-  static constexpr unsigned bits = Bits;
-  static constexpr bool is_reserved = true;
+struct spare_bits : reserved_bits<Bits> {
   static constexpr bool is_spare = true;
-  std::string_view name = "spare";
-  std::string_view title = "Spare";
+  constexpr spare_bits() noexcept : reserved_bits<Bits>{"spare", "Spare"} {}
 };
 template <unsigned Bits>
 inline constexpr spare_bits<Bits> spare{};
@@ -774,14 +771,6 @@ template <class T>
 inline constexpr bool is_flag_word = false;
 template <class E, unsigned B>
 inline constexpr bool is_flag_word<flags<E, B>> = true;
-template <class Row, bool Reserved = Row::is_reserved>
-struct row_value_of {
-  using type = typename Row::value_type;
-};
-template <class Row>
-struct row_value_of<Row, true> {
-  using type = void;
-};
 }  // namespace detail
 
 /// How PGN payloads lay out their bits (docs/nmea2000.md).
@@ -794,6 +783,14 @@ template <class Row>
     return false;
   } else {
     return text_value<typename Row::value_type>;
+  }
+}
+template <class Row>
+[[nodiscard]] consteval bool row_is_flag_word() noexcept {
+  if constexpr (Row::is_reserved) {
+    return false;
+  } else {
+    return is_flag_word<typename Row::value_type>;
   }
 }
 template <class Row>
@@ -827,8 +824,7 @@ struct pgn_description {
   static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
   static_assert(bit_length % 8 == 0, "a PGN's fields must fill whole bytes");
   static_assert(detail::text_rows_aligned<F...>(), "a string starts on a byte boundary");
-  static_assert(fixed_layout ||
-                    !(detail::is_flag_word<typename detail::row_value_of<F>::type> || ...),
+  static_assert(fixed_layout || !(detail::row_is_flag_word<F>() || ...),
                 "a flag set cannot end a payload of varying length");
   /// The payload's length in bytes; with a counted string, the most it may be (a fast packet's
   /// 223 bytes at most).
