@@ -56,14 +56,20 @@ struct delivered {
   std::vector<std::uint8_t> payload;
 };
 
-// Reads `lines` with a log_reader of every declared PGN; the messages it hands on.
-template <class Reader>
-std::vector<delivered> read_all(Reader& reader, std::span<const std::string_view> lines) {
-  std::vector<delivered> out;
+using bus_reader = n2k::log_reader<seawire::registry::pgns>;
+
+// What a log_reader of every declared PGN handed on of `lines`, and the reader after them.
+struct read_out {
+  std::vector<delivered> got;
+  bus_reader reader;
+};
+
+read_out read_all(std::span<const std::string_view> lines) {
+  read_out out;
   for (const std::string_view line : lines) {
     INFO(std::string(line));
-    const auto r = reader.read_line(line, [&](const n2k::message_header& h, auto payload) {
-      out.push_back({h, {payload.begin(), payload.end()}});
+    const auto r = out.reader.read_line(line, [&](const n2k::message_header& h, auto payload) {
+      out.got.push_back({h, {payload.begin(), payload.end()}});
     });
     CHECK(r.ec == errc::ok);
   }
@@ -103,8 +109,7 @@ TEST_CASE("fast-packet list: every PGN seawire declares has the framing the list
     INFO(P::n2k.info.pgn);
     CHECK((P::n2k.info.transport == n2k::framing::fast_packet) ==
           n2k::is_fast_packet_pgn(P::n2k.info.pgn));
-    CHECK(n2k::log_reader<seawire::registry::pgns>::is_fast(P::n2k.info.pgn) ==
-          n2k::is_fast_packet_pgn(P::n2k.info.pgn));
+    CHECK(bus_reader::is_fast(P::n2k.info.pgn) == n2k::is_fast_packet_pgn(P::n2k.info.pgn));
   });
   // a PGN no list declares: the standard's framing
   CHECK(n2k::log_reader<n2k::ins_input_pgns>::is_fast(129029));
@@ -122,8 +127,7 @@ TEST_CASE("log reader: a fast-packet PGN seawire does not describe comes whole")
       "(1502984867.100000) slcan0 1DF000CC#2007010203040506",
       "(1502984867.100001) slcan0 1DF000CC#2107FFFFFFFFFFFF",
   };
-  n2k::log_reader<seawire::registry::pgns> reader;
-  const std::vector<delivered> got = read_all(reader, lines);
+  const auto [got, reader] = read_all(lines);
   REQUIRE(got.size() == 4);
   CHECK(got[0].head.id.pgn == 65359);
   CHECK(got[0].payload ==
@@ -208,8 +212,7 @@ TEST_CASE("pseudo-PGNs: read from canboat and Actisense lines, skipped and count
       "2016-02-28T19:57:02.501Z,7,130842,12,255,8,41,05,06,07,08,ff,ff,ff",
       "A000057.086 00002 40100 0102",
   };
-  n2k::log_reader<seawire::registry::pgns> reader;
-  const std::vector<delivered> got = read_all(reader, lines);
+  const auto [got, reader] = read_all(lines);
   CHECK(reader.pseudo_pgn_lines() == 2);
   CHECK(reader.canboat_lines() == n2k::canboat_format::plain_or_fast);
   REQUIRE(got.size() == 2);
@@ -219,10 +222,10 @@ TEST_CASE("pseudo-PGNs: read from canboat and Actisense lines, skipped and count
         std::vector<std::uint8_t>{0x3B, 0x9F, 0x01, 0x02, 0x03, 0x04, 0x05, 0x06, 0x07, 0x08});
 
   // A PLAIN log (its header says so): a pseudo-PGN line longer than 8 bytes is no bad frame.
-  n2k::log_reader<seawire::registry::pgns> plain;
   constexpr std::string_view plain_lines[] = {
       "# format=PLAIN",
       "2011-04-25-10:16:42.460,0,262388,0,0,15,01,0e,00,ab,b0,01,00,47,fd,ff,ff,f2,00,04,00"};
-  CHECK(read_all(plain, plain_lines).empty());
-  CHECK(plain.pseudo_pgn_lines() == 1);
+  const read_out plain = read_all(plain_lines);
+  CHECK(plain.got.empty());
+  CHECK(plain.reader.pseudo_pgn_lines() == 1);
 }
