@@ -192,14 +192,22 @@ TEST_CASE("pseudo-PGNs: read from canboat and Actisense lines, skipped and count
   REQUIRE(a);
   CHECK(a.value.id.pgn == 0x40100);
   CHECK(a.value.id.source == 0);
-  // canboat's range ends at 0x402FF: a number past it is no PGN of anyone
-  CHECK(n2k::parse_log_line("2016-02-28T19:57:02.480Z,0,262912,0,0,1,01").ec == errc::bad_can_id);
-  CHECK(n2k::parse_log_line("2016-02-28T19:57:02.480Z,0,262911,0,0,1,01"));
-  CHECK(n2k::parse_log_line("2016-02-28T19:57:02.480Z,0,4295229440,0,0,1,01").field == 3);
+  // A canboat line: any number of 32 bits past 18 (canboat's Actisense reader wrote these, empty,
+  // in real logs); more than 32 bits is no number anyone writes.
+  const auto odd = n2k::parse_log_line("2016-04-09T16:41:09.092Z,0,16057090,255,1,0");
+  REQUIRE(odd);
+  CHECK(odd.value.id.pgn == 16057090);
+  CHECK(n2k::is_pseudo_pgn(odd.value.id.pgn));
+  CHECK(n2k::parse_log_line("2016-02-28T19:57:02.480Z,0,4294967295,0,0,1,01"));
+  const auto big = n2k::parse_log_line("2016-02-28T19:57:02.480Z,0,4295229440,0,0,1,01");
+  CHECK(big.ec == errc::bad_can_id);
+  CHECK(big.field == 3);
+  // An Actisense line: canboat's range ends at 0x402FF; past it, no PGN of anyone
   CHECK(n2k::parse_log_line("A000057.086 00002 40300 0102").ec == errc::bad_can_id);
   CHECK(n2k::parse_log_line("A000057.086 00002 402FF 0102"));
-  static_assert(n2k::is_pseudo_pgn(0x40000) && n2k::is_pseudo_pgn(0x402FF));
-  static_assert(!n2k::is_pseudo_pgn(n2k::max_pgn) && !n2k::is_pseudo_pgn(0x40300));
+  static_assert(n2k::is_pseudo_pgn(0x40000) && n2k::is_pseudo_pgn(0x402FF) &&
+                n2k::is_pseudo_pgn(0xFFFFFFFF));
+  static_assert(!n2k::is_pseudo_pgn(n2k::max_pgn) && !n2k::is_pseudo_pgn(0));
 
   // A canboat log without a header whose first line is a frame (PLAIN_OR_FAST): the gateway's
   // 33-byte status among frames does not make the log FAST, the frames after it are still
@@ -211,9 +219,10 @@ TEST_CASE("pseudo-PGNs: read from canboat and Actisense lines, skipped and count
       "2016-02-28T19:57:02.500Z,7,130842,12,255,8,40,0a,3b,9f,01,02,03,04",
       "2016-02-28T19:57:02.501Z,7,130842,12,255,8,41,05,06,07,08,ff,ff,ff",
       "A000057.086 00002 40100 0102",
+      "2016-04-09T16:41:09.092Z,0,16057090,255,1,0",
   };
   const auto [got, reader] = read_all(lines);
-  CHECK(reader.pseudo_pgn_lines() == 2);
+  CHECK(reader.pseudo_pgn_lines() == 3);
   CHECK(reader.canboat_lines() == n2k::canboat_format::plain_or_fast);
   REQUIRE(got.size() == 2);
   CHECK(got[0].head.id.pgn == 127250);

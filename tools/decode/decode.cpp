@@ -209,14 +209,13 @@ class decoder {
   }
 
  private:
-  // "N lines of gateway pseudo-PGNs (262144-262911) skipped", when there were some.
+  // "N lines of gateway pseudo-PGNs (262144 and up) skipped", when there were some.
   void print_pseudo_pgns(const char* before) const {
     const std::uint64_t n = n2k_.pseudo_pgn_lines();
     if (n == 0) return;
-    std::fprintf(stderr, "%s%llu line%s of gateway pseudo-PGNs (%u-%u) skipped", before,
+    std::fprintf(stderr, "%s%llu line%s of gateway pseudo-PGNs (%u and up) skipped", before,
                  static_cast<unsigned long long>(n), n == 1 ? "" : "s",
-                 static_cast<unsigned>(nmea2000::first_pseudo_pgn),
-                 static_cast<unsigned>(nmea2000::last_pseudo_pgn));
+                 static_cast<unsigned>(nmea2000::first_pseudo_pgn));
   }
 
   // --stats of a CAN log: messages decoded per PGN, by number, with the name of the PGNs seawire

@@ -71,8 +71,9 @@ CANBOAT_FAST = {126208, 126464, *range(126983, 126989), 126996, 126998, 127233, 
                 *range(130052, 130055), 130060, 130061, *range(130064, 130075),
                 *range(130320, 130325), 130329, 130330, *range(130561, 130576), 130577, 130578,
                 130580, 130581, 130583, 130584, 130586}
-# canboat's pseudo-PGNs: a gateway's own messages written among the bus's, skipped by seawire.
-PSEUDO_PGNS = range(0x40000, 0x40300)
+# canboat's pseudo-PGNs: a gateway's own messages written among the bus's (any number past 18
+# bits), skipped by seawire.
+PSEUDO_PGNS = range(0x40000, 1 << 32)
 
 
 def travels_fast(pgn):
