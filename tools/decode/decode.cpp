@@ -140,15 +140,21 @@ class decoder {
   [[nodiscard]] bool unusable() const { return unusable_; }
   void print_stats() const {
     const anello::stream_stats& f = reader_.stats();
-    std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected\n",
+    std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected",
                  static_cast<unsigned long long>(decoded_),
                  static_cast<unsigned long long>(rejected_));
-    if (!by_type_.empty()) std::fprintf(stderr, "  by type:\n");
-    for (const auto& [type, n] : by_type_)
-      std::fprintf(stderr, "    %-20s %llu\n", type.c_str(), static_cast<unsigned long long>(n));
-    if (other_types_ > 0)
-      std::fprintf(stderr, "    %-20s %llu\n", "(other types)",
-                   static_cast<unsigned long long>(other_types_));
+    if (in_ == input::n2k) print_pseudo_pgns(", ");
+    std::fputc('\n', stderr);
+    if (in_ == input::n2k) {
+      print_by_pgn();
+    } else {
+      if (!by_type_.empty()) std::fprintf(stderr, "  by type:\n");
+      for (const auto& [type, n] : by_type_)
+        std::fprintf(stderr, "    %-20s %llu\n", type.c_str(), static_cast<unsigned long long>(n));
+      if (other_types_ > 0)
+        std::fprintf(stderr, "    %-20s %llu\n", "(other types)",
+                     static_cast<unsigned long long>(other_types_));
+    }
     bool any_error = false;
     for (std::size_t e = 0; e < by_error_.size(); ++e) {
       if (by_error_[e] == 0) continue;
@@ -194,7 +200,49 @@ class decoder {
     std::fputc('\n', stderr);
   }
 
+  // Without --stats, the end of the run still says what was skipped of a CAN log.
+  void print_summary() const {
+    if (in_ != input::n2k || n2k_.pseudo_pgn_lines() == 0) return;
+    std::fputs("seawire-decode: ", stderr);
+    print_pseudo_pgns("");
+    std::fputc('\n', stderr);
+  }
+
  private:
+  // "N lines of gateway pseudo-PGNs (262144 and up) skipped", when there were some.
+  void print_pseudo_pgns(const char* before) const {
+    const std::uint64_t n = n2k_.pseudo_pgn_lines();
+    if (n == 0) return;
+    std::fprintf(stderr, "%s%llu line%s of gateway pseudo-PGNs (%u and up) skipped", before,
+                 static_cast<unsigned long long>(n), n == 1 ? "" : "s",
+                 static_cast<unsigned>(nmea2000::first_pseudo_pgn));
+  }
+
+  // --stats of a CAN log: messages decoded per PGN, by number, with the name of the PGNs seawire
+  // describes. Counted as types ("PGN128259"), so within the same bound.
+  void print_by_pgn() const {
+    std::vector<std::pair<std::uint32_t, std::uint64_t>> rows;
+    rows.reserve(by_type_.size());
+    for (const auto& [type, n] : by_type_) {
+      std::uint32_t pgn = 0;
+      for (const char c : std::string_view(type).substr(3))
+        pgn = pgn * 10 + static_cast<std::uint32_t>(c - '0');
+      rows.emplace_back(pgn, n);
+    }
+    std::sort(rows.begin(), rows.end());
+    if (!rows.empty()) std::fprintf(stderr, "  by PGN:\n");
+    for (const auto& [pgn, n] : rows) {
+      const std::optional<nmea2000::pgn_info> info = n2k_pgns::info(pgn);
+      const std::string_view named = info ? info->name : std::string_view("(no description)");
+      std::fprintf(stderr, "    %-7u %-32.*s %llu\n", static_cast<unsigned>(pgn),
+                   static_cast<int>(named.size()), named.data(),
+                   static_cast<unsigned long long>(n));
+    }
+    if (other_types_ > 0)
+      std::fprintf(stderr, "    %-40s %llu\n", "(other PGNs)",
+                   static_cast<unsigned long long>(other_types_));
+  }
+
   // ---- which input ----
 
   // Keeps what came until a line says what the input is: a CAN log line, or a sentence (or
@@ -649,7 +697,11 @@ int run(const options& o) {
   shown.done();
   d.finish();
   if (d.unusable()) return 2;
-  if (o.stats) d.print_stats();
+  if (o.stats) {
+    d.print_stats();
+  } else {
+    d.print_summary();
+  }
   if (in.failed()) {
     std::perror("seawire-decode: reading stdin");
     return 1;
@@ -740,8 +792,9 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
       "lowercase; e.g. --strict --format none < ours.nmea). Values outside the spec's ranges, "
       "in sentences and in frames, are rejected with or without --strict");
   app.add_flag("--stats", o.stats,
-               "at the end, print counts by message type and by error, and the stream reader's "
-               "dropped-byte counters, to stderr (e.g. --format none --stats)");
+               "at the end, print counts by message type (by PGN for a CAN log) and by error, "
+               "and the stream reader's dropped-byte counters, to stderr (e.g. --format none "
+               "--stats)");
   app.add_flag("--line-buffered", o.line_buffered,
                "flush stdout after each message, for live streams (the default when stdin or "
                "stdout is a terminal; otherwise large buffers, for speed); a sentence ended by CR "

@@ -60,6 +60,25 @@ def is_number(v):
 NULLS = (None, "out_of_range", "reserved")  # all shown as null by canboat -empty
 META = {"type", "time_s", "interface", "direction", "prio", "src", "dst"}
 FAST_PACKET = {127489, 128275, 130578, 127506, 129284, 130577}
+# A PGN seawire does not describe travels as the standard lists it: as fast packets the PGNs
+# canboat's database marks "Fast" (below) and the two proprietary fast-packet ranges whole
+# (126720-126975, 130816-131071); every other one as single frames.
+CANBOAT_FAST = {126208, 126464, *range(126983, 126989), 126996, 126998, 127233, 127237,
+                *range(127489, 127492), *range(127494, 127499), 127503, 127504, 127506, 127507,
+                *range(127509, 127515), 128275, 128520, 128538, 129029, *range(129038, 129042),
+                129044, 129045, 129284, 129285, 129301, 129302, 129538, *range(129540, 129543),
+                129545, 129547, 129549, 129551, 129556, *range(129792, 129817),
+                *range(130052, 130055), 130060, 130061, *range(130064, 130075),
+                *range(130320, 130325), 130329, 130330, *range(130561, 130576), 130577, 130578,
+                130580, 130581, 130583, 130584, 130586}
+# canboat's pseudo-PGNs: a gateway's own messages written among the bus's (any number past 18
+# bits), skipped by seawire.
+PSEUDO_PGNS = range(0x40000, 1 << 32)
+
+
+def travels_fast(pgn):
+    return (pgn in FAST_PACKET or pgn in CANBOAT_FAST or 126720 <= pgn <= 126975
+            or 130816 <= pgn <= 131071)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -559,6 +578,8 @@ def messages(lines):
                 mode = m.group(1).upper()
             continue
         f = parse_line(line)
+        if f["pgn"] in PSEUDO_PGNS:
+            continue  # a gateway's own message, whole whatever the log's format
         if f["canboat"]:
             n = len(f["data"])
             if mode is None:
@@ -566,7 +587,7 @@ def messages(lines):
             if mode == "PLAIN_OR_FAST" and n > 8:
                 mode = "FAST"
             f["whole"] = mode == "FAST" or (mode != "PLAIN" and n > 8)
-        if f["pgn"] not in FAST_PACKET or f["whole"]:
+        if not travels_fast(f["pgn"]) or f["whole"]:
             out.append(f)
             continue
         d = f["data"]
@@ -895,6 +916,13 @@ def compare_layout(where, ours, want):
         got = ours.get("time_s")
         check(is_number(got) and abs(Decimal(got) - want["time"]) < Decimal("0.000001"),
               f"{where}: time_s {got}, expected {want['time']}")
+    if pgn not in LAYOUT:
+        # A PGN seawire does not describe: its whole payload, as assembled here.
+        compared += 1
+        check(set(ours) - META == {"data"} and ours["data"] == want["data"].hex().upper(),
+              f"{where}: {ours.get('data')!r} ({sorted(set(ours) - META)}), assembled here "
+              f"{want['data'].hex().upper()}")
+        return
     layout = LAYOUT[pgn]
     names = {f[0] for f in layout}
     check(set(ours) - META == names, f"{where}: fields {sorted(set(ours) - META)}, "
@@ -916,7 +944,8 @@ def case_layout():
     inputs.append(("edge values", LAYOUT_EXTRA))
     for name, data in inputs:
         lines = [l for l in data.decode().splitlines() if l.strip()]
-        want = [m for m in messages(lines) if m["pgn"] in LAYOUT]
+        want = [m for m in messages(lines)
+                if m["pgn"] in LAYOUT or m["pgn"] not in CANBOAT_FIELDS]
         p = run([], data, 0)
         ours = [exact(l) for l in p.stdout.decode().splitlines()]
         check(len(ours) == len(want),
@@ -956,6 +985,20 @@ def canboat_time(where, fmt, ours, stamp, offsets):
     return True
 
 
+def compare_raw(where, ours, theirs):
+    """A PGN seawire does not describe: one message with its whole payload as "data". Where
+    canboat knows no more of it than a manufacturer's proprietary message, it shows the bytes
+    after the manufacturer and industry codes (the first two): ours from the third on."""
+    global compared
+    check(set(ours) - META == {"data"}, f"{where}: fields {sorted(set(ours) - META)} of a PGN "
+          "seawire does not describe")
+    fields = theirs.get("fields", {})
+    if "data" in fields and set(fields) <= {"manufacturerCode", "industryCode", "data"}:
+        compared += 1
+        check(ours["data"][4:] == fields["data"].replace(" ", ""),
+              f"{where}: data {ours['data']} vs canboat's {fields['data']} after two bytes")
+
+
 def case_canboat():
     global compared
     skipped_times = 0
@@ -978,6 +1021,8 @@ def case_canboat():
         ours = decode_file(path)
         with open(path[:-3] + ".out.json") as f:
             theirs = [next(iter(exact(l).values())) for l in f if l.strip()]
+        # canboat decodes a gateway's own messages (pseudo-PGNs); seawire skips them.
+        theirs = [t for t in theirs if t["pgn"] not in PSEUDO_PGNS]
         check(len(ours) == len(theirs),
               f"{name}: {len(ours)} messages, canboat {len(theirs)}")
         for i, (o, t) in enumerate(zip(ours, theirs)):
@@ -989,6 +1034,9 @@ def case_canboat():
                 check(o.get(k) == t[k], f"{where}: {k} {o.get(k)!r}, canboat {t[k]!r}")
             if not canboat_time(where, fmt, o, t["timestamp"], offsets):
                 skipped_times += 1
+            if t["pgn"] not in CANBOAT_FIELDS and "data" in o:
+                compare_raw(where, o, t)
+                continue
             table = CANBOAT_FIELDS.get(t["pgn"])
             if not check(table is not None, f"{where}: no mapping for this PGN"):
                 continue

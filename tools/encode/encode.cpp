@@ -34,6 +34,7 @@
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/writer.hpp"
 #include "seawire/nmea2000/fast_packet.hpp"
+#include "seawire/nmea2000/fast_packets.hpp"
 #include "seawire/nmea2000/json.hpp"
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/version.hpp"
@@ -521,7 +522,10 @@ class encoder {
         payload.push_back(
             static_cast<std::uint8_t>(std::stoi(std::string(d.text.substr(i, 2)), nullptr, 16)));
     }
-    const bool fast = info ? info->transport == nmea2000::framing::fast_packet : payload.size() > 8;
+    // A PGN seawire does not describe travels as the standard's list says (as seawire-decode
+    // reads it back), or as fast packets when it is longer than a frame.
+    const bool fast = info ? info->transport == nmea2000::framing::fast_packet
+                           : nmea2000::is_fast_packet_pgn(pgn) || payload.size() > 8;
     if (!fast || opt_.log == nmea2000::log_format::canboat ||
         opt_.log == nmea2000::log_format::actisense_n2k_ascii) {
       // One frame, or a line holding the whole payload (canboat FAST, Actisense).
