@@ -522,12 +522,22 @@ class encoder {
         payload.push_back(
             static_cast<std::uint8_t>(std::stoi(std::string(d.text.substr(i, 2)), nullptr, 16)));
     }
-    // A PGN seawire does not describe travels as the standard's list says (as seawire-decode
-    // reads it back), or as fast packets when it is longer than a frame.
+    // A PGN seawire does not describe travels as the standard's list says, as seawire-decode
+    // reads it back. A single-frame PGN longer than a frame would need ISO transport (a
+    // multi-packet session seawire does not write): refused, unless the log's line holds a whole
+    // message (canboat, Actisense), where it is read back as written.
     const bool fast = info ? info->transport == nmea2000::framing::fast_packet
-                           : nmea2000::is_fast_packet_pgn(pgn) || payload.size() > 8;
-    if (!fast || opt_.log == nmea2000::log_format::canboat ||
-        opt_.log == nmea2000::log_format::actisense_n2k_ascii) {
+                           : nmea2000::is_fast_packet_pgn(pgn);
+    const bool whole_lines = opt_.log == nmea2000::log_format::canboat ||
+                             opt_.log == nmea2000::log_format::actisense_n2k_ascii;
+    if (!fast && !whole_lines && payload.size() > 8) {
+      reject(std::string(type) + ": " + std::to_string(payload.size()) +
+             " bytes in a single-frame PGN (not a fast packet by the standard's list): a CAN "
+             "frame holds 8; more needs ISO transport, which seawire-encode does not write (a "
+             "canboat or Actisense log holds the whole message in one line)");
+      return;
+    }
+    if (!fast || whole_lines) {
       // One frame, or a line holding the whole payload (canboat FAST, Actisense).
       (void)rec.assign(payload);
       put_record(type, rec);
