@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <span>
 #include <string>
@@ -79,11 +80,11 @@ struct fake_json {
     seawire::nmea::json_value value;
   };
   std::vector<entry> entries;
-  std::vector<std::string> texts;  // reserve()d: views into them stay valid
-  fake_json() { texts.reserve(512); }
-  void add(std::string object, std::string key, seawire::nmea::json_kind kind, std::string text) {
-    texts.push_back(std::move(text));
-    entries.push_back({std::move(object), std::move(key), {kind, texts.back()}});
+  std::deque<std::string> texts;  // views into them stay valid as more are added
+  void add(std::string_view object, std::string_view key, seawire::nmea::json_kind kind,
+           std::string_view text) {
+    texts.emplace_back(text);
+    entries.push_back({std::string(object), std::string(key), {kind, texts.back()}});
   }
   seawire::nmea::json_value operator()(std::string_view object, std::string_view key) const {
     for (const entry& e : entries)
