@@ -158,7 +158,9 @@ using pgns = detail::append_pgns<
     nmea2000::battery_status, nmea2000::fluid_level, nmea2000::dc_detailed_status,
     nmea2000::cross_track_error, nmea2000::system_time, nmea2000::time_date, nmea2000::gnss_dops,
     nmea2000::navigation_data, nmea2000::direction_data, nmea2000::iso_request,
-    nmea2000::iso_acknowledgement>::type;
+    nmea2000::iso_acknowledgement,
+    // repeating groups, 64-bit fields
+    nmea2000::pgn_list_message, nmea2000::gnss_sats_in_view, nmea2000::gnss_position_data>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

@@ -302,7 +302,22 @@ std::vector<wire_enum> wire_enums() {
     using P = typename decltype(tag)::type;
     P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
       using F = std::remove_cvref_t<decltype(f)>;
-      if constexpr (!F::is_reserved) {
+      if constexpr (nmea2000::detail::group_row<F>) {
+        // a repeating group's fields: numbered "row.k" as the messages' tables do
+        using Item = typename F::value_type::item_type;
+        Item::n2k_item.for_each([&](const auto& e, unsigned, std::uint16_t k) {
+          using R = std::remove_cvref_t<decltype(e)>;
+          if constexpr (!R::is_reserved) {
+            using E = typename pgn_enum<typename R::value_type>::type;
+            if constexpr (!std::is_void_v<E>) {
+              add_use<E>(
+                  out, "PGN " + std::to_string(P::n2k.info.pgn),
+                  std::to_string(row) + "." + std::to_string(k) + " (" + std::string(e.title) + ")",
+                  kind::lookup);
+            }
+          }
+        });
+      } else if constexpr (!F::is_reserved) {
         using E = typename pgn_enum<typename F::value_type>::type;
         if constexpr (!std::is_void_v<E>) {
           add_use<E>(out, "PGN " + std::to_string(P::n2k.info.pgn),

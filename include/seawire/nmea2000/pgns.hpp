@@ -917,6 +917,225 @@ struct iso_acknowledgement {
 };
 
 // ---------------------------------------------------------------------------------------------
+// ---- groups: PGNs with a repeating field group or 64-bit fields ----
+
+/// What a PGN list (126464) lists.
+enum class pgn_list_function : std::uint8_t { transmit = 0, receive = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(pgn_list_function) noexcept {
+  return {"transmit", "receive"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(pgn_list_function) noexcept {
+  return {"Transmit PGN list", "Receive PGN list"};
+}
+
+/// How range residuals relate to the position (129540).
+enum class range_residual_mode : std::uint8_t { used = 0, calculated_after = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(range_residual_mode) noexcept {
+  return {"used", "calculated_after"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(range_residual_mode) noexcept {
+  return {"Range residuals were used to calculate data",
+          "Range residuals were calculated after the position"};
+}
+
+/// A satellite's part in the fix (129540).
+enum class satellite_status : std::uint8_t {
+  not_tracked = 0,
+  tracked = 1,
+  used = 2,
+  not_tracked_diff = 3,
+  tracked_diff = 4,
+  used_diff = 5,
+};
+constexpr std::array<std::string_view, 6> lookup_names(satellite_status) noexcept {
+  return {"not_tracked", "tracked", "used", "not_tracked_diff", "tracked_diff", "used_diff"};
+}
+constexpr std::array<std::string_view, 6> lookup_titles(satellite_status) noexcept {
+  return {"Not tracked", "Tracked", "Used", "Not tracked+Diff", "Tracked+Diff", "Used+Diff"};
+}
+
+/// The constellation a satellite belongs to (129540).
+enum class gnss_system : std::uint8_t { gps = 0, glonass = 1, galileo = 2, beidou = 3, qzss = 4 };
+constexpr std::array<std::string_view, 5> lookup_names(gnss_system) noexcept {
+  return {"gps", "glonass", "galileo", "beidou", "qzss"};
+}
+constexpr std::array<std::string_view, 5> lookup_titles(gnss_system) noexcept {
+  return {"GPS", "GLONASS", "Galileo", "BeiDou", "QZSS"};
+}
+
+/// The kind of GNSS receiver or reference station (129029).
+enum class gnss_type : std::uint8_t {
+  gps = 0,
+  glonass = 1,
+  gps_glonass = 2,
+  gps_sbas = 3,
+  gps_sbas_glonass = 4,
+  chayka = 5,
+  integrated = 6,
+  surveyed = 7,
+  galileo = 8,
+};
+constexpr std::array<std::string_view, 9> lookup_names(gnss_type) noexcept {
+  return {"gps",    "glonass",    "gps_glonass", "gps_sbas", "gps_sbas_glonass",
+          "chayka", "integrated", "surveyed",    "galileo"};
+}
+constexpr std::array<std::string_view, 9> lookup_titles(gnss_type) noexcept {
+  return {"GPS",    "GLONASS",    "GPS+GLONASS", "GPS+SBAS/WAAS", "GPS+SBAS/WAAS+GLONASS",
+          "Chayka", "integrated", "surveyed",    "Galileo"};
+}
+
+/// How a position was fixed (129029).
+enum class gnss_method : std::uint8_t {
+  no_gnss = 0,
+  gnss_fix = 1,
+  dgnss_fix = 2,
+  precise_gnss = 3,
+  rtk_fixed = 4,
+  rtk_float = 5,
+  estimated = 6,
+  manual = 7,
+  simulated = 8,
+};
+constexpr std::array<std::string_view, 9> lookup_names(gnss_method) noexcept {
+  return {"no_gnss",   "gnss_fix",  "dgnss_fix", "precise_gnss", "rtk_fixed",
+          "rtk_float", "estimated", "manual",    "simulated"};
+}
+constexpr std::array<std::string_view, 9> lookup_titles(gnss_method) noexcept {
+  return {"no GNSS",           "GNSS fix",  "DGNSS fix",           "Precise GNSS",
+          "RTK Fixed Integer", "RTK float", "Estimated (DR) mode", "Manual Input",
+          "Simulate mode"};
+}
+
+/// The receiver's integrity check of the position (129029). A 2-bit lookup: raw 2 and 3 (which
+/// canboat names Caution and Unsafe) are the field's sentinels here, as for every 2-bit lookup.
+enum class gnss_integrity : std::uint8_t { none = 0, safe = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(gnss_integrity) noexcept {
+  return {"none", "safe"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(gnss_integrity) noexcept {
+  return {"No integrity checking", "Safe"};
+}
+
+/// PGN 126464 PGN List (Transmit and Receive): fast packet, priority 6, on demand. The PGNs a
+/// device sends or receives: a function code, then 24-bit PGNs to the end of the payload (no
+/// count field), at most 74. An addressed (PDU1) PGN.
+struct pgn_list_message {
+  /// One PGN of the list.
+  struct entry {
+    unsigned_number<24> pgn;
+
+    static constexpr auto n2k_item = describe_item(field<&entry::pgn>("pgn", "PGN"));
+    [[nodiscard]] constexpr bool operator==(const entry&) const noexcept = default;
+  };
+
+  lookup<nmea2000::pgn_list_function, 8> function_code;
+  group<entry, group_capacity<entry>(1)> pgns;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{126464, "pgn_list_message", "PGN List (Transmit and Receive)", 6,
+                            framing::fast_packet, 0},
+                   field<&pgn_list_message::function_code>("function_code", "Function Code"),
+                   repeating_to_end<&pgn_list_message::pgns>("pgns", "PGN"));
+  [[nodiscard]] constexpr bool operator==(const pgn_list_message&) const noexcept = default;
+};
+
+/// PGN 129540 GNSS Sats in View: fast packet, priority 6, 1 Hz. The satellites a receiver sees:
+/// a count, then 12 bytes per satellite (at most 18).
+struct gnss_sats_in_view {
+  /// One satellite.
+  struct satellite {
+    unsigned_number<8> prn;
+    signed_number<16, res::radian> elevation_rad;
+    unsigned_number<16, res::radian> azimuth_rad;
+    signed_number<16, res::hundredth> snr_db;
+    signed_number<32, resolution{1, -5}> range_residuals_m;
+    lookup<nmea2000::satellite_status, 4> status;
+    lookup<nmea2000::gnss_system, 4> gnss_system;
+
+    static constexpr auto n2k_item =
+        describe_item(field<&satellite::prn>("prn", "PRN"),
+                      field<&satellite::elevation_rad>("elevation_rad", "Elevation"),
+                      field<&satellite::azimuth_rad>("azimuth_rad", "Azimuth"),
+                      field<&satellite::snr_db>("snr_db", "SNR"),
+                      field<&satellite::range_residuals_m>("range_residuals_m", "Range residuals"),
+                      field<&satellite::status>("status", "Status"),
+                      field<&satellite::gnss_system>("gnss_system", "GNSS System"));
+    [[nodiscard]] constexpr bool operator==(const satellite&) const noexcept = default;
+  };
+
+  unsigned_number<8> sid;
+  lookup<nmea2000::range_residual_mode, 2> range_residual_mode;
+  unsigned_number<8> sats_in_view;
+  group<satellite, group_capacity<satellite>(3)> satellites;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129540, "gnss_sats_in_view", "GNSS Sats in View", 6, framing::fast_packet, 1000},
+      field<&gnss_sats_in_view::sid>("sid", "SID"),
+      field<&gnss_sats_in_view::range_residual_mode>("range_residual_mode", "Range Residual Mode"),
+      reserved<6>, field<&gnss_sats_in_view::sats_in_view>("sats_in_view", "Sats in View"),
+      repeating<&gnss_sats_in_view::satellites, &gnss_sats_in_view::sats_in_view>("satellites",
+                                                                                  "Satellites"));
+  [[nodiscard]] constexpr bool operator==(const gnss_sats_in_view&) const noexcept = default;
+};
+
+/// PGN 129029 GNSS Position Data: fast packet, priority 3, 1 Hz. A fix: date and time (UTC),
+/// latitude and longitude (signed 64-bit, 1e-16 degree), altitude (signed 64-bit, 1e-6 m), how
+/// it was fixed, DOPs, geoidal separation, then the reference stations used (a count, then 4
+/// bytes each, at most 45).
+struct gnss_position_data {
+  /// One reference station.
+  struct reference_station {
+    lookup<nmea2000::gnss_type, 4> station_type;
+    unsigned_number<12> station_id;
+    unsigned_number<16, res::hundredth> age_of_corrections_s;
+
+    static constexpr auto n2k_item = describe_item(
+        field<&reference_station::station_type>("station_type", "Reference Station Type"),
+        field<&reference_station::station_id>("station_id", "Reference Station ID"),
+        field<&reference_station::age_of_corrections_s>("age_of_corrections_s",
+                                                        "Age of DGNSS Corrections"));
+    [[nodiscard]] constexpr bool operator==(const reference_station&) const noexcept = default;
+  };
+
+  unsigned_number<8> sid;
+  nmea2000::day_count date;
+  nmea2000::time_since_midnight time;
+  signed_number<64, resolution{1, -16}> latitude_deg;
+  signed_number<64, resolution{1, -16}> longitude_deg;
+  signed_number<64, resolution{1, -6}> altitude_m;
+  lookup<nmea2000::gnss_type, 4> gnss_type;
+  lookup<nmea2000::gnss_method, 4> method;
+  lookup<nmea2000::gnss_integrity, 2> integrity;
+  unsigned_number<8> number_of_svs;
+  signed_number<16, res::hundredth> hdop;
+  signed_number<16, res::hundredth> pdop;
+  signed_number<32, res::hundredth> geoidal_separation_m;
+  unsigned_number<8> reference_stations;
+  group<reference_station, group_capacity<reference_station>(43)> stations;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129029, "gnss_position_data", "GNSS Position Data", 3, framing::fast_packet, 1000},
+      field<&gnss_position_data::sid>("sid", "SID"),
+      field<&gnss_position_data::date>("date", "Date"),
+      field<&gnss_position_data::time>("time", "Time"),
+      field<&gnss_position_data::latitude_deg>("latitude_deg", "Latitude"),
+      field<&gnss_position_data::longitude_deg>("longitude_deg", "Longitude"),
+      field<&gnss_position_data::altitude_m>("altitude_m", "Altitude"),
+      field<&gnss_position_data::gnss_type>("gnss_type", "GNSS type"),
+      field<&gnss_position_data::method>("method", "Method"),
+      field<&gnss_position_data::integrity>("integrity", "Integrity"), reserved<6>,
+      field<&gnss_position_data::number_of_svs>("number_of_svs", "Number of SVs"),
+      field<&gnss_position_data::hdop>("hdop", "HDOP"),
+      field<&gnss_position_data::pdop>("pdop", "PDOP"),
+      field<&gnss_position_data::geoidal_separation_m>("geoidal_separation_m",
+                                                       "Geoidal Separation"),
+      field<&gnss_position_data::reference_stations>("reference_stations", "Reference Stations"),
+      repeating<&gnss_position_data::stations, &gnss_position_data::reference_stations>(
+          "stations", "Reference Station"));
+  [[nodiscard]] constexpr bool operator==(const gnss_position_data&) const noexcept = default;
+};
+
+// ---------------------------------------------------------------------------------------------
 // sets of PGNs
 
 /// A set of PGN structs: what a receiver knows, looked up by PGN number.
