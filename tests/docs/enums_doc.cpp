@@ -308,6 +308,12 @@ std::vector<wire_enum> wire_enums() {
           add_use<E>(out, "PGN " + std::to_string(P::n2k.info.pgn),
                      std::to_string(row) + " (" + std::string(f.title) + ")", kind::lookup);
         }
+        // A number field whose values have titles (field<&P::m, E>).
+        if constexpr (requires { typename F::titles; }) {
+          add_use<typename F::titles>(out, "PGN " + std::to_string(P::n2k.info.pgn),
+                                      std::to_string(row) + " (" + std::string(f.title) + ")",
+                                      kind::lookup);
+        }
       }
     });
   });
@@ -403,6 +409,10 @@ int main() {
   table<nmea2000::canboat_format>(
       "seawire::nmea2000::canboat_format", "nmea2000/log.hpp",
       "The formats a canboat log's `# format=` header names; the first five are read.",
+      kind::value);
+  table<nmea2000::canboat_display>(
+      "seawire::nmea2000::canboat_display", "nmea2000/canboat.hpp",
+      "How canboat's analyzer shows a number field in its std units, by the field's unit.",
       kind::value);
   table<wire_kind>("seawire::wire_kind", "walk.hpp", "Which wire a walked field is of.",
                    kind::value);

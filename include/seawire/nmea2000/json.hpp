@@ -32,8 +32,9 @@ using nmea::json_value;
 struct message_header {
   can_id id;
   std::optional<std::int64_t> time_us;
-  nmea::text<15> interface;  ///< empty when the log has none
-  char direction = 0;        ///< 'R' or 'T' for yd_raw, 0 otherwise
+  nmea::text<15> interface;          ///< empty when the log has none
+  char direction = 0;                ///< 'R' or 'T' for yd_raw, 0 otherwise
+  std::optional<log_format> format;  ///< the log's format (what time_us counts from)
 };
 
 /// The header of the message the log record `r` carries (or completes).
@@ -43,6 +44,7 @@ struct message_header {
   h.time_us = r.time_us;
   h.interface = r.interface;
   if (r.format == log_format::yd_raw) h.direction = r.direction;
+  h.format = r.format;
   return h;
 }
 
