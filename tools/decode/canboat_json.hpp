@@ -33,7 +33,6 @@
 #include <string_view>
 #include <type_traits>
 
-#include "seawire/detail/bit_layout.hpp"
 #include "seawire/nmea2000/canboat.hpp"
 #include "seawire/nmea2000/field.hpp"
 #include "seawire/nmea2000/json.hpp"
@@ -182,10 +181,15 @@ struct row_read {
   return {true, bits, offset % 8 + bits <= left * 8};
 }
 
-// The `bits` bits at `offset`, sign-extended when `is_signed`.
+// The `bits` bits at `offset` (least significant first, as NMEA 2000 lays them out; at most 64,
+// inside the payload), sign-extended when `is_signed`.
 [[nodiscard]] inline std::int64_t raw_bits(std::span<const std::uint8_t> payload, unsigned offset,
                                            unsigned bits, bool is_signed) {
-  const std::uint64_t u = seawire::detail::get_bits<nmea2000::payload_order>(payload, offset, bits);
+  std::uint64_t u = 0;
+  for (unsigned i = 0; i < bits; ++i) {
+    const unsigned at = offset + i;
+    u |= static_cast<std::uint64_t>((static_cast<unsigned>(payload[at / 8]) >> (at % 8)) & 1U) << i;
+  }
   if (is_signed && bits < 64 && ((u >> (bits - 1)) & 1) != 0)
     return static_cast<std::int64_t>(u) - (std::int64_t{1} << bits);
   return static_cast<std::int64_t>(u);
@@ -197,11 +201,11 @@ struct row_read {
   return static_cast<std::int64_t>(is_signed ? ones >> 1 : ones);
 }
 
-// Whether a number of `size` bits read at `bits` bits is a value: its sentinels are counted by
-// its declared width, from the top of what was read.
-[[nodiscard]] constexpr bool number_has_value(std::int64_t raw, unsigned bits, unsigned size,
+// Whether a number read at `bits` bits is a value: its `sentinels` (as many as its declared
+// width has) are counted from the top of what was read.
+[[nodiscard]] constexpr bool number_has_value(std::int64_t raw, unsigned bits, unsigned sentinels,
                                               bool is_signed) {
-  return raw <= top_of(bits, is_signed) - nmea2000::detail::sentinel_count(size);
+  return raw <= top_of(bits, is_signed) - static_cast<std::int64_t>(sentinels);
 }
 
 // Reserved or binary bits in hex, a byte each, as analyzer shows them: the first byte's bits
@@ -259,8 +263,7 @@ void put_lookup(fields_text& f, std::string_view key, std::int64_t raw, unsigned
   static_assert(nmea2000::titled_enum<E>,
                 "every lookup enum declares lookup_titles (canboat's texts) beside lookup_names");
   const std::string_view title =
-      raw >= 0 ? nmea2000::detail::enum_title<E>(static_cast<std::uint64_t>(raw))
-               : std::string_view{};
+      raw >= 0 ? nmea2000::lookup_title<E>(static_cast<std::uint64_t>(raw)) : std::string_view{};
   if (!title.empty()) {
     f.key(key);
     put_string(f.out(), title);
@@ -286,7 +289,7 @@ void put_flags(fields_text& f, std::string_view key, std::int64_t raw, unsigned 
     if (((static_cast<std::uint64_t>(raw) >> bit) & 1) == 0) continue;
     if (!first) out += ',';
     first = false;
-    const std::string_view title = nmea2000::detail::enum_title<E>(bit);
+    const std::string_view title = nmea2000::lookup_title<E>(bit);
     if (!title.empty()) {
       put_string(out, title);
     } else {
@@ -327,7 +330,7 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
     if constexpr (kind<V>::number && requires { typename row::titles; }) {
       put_lookup<typename row::titles>(f, key, raw, r.bits);  // a number canboat names values of
     } else if constexpr (kind<V>::number) {
-      if (!number_has_value(raw, r.bits, L::bits, V::is_signed)) return true;
+      if (!number_has_value(raw, r.bits, V::sentinels, V::is_signed)) return true;
       f.key(key);
       put_number<V, L>(f.out(), raw);
     } else if constexpr (kind<V>::lookup) {
@@ -341,7 +344,7 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
       f.key(key);
       put_date(f.out(), raw);
     } else if constexpr (std::is_same_v<V, nmea2000::time_since_midnight>) {
-      if (!number_has_value(raw, r.bits, L::bits, false)) return true;
+      if (!number_has_value(raw, r.bits, V::number_type::sentinels, false)) return true;
       f.key(key);
       put_time(f.out(), raw, resolution_value<nmea2000::time_since_midnight::number_type::res>());
     } else {

@@ -273,15 +273,17 @@ inline constexpr bool titles_cover_names = [] {
   return true;
 }();
 
-/// The title of raw value `v` of E; empty when E has none for it.
+}  // namespace detail
+
+/// The title of raw value `v` of E ("Pitot tube" for water_reference 1); empty when E has none
+/// for it.
 template <titled_enum E>
-[[nodiscard]] constexpr std::string_view enum_title(std::uint64_t v) noexcept {
-  static_assert(titles_cover_names<E>,
+[[nodiscard]] constexpr std::string_view lookup_title(std::uint64_t v) noexcept {
+  static_assert(detail::titles_cover_names<E>,
                 "lookup_titles must title every value lookup_names names, and only those, before "
                 "any sentinel titles");
-  return seawire::detail::name_at(titles_of<E>, v);
+  return seawire::detail::name_at(detail::titles_of<E>, v);
 }
-}  // namespace detail
 
 /// A field of `Bits` bits whose values name things (a speed sensor's type). Values the standard
 /// has not named are kept and sent as they are; the top 3 raw values are sentinels (2 of a 2-bit
