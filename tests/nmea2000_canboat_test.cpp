@@ -27,20 +27,6 @@ namespace registry = seawire::registry;
 
 namespace {
 
-// E of a lookup<E, B> or flags<E, B>; void otherwise.
-template <class V>
-struct enum_of {
-  using type = void;
-};
-template <class E, unsigned B>
-struct enum_of<n2k::lookup<E, B>> {
-  using type = E;
-};
-template <class E, unsigned B>
-struct enum_of<n2k::flags<E, B>> {
-  using type = E;
-};
-
 // Every lookup and flag enum of a described PGN has titles, one for each name and none where it
 // has none, and titles past the names only for sentinel values of the field.
 template <class E, class V>
@@ -73,7 +59,7 @@ TEST_CASE("every lookup and flag enum of a described PGN has canboat's titles") 
     P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (!F::is_reserved) {
-        using E = typename enum_of<typename F::value_type>::type;
+        using E = n2k::value_enum_t<typename F::value_type>;
         if constexpr (!std::is_void_v<E>) {
           check_titles<E, typename F::value_type>(f.name);
           ++enums;

@@ -193,20 +193,6 @@ std::vector<std::string> mission_texts() {
   return out;
 }
 
-// The enum type of a PGN field: E of a lookup<E, B> or flags<E, B>, void otherwise.
-template <class V>
-struct pgn_enum {
-  using type = void;
-};
-template <class E, unsigned B>
-struct pgn_enum<nmea2000::lookup<E, B>> {
-  using type = E;
-};
-template <class E, unsigned B>
-struct pgn_enum<nmea2000::flags<E, B>> {
-  using type = E;
-};
-
 template <class T>
 std::string_view type_signature() {
   return __PRETTY_FUNCTION__;
@@ -303,7 +289,7 @@ std::vector<wire_enum> wire_enums() {
     P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (!F::is_reserved) {
-        using E = typename pgn_enum<typename F::value_type>::type;
+        using E = nmea2000::value_enum_t<typename F::value_type>;
         if constexpr (!std::is_void_v<E>) {
           add_use<E>(out, "PGN " + std::to_string(P::n2k.info.pgn),
                      std::to_string(row) + " (" + std::string(f.title) + ")", kind::lookup);

@@ -54,12 +54,10 @@ struct kind<nmea2000::number<B, S, R>> {
 template <class E, unsigned B>
 struct kind<nmea2000::lookup<E, B>> {
   static constexpr bool number = false, lookup = true, flags = false;
-  using enum_type = E;
 };
 template <class E, unsigned B>
 struct kind<nmea2000::flags<E, B>> {
   static constexpr bool number = false, lookup = false, flags = true;
-  using enum_type = E;
 };
 template <class>
 inline constexpr bool unhandled_kind = false;
@@ -334,10 +332,10 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
       f.key(key);
       put_number<V, L>(f.out(), raw);
     } else if constexpr (kind<V>::lookup) {
-      put_lookup<typename kind<V>::enum_type>(f, key, raw, r.bits);
+      put_lookup<nmea2000::value_enum_t<V>>(f, key, raw, r.bits);
     } else if constexpr (kind<V>::flags) {
       if (whole && !L::info::value(msg).has_value()) return true;
-      put_flags<typename kind<V>::enum_type>(f, key, raw, r.bits);
+      put_flags<nmea2000::value_enum_t<V>>(f, key, raw, r.bits);
     } else if constexpr (std::is_same_v<V, nmea2000::day_count>) {
       if (r.bits != 16) return false;  // analyzer reads a date of two whole bytes only
       if (raw >= 0xFFFD) return true;

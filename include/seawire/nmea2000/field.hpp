@@ -556,6 +556,23 @@ struct pgn_info {
   std::uint16_t interval_ms = 0;  ///< default transmit interval; 0 = on demand
 };
 
+/// The enum of a lookup or flag set type: E of lookup<E, B> and flags<E, B>; void for any other
+/// value type.
+template <class V>
+struct value_enum {
+  using type = void;
+};
+template <class E, unsigned B>
+struct value_enum<lookup<E, B>> {
+  using type = E;
+};
+template <class E, unsigned B>
+struct value_enum<flags<E, B>> {
+  using type = E;
+};
+template <class V>
+using value_enum_t = typename value_enum<V>::type;
+
 namespace detail {
 template <class T>
 inline constexpr bool is_flag_word = false;
