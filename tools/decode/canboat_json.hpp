@@ -18,9 +18,11 @@
 // part of is read at the width it has (a 16-bit field of which one byte came is that byte's
 // value), the rows after the payload's end are left out, and a message whose cut field analyzer
 // cannot read at all (a date of one byte) is not written. Known differences: tools/decode/
-// README.md.
+// README.md. A new kind of field (a string, a repeating group) is one more branch of put_row:
+// until it has one, the static_assert at its end names the value type that lacks it.
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -79,7 +81,7 @@ template <nmea2000::resolution R>
 }
 
 inline void put_format(std::string& out, const char* fmt, auto... args) {
-  char buf[64];
+  char buf[128];
   const int n = std::snprintf(buf, sizeof buf, fmt, args...);
   if (n > 0) out.append(buf, std::min(static_cast<std::size_t>(n), sizeof buf - 1));
 }
