@@ -284,8 +284,8 @@ class decoder {
     // so what comes after the noise is read, and memory stays bounded.
     if (!can && pending_.size() >= max_undecided) can = false;
     if (!can && !at_end) return;
-    in_ = can.value_or(false) ? input::n2k : input::nmea;
-    if (const char* why = in_ == input::n2k ? out_.refuses_can_log() : nullptr) {
+    in_ = can.value_or(out_.refuses_sentences() != nullptr) ? input::n2k : input::nmea;
+    if (const char* why = in_ == input::n2k ? out_.refuses_can_log() : out_.refuses_sentences()) {
       std::fputs(why, stderr);
       unusable_ = true;
       in_ = input::nmea;
@@ -366,7 +366,7 @@ class decoder {
         std::snprintf(type_buf, sizeof type_buf, "PGN%u", static_cast<unsigned>(h.id.pgn));
     const std::string_view type(type_buf, static_cast<std::size_t>(n));
     if (!wanted(type)) return;
-    const origin from{nullptr, nullptr, &h};
+    const origin from{nullptr, nullptr, &h, payload};
     const bool known = n2k_pgns::visit(h.id.pgn, payload,
                                        [&](const auto& msg) { deliver(type, type, msg, from); });
     if (!known) deliver(type, type, tools::raw_pgn{payload}, from);
@@ -478,7 +478,7 @@ class decoder {
     nmea::json_buffer<16> type_buf;
     const std::string_view type = type_of(s, msg, type_buf);
     if (!wanted(type)) return;
-    deliver(type, s.address, msg, origin{&l, &s, nullptr});
+    deliver(type, s.address, msg, origin{&l, &s, nullptr, {}});
   }
 
   // ---- every message, of every wire ----
@@ -745,9 +745,10 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
                  "canonically (uppercase checksum, CR LF); none: decode and validate only (e.g. "
                  "--format none --stats); csv: a table per message type (with --type or "
                  "--output-dir); geojson: the tracks of every source of positions, and their "
-                 "state changes as points; svg: a picture of the tracks. With every format but "
-                 "json, rejected lines are reported on stderr")
-      ->check(CLI::IsMember({"json", "nmea", "none", "csv", "geojson", "svg"}));
+                 "state changes as points; svg: a picture of the tracks; canboat: each NMEA 2000 "
+                 "message as canboat's analyzer -json writes it (CAN logs only). With every "
+                 "format but json, rejected lines are reported on stderr")
+      ->check(CLI::IsMember({"json", "nmea", "none", "csv", "geojson", "svg", "canboat"}));
   CLI::Option* type_opt = app.add_option(
       "-t,--type", o.types,
       "only messages of this type, as JSON's \"type\" names it (CPNVG, GPRMC, AB00); may be "
@@ -807,6 +808,7 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
           : fmt == "csv"     ? format::csv
           : fmt == "geojson" ? format::geojson
           : fmt == "svg"     ? format::svg
+          : fmt == "canboat" ? format::canboat
                              : format::json;
   o.in = in == "nmea" ? input::nmea : in == "n2k" ? input::n2k : input::automatic;
   if (!log_format.empty()) {
@@ -819,6 +821,12 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
     std::fprintf(stderr,
                  "seawire-decode: --format nmea re-encodes sentences; a CAN log has none (use "
                  "seawire-encode --output FORMAT to write a log again)\n");
+    return 2;
+  }
+  if (o.in == input::nmea && o.fmt == format::canboat) {
+    std::fprintf(stderr,
+                 "seawire-decode: --format canboat writes NMEA 2000 messages as canboat's "
+                 "analyzer does; sentences have none (use --input n2k or auto with a CAN log)\n");
     return 2;
   }
   if (dir_opt->count() > 0 && o.output_dir.empty()) {

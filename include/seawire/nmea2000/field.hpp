@@ -272,6 +272,43 @@ template <named_enum E>
 }
 }  // namespace detail
 
+/// An enum with display titles, canboat's texts ("Paddle wheel", "Pitot tube"): declared as
+/// `constexpr std::array<std::string_view, N> lookup_titles(E)` (found by ADL). Every lookup and
+/// flag enum has them beside lookup_names, the same values in the same order; a title may go on
+/// past the names for the raw values canboat names among the sentinels (a heading reference's
+/// raw 2, "Error"). An enum with titles alone names the values of a number field
+/// (field<&P::m, E>). An empty title names nothing.
+template <class E>
+concept titled_enum = std::is_enum_v<E> && requires(E e) {
+  { lookup_titles(e).size() } -> std::convertible_to<std::size_t>;
+};
+
+namespace detail {
+template <titled_enum E>
+inline constexpr auto titles_of = lookup_titles(E{});
+
+template <titled_enum E>
+inline constexpr bool titles_cover_names = [] {
+  if constexpr (named_enum<E>) {
+    if (titles_of<E>.size() < names_of<E>.size()) return false;
+    for (std::size_t i = 0; i < names_of<E>.size(); ++i)
+      if (names_of<E>[i].empty() != titles_of<E>[i].empty()) return false;
+  }
+  return true;
+}();
+
+}  // namespace detail
+
+/// The title of raw value `v` of E ("Pitot tube" for water_reference 1); empty when E has none
+/// for it.
+template <titled_enum E>
+[[nodiscard]] constexpr std::string_view lookup_title(std::uint64_t v) noexcept {
+  static_assert(detail::titles_cover_names<E>,
+                "lookup_titles must title every value lookup_names names, and only those, before "
+                "any sentinel titles");
+  return seawire::detail::name_at(detail::titles_of<E>, v);
+}
+
 /// A field of `Bits` bits whose values name things (a speed sensor's type). Values the standard
 /// has not named are kept and sent as they are; the top 3 raw values are sentinels (2 of a 2-bit
 /// lookup).
@@ -481,7 +518,8 @@ concept field_value = requires(const T& t, std::int64_t raw) {
 };
 
 /// One row of a PGN table: the member, its name (snake_case with the unit last, as JSON, CSV and
-/// fmt show it) and the standard's name for the field.
+/// fmt show it) and its title, the field's name as canboat's database spells it (the key of its
+/// JSON).
 template <auto Member>
 struct field_entry {
   using value_type = seawire::detail::member_type_t<Member>;
@@ -498,6 +536,24 @@ template <auto Member>
 [[nodiscard]] constexpr field_entry<Member> field(std::string_view name,
                                                   std::string_view title) noexcept {
   return {name, title};
+}
+
+/// A number field whose values canboat's database names (an engine instance: 0 "Single Engine or
+/// Dual Engine Port"): a number as seawire keeps and writes it, with E's lookup_titles for the
+/// writers that show canboat's texts. Declared as field<&P::m, E>(name, title).
+template <auto Member, class E>
+struct titled_field_entry : field_entry<Member> {
+  static_assert(titled_enum<E>, "a titled number's enum declares lookup_titles");
+  static_assert(
+      requires { field_entry<Member>::value_type::res; },
+      "only a number field takes titles; a lookup has its enum's already");
+  using titles = E;
+};
+
+template <auto Member, class E>
+[[nodiscard]] constexpr titled_field_entry<Member, E> field(std::string_view name,
+                                                            std::string_view title) noexcept {
+  return {{name, title}};
 }
 
 /// `Bits` bits the standard reserves: sent as ones, ignored when received.
@@ -679,11 +735,28 @@ enum class framing : std::uint8_t { single_frame, fast_packet };
 struct pgn_info {
   std::uint32_t pgn = 0;
   std::string_view name;      ///< snake_case, the C++ struct's name
-  std::string_view title;     ///< the standard's name
+  std::string_view title;     ///< the PGN's name as canboat's database spells it
   std::uint8_t priority = 6;  ///< default priority (0 highest .. 7)
   framing transport = framing::single_frame;
   std::uint16_t interval_ms = 0;  ///< default transmit interval; 0 = on demand
 };
+
+/// The enum of a lookup or flag set type: E of lookup<E, B> and flags<E, B>; void for any other
+/// value type.
+template <class V>
+struct value_enum {
+  using type = void;
+};
+template <class E, unsigned B>
+struct value_enum<lookup<E, B>> {
+  using type = E;
+};
+template <class E, unsigned B>
+struct value_enum<flags<E, B>> {
+  using type = E;
+};
+template <class V>
+using value_enum_t = typename value_enum<V>::type;
 
 namespace detail {
 template <class T>

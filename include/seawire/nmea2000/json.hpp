@@ -33,8 +33,9 @@ using nmea::json_value;
 struct message_header {
   can_id id;
   std::optional<std::int64_t> time_us;
-  nmea::text<15> interface;  ///< empty when the log has none
-  char direction = 0;        ///< 'R' or 'T' for yd_raw, 0 otherwise
+  nmea::text<15> interface;          ///< empty when the log has none
+  char direction = 0;                ///< 'R' or 'T' for yd_raw, 0 otherwise
+  std::optional<log_format> format;  ///< the log's format (what time_us counts from)
 };
 
 /// The header of the message the log record `r` carries (or completes).
@@ -44,6 +45,7 @@ struct message_header {
   h.time_us = r.time_us;
   h.interface = r.interface;
   if (r.format == log_format::yd_raw) h.direction = r.direction;
+  h.format = r.format;
   return h;
 }
 
@@ -72,17 +74,6 @@ template <class T>
 struct is_flags : std::false_type {};
 template <class E, unsigned B>
 struct is_flags<flags<E, B>> : std::true_type {};
-
-template <class T>
-struct enum_of;
-template <class E, unsigned B>
-struct enum_of<lookup<E, B>> {
-  using type = E;
-};
-template <class E, unsigned B>
-struct enum_of<flags<E, B>> {
-  using type = E;
-};
 
 template <json_sink Sink>
 constexpr void json_int(Sink& s, std::int64_t v) noexcept {
@@ -115,7 +106,7 @@ constexpr bool flag_names(Sink& s, const T& v, char sep) noexcept {
     if (any) s.put(sep);
     any = true;
     quote<Style>(s);
-    const std::string_view n = enum_name<typename enum_of<T>::type>(bit);
+    const std::string_view n = enum_name<value_enum_t<T>>(bit);
     if (n.empty()) {
       s.put("bit_");
       nmea::detail::json_uint(s, bit);
@@ -385,7 +376,7 @@ template <field_value T, class Lookup>
 [[nodiscard]] constexpr errc read_json_value(const json_value& v, T& out, std::string_view name,
                                              Lookup&& lookup) noexcept {
   if constexpr (detail::is_flags<T>::value) {
-    using E = typename detail::enum_of<T>::type;
+    using E = value_enum_t<T>;
     if (v.kind == json_kind::number) {
       std::int64_t raw = 0;
       if (!detail::parse_plain_uint(v.text, raw) || raw > T::top_raw) return errc::out_of_range;
