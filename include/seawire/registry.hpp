@@ -159,6 +159,8 @@ using pgns = detail::append_pgns<
     nmea2000::cross_track_error, nmea2000::system_time, nmea2000::time_date, nmea2000::gnss_dops,
     nmea2000::navigation_data, nmea2000::direction_data, nmea2000::iso_request,
     nmea2000::iso_acknowledgement,
+    // repeating groups, 64-bit fields
+    nmea2000::pgn_list_message, nmea2000::gnss_sats_in_view, nmea2000::gnss_position_data,
     // ---- strings ----
     nmea2000::product_information, nmea2000::configuration_information,
     nmea2000::ais_class_a_static_data, nmea2000::ais_class_b_static_data_a,
