@@ -70,6 +70,11 @@ struct kind<nmea2000::flags<E, B>> {
 };
 template <class>
 inline constexpr bool unhandled_kind = false;
+// A repeating group's value (nmea2000::group).
+template <class V>
+inline constexpr bool is_group = false;
+template <class I, std::size_t C>
+inline constexpr bool is_group<nmea2000::group<I, C>> = true;
 
 // ---- numbers as analyzer computes and prints them ----
 
@@ -492,7 +497,7 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
     f.key(key);
     put_binary(f.out(), payload, at, r.bits);
     return true;
-  } else if constexpr (nmea2000::detail::is_group_value<typename L::value_type>) {
+  } else if constexpr (is_group<typename L::value_type>) {
     return put_group(f, L::info::value(msg), payload, at);
   } else {
     using V = typename L::value_type;
