@@ -25,7 +25,7 @@
 #include "seawire/registry.hpp"
 #include "support.hpp"
 
-#if __has_include(<fmt/format.h>)
+#if SEAWIRE_HAS_FMT
 #include <fmt/format.h>
 
 #include "seawire/fmt.hpp"
@@ -535,7 +535,7 @@ TEST_CASE("strings in JSON, CSV and fmt: escaped, null when empty, read back exa
   n2k::write_csv(csv, n2k::message_header{}, m);
   CHECK(std::string(csv.view()).find(R"(,"Q""\,\u0001\u00E9\u007F",,v1,)") != std::string::npos);
 
-#if __has_include(<fmt/format.h>)
+#if SEAWIRE_HAS_FMT
   CHECK(fmt::format("{}", m.model_version) == "\"v1\"");
   CHECK(fmt::format("{}", m.software_version_code) == "null");
   CHECK(fmt::format("{}", m.model_id) == R"("Q\"\\,\u0001\u00E9\u007F")");
