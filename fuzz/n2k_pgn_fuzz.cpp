@@ -5,8 +5,8 @@
 // Properties:
 //  - decode -> encode -> decode is the identity: encode accepts whatever decode produced (every
 //    raw value fits its field) and writes a payload that decodes to the same message;
-//  - encode writes every reserved bit as one (of the bytes it writes: a flag word not sent ends
-//    the payload, see encode);
+//  - encode writes every reserved bit as one and every spare bit as zero (of the bytes it writes:
+//    a flag word not sent ends the payload, see encode);
 //  - encode keeps the bits the sender sent: each field the payload holds in full comes out bit
 //    for bit (so a payload of the PGN's length or longer comes back as its first `length` bytes
 //    with the reserved bits set);
@@ -46,7 +46,10 @@ void check_payload(std::span<const std::uint8_t> payload) {
     const std::uint64_t ones = (std::uint64_t{1} << F::bits) - 1;
     const std::uint64_t written =
         seawire::detail::get_bits<n2k::payload_order>(out, offset, F::bits);
-    if constexpr (F::is_reserved) {
+    if constexpr (requires { F::sent_as_zero; }) {
+      SEAWIRE_FUZZ_CHECK(written == 0, "a spare bit was written as one", pgn, hex_of(payload),
+                         hex_of(out), number(row));
+    } else if constexpr (F::is_reserved) {
       SEAWIRE_FUZZ_CHECK(written == ones, "a reserved bit was written as zero", pgn,
                          hex_of(payload), hex_of(out), number(row));
     } else if (offset + F::bits <= payload.size() * 8) {

@@ -192,12 +192,34 @@ std::string frame_row(F) {
   return line;
 }
 
+// The JSON name of the field a keyed row is named by.
+template <class Row>
+std::string key_name() {
+  using P = seawire::detail::member_class_t<Row::key_member>;
+  std::string out;
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using E = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!E::is_reserved) {
+      if (seawire::detail::same_member<E::member, Row::key_member>) out = std::string(f.name);
+    }
+  });
+  return out;
+}
+
 template <class F>
 std::string pgn_row(F) {
   std::string holds = "reserved: sent as ones, ignored when received";
   std::string step;
   std::string values;
-  if constexpr (!F::reserved) holds = n2k_form<typename F::value_type>(step, values);
+  if constexpr (requires { std::remove_cvref_t<decltype(F::desc)>::sent_as_zero; }) {
+    holds = "spare: sent as zeros, ignored when received";
+  } else if constexpr (!F::reserved && nmea2000::keyed_row<typename F::info::row_type>) {
+    using row = typename F::info::row_type;
+    holds = "lookup named by " + quoted(key_name<row>()) + " and its own value";
+    values = std::to_string(row::value_type::table::entries.size()) + " named pairs";
+  } else if constexpr (!F::reserved) {
+    holds = n2k_form<typename F::value_type>(step, values);
+  }
   return "| " + std::to_string(F::number) + " | " + (F::reserved ? "" : quoted(F::name)) + " | " +
          std::string(F::desc.title) + " | " + std::to_string(F::bit_offset) + " | " +
          std::to_string(F::bits) + " | " + holds + " | " + step + " | " + values + " |\n";
@@ -279,8 +301,8 @@ template <class T>
 struct n2k_kind {
   static constexpr int value = 0;
 };
-template <unsigned B, bool S, nmea2000::resolution R>
-struct n2k_kind<nmea2000::number<B, S, R>> {
+template <unsigned B, bool S, nmea2000::resolution R, unsigned N>
+struct n2k_kind<nmea2000::number<B, S, R, N>> {
   static constexpr int value = 1;
 };
 template <class E, unsigned B>

@@ -112,17 +112,21 @@ template <resolution R>
 
 /// An integer field of `Bits` bits, `Signed` or not, at resolution `Res` (1 by default); "not
 /// available" by default. Built with from() (a physical value) or from_raw(), never from a plain
-/// number (3 m/s is not raw 3 = 0.03 m/s).
-template <unsigned Bits, bool Signed, resolution Res = resolution{}>
+/// number (3 m/s is not raw 3 = 0.03 m/s). `Sentinels` top raw values are sentinels, by default
+/// as many as the width has (docs/nmea2000.md); 0 for a field every raw value of which is a
+/// value (unsigned_no_sentinel).
+template <unsigned Bits, bool Signed, resolution Res = resolution{},
+          unsigned Sentinels = detail::sentinel_count(Bits)>
 class number {
   static_assert(Bits >= 1 && Bits <= 32 && (!Signed || Bits >= 2), "field width 1..32 bits");
   static_assert(Res.mantissa > 0, "resolution must be positive");
+  static_assert(Sentinels <= detail::sentinel_count(Bits), "more sentinels than the width has");
 
  public:
   static constexpr unsigned bits = Bits;
   static constexpr bool is_signed = Signed;
   static constexpr resolution res = Res;
-  static constexpr unsigned sentinels = detail::sentinel_count(Bits);
+  static constexpr unsigned sentinels = Sentinels;
   /// All ones (unsigned) or the largest positive value (signed): "not available".
   static constexpr std::int64_t top_raw =
       Signed ? (std::int64_t{1} << (Bits - 1)) - 1 : (std::int64_t{1} << Bits) - 1;
@@ -221,6 +225,10 @@ template <unsigned Bits, resolution Res = resolution{}>
 using unsigned_number = number<Bits, false, Res>;
 template <unsigned Bits, resolution Res = resolution{}>
 using signed_number = number<Bits, true, Res>;
+/// An unsigned integer field every raw value of which is a value, all ones included (an ISO
+/// NAME's device instances): no sentinel, so never "not available".
+template <unsigned Bits>
+using unsigned_no_sentinel = number<Bits, false, resolution{}, 0>;
 
 // ---------------------------------------------------------------------------------------------
 // lookups and flag sets
@@ -250,7 +258,8 @@ template <named_enum E>
 
 /// A field of `Bits` bits whose values name things (a speed sensor's type). Values the standard
 /// has not named are kept and sent as they are; the top 3 raw values are sentinels (2 of a 2-bit
-/// lookup).
+/// lookup), except those the lookup names: a named raw value is always a value (a 2-bit gear's
+/// 2 is "reverse", not J1939's "error").
 template <named_enum E, unsigned Bits>
 class lookup {
   static_assert(Bits >= 1 && Bits <= 16);
@@ -260,9 +269,20 @@ class lookup {
   static constexpr bool is_signed = false;
   static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
+  /// The largest raw value that is a value whether named or not.
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
-  static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(max_valid_raw) + 1,
-                "more names than the field has ordinary values");
+  static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(top_raw) + 1,
+                "more names than the field has raw values");
+  static_assert(!detail::enum_value<E>("not_available") && !detail::enum_value<E>("out_of_range") &&
+                    !detail::enum_value<E>("reserved"),
+                "a lookup's name cannot be a state's: JSON could not tell them apart");
+
+  /// Whether raw value `raw` is a value: below the sentinels, or one the lookup names.
+  [[nodiscard]] static constexpr bool is_value(std::int64_t raw) noexcept {
+    return (raw >= 0 && raw <= max_valid_raw) ||
+           (raw > max_valid_raw && raw <= top_raw &&
+            !detail::enum_name<E>(static_cast<std::uint64_t>(raw)).empty());
+  }
 
   constexpr lookup() noexcept = default;
   // NOLINTNEXTLINE(google-explicit-constructor): m.speed_type = water_reference::doppler;
@@ -273,7 +293,11 @@ class lookup {
     l.raw_ = raw;
     return l;
   }
-  [[nodiscard]] static constexpr lookup not_available() noexcept { return lookup{}; }
+  /// All ones; not offered when the lookup names all ones (then no raw value means "not
+  /// available").
+  [[nodiscard]] static constexpr lookup not_available() noexcept requires(!is_value(top_raw)) {
+    return lookup{};
+  }
   /// The value called `name` (a name of lookup_names); bad_enum for any other.
   [[nodiscard]] static constexpr result<lookup> from_name(std::string_view name) noexcept {
     const auto v = detail::enum_value<E>(name);
@@ -284,7 +308,7 @@ class lookup {
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
   [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
   [[nodiscard]] constexpr field_state state() const noexcept {
-    return detail::state_of(raw_, top_raw, sentinels);
+    return is_value(raw_) ? field_state::value : detail::state_of(raw_, top_raw, sentinels);
   }
   [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
   /// The value, named or not; nullopt unless state() is value.
@@ -476,6 +500,176 @@ template <auto Member>
   return {name, title};
 }
 
+// ---------------------------------------------------------------------------------------------
+// lookups whose names depend on another field
+
+/// One name of a lookup whose names depend on another field (its key): 60928's device function
+/// 130 is "diagnostic" in device class 10 and "bus_traffic_logger" is 140 there, but 130 of class
+/// 20 is an EPIRB. `name` is snake_case (JSON, CSV, fmt), `title` the standard's text.
+struct keyed_name {
+  std::uint16_t key = 0;
+  std::uint16_t value = 0;
+  std::string_view name;
+  std::string_view title;
+};
+
+namespace detail {
+[[nodiscard]] constexpr bool keyed_before(const keyed_name& a, std::int64_t key,
+                                          std::int64_t value) noexcept {
+  return a.key < key || (a.key == key && a.value < value);
+}
+/// Whether `t` is sorted by (key, value), each pair once, every name set and unique in its key.
+template <std::size_t N>
+[[nodiscard]] constexpr bool keyed_table_valid(const std::array<keyed_name, N>& t) noexcept {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (t[i].name.empty() || t[i].title.empty()) return false;
+    if (i > 0 && !keyed_before(t[i - 1], t[i].key, t[i].value)) return false;
+    for (std::size_t j = i + 1; j < N && t[j].key == t[i].key; ++j)
+      if (t[j].name == t[i].name) return false;
+  }
+  return true;
+}
+/// The index of (key, value) in a sorted table, by binary search; N when it has none.
+template <std::size_t N>
+[[nodiscard]] constexpr std::size_t keyed_find(const std::array<keyed_name, N>& t, std::int64_t key,
+                                               std::int64_t value) noexcept {
+  std::size_t lo = 0;
+  std::size_t hi = N;
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (keyed_before(t[mid], key, value)) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo < N && t[lo].key == key && t[lo].value == value ? lo : N;
+}
+}  // namespace detail
+
+/// A table of keyed names: a type with `static constexpr std::array<keyed_name, N> entries`.
+template <class T>
+concept keyed_table = requires {
+  T::entries.size();
+  { T::entries[0] } -> std::convertible_to<const keyed_name&>;
+};
+
+/// A field of `Bits` bits whose names depend on another field of the PGN, its key (declared with
+/// keyed_field). Table T lists the named (key, value) pairs once, sorted; a pair it does not list
+/// is kept and shown as its number. The top raw values are sentinels as for a lookup; no pair may
+/// name one, so the state never depends on the key.
+template <keyed_table T, unsigned Bits>
+class keyed_lookup {
+  static_assert(Bits >= 1 && Bits <= 16);
+  static_assert(detail::keyed_table_valid(T::entries),
+                "a keyed table must be sorted by (key, value), each pair and name once");
+
+ public:
+  using table = T;
+  static constexpr unsigned bits = Bits;
+  static constexpr bool is_signed = false;
+  static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
+  static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
+  static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
+  static_assert(std::ranges::all_of(T::entries,
+                                    [](const keyed_name& e) { return e.value <= max_valid_raw; }),
+                "a keyed table names a sentinel");
+
+  constexpr keyed_lookup() noexcept = default;
+  [[nodiscard]] static constexpr keyed_lookup from_raw(std::int64_t raw) noexcept {
+    keyed_lookup l;
+    l.raw_ = raw;
+    return l;
+  }
+  [[nodiscard]] static constexpr keyed_lookup not_available() noexcept { return keyed_lookup{}; }
+  /// The value called `name` when the key is `key`; bad_enum when no value of that key is.
+  [[nodiscard]] static constexpr result<keyed_lookup> from_name(std::int64_t key,
+                                                                std::string_view name) noexcept {
+    for (const keyed_name& e : T::entries)
+      if (e.key == key && e.name == name) return {from_raw(e.value), errc::ok};
+    return {keyed_lookup{}, errc::bad_enum};
+  }
+
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
+  [[nodiscard]] constexpr field_state state() const noexcept {
+    return detail::state_of(raw_, top_raw, sentinels);
+  }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
+  /// The value's name when the key is `key` (O(log n)); empty for a sentinel or a pair the table
+  /// does not name.
+  [[nodiscard]] constexpr std::string_view name(std::int64_t key) const noexcept {
+    const std::size_t i = at(key);
+    return i < T::entries.size() ? T::entries[i].name : std::string_view{};
+  }
+  /// The standard's text for the value when the key is `key`; empty as for name().
+  [[nodiscard]] constexpr std::string_view title(std::int64_t key) const noexcept {
+    const std::size_t i = at(key);
+    return i < T::entries.size() ? T::entries[i].title : std::string_view{};
+  }
+  [[nodiscard]] constexpr bool operator==(const keyed_lookup&) const noexcept = default;
+
+ private:
+  [[nodiscard]] constexpr std::size_t at(std::int64_t key) const noexcept {
+    return has_value() ? detail::keyed_find(T::entries, key, raw_) : T::entries.size();
+  }
+
+  std::int64_t raw_ = top_raw;
+};
+
+namespace detail {
+template <class V>
+inline constexpr bool is_keyed_lookup = false;
+template <class T, unsigned B>
+inline constexpr bool is_keyed_lookup<keyed_lookup<T, B>> = true;
+}  // namespace detail
+
+/// A keyed lookup's value read beside its key: what the walk gives writers for a keyed field
+/// (the name needs both). The key counts only when its field holds a value.
+template <class L>
+struct keyed_reading {
+  L value;
+  std::int64_t key = 0;
+  bool key_known = false;
+
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return value.raw(); }
+  [[nodiscard]] constexpr field_state state() const noexcept { return value.state(); }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return value.has_value(); }
+  /// The name of the (key, value) pair; empty when the key is not known or the pair not named.
+  [[nodiscard]] constexpr std::string_view name() const noexcept {
+    return key_known ? value.name(key) : std::string_view{};
+  }
+  [[nodiscard]] constexpr std::string_view title() const noexcept {
+    return key_known ? value.title(key) : std::string_view{};
+  }
+};
+
+/// A row of a PGN table whose value is a keyed_lookup named by the value of member KeyMember
+/// (a field of the same PGN, before or after it).
+template <auto Member, auto KeyMember>
+struct keyed_field_entry : field_entry<Member> {
+  using key_type = seawire::detail::member_type_t<KeyMember>;
+  static_assert(detail::is_keyed_lookup<typename field_entry<Member>::value_type>,
+                "a keyed field's member must be a keyed_lookup");
+  static_assert(field_value<key_type> && std::is_same_v<seawire::detail::member_class_t<Member>,
+                                                        seawire::detail::member_class_t<KeyMember>>,
+                "a keyed field's key must be another field of the same PGN");
+  static_assert(!seawire::detail::same_member<Member, KeyMember>, "a field cannot key itself");
+  static constexpr auto key_member = KeyMember;
+};
+
+template <auto Member, auto KeyMember>
+[[nodiscard]] constexpr keyed_field_entry<Member, KeyMember> keyed_field(
+    std::string_view name, std::string_view title) noexcept {
+  return {{name, title}};
+}
+
+/// Whether row type F is a keyed field.
+template <class F>
+concept keyed_row = requires {
+  F::key_member;
+};
+
 /// `Bits` bits the standard reserves: sent as ones, ignored when received.
 template <unsigned Bits>
 struct reserved_bits {
@@ -486,6 +680,19 @@ struct reserved_bits {
 };
 template <unsigned Bits>
 inline constexpr reserved_bits<Bits> reserved{};
+
+/// `Bits` spare bits (AIS's and an ISO NAME's, by their standards' rule): sent as zeros, ignored
+/// when received.
+template <unsigned Bits>
+struct spare_bits {
+  static constexpr unsigned bits = Bits;
+  static constexpr bool is_reserved = true;
+  static constexpr bool sent_as_zero = true;
+  std::string_view name = "spare";
+  std::string_view title = "Spare";
+};
+template <unsigned Bits>
+inline constexpr spare_bits<Bits> spare{};
 
 /// How a PGN travels: one CAN frame (up to 8 bytes) or a fast packet (up to 223 bytes).
 enum class framing : std::uint8_t { single_frame, fast_packet };
@@ -607,9 +814,9 @@ struct encoded_bytes {
 template <pgn_like P>
 using encoded_payload = encoded_bytes<description_of<P>::length>;
 
-/// P's payload: every field at its offset, reserved bits as ones, a field not available as its
-/// "not available" value; a flag set not available ends the payload at the byte the word starts
-/// in (rounded up). Errors, `field` = the first such row number:
+/// P's payload: every field at its offset, reserved bits as ones (spare bits as zeros), a field
+/// not available as its "not available" value; a flag set not available ends the payload at the
+/// byte the word starts in (rounded up). Errors, `field` = the first such row number:
 ///   value_too_large   a member holds a raw value (from_raw) its width cannot carry;
 ///   missing_field     a flag set is not available but a field after it is not "not available"
 ///                     either (the word can only be left out with everything after it).
@@ -622,7 +829,9 @@ template <pgn_like P>
   unsigned cut_offset = 0;
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved) {
+    if constexpr (requires { F::sent_as_zero; }) {
+      seawire::detail::put_bits<payload_order>(r.value.bytes, offset, F::bits, 0);
+    } else if constexpr (!F::is_reserved) {
       const auto& v = msg.*F::member;
       const auto fail = [&](errc e, std::uint16_t row, unsigned at) {
         if (r.ec != errc::ok) return;
