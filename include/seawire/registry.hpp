@@ -158,7 +158,11 @@ using pgns = detail::append_pgns<
     nmea2000::battery_status, nmea2000::fluid_level, nmea2000::dc_detailed_status,
     nmea2000::cross_track_error, nmea2000::system_time, nmea2000::time_date, nmea2000::gnss_dops,
     nmea2000::navigation_data, nmea2000::direction_data, nmea2000::iso_request,
-    nmea2000::iso_acknowledgement>::type;
+    nmea2000::iso_acknowledgement,
+    // lookups whose names sit in the sentinel range or depend on another field
+    nmea2000::iso_address_claim, nmea2000::heartbeat, nmea2000::heading_track_control,
+    nmea2000::heave, nmea2000::transmission_parameters_dynamic, nmea2000::ais_class_a_position,
+    nmea2000::ais_class_b_position>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;
