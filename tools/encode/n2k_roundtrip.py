@@ -152,4 +152,28 @@ for fmt in FORMATS:
     bad = [(a, b) for a, b in zip(msgs, again) if comparable(a, fmt)[0] != comparable(b, "")[0]]
     check(not bad, f"random -> {fmt}: {len(bad)} messages changed, e.g. {bad[:1]}")
 
+
+# Lookups: a device function is read by name for the device class given, wherever the class is
+# among the members; a name of another class is refused naming the field; a named top value (127493
+# reverse, raw 2) is sent as its value; a field with no "not available" (AIS's repeat indicator)
+# cannot be left out.
+claim = ('{"type":"PGN60928","device_function":"%s","unique_number":5,"manufacturer_code":"garmin",'
+         '"device_instance_lower":7,"device_instance_upper":31,"device_class":"%s",'
+         '"system_instance":0,"industry_group":"marine","arbitrary_address_capable":"yes"}\n')
+lines = ((claim % ("pc_gateway", "safety")) + (claim % ("pc_gateway", "internetwork"))
+         + '{"type":"PGN127493","transmission_gear":"reverse","discrete_status_1":[]}\n'
+         + '{"type":"PGN129039","user_id":1}\n').encode()
+enc = run(ENCODE, [], lines)
+check(enc.returncode == 1, f"lookups: encode exit {enc.returncode}")
+err = enc.stderr.decode()
+check("line 1: PGN60928 field 5 (device_function)" in err and "bad_enum" in err,
+      f"lookups: a function of another class: {err!r}")
+check("line 4: PGN129039 field 2 (repeat_indicator)" in err and "missing_field" in err,
+      f"lookups: repeat indicator left out: {err!r}")
+back = [json.loads(l) for l in run(DECODE, [], enc.stdout).stdout.decode().splitlines()]
+check(len(back) == 2 and back[0].get("device_function") == "pc_gateway"
+      and back[0].get("device_class") == "internetwork"
+      and back[0].get("device_instance_upper") == 31
+      and back[1].get("transmission_gear") == "reverse", f"lookups: {back}")
+
 harness.finish()
