@@ -11,8 +11,6 @@ Nothing here is a test: the tests that fail when a bound is lost are the program
 (tools/*/..._test.py); these are the figures.
 """
 
-import fcntl
-import functools
 import os
 import re
 import signal
@@ -22,6 +20,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "common"))
+from harness import fill_pty, seal  # noqa: E402
+
 TOOLS = sys.argv[1] if len(sys.argv) > 1 else "build/rel/tools"
 
 
@@ -30,10 +31,6 @@ def program(name):
     if not os.access(path, os.X_OK):
         sys.exit(f"hostile.py: no {path}: build the programs first (see the top of this file)")
     return path
-
-
-def seal(body):
-    return "$%s*%02X\r\n" % (body, functools.reduce(lambda a, c: a ^ ord(c), body, 0))
 
 
 def timed(shell_input, argv):
@@ -112,20 +109,7 @@ def stuck_feed():
     p = subprocess.Popen([program("anello-feed"), "--device", name, "--rate", "10"],
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     time.sleep(0.5)
-    # Fill the pty from here, never reading the other side, until a pause frees no room (the
-    # kernel moves written bytes on to the master side a moment later).
-    fcntl.fcntl(slave, fcntl.F_SETFL, fcntl.fcntl(slave, fcntl.F_GETFL) | os.O_NONBLOCK)
-    for _ in range(50):
-        wrote = 0
-        for size in (4096, 64, 1):
-            try:
-                while True:
-                    wrote += os.write(slave, b"x" * size)
-            except BlockingIOError:
-                pass
-        if wrote == 0:
-            break
-        time.sleep(0.1)
+    fill_pty(slave)  # the master is never read
     time.sleep(1)  # the feed's next writes find no room
     start = time.monotonic()
     p.send_signal(signal.SIGTERM)

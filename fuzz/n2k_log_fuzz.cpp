@@ -6,9 +6,11 @@
 // Properties:
 //  - a line that does not parse gives an errc, a field that log_field_name names (0, the whole
 //    line, when no format was recognised) and a column inside the line;
-//  - a line that parses has the format detected or asked for and fields a frame can have;
-//  - write_log_line in that format writes it (the one refusal: a canboat or Actisense line may
-//    name an addressed PGN with a low byte, which no CAN identifier carries: bad_can_id), and the
+//  - a line that parses has the format detected or asked for and fields a frame can have, or
+//    (canboat and Actisense lines) one of canboat's pseudo-PGNs, a gateway's own message;
+//  - write_log_line in that format writes it (the refusals: a canboat or Actisense line may
+//    name an addressed PGN with a low byte, or a pseudo-PGN, which no CAN identifier carries:
+//    bad_can_id), and the
 //    line written parses again, in the same format and through detection, to the same record as far
 //    as the format keeps it: identifier, data, FAST or not, always; the interface (candump
 //    formats) and direction (yd_raw); the time: exactly (candump -L and canboat, which write
@@ -21,7 +23,9 @@
 //    ('#' first) as parse_format_header says (empty input for a plain comment), and until a header
 //    line was read returns what parse_log_line does (after one, an error still has a place); it
 //    calls back at most once per line, with the line's key and a payload no longer than 223 bytes
-//    (the line's own bytes, or a fast packet its frame completed), which decodes and encodes; its
+//    (the line's own bytes, or a fast packet its frame completed: of a PGN the reader assembles,
+//    declared or on the standard's list), which decodes and encodes, and never for a line of a
+//    pseudo-PGN, which it counts; its
 //    assembler balances (in == assembled + dropped + pending) after every line, and has nothing
 //    pending after flush.
 #include <algorithm>
@@ -106,9 +110,11 @@ void check_record(const n2k::log_record& rec, n2k::log_format f, bool detected,
   SEAWIRE_FUZZ_CHECK(rec.format == f, "a record of another format", line, describe(rec));
   const bool whole_messages =
       f == n2k::log_format::canboat || f == n2k::log_format::actisense_n2k_ascii;
+  const bool pseudo = whole_messages && n2k::is_pseudo_pgn(rec.id.pgn);
   SEAWIRE_FUZZ_CHECK(
-      rec.id.priority <= 7 && rec.id.pgn <= n2k::max_pgn &&
-          (n2k::is_addressed(rec.id.pgn) || rec.id.destination == n2k::broadcast_address) &&
+      rec.id.priority <= 7 && (rec.id.pgn <= n2k::max_pgn || pseudo) &&
+          (n2k::is_addressed(rec.id.pgn) || pseudo ||
+           rec.id.destination == n2k::broadcast_address) &&
           rec.size <= (whole_messages ? 223U : 8U) &&
           rec.assembled == (f == n2k::log_format::actisense_n2k_ascii || rec.size > 8),
       "a record no frame can have", line, describe(rec));
@@ -120,9 +126,10 @@ void check_record(const n2k::log_record& rec, n2k::log_format f, bool detected,
   seawire::nmea::json_buffer<1024> out;
   const errc e = n2k::write_log_line(out, rec, f);
   const bool no_identifier =
-      whole_messages && n2k::is_addressed(rec.id.pgn) && (rec.id.pgn & 0xFFU) != 0;
+      pseudo || (whole_messages && n2k::is_addressed(rec.id.pgn) && (rec.id.pgn & 0xFFU) != 0);
   if (no_identifier) {
-    SEAWIRE_FUZZ_CHECK(e == errc::bad_can_id, "wrote an addressed PGN with a low byte", line,
+    SEAWIRE_FUZZ_CHECK(e == errc::bad_can_id,
+                       "wrote an addressed PGN with a low byte, or a pseudo-PGN", line,
                        describe(rec), name(e));
     return;
   }
@@ -199,6 +206,7 @@ void read_through(Reader& reader, bool& headed, std::string_view line,
   const std::optional<n2k::log_format> as = format ? format : reader.header_format();
   const seawire::result<n2k::log_record> parsed =
       as ? n2k::parse_log_line(line, *as) : n2k::parse_log_line(line);
+  const std::uint64_t pseudo_before = reader.pseudo_pgn_lines();
   const seawire::result<n2k::log_format> r = reader.read_line(
       line,
       [&](const n2k::message_header& h, std::span<const std::uint8_t> payload) {
@@ -210,11 +218,9 @@ void read_through(Reader& reader, bool& headed, std::string_view line,
         SEAWIRE_FUZZ_CHECK(payload.size() <= n2k::max_fast_packet_length, line);
         // The line's own bytes, or a packet its frames completed (a canboat line is a frame
         // or a whole message as the log's header or first canboat line says).
-        const auto info = registry::pgns::info(rec.id.pgn);
-        SEAWIRE_FUZZ_CHECK(
-            std::ranges::equal(payload, rec.data()) ||
-                (info && info->transport == n2k::framing::fast_packet && rec.size <= 8),
-            "a line's own payload not passed on as it is", line);
+        SEAWIRE_FUZZ_CHECK(std::ranges::equal(payload, rec.data()) ||
+                               (Reader::is_fast(rec.id.pgn) && rec.size <= 8),
+                           "a line's own payload not passed on as it is", line);
         (void)registry::pgns::visit(h.id.pgn, payload, [&](const auto& m) {
           SEAWIRE_FUZZ_CHECK(n2k::encode(m).ok(), "a message read from a log does not encode",
                              line);
@@ -236,6 +242,11 @@ void read_through(Reader& reader, bool& headed, std::string_view line,
     SEAWIRE_FUZZ_CHECK(calls <= 1 && (parsed.ok() || calls == 0), "called back more than once",
                        line, number(static_cast<std::uint64_t>(calls)));
   }
+  // A pseudo-PGN's line: read, never passed on, counted.
+  const bool pseudo = parsed.ok() && n2k::is_pseudo_pgn(parsed.value.id.pgn);
+  SEAWIRE_FUZZ_CHECK(reader.pseudo_pgn_lines() == pseudo_before + (pseudo && r.ok() ? 1U : 0U) &&
+                         (!pseudo || calls == 0),
+                     "a pseudo-PGN's line passed on, or not counted", line);
   const auto& a = reader.assembler();
   SEAWIRE_FUZZ_CHECK(
       a.frames_in() == a.frames_assembled() + a.frames_dropped() + a.frames_pending(),

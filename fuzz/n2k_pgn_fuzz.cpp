@@ -12,9 +12,14 @@
 //    with the reserved bits set);
 //  - encode of a message with raw values from_raw() put there refuses, with value_too_large and
 //    the row number of the first field in table order, exactly when some field does not fit.
+// A repeating group (the last row of its table): decode -> encode -> decode is the identity
+// unless the count field says more repetitions than the group's capacity, which encode refuses
+// (out_of_range, the count's row); each repetition decode held comes out bit for bit where the
+// payload held its fields in full; a built message's group is filled from the same bytes.
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -29,11 +34,61 @@ namespace {
 
 namespace n2k = nmea2000;
 
+/// Whether decode left a count field saying more than its group's capacity (encode refuses it).
+template <n2k::pgn_like P>
+bool count_over_capacity(const P& m) {
+  bool over = false;
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (n2k::detail::group_row<F>) {
+      if constexpr (F::counted) {
+        const auto& c = m.*F::count;
+        over = c.has_value() && static_cast<std::uint64_t>(c.raw()) > F::value_type::capacity;
+      }
+    }
+  });
+  return over;
+}
+
+/// Each field of each repetition the payload held in full comes out bit for bit.
+template <class F>
+void check_group_bits(const std::string& pgn, std::span<const std::uint8_t> payload,
+                      std::span<const std::uint8_t> out, unsigned offset, std::size_t held) {
+  using Item = typename F::value_type::item_type;
+  SEAWIRE_FUZZ_CHECK(out.size() * 8 == offset + held * F::item_bits,
+                     "the payload does not end after the last repetition", pgn, hex_of(payload),
+                     hex_of(out));
+  for (std::size_t i = 0; i < held; ++i) {
+    const unsigned at = offset + static_cast<unsigned>(i) * F::item_bits;
+    Item::n2k_item.for_each([&](const auto& e, unsigned o, std::uint16_t) {
+      using R = std::remove_cvref_t<decltype(e)>;
+      const std::uint64_t written =
+          seawire::detail::get_bits<n2k::payload_order>(out, at + o, R::bits);
+      if constexpr (R::is_reserved) {
+        SEAWIRE_FUZZ_CHECK(written == (std::uint64_t{1} << R::bits) - 1,
+                           "a reserved bit of a repetition was written as zero", pgn,
+                           hex_of(payload), hex_of(out));
+      } else if (at + o + R::bits <= payload.size() * 8) {
+        SEAWIRE_FUZZ_CHECK(
+            written == seawire::detail::get_bits<n2k::payload_order>(payload, at + o, R::bits),
+            "a repetition's field changed on the way through", pgn, hex_of(payload), hex_of(out),
+            e.name);
+      }
+    });
+  }
+}
+
 template <n2k::pgn_like P>
 void check_payload(std::span<const std::uint8_t> payload) {
   const std::string pgn = number(P::n2k.info.pgn);
   const P m = n2k::decode<P>(payload);
   const auto e = n2k::encode(m);
+  if (count_over_capacity(m)) {
+    SEAWIRE_FUZZ_CHECK(!e && e.ec == errc::out_of_range,
+                       "encode did not refuse a count over the group's capacity", pgn,
+                       hex_of(payload), name(e.ec));
+    return;
+  }
   SEAWIRE_FUZZ_CHECK(e.ok(), "encode refused what decode produced", pgn, hex_of(payload),
                      name(e.ec), number(e.field));
   const std::span<const std::uint8_t> out = e.value.view();
@@ -42,8 +97,13 @@ void check_payload(std::span<const std::uint8_t> payload) {
 
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t row) {
     using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (n2k::detail::group_row<F>) {
+      check_group_bits<F>(pgn, payload, out, offset, (m.*F::member).size());
+      return;
+    }
     if (offset + F::bits > out.size() * 8) return;  // past a flag word not sent: left out
-    const std::uint64_t ones = (std::uint64_t{1} << F::bits) - 1;
+    const std::uint64_t ones =
+        F::bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << F::bits) - 1;
     const std::uint64_t written =
         seawire::detail::get_bits<n2k::payload_order>(out, offset, F::bits);
     if constexpr (requires { F::sent_as_zero; }) {
@@ -62,21 +122,23 @@ void check_payload(std::span<const std::uint8_t> payload) {
 
 /// A raw value for a field of `bits` bits: mostly one it holds (sentinels and the signed edges
 /// included), sometimes one it cannot, which encode must refuse.
-std::int64_t make_raw(byte_source& src, unsigned bits, bool is_signed) {
-  const std::int64_t top =
-      is_signed ? (std::int64_t{1} << (bits - 1)) - 1 : (std::int64_t{1} << bits) - 1;
-  const std::int64_t low = is_signed ? -(std::int64_t{1} << (bits - 1)) : 0;
+std::int64_t make_raw(byte_source& src, std::int64_t top, bool is_signed) {
+  const std::int64_t low = is_signed ? -top - 1 : 0;
   const auto wide = src.integer<std::uint64_t>();
   switch (src.byte() % 8) {
     case 0: return top - static_cast<std::int64_t>(wide % 4);  // the sentinels and below
     case 1: return low;
-    case 2: return top + 1;  // one past
-    case 3: return low - 1;  // one under
+    case 2:  // one past (a 64-bit field has no raw value past its top)
+      return top == std::numeric_limits<std::int64_t>::max() ? top : top + 1;
+    case 3:  // one under
+      return low == std::numeric_limits<std::int64_t>::min() ? low : low - 1;
     case 4: return static_cast<std::int64_t>(wide);
     default: {
-      // in range: [low, top]
-      const auto span = static_cast<std::uint64_t>(top - low) + 1;
-      return low + static_cast<std::int64_t>(wide % span);
+      // in range: [low, top] (all of int64_t for a signed 64-bit field: span 0, any value)
+      const std::uint64_t span =
+          static_cast<std::uint64_t>(top) - static_cast<std::uint64_t>(low) + 1;
+      return static_cast<std::int64_t>(static_cast<std::uint64_t>(low) +
+                                       (span == 0 ? wide : wide % span));
     }
   }
 }
@@ -85,17 +147,52 @@ template <n2k::pgn_like P>
 void check_built(byte_source& src) {
   const std::string pgn = number(P::n2k.info.pgn);
   P m{};
-  std::uint16_t first_bad = 0;
+  std::uint16_t first_bad = 0;  // a fixed row's field that does not fit
+  std::uint16_t group_bad = 0;  // a repetition's field that does not fit: the group's row
   P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
     using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved) {
+    if constexpr (n2k::detail::group_row<F>) {
+      // as many repetitions as the next byte says, at most the count when it is a value (none
+      // when the count is past the capacity)
+      using G = typename F::value_type;
+      using Item = typename G::item_type;
+      std::size_t n = src.byte() % (G::capacity + 1);
+      if constexpr (F::counted) {
+        const auto& c = m.*F::count;
+        if (c.has_value()) n = std::min(n, static_cast<std::size_t>(c.raw()));
+      }
+      auto& g = m.*F::member;
+      g.clear();
+      for (std::size_t i = 0; i < n; ++i) {
+        Item item{};
+        Item::n2k_item.for_each([&](const auto& e, unsigned, std::uint16_t) {
+          using R = std::remove_cvref_t<decltype(e)>;
+          if constexpr (!R::is_reserved) {
+            using V = typename R::value_type;
+            const V v = V::from_raw(make_raw(src, V::top_raw, V::is_signed));
+            item.*R::member = v;
+            if (!v.fits() && group_bad == 0) group_bad = row;
+          }
+        });
+        (void)g.push_back(item);
+      }
+    } else if constexpr (!F::is_reserved) {
       using V = typename F::value_type;
-      const V v = V::from_raw(make_raw(src, F::bits, V::is_signed));
+      const V v = V::from_raw(make_raw(src, V::top_raw, V::is_signed));
       m.*F::member = v;
       if (!v.fits() && first_bad == 0) first_bad = row;
     }
   });
+  // encode checks the fixed rows in order, then a group's count against its capacity, then the
+  // repetitions
+  const bool over = count_over_capacity(m);
+  if (first_bad == 0 && !over) first_bad = group_bad;
   const auto e = n2k::encode(m);
+  if (over && first_bad == 0) {
+    SEAWIRE_FUZZ_CHECK(!e && e.ec == errc::out_of_range,
+                       "encode did not refuse a count over the group's capacity", pgn, name(e.ec));
+    return;
+  }
   if (first_bad != 0) {
     SEAWIRE_FUZZ_CHECK(!e && e.ec == errc::value_too_large && e.field == first_bad,
                        "encode did not refuse the first field that does not fit", pgn, name(e.ec),

@@ -297,20 +297,59 @@ M generate(prng& g) {
 /// A PGN message with a raw value in every field, drawn from what the field's width holds (the
 /// not-available and out-of-range sentinels included: senders send them); reserved bits are not
 /// members.
+namespace detail {
+/// A raw value of field row F for `out`'s member, as generate<P> draws it.
+template <class F, class T>
+void generate_field(prng& g, T& out) {
+  using V = typename F::value_type;
+  const std::int64_t top = V::top_raw;
+  const std::int64_t low = V::is_signed ? -top - 1 : 0;
+  V v =
+      V::from_raw(g.chance(10) ? top - static_cast<std::int64_t>(g.below(3)) : g.between(low, top));
+  while (!v.fits()) v = V::from_raw(g.between(low, top));
+  out.*F::member = v;
+}
+}  // namespace detail
+
+/// A PGN message with a raw value in every field, drawn from what the field's width holds (the
+/// not-available and out-of-range sentinels included: senders send them); reserved bits are not
+/// members. A repeating group gets 0 to its capacity repetitions (a full one 8 times in 100), its
+/// count field that many, or sometimes more up to the capacity (a sender's count the payload
+/// did not hold in full), or a sentinel (which says nothing).
 template <seawire::nmea2000::pgn_like P>
 P generate(prng& g) {
   P m{};
   P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved) {
-      using V = typename F::value_type;
-      const std::int64_t low = V::is_signed ? -(std::int64_t{1} << (F::bits - 1)) : 0;
-      const std::int64_t top =
-          V::is_signed ? (std::int64_t{1} << (F::bits - 1)) - 1 : (std::int64_t{1} << F::bits) - 1;
-      V v = V::from_raw(g.chance(10) ? top - static_cast<std::int64_t>(g.below(3))
-                                     : g.between(low, top));
-      while (!v.fits()) v = V::from_raw(g.between(low, top));
-      m.*F::member = v;
+    if constexpr (seawire::nmea2000::detail::group_row<F>) {
+      using G = typename F::value_type;
+      using Item = typename G::item_type;
+      auto& group = m.*F::member;
+      group.clear();
+      std::size_t n =
+          g.chance(8) ? G::capacity : static_cast<std::size_t>(g.below(G::capacity + 1));
+      if constexpr (F::counted) {
+        using C = std::remove_cvref_t<decltype(m.*F::count)>;
+        if (g.chance(10)) {  // a sentinel: says nothing
+          m.*F::count = C::from_raw(C::top_raw - static_cast<std::int64_t>(g.below(3)));
+        } else {
+          const std::size_t extra = g.chance(10) ? g.below(G::capacity - n + 1) : 0;
+          m.*F::count = C::from_raw(static_cast<std::int64_t>(n + extra));
+        }
+        if ((m.*F::count).has_value())
+          n = std::min(n, static_cast<std::size_t>((m.*F::count).raw()));
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        Item item{};
+        Item::n2k_item.for_each([&](const auto& e, unsigned, std::uint16_t) {
+          using R = std::remove_cvref_t<decltype(e)>;
+          if constexpr (!R::is_reserved) detail::generate_field<R>(g, item);
+        });
+        (void)group.push_back(item);
+      }
+    } else if constexpr (!F::is_reserved) {
+      // a group's count is drawn with its group (the row after it)
+      detail::generate_field<F>(g, m);
     }
   });
   return m;

@@ -162,7 +162,9 @@ using pgns = detail::append_pgns<
     // lookups whose names sit in the sentinel range or depend on another field
     nmea2000::iso_address_claim, nmea2000::heartbeat, nmea2000::heading_track_control,
     nmea2000::heave, nmea2000::transmission_parameters_dynamic, nmea2000::ais_class_a_position,
-    nmea2000::ais_class_b_position>::type;
+    nmea2000::ais_class_b_position,
+    // repeating groups, 64-bit fields
+    nmea2000::pgn_list_message, nmea2000::gnss_sats_in_view, nmea2000::gnss_position_data>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

@@ -50,6 +50,7 @@
 
 // nmea2000
 #include "seawire/nmea2000/can_id.hpp"
+#include "seawire/nmea2000/canboat.hpp"
 #include "seawire/nmea2000/fast_packet.hpp"
 #include "seawire/nmea2000/field.hpp"
 #include "seawire/nmea2000/json.hpp"

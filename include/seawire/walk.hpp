@@ -194,17 +194,28 @@ requires keyed_row<Row>
 struct row_value<Row, false> {
   using type = keyed_reading<typename Row::value_type>;
 };
+/// The rows of a PGN's table, or of one repetition of a repeating group's.
+template <class P>
+[[nodiscard]] consteval const auto& rows_of() noexcept {
+  if constexpr (pgn_like<P>) {
+    return P::n2k.fields;
+  } else {
+    return P::n2k_item.fields;
+  }
+}
+template <class P>
+using rows_type = std::remove_cvref_t<decltype(rows_of<P>())>;
 }  // namespace detail
 
-/// Row I of PGN P's table, for the walk (walk.hpp).
+/// Row I of PGN P's table (or of a group's repetition P, its offsets from the repetition's first
+/// bit), for the walk (walk.hpp).
 template <class P, std::size_t I>
 struct walk_field
-    : seawire::detail::binary_field<
-          wire_kind::nmea2000, byte_order::little_endian, I,
-          detail::row_offset<std::remove_cvref_t<decltype(P::n2k.fields)>, I>(),
-          std::tuple_element_t<I, std::remove_cvref_t<decltype(P::n2k.fields)>>::bits> {
-  using row_type = std::tuple_element_t<I, std::remove_cvref_t<decltype(P::n2k.fields)>>;
-  static constexpr const auto& desc = std::get<I>(P::n2k.fields);
+    : seawire::detail::binary_field<wire_kind::nmea2000, byte_order::little_endian, I,
+                                    detail::row_offset<detail::rows_type<P>, I>(),
+                                    std::tuple_element_t<I, detail::rows_type<P>>::bits> {
+  using row_type = std::tuple_element_t<I, detail::rows_type<P>>;
+  static constexpr const auto& desc = std::get<I>(detail::rows_of<P>());
   using value_type = typename detail::row_value<row_type>::type;
   static constexpr bool by_value = keyed_row<row_type>;
   static constexpr std::string_view name = desc.name;
@@ -307,6 +318,15 @@ struct walk_of<P> {
   using field = nmea2000::walk_field<P, I>;
 };
 
+/// One repetition of a PGN's repeating group: its rows as a PGN's.
+template <class Item>
+requires nmea2000::group_item<Item>
+struct walk_of<Item> {
+  static constexpr std::size_t size = std::remove_cvref_t<decltype(Item::n2k_item)>::field_count;
+  template <std::size_t I>
+  using field = nmea2000::walk_field<Item, I>;
+};
+
 template <>
 struct walk_of<anello::sensor_frame_raw> {
   static constexpr std::size_t size = anello::sensor_field_count;
@@ -315,7 +335,8 @@ struct walk_of<anello::sensor_frame_raw> {
 };
 }  // namespace detail
 
-/// A message type the walk knows: a sentence, a PGN or the 0xAB00 frame.
+/// A message type the walk knows: a sentence, a PGN (or one repetition of its repeating group)
+/// or the 0xAB00 frame.
 template <class M>
 concept walkable = requires {
   detail::walk_of<M>::size;

@@ -205,20 +205,6 @@ std::vector<std::string> mission_texts() {
   return out;
 }
 
-// The enum type of a PGN field: E of a lookup<E, B> or flags<E, B>, void otherwise.
-template <class V>
-struct pgn_enum {
-  using type = void;
-};
-template <class E, unsigned B>
-struct pgn_enum<nmea2000::lookup<E, B>> {
-  using type = E;
-};
-template <class E, unsigned B>
-struct pgn_enum<nmea2000::flags<E, B>> {
-  using type = E;
-};
-
 template <class T>
 std::string_view type_signature() {
   return __PRETTY_FUNCTION__;
@@ -314,11 +300,32 @@ std::vector<wire_enum> wire_enums() {
     using P = typename decltype(tag)::type;
     P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
       using F = std::remove_cvref_t<decltype(f)>;
-      if constexpr (!F::is_reserved) {
-        using E = typename pgn_enum<typename F::value_type>::type;
+      if constexpr (nmea2000::detail::group_row<F>) {
+        // a repeating group's fields: numbered "row.k" as the messages' tables do
+        using Item = typename F::value_type::item_type;
+        Item::n2k_item.for_each([&](const auto& e, unsigned, std::uint16_t k) {
+          using R = std::remove_cvref_t<decltype(e)>;
+          if constexpr (!R::is_reserved) {
+            using E = nmea2000::value_enum_t<typename R::value_type>;
+            if constexpr (!std::is_void_v<E>) {
+              add_use<E>(
+                  out, "PGN " + std::to_string(P::n2k.info.pgn),
+                  std::to_string(row) + "." + std::to_string(k) + " (" + std::string(e.title) + ")",
+                  kind::lookup);
+            }
+          }
+        });
+      } else if constexpr (!F::is_reserved) {
+        using E = nmea2000::value_enum_t<typename F::value_type>;
         if constexpr (!std::is_void_v<E>) {
           add_use<E>(out, "PGN " + std::to_string(P::n2k.info.pgn),
                      std::to_string(row) + " (" + std::string(f.title) + ")", kind::lookup);
+        }
+        // A number field whose values have titles (field<&P::m, E>).
+        if constexpr (requires { typename F::titles; }) {
+          add_use<typename F::titles>(out, "PGN " + std::to_string(P::n2k.info.pgn),
+                                      std::to_string(row) + " (" + std::string(f.title) + ")",
+                                      kind::lookup);
         }
       }
     });
@@ -407,6 +414,9 @@ int main() {
                                "What a PGN field's raw value holds.", kind::value);
   table<nmea2000::framing>("seawire::nmea2000::framing", "nmea2000/field.hpp",
                            "How a PGN is carried: one CAN frame or a fast packet.", kind::value);
+  table<nmea2000::raw_display>("seawire::nmea2000::raw_display", "nmea2000/field.hpp",
+                               "How a number that is no quantity reads (canboat's JSON).",
+                               kind::value);
   table<nmea2000::fast_packet_drop>("seawire::nmea2000::fast_packet_drop",
                                     "nmea2000/fast_packet.hpp",
                                     "Why a fast-packet assembler dropped frames.", kind::value);
@@ -415,6 +425,10 @@ int main() {
   table<nmea2000::canboat_format>(
       "seawire::nmea2000::canboat_format", "nmea2000/log.hpp",
       "The formats a canboat log's `# format=` header names; the first five are read.",
+      kind::value);
+  table<nmea2000::canboat_display>(
+      "seawire::nmea2000::canboat_display", "nmea2000/canboat.hpp",
+      "How canboat's analyzer shows a number field in its std units, by the field's unit.",
       kind::value);
   table<wire_kind>("seawire::wire_kind", "walk.hpp", "Which wire a walked field is of.",
                    kind::value);

@@ -206,23 +206,72 @@ std::string key_name() {
   return out;
 }
 
+// A repeating group's row, then a row for each field of one repetition ("row.k", bit offsets
+// from the repetition's start).
+template <class F>
+std::string group_rows() {
+  using E = std::remove_cvref_t<decltype(F::desc)>;
+  using G = typename F::value_type;
+  using Item = typename G::item_type;
+  std::string how = "to the end of the payload";
+  if constexpr (E::counted) {
+    using P = seawire::detail::member_class_t<E::member>;
+    how = "as many as " +
+          quoted(nmea2000::field_name<P>(nmea2000::detail::row_of<P, E::count>().first)) + " says";
+  }
+  std::string s = "| " + std::to_string(F::number) + " | " + quoted(F::name) + " | " +
+                  std::string(F::desc.title) + " | " + std::to_string(F::bit_offset) + " | " +
+                  std::to_string(E::item_bits) +
+                  " each | repeating group (JSON array of objects): " + how + ", at most " +
+                  std::to_string(G::capacity) + " | | |\n";
+  Item::n2k_item.for_each([&](const auto& e, unsigned o, std::uint16_t k) {
+    using R = std::remove_cvref_t<decltype(e)>;
+    std::string holds = "reserved: sent as ones, ignored when received";
+    std::string step;
+    std::string values;
+    if constexpr (requires { R::sent_as_zero; }) {
+      holds = "spare: sent as zeros, ignored when received";
+    } else if constexpr (!R::is_reserved) {
+      holds = n2k_form<typename R::value_type>(step, values);
+    }
+    s += "| " + std::to_string(F::number) + "." + std::to_string(k) + " | " +
+         (R::is_reserved ? "" : quoted(e.name)) + " | " + std::string(e.title) + " | +" +
+         std::to_string(o) + " | " + std::to_string(R::bits) + " | " + holds + " | " + step +
+         " | " + values + " |\n";
+  });
+  return s;
+}
+
+template <class F>
+constexpr bool is_group_row() {
+  if constexpr (F::reserved) {
+    return false;
+  } else {
+    return nmea2000::detail::is_group_value<typename F::value_type>;
+  }
+}
+
 template <class F>
 std::string pgn_row(F) {
-  std::string holds = "reserved: sent as ones, ignored when received";
-  std::string step;
-  std::string values;
-  if constexpr (requires { std::remove_cvref_t<decltype(F::desc)>::sent_as_zero; }) {
-    holds = "spare: sent as zeros, ignored when received";
-  } else if constexpr (!F::reserved && nmea2000::keyed_row<typename F::info::row_type>) {
-    using row = typename F::info::row_type;
-    holds = "lookup named by " + quoted(key_name<row>()) + " and its own value";
-    values = std::to_string(row::value_type::table::entries.size()) + " named pairs";
-  } else if constexpr (!F::reserved) {
-    holds = n2k_form<typename F::value_type>(step, values);
+  if constexpr (is_group_row<F>()) {
+    return group_rows<F>();
+  } else {
+    std::string holds = "reserved: sent as ones, ignored when received";
+    std::string step;
+    std::string values;
+    if constexpr (requires { std::remove_cvref_t<decltype(F::desc)>::sent_as_zero; }) {
+      holds = "spare: sent as zeros, ignored when received";
+    } else if constexpr (!F::reserved && nmea2000::keyed_row<typename F::info::row_type>) {
+      using row = typename F::info::row_type;
+      holds = "lookup named by " + quoted(key_name<row>()) + " and its own value";
+      values = std::to_string(row::value_type::table::entries.size()) + " named pairs";
+    } else if constexpr (!F::reserved) {
+      holds = n2k_form<typename F::value_type>(step, values);
+    }
+    return "| " + std::to_string(F::number) + " | " + (F::reserved ? "" : quoted(F::name)) + " | " +
+           std::string(F::desc.title) + " | " + std::to_string(F::bit_offset) + " | " +
+           std::to_string(F::bits) + " | " + holds + " | " + step + " | " + values + " |\n";
   }
-  return "| " + std::to_string(F::number) + " | " + (F::reserved ? "" : quoted(F::name)) + " | " +
-         std::string(F::desc.title) + " | " + std::to_string(F::bit_offset) + " | " +
-         std::to_string(F::bits) + " | " + holds + " | " + step + " | " + values + " |\n";
 }
 
 // The rows of M's table, whatever its wire: one loop over the walk's layout, reserved bits too.
@@ -368,7 +417,9 @@ void pgn() {
   constexpr auto& d = P::n2k;
   const auto& info = d.info;
   std::printf("### PGN %u %s\n\n", unsigned{info.pgn}, std::string(info.title).c_str());
-  std::printf("`%s`: %zu bytes, %s, default priority %u", std::string(info.name).c_str(), d.length,
+  std::printf(d.has_group ? "`%s`: up to %zu bytes, %s, default priority %u"
+                          : "`%s`: %zu bytes, %s, default priority %u",
+              std::string(info.name).c_str(), d.length,
               info.transport == nmea2000::framing::fast_packet ? "fast packet" : "single frame",
               unsigned{info.priority});
   if (info.interval_ms != 0) std::printf(", sent every %u ms", unsigned{info.interval_ms});

@@ -22,7 +22,7 @@ import time
 import tty
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from harness import check, refusals, run_case
+from harness import check, fill_pty, refusals, run_case
 
 FEED, DECODE, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
 
@@ -184,21 +184,7 @@ def case_stuck():
         p = subprocess.Popen([FEED, "--device", path, "--rate", "10", *args],
                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         time.sleep(0.5)
-        # Fill the pty from here (the master is never read), non-blocking.
-        fcntl.fcntl(slave, fcntl.F_SETFL, fcntl.fcntl(slave, fcntl.F_GETFL) | os.O_NONBLOCK)
-        # The kernel moves what was written on to the master side a moment later, which frees
-        # room: filled again until a pause frees none.
-        for _ in range(50):
-            wrote = 0
-            for size in (4096, 64, 1):
-                try:
-                    while True:
-                        wrote += os.write(slave, b"x" * size)
-                except BlockingIOError:
-                    pass
-            if wrote == 0:
-                break
-            time.sleep(0.1)
+        fill_pty(slave)  # the master is never read
         time.sleep(0.3)
         if sig is None:
             try:

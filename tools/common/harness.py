@@ -10,6 +10,7 @@ A test script beside a program imports it from tools/common:
     finish()   # the failures counted, exit 1 if any, else "ok"
 """
 
+import fcntl
 import functools
 import os
 import re
@@ -151,3 +152,21 @@ class Server:
             self.proc.wait()
             check(False, "the program did not exit within %ds of signal %d" % (timeout, sig))
             return None
+
+
+def fill_pty(fd, rounds=50, pause=0.1):
+    """Fills the pty whose slave side is `fd` (its master never read) until a pause frees no
+    room: the kernel moves what was written on to the master side a moment later, which frees
+    room, so it is written again until nothing more fits. Leaves `fd` non-blocking."""
+    fcntl.fcntl(fd, fcntl.F_SETFL, fcntl.fcntl(fd, fcntl.F_GETFL) | os.O_NONBLOCK)
+    for _ in range(rounds):
+        wrote = 0
+        for size in (4096, 64, 1):
+            try:
+                while True:
+                    wrote += os.write(fd, b"x" * size)
+            except BlockingIOError:
+                pass
+        if wrote == 0:
+            return
+        time.sleep(pause)

@@ -140,15 +140,21 @@ class decoder {
   [[nodiscard]] bool unusable() const { return unusable_; }
   void print_stats() const {
     const anello::stream_stats& f = reader_.stats();
-    std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected\n",
+    std::fprintf(stderr, "seawire-decode: %llu messages decoded, %llu rejected",
                  static_cast<unsigned long long>(decoded_),
                  static_cast<unsigned long long>(rejected_));
-    if (!by_type_.empty()) std::fprintf(stderr, "  by type:\n");
-    for (const auto& [type, n] : by_type_)
-      std::fprintf(stderr, "    %-20s %llu\n", type.c_str(), static_cast<unsigned long long>(n));
-    if (other_types_ > 0)
-      std::fprintf(stderr, "    %-20s %llu\n", "(other types)",
-                   static_cast<unsigned long long>(other_types_));
+    if (in_ == input::n2k) print_pseudo_pgns(", ");
+    std::fputc('\n', stderr);
+    if (in_ == input::n2k) {
+      print_by_pgn();
+    } else {
+      if (!by_type_.empty()) std::fprintf(stderr, "  by type:\n");
+      for (const auto& [type, n] : by_type_)
+        std::fprintf(stderr, "    %-20s %llu\n", type.c_str(), static_cast<unsigned long long>(n));
+      if (other_types_ > 0)
+        std::fprintf(stderr, "    %-20s %llu\n", "(other types)",
+                     static_cast<unsigned long long>(other_types_));
+    }
     bool any_error = false;
     for (std::size_t e = 0; e < by_error_.size(); ++e) {
       if (by_error_[e] == 0) continue;
@@ -194,7 +200,49 @@ class decoder {
     std::fputc('\n', stderr);
   }
 
+  // Without --stats, the end of the run still says what was skipped of a CAN log.
+  void print_summary() const {
+    if (in_ != input::n2k || n2k_.pseudo_pgn_lines() == 0) return;
+    std::fputs("seawire-decode: ", stderr);
+    print_pseudo_pgns("");
+    std::fputc('\n', stderr);
+  }
+
  private:
+  // "N lines of gateway pseudo-PGNs (262144 and up) skipped", when there were some.
+  void print_pseudo_pgns(const char* before) const {
+    const std::uint64_t n = n2k_.pseudo_pgn_lines();
+    if (n == 0) return;
+    std::fprintf(stderr, "%s%llu line%s of gateway pseudo-PGNs (%u and up) skipped", before,
+                 static_cast<unsigned long long>(n), n == 1 ? "" : "s",
+                 static_cast<unsigned>(nmea2000::first_pseudo_pgn));
+  }
+
+  // --stats of a CAN log: messages decoded per PGN, by number, with the name of the PGNs seawire
+  // describes. Counted as types ("PGN128259"), so within the same bound.
+  void print_by_pgn() const {
+    std::vector<std::pair<std::uint32_t, std::uint64_t>> rows;
+    rows.reserve(by_type_.size());
+    for (const auto& [type, n] : by_type_) {
+      std::uint32_t pgn = 0;
+      for (const char c : std::string_view(type).substr(3))
+        pgn = pgn * 10 + static_cast<std::uint32_t>(c - '0');
+      rows.emplace_back(pgn, n);
+    }
+    std::sort(rows.begin(), rows.end());
+    if (!rows.empty()) std::fprintf(stderr, "  by PGN:\n");
+    for (const auto& [pgn, n] : rows) {
+      const std::optional<nmea2000::pgn_info> info = n2k_pgns::info(pgn);
+      const std::string_view named = info ? info->name : std::string_view("(no description)");
+      std::fprintf(stderr, "    %-7u %-32.*s %llu\n", static_cast<unsigned>(pgn),
+                   static_cast<int>(named.size()), named.data(),
+                   static_cast<unsigned long long>(n));
+    }
+    if (other_types_ > 0)
+      std::fprintf(stderr, "    %-40s %llu\n", "(other PGNs)",
+                   static_cast<unsigned long long>(other_types_));
+  }
+
   // ---- which input ----
 
   // Keeps what came until a line says what the input is: a CAN log line, or a sentence (or
@@ -236,8 +284,8 @@ class decoder {
     // so what comes after the noise is read, and memory stays bounded.
     if (!can && pending_.size() >= max_undecided) can = false;
     if (!can && !at_end) return;
-    in_ = can.value_or(false) ? input::n2k : input::nmea;
-    if (const char* why = in_ == input::n2k ? out_.refuses_can_log() : nullptr) {
+    in_ = can.value_or(out_.refuses_sentences() != nullptr) ? input::n2k : input::nmea;
+    if (const char* why = in_ == input::n2k ? out_.refuses_can_log() : out_.refuses_sentences()) {
       std::fputs(why, stderr);
       unusable_ = true;
       in_ = input::nmea;
@@ -318,7 +366,7 @@ class decoder {
         std::snprintf(type_buf, sizeof type_buf, "PGN%u", static_cast<unsigned>(h.id.pgn));
     const std::string_view type(type_buf, static_cast<std::size_t>(n));
     if (!wanted(type)) return;
-    const origin from{nullptr, nullptr, &h};
+    const origin from{nullptr, nullptr, &h, payload};
     const bool known = n2k_pgns::visit(h.id.pgn, payload,
                                        [&](const auto& msg) { deliver(type, type, msg, from); });
     if (!known) deliver(type, type, tools::raw_pgn{payload}, from);
@@ -430,7 +478,7 @@ class decoder {
     nmea::json_buffer<16> type_buf;
     const std::string_view type = type_of(s, msg, type_buf);
     if (!wanted(type)) return;
-    deliver(type, s.address, msg, origin{&l, &s, nullptr});
+    deliver(type, s.address, msg, origin{&l, &s, nullptr, {}});
   }
 
   // ---- every message, of every wire ----
@@ -649,7 +697,11 @@ int run(const options& o) {
   shown.done();
   d.finish();
   if (d.unusable()) return 2;
-  if (o.stats) d.print_stats();
+  if (o.stats) {
+    d.print_stats();
+  } else {
+    d.print_summary();
+  }
   if (in.failed()) {
     std::perror("seawire-decode: reading stdin");
     return 1;
@@ -693,9 +745,10 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
                  "canonically (uppercase checksum, CR LF); none: decode and validate only (e.g. "
                  "--format none --stats); csv: a table per message type (with --type or "
                  "--output-dir); geojson: the tracks of every source of positions, and their "
-                 "state changes as points; svg: a picture of the tracks. With every format but "
-                 "json, rejected lines are reported on stderr")
-      ->check(CLI::IsMember({"json", "nmea", "none", "csv", "geojson", "svg"}));
+                 "state changes as points; svg: a picture of the tracks; canboat: each NMEA 2000 "
+                 "message as canboat's analyzer -json writes it (CAN logs only). With every "
+                 "format but json, rejected lines are reported on stderr")
+      ->check(CLI::IsMember({"json", "nmea", "none", "csv", "geojson", "svg", "canboat"}));
   CLI::Option* type_opt = app.add_option(
       "-t,--type", o.types,
       "only messages of this type, as JSON's \"type\" names it (CPNVG, GPRMC, AB00); may be "
@@ -740,8 +793,9 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
       "lowercase; e.g. --strict --format none < ours.nmea). Values outside the spec's ranges, "
       "in sentences and in frames, are rejected with or without --strict");
   app.add_flag("--stats", o.stats,
-               "at the end, print counts by message type and by error, and the stream reader's "
-               "dropped-byte counters, to stderr (e.g. --format none --stats)");
+               "at the end, print counts by message type (by PGN for a CAN log) and by error, "
+               "and the stream reader's dropped-byte counters, to stderr (e.g. --format none "
+               "--stats)");
   app.add_flag("--line-buffered", o.line_buffered,
                "flush stdout after each message, for live streams (the default when stdin or "
                "stdout is a terminal; otherwise large buffers, for speed); a sentence ended by CR "
@@ -754,6 +808,7 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
           : fmt == "csv"     ? format::csv
           : fmt == "geojson" ? format::geojson
           : fmt == "svg"     ? format::svg
+          : fmt == "canboat" ? format::canboat
                              : format::json;
   o.in = in == "nmea" ? input::nmea : in == "n2k" ? input::n2k : input::automatic;
   if (!log_format.empty()) {
@@ -766,6 +821,12 @@ std::optional<int> parse_options(int argc, char** argv, options& o) {
     std::fprintf(stderr,
                  "seawire-decode: --format nmea re-encodes sentences; a CAN log has none (use "
                  "seawire-encode --output FORMAT to write a log again)\n");
+    return 2;
+  }
+  if (o.in == input::nmea && o.fmt == format::canboat) {
+    std::fprintf(stderr,
+                 "seawire-decode: --format canboat writes NMEA 2000 messages as canboat's "
+                 "analyzer does; sentences have none (use --input n2k or auto with a CAN log)\n");
     return 2;
   }
   if (dir_opt->count() > 0 && o.output_dir.empty()) {

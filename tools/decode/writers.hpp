@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// seawire-decode's output formats, one class each (json, nmea, none, csv, geojson, svg), behind
-// one sink: each is given every message decoded, every line rejected and run of bytes dropped,
-// and the end of the input. And what they write on stderr by: the progress line, and the log of
-// rejected input, rate limited.
+// seawire-decode's output formats, one class each (json, nmea, none, csv, geojson, svg, canboat),
+// behind one sink: each is given every message decoded, every line rejected and run of bytes
+// dropped, and the end of the input. And what they write on stderr by: the progress line, and the
+// log of rejected input, rate limited.
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -26,6 +26,7 @@
 #include <variant>
 #include <vector>
 
+#include "canboat_json.hpp"
 #include "io.hpp"
 #include "messages.hpp"
 #include "seawire/anello/frame.hpp"
@@ -44,7 +45,7 @@
 
 namespace seawire::tools {
 
-enum class format { json, nmea, none, csv, geojson, svg };
+enum class format { json, nmea, none, csv, geojson, svg, canboat };
 
 // What the command line tells the writers.
 struct output_options {
@@ -263,11 +264,13 @@ inline void count_type(std::map<std::string, std::uint64_t, std::less<>>& counts
 // (finish). The decoder decides what is a message, and counts; the writer what goes out, where.
 
 // Where a message came from, for the writers that need more than the message: a sentence's line
-// and view (--format nmea re-encodes it), a PGN's CAN frame header (JSON and CSV write it).
+// and view (--format nmea re-encodes it), a PGN's CAN frame header (JSON and CSV write it) and
+// payload (--format canboat shows its reserved bits, and reads a short one as canboat does).
 struct origin {
   const nmea::framed_line* line = nullptr;
   const nmea::sentence_view* sentence = nullptr;
   const nmea2000::message_header* head = nullptr;
+  std::span<const std::uint8_t> payload;
 };
 
 // A line rejected, or a run of bytes dropped: where, why, and the input (as much of it as the
@@ -292,8 +295,9 @@ struct refusal {
 // rate, after stdout is written out, so that the two stay in order where they meet).
 class stdio_writer {
  public:
-  // Why a writer cannot write a CAN log (nullptr: it can).
+  // Why a writer cannot write a CAN log, or sentences (nullptr: it can).
   static constexpr const char* refuses_can_log = nullptr;
+  static constexpr const char* refuses_sentences = nullptr;
 
   stdio_writer(const output_options& o, progress& shown)
       : log_(shown), line_buffered_(o.line_buffered) {}
@@ -632,6 +636,48 @@ class svg_writer : public track_writer {
   }
 };
 
+// --format canboat: each PGN as canboat's `analyzer -json` writes it (canboat_json.hpp), one a
+// line; rejected lines on stderr, as analyzer reports them.
+class canboat_writer : public stdio_writer {
+ public:
+  static constexpr const char* refuses_sentences =
+      "seawire-decode: --format canboat writes NMEA 2000 messages as canboat's analyzer does; the "
+      "input is sentences (NMEA 0183 or ANELLO frames), which it has none of: use --format json\n";
+
+  using stdio_writer::stdio_writer;
+
+  template <class M>
+  std::optional<refusal> message(std::string_view /*type*/, const M& msg, const origin& from) {
+    line_.clear();
+    bool shown = true;
+    if constexpr (nmea2000::pgn_like<M>) {
+      shown = canboat::put_message(line_, *from.head, msg, from.payload,
+                                   canboat::timestamp(*from.head));
+    } else if constexpr (std::is_same_v<M, raw_pgn>) {
+      canboat::put_raw_message(line_, *from.head, msg.payload, canboat::timestamp(*from.head));
+    } else {
+      return std::nullopt;  // a sentence: the input was refused before any was read
+    }
+    if (shown) {
+      line_ += '\n';
+      out_.put(line_);
+    } else if (log_.allow()) {
+      out_.flush();
+      std::fprintf(stderr,
+                   "seawire-decode: PGN %u from %u: a field cut short where canboat's analyzer "
+                   "cannot read it (a date of one byte); not written, as analyzer writes "
+                   "nothing of such a message\n",
+                   static_cast<unsigned>(from.head->id.pgn),
+                   static_cast<unsigned>(from.head->id.source));
+    }
+    written();
+    return std::nullopt;
+  }
+
+ private:
+  std::string line_;  // the message's line, built whole: analyzer writes all of it or nothing
+};
+
 // The writer of the format asked for: the one place the formats are told apart.
 class sink {
  public:
@@ -651,10 +697,14 @@ class sink {
     std::visit([](auto& w) { w.finish(); }, w_);
   }
 
-  // Why the format cannot be written of a CAN log (nullptr: it can).
+  // Why the format cannot be written of a CAN log, or of sentences (nullptr: it can).
   [[nodiscard]] const char* refuses_can_log() const {
     return std::visit(
         [](const auto& w) { return std::remove_cvref_t<decltype(w)>::refuses_can_log; }, w_);
+  }
+  [[nodiscard]] const char* refuses_sentences() const {
+    return std::visit(
+        [](const auto& w) { return std::remove_cvref_t<decltype(w)>::refuses_sentences; }, w_);
   }
   // stdout failed (the tables' failures are reported as they are found).
   [[nodiscard]] const tools::output& out() const {
@@ -666,8 +716,8 @@ class sink {
   }
 
  private:
-  using writers =
-      std::variant<json_writer, nmea_writer, none_writer, csv_writer, geojson_writer, svg_writer>;
+  using writers = std::variant<json_writer, nmea_writer, none_writer, csv_writer, geojson_writer,
+                               svg_writer, canboat_writer>;
 
   static writers make(const output_options& o, progress& shown) {
     switch (o.fmt) {
@@ -676,6 +726,7 @@ class sink {
       case format::csv: return writers(std::in_place_type<csv_writer>, o, shown);
       case format::geojson: return writers(std::in_place_type<geojson_writer>, o, shown);
       case format::svg: return writers(std::in_place_type<svg_writer>, o, shown);
+      case format::canboat: return writers(std::in_place_type<canboat_writer>, o, shown);
       case format::json: break;
     }
     return writers(std::in_place_type<json_writer>, o, shown);

@@ -34,6 +34,7 @@
 #include "seawire/nmea/message.hpp"
 #include "seawire/nmea/writer.hpp"
 #include "seawire/nmea2000/fast_packet.hpp"
+#include "seawire/nmea2000/fast_packets.hpp"
 #include "seawire/nmea2000/json.hpp"
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/version.hpp"
@@ -135,7 +136,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   [[nodiscard]] const std::string& error() const { return error_; }
 
   /// The lookup nmea::read_json and nmea2000::read_json ask: member `key` of the object (""),
-  /// of "precision", or element `key` ("0", "1", ...) of the array member `object`.
+  /// of "precision", or element `key` ("0", "1", ...) of the array member `object`, or member m
+  /// of an object element i of it (key "i.m", a PGN's repeating group).
   json_value operator()(std::string_view object, std::string_view key) const {
     if (!object.empty() && object != "precision") {
       for (auto it = arrays_.rbegin(); it != arrays_.rend(); ++it)
@@ -174,15 +176,18 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     (void)next_number_text();
     // The number as written ("203.10"), or, with an exponent, written out ("1e-05": "0.00001"):
     // the library reads plain decimals only. Only values that are kept are converted.
-    const bool kept = depth_ == 1 || (depth_ == 2 && mode_ == mode::precision);
+    const bool kept = depth_ == 1 || (depth_ == 2 && mode_ == mode::precision) ||
+                      (depth_ == 3 && mode_ == mode::element);
     if (!kept || text.find_first_of("eE") == std::string::npos)
       return value(json_kind::number, text);
     std::string why;
     const std::string plain = plain_decimal(text, why);
     if (plain.empty()) {
       const std::string where =
-          depth_ == 1 ? "field \"" + tools::quote_prefix(key_) + "\""
-                      : "\"precision\" of \"" + tools::quote_prefix(inner_key_) + "\"";
+          depth_ == 1   ? "field \"" + tools::quote_prefix(key_) + "\""
+          : depth_ == 3 ? "\"" + tools::quote_prefix(inner_key_) + "\" of an element of \"" +
+                              tools::quote_prefix(key_) + "\""
+                        : "\"precision\" of \"" + tools::quote_prefix(inner_key_) + "\"";
       return refuse(where + " " + tools::quote_prefix(text) + ": " + why);
     }
     return value(json_kind::number, plain);
@@ -192,7 +197,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
   bool key(string_t& k) override {
     if (depth_ == 1) {
       key_ = keep(k);
-    } else if (depth_ == 2 && mode_ == mode::precision) {
+    } else if ((depth_ == 2 && mode_ == mode::precision) ||
+               (depth_ == 3 && mode_ == mode::element)) {
       inner_key_ = keep(k);
     }
     return true;
@@ -243,7 +249,7 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
     return {};
   }
 
-  enum class mode { top, precision, fields, array, skip };
+  enum class mode { top, precision, fields, array, element, element_skip, skip };
   struct element {
     std::string_view array;
     std::string_view index;
@@ -271,6 +277,10 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
       fields_.push_back(keep(text));
     } else if (depth_ == 2 && mode_ == mode::array) {
       arrays_.push_back({key_, keep(std::to_string(index_++)), json_value{kind, keep(text)}});
+    } else if (depth_ == 3 && mode_ == mode::element) {
+      // a member of an object in an array (a PGN's repeating group): "<index>.<member>"
+      arrays_.push_back({key_, keep(std::to_string(index_ - 1) + "." + std::string(inner_key_)),
+                         json_value{kind, keep(text)}});
     }
     return true;
   }
@@ -292,8 +302,17 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
       } else {
         mode_ = mode::skip;
       }
+    } else if (depth_ == 2 && mode_ == mode::array && !array) {
+      // an object in an array (a PGN's repeating group): element "<index>", its members read
+      arrays_.push_back({key_, keep(std::to_string(index_++)), json_value{json_kind::other, "{"}});
+      mode_ = mode::element;
     } else if (depth_ == 2 && mode_ == mode::array) {
-      mode_ = mode::skip;  // arrays of containers: not read
+      mode_ = mode::skip;  // arrays of arrays: not read
+    } else if (depth_ == 3 && mode_ == mode::element) {
+      // a container inside a group's element: kept as "{" or "[", its content not read
+      arrays_.push_back({key_, keep(std::to_string(index_ - 1) + "." + std::string(inner_key_)),
+                         json_value{json_kind::other, array ? "[" : "{"}});
+      mode_ = mode::element_skip;
     } else if (depth_ == 2 && mode_ != mode::skip) {
       return fail("\"precision\" and \"fields\" hold plain values only");
     }
@@ -303,6 +322,8 @@ class json_object : public nlohmann::json_sax<nlohmann::json> {
 
   bool close() {
     if (--depth_ == 1) mode_ = mode::top;
+    if (depth_ == 2 && mode_ == mode::element) mode_ = mode::array;
+    if (depth_ == 3 && mode_ == mode::element_skip) mode_ = mode::element;
     return true;
   }
 
@@ -521,9 +542,22 @@ class encoder {
         payload.push_back(
             static_cast<std::uint8_t>(std::stoi(std::string(d.text.substr(i, 2)), nullptr, 16)));
     }
-    const bool fast = info ? info->transport == nmea2000::framing::fast_packet : payload.size() > 8;
-    if (!fast || opt_.log == nmea2000::log_format::canboat ||
-        opt_.log == nmea2000::log_format::actisense_n2k_ascii) {
+    // A PGN seawire does not describe travels as the standard's list says, as seawire-decode
+    // reads it back. A single-frame PGN longer than a frame would need ISO transport (a
+    // multi-packet session seawire does not write): refused, unless the log's line holds a whole
+    // message (canboat, Actisense), where it is read back as written.
+    const bool fast = info ? info->transport == nmea2000::framing::fast_packet
+                           : nmea2000::is_fast_packet_pgn(pgn);
+    const bool whole_lines = opt_.log == nmea2000::log_format::canboat ||
+                             opt_.log == nmea2000::log_format::actisense_n2k_ascii;
+    if (!fast && !whole_lines && payload.size() > 8) {
+      reject(std::string(type) + ": " + std::to_string(payload.size()) +
+             " bytes in a single-frame PGN (not a fast packet by the standard's list): a CAN "
+             "frame holds 8; more needs ISO transport, which seawire-encode does not write (a "
+             "canboat or Actisense log holds the whole message in one line)");
+      return;
+    }
+    if (!fast || whole_lines) {
       // One frame, or a line holding the whole payload (canboat FAST, Actisense).
       (void)rec.assign(payload);
       put_record(type, rec);

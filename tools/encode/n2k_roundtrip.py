@@ -109,6 +109,20 @@ if len(got) == 2:
     check(got[1]["discrete_status_2"] == ["warning_level_1", "bit_9"], f"flags: {got[1]}")
     check(got[1]["discrete_status_1"] == [], f"no flag set: {got[1]}")
 
+# A PGN seawire does not describe and the standard does not list as a fast packet is one frame:
+# longer than 8 bytes it is refused where a line is a frame, written whole where a line is a
+# message, and read back the same.
+long_single = b'{"type":"PGN65280","src":7,"data":"00112233445566778899"}\n'
+out = run(ENCODE, ["--output", "candump_log"], long_single)
+check(out.returncode == 1 and out.stdout == b"" and b"single-frame PGN" in out.stderr
+      and b"ISO transport" in out.stderr, f"10 bytes of PGN 65280 as frames: {out.stderr!r}")
+for fmt in ("canboat", "actisense_n2k_ascii"):
+    out = run(ENCODE, ["--output", fmt], long_single)
+    back = run(DECODE, [], out.stdout)
+    got = [json.loads(l) for l in back.stdout.decode().splitlines()]
+    check(out.returncode == 0 and len(got) == 1 and got[0].get("data") == "00112233445566778899",
+          f"10 bytes of PGN 65280 through {fmt}: {got}")
+
 # A 127489 without its discrete status words (a short message): not available, null, and written
 # back short, so it reads back the same.
 short = b"2016-04-09T16:41:39.628Z,2,127489,16,255,20,00,2f,06,ff,ff,e3,73,65,05,ff,7f,72,10,00,00,ff,ff,ff,ff,ff\n"

@@ -22,6 +22,7 @@
 #include <system_error>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/bit_layout.hpp"
@@ -93,6 +94,16 @@ template <resolution R>
   return d;
 }
 
+/// `magnitude`, negated when `negative`, as an int64_t (2^63 negated is the most negative one);
+/// false when it does not fit.
+[[nodiscard]] constexpr bool signed_raw(std::uint64_t magnitude, bool negative,
+                                        std::int64_t& out) noexcept {
+  constexpr auto max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+  if (magnitude > max + (negative ? 1 : 0)) return false;
+  out = negative ? static_cast<std::int64_t>(~magnitude + 1) : static_cast<std::int64_t>(magnitude);
+  return true;
+}
+
 /// The raw value nearest m x 10^t at resolution R, negated when `negative`, halves away from
 /// zero; false beyond 64 bits (the caller's range check refuses it).
 template <resolution R>
@@ -100,12 +111,9 @@ template <resolution R>
                                              std::int64_t& out) noexcept {
   // raw = m x 10^(t - exponent) / mantissa
   std::uint64_t q = 0;
-  if (!seawire::detail::round_scaled(m, t - R.exponent, static_cast<std::uint64_t>(R.mantissa),
-                                     q) ||
-      q > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
-    return false;
-  out = negative ? -static_cast<std::int64_t>(q) : static_cast<std::int64_t>(q);
-  return true;
+  return seawire::detail::round_scaled(m, t - R.exponent, static_cast<std::uint64_t>(R.mantissa),
+                                       q) &&
+         signed_raw(q, negative, out);
 }
 
 }  // namespace detail
@@ -118,7 +126,11 @@ template <resolution R>
 template <unsigned Bits, bool Signed, resolution Res = resolution{},
           unsigned Sentinels = detail::sentinel_count(Bits)>
 class number {
-  static_assert(Bits >= 1 && Bits <= 32 && (!Signed || Bits >= 2), "field width 1..32 bits");
+  // Raw values are kept in an int64_t: every signed width up to 64 bits and every unsigned width
+  // up to 63 bits fits exactly. An unsigned 64-bit field does not, and does not compile.
+  static_assert(Bits >= 1 && Bits <= 64 && (!Signed || Bits >= 2), "field width 1..64 bits");
+  static_assert(Signed || Bits <= 63,
+                "an unsigned 64-bit field's raw values do not fit the int64_t a number keeps");
   static_assert(Res.mantissa > 0, "resolution must be positive");
   static_assert(Sentinels <= detail::sentinel_count(Bits), "more sentinels than the width has");
 
@@ -128,9 +140,22 @@ class number {
   static constexpr resolution res = Res;
   static constexpr unsigned sentinels = Sentinels;
   /// All ones (unsigned) or the largest positive value (signed): "not available".
-  static constexpr std::int64_t top_raw =
-      Signed ? (std::int64_t{1} << (Bits - 1)) - 1 : (std::int64_t{1} << Bits) - 1;
-  static constexpr std::int64_t min_raw = Signed ? -(std::int64_t{1} << (Bits - 1)) : 0;
+  static constexpr std::int64_t top_raw = static_cast<std::int64_t>(
+      Signed ? (std::uint64_t{1} << (Bits - 1)) - 1 : (std::uint64_t{1} << Bits) - 1);
+  static constexpr std::int64_t min_raw = Signed ? -top_raw - 1 : 0;
+
+ private:
+  // The physical value's decimal mantissa is raw x mantissa x 10^exponent (exponent > 0): it
+  // must fit 64 bits for every raw value, or exact() could not be exact.
+  static constexpr bool scale_fits = [] {
+    std::uint64_t limit = ~std::uint64_t{0} / static_cast<std::uint64_t>(Res.mantissa);
+    for (int e = 0; e < Res.exponent; ++e) limit /= 10;
+    return static_cast<std::uint64_t>(top_raw) + 1 <= limit && Res.exponent <= 19 &&
+           -Res.exponent <= 19;
+  }();
+  static_assert(scale_fits, "a raw value at this resolution does not fit a decimal exactly");
+
+ public:
   /// The largest raw value that is an ordinary value.
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
 
@@ -168,10 +193,9 @@ class number {
     const errc e = seawire::detail::round_double(v, 1, -Res.exponent,
                                                  static_cast<std::uint64_t>(Res.mantissa), m);
     if (e == errc::not_finite) return {number{}, e};
-    const bool fits = e == errc::ok && m.magnitude <= static_cast<std::uint64_t>(
-                                                          std::numeric_limits<std::int64_t>::max());
-    const auto mag = static_cast<std::int64_t>(fits ? m.magnitude : 0);
-    return checked(fits, m.negative ? -mag : mag);
+    std::int64_t raw = 0;
+    const bool fits = e == errc::ok && detail::signed_raw(m.magnitude, m.negative, raw);
+    return checked(fits, raw);
   }
   template <nmea::whole_number I>
   [[nodiscard]] static constexpr result<number> from(I v) noexcept {
@@ -255,6 +279,43 @@ template <named_enum E>
   return *i;
 }
 }  // namespace detail
+
+/// An enum with display titles, canboat's texts ("Paddle wheel", "Pitot tube"): declared as
+/// `constexpr std::array<std::string_view, N> lookup_titles(E)` (found by ADL). Every lookup and
+/// flag enum has them beside lookup_names, the same values in the same order; a title may go on
+/// past the names for the raw values canboat names among the sentinels (a heading reference's
+/// raw 2, "Error"). An enum with titles alone names the values of a number field
+/// (field<&P::m, E>). An empty title names nothing.
+template <class E>
+concept titled_enum = std::is_enum_v<E> && requires(E e) {
+  { lookup_titles(e).size() } -> std::convertible_to<std::size_t>;
+};
+
+namespace detail {
+template <titled_enum E>
+inline constexpr auto titles_of = lookup_titles(E{});
+
+template <titled_enum E>
+inline constexpr bool titles_cover_names = [] {
+  if constexpr (named_enum<E>) {
+    if (titles_of<E>.size() < names_of<E>.size()) return false;
+    for (std::size_t i = 0; i < names_of<E>.size(); ++i)
+      if (names_of<E>[i].empty() != titles_of<E>[i].empty()) return false;
+  }
+  return true;
+}();
+
+}  // namespace detail
+
+/// The title of raw value `v` of E ("Pitot tube" for water_reference 1); empty when E has none
+/// for it.
+template <titled_enum E>
+[[nodiscard]] constexpr std::string_view lookup_title(std::uint64_t v) noexcept {
+  static_assert(detail::titles_cover_names<E>,
+                "lookup_titles must title every value lookup_names names, and only those, before "
+                "any sentinel titles");
+  return seawire::detail::name_at(detail::titles_of<E>, v);
+}
 
 /// A field of `Bits` bits whose values name things (a speed sensor's type). Values the standard
 /// has not named are kept and sent as they are; the top 3 raw values are sentinels (2 of a 2-bit
@@ -481,7 +542,8 @@ concept field_value = requires(const T& t, std::int64_t raw) {
 };
 
 /// One row of a PGN table: the member, its name (snake_case with the unit last, as JSON, CSV and
-/// fmt show it) and the standard's name for the field.
+/// fmt show it) and its title, the field's name as canboat's database spells it (the key of its
+/// JSON).
 template <auto Member>
 struct field_entry {
   using value_type = seawire::detail::member_type_t<Member>;
@@ -628,6 +690,7 @@ inline constexpr bool is_keyed_lookup<keyed_lookup<T, B>> = true;
 /// (the name needs both). The key counts only when its field holds a value.
 template <class L>
 struct keyed_reading {
+  static constexpr bool is_signed = L::is_signed;
   L value;
   std::int64_t key = 0;
   bool key_known = false;
@@ -670,6 +733,47 @@ concept keyed_row = requires {
   F::key_member;
 };
 
+/// A number field whose values canboat's database names (an engine instance: 0 "Single Engine or
+/// Dual Engine Port"): a number as seawire keeps and writes it, with E's lookup_titles for the
+/// writers that show canboat's texts. Declared as field<&P::m, E>(name, title).
+template <auto Member, class E>
+struct titled_field_entry : field_entry<Member> {
+  static_assert(titled_enum<E>, "a titled number's enum declares lookup_titles");
+  static_assert(
+      requires { field_entry<Member>::value_type::res; },
+      "only a number field takes titles; a lookup has its enum's already");
+  using titles = E;
+};
+
+template <auto Member, class E>
+[[nodiscard]] constexpr titled_field_entry<Member, E> field(std::string_view name,
+                                                            std::string_view title) noexcept {
+  return {{name, title}};
+}
+
+/// How a number that is no quantity reads: an identifier's digits (an AIS user's MMSI), or bits
+/// with no numeric meaning (AIS's communication state). seawire keeps and writes it as a number;
+/// writers that follow canboat show it as canboat does (a string of digits, the bytes in hex).
+enum class raw_display : std::uint8_t {
+  identifier,  ///< an identifier's digits (an MMSI)
+  bits,        ///< bits with no numeric meaning, shown as bytes
+};
+
+/// A number field read as D says. Declared as field<&P::m, raw_display::bits>(name, title).
+template <auto Member, raw_display D>
+struct displayed_field_entry : field_entry<Member> {
+  static_assert(
+      requires { field_entry<Member>::value_type::res; },
+      "only a number field is shown as an identifier or bits");
+  static constexpr raw_display display = D;
+};
+
+template <auto Member, raw_display D>
+[[nodiscard]] constexpr displayed_field_entry<Member, D> field(std::string_view name,
+                                                               std::string_view title) noexcept {
+  return {{name, title}};
+}
+
 /// `Bits` bits the standard reserves: sent as ones, ignored when received.
 template <unsigned Bits>
 struct reserved_bits {
@@ -694,6 +798,167 @@ struct spare_bits {
 template <unsigned Bits>
 inline constexpr spare_bits<Bits> spare{};
 
+namespace detail {
+/// fn(entry, bit_offset, number) for every row of a table (a tuple of rows) from bit 0; what fn
+/// returns is ignored.
+template <class Rows, class Fn>
+constexpr void each_row(const Rows& rows, Fn& fn) {
+  seawire::detail::for_each_row(rows, 0, [&](const auto& entry, unsigned at, std::uint16_t n) {
+    (void)fn(entry, at, n);
+    return true;
+  });
+}
+}  // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// repeating field groups
+
+/// The most bytes a message carries: a fast packet's 223. A group's capacity follows from it.
+inline constexpr std::size_t max_payload_bytes = 223;
+
+/// The rows of one repetition of a field group (describe_item): fields and reserved bits, laid
+/// out as a PGN's, from the repetition's first bit. Whole bytes; no flag sets, no nested groups.
+template <class... F>
+struct item_description {
+  std::tuple<F...> fields;
+
+  static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
+  static_assert(bit_length > 0 && bit_length % 8 == 0,
+                "a group's repetition must fill whole bytes");
+  static constexpr std::size_t length = bit_length / 8;
+  static constexpr std::size_t field_count = sizeof...(F);
+
+  /// fn(entry, bit_offset from the repetition's start, number) for every row, as a PGN's.
+  template <class Fn>
+  constexpr void for_each(Fn&& fn) const {
+    detail::each_row(fields, fn);
+  }
+};
+
+template <class... F>
+[[nodiscard]] constexpr item_description<F...> describe_item(F... fields) noexcept {
+  return {{fields...}};
+}
+
+/// One repetition of a group: a struct with `static constexpr auto n2k_item = describe_item(...)`.
+template <class T>
+concept group_item = requires {
+  T::n2k_item.fields;
+}
+&&std::is_default_constructible_v<T>;
+
+/// How many repetitions of Item a payload holds after `header_bytes` bytes: what the group's
+/// capacity must be (the table checks it).
+template <group_item Item>
+[[nodiscard]] consteval std::size_t group_capacity(std::size_t header_bytes) noexcept {
+  return (max_payload_bytes - header_bytes) / std::remove_cvref_t<decltype(Item::n2k_item)>::length;
+}
+
+/// A repeating field group: up to `Capacity` repetitions of Item, in fixed storage, and how many
+/// are held. Declared with the row repeating<&P::group, &P::count> (a count field before it says
+/// how many) or repeating_to_end<&P::group> (repetitions to the end of the payload).
+template <group_item Item, std::size_t Capacity>
+class group {
+  static_assert(Capacity > 0);
+
+ public:
+  using item_type = Item;
+  static constexpr std::size_t capacity = Capacity;
+
+  constexpr group() noexcept = default;
+
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return size_ == 0; }
+  [[nodiscard]] constexpr bool full() const noexcept { return size_ == Capacity; }
+  /// The repetitions held, in wire order.
+  [[nodiscard]] constexpr std::span<const Item> items() const noexcept {
+    return {items_.data(), size_};
+  }
+  [[nodiscard]] constexpr std::span<Item> items() noexcept { return {items_.data(), size_}; }
+  [[nodiscard]] constexpr const Item* begin() const noexcept { return items_.data(); }
+  [[nodiscard]] constexpr const Item* end() const noexcept { return items_.data() + size_; }
+  /// Repetition i; nullptr past size().
+  [[nodiscard]] constexpr const Item* at(std::size_t i) const noexcept {
+    return i < size_ ? &items_[i] : nullptr;
+  }
+  /// Appends `item`; false (nothing changed) when the group is full.
+  constexpr bool push_back(const Item& item) noexcept {
+    if (size_ == Capacity) return false;
+    items_[size_++] = item;
+    return true;
+  }
+  constexpr void clear() noexcept { size_ = 0; }
+
+  /// A group is always a value (an empty one is sent as no repetitions).
+  [[nodiscard]] constexpr field_state state() const noexcept { return field_state::value; }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return true; }
+
+  [[nodiscard]] constexpr bool operator==(const group& o) const noexcept {
+    if (size_ != o.size_) return false;
+    for (std::size_t i = 0; i < size_; ++i)
+      if (!(items_[i] == o.items_[i])) return false;
+    return true;
+  }
+
+ private:
+  std::array<Item, Capacity> items_{};
+  std::size_t size_ = 0;
+};
+
+namespace detail {
+template <class T>
+inline constexpr bool is_group_value = false;
+template <class I, std::size_t C>
+inline constexpr bool is_group_value<group<I, C>> = true;
+}  // namespace detail
+
+/// The row of a repeating group, the last of its PGN's table: after the fixed rows, as many
+/// repetitions as the count field `Count` (a member of the same struct, an earlier row) says,
+/// or with Count = nullptr as many as the rest of the payload holds. Takes no bits of the fixed
+/// layout (`bits` is 0); item_bits is one repetition's.
+template <auto Member, auto Count>
+struct group_entry {
+  using value_type = seawire::detail::member_type_t<Member>;
+  static_assert(detail::is_group_value<value_type>, "a group row's member must be a group<>");
+  using item_type = typename value_type::item_type;
+  static constexpr auto member = Member;
+  static constexpr auto count = Count;
+  /// Whether a count field says how many repetitions follow (else: to the end of the payload).
+  static constexpr bool counted = !std::is_same_v<decltype(Count), std::nullptr_t>;
+  static constexpr unsigned bits = 0;
+  static constexpr unsigned item_bits =
+      std::remove_cvref_t<decltype(item_type::n2k_item)>::bit_length;
+  static constexpr bool is_reserved = false;
+  static constexpr bool is_group = true;
+  std::string_view name;
+  std::string_view title;
+};
+
+/// A group whose repetitions are counted by the earlier field `Count`.
+template <auto Member, auto Count>
+[[nodiscard]] constexpr group_entry<Member, Count> repeating(std::string_view name,
+                                                             std::string_view title) noexcept {
+  static_assert(!std::is_same_v<decltype(Count), std::nullptr_t>);
+  using C = seawire::detail::member_type_t<Count>;
+  static_assert(!C::is_signed && C::bits <= 16, "a group's count is an unsigned number");
+  return {name, title};
+}
+
+/// A group that repeats to the end of the payload (no count field).
+template <auto Member>
+[[nodiscard]] constexpr group_entry<Member, nullptr> repeating_to_end(
+    std::string_view name, std::string_view title) noexcept {
+  return {name, title};
+}
+
+namespace detail {
+/// Whether row type F is a repeating group's.
+template <class F>
+concept group_row = requires {
+  F::is_group;
+};
+}  // namespace detail
+
 /// How a PGN travels: one CAN frame (up to 8 bytes) or a fast packet (up to 223 bytes).
 enum class framing : std::uint8_t { single_frame, fast_packet };
 
@@ -701,11 +966,28 @@ enum class framing : std::uint8_t { single_frame, fast_packet };
 struct pgn_info {
   std::uint32_t pgn = 0;
   std::string_view name;      ///< snake_case, the C++ struct's name
-  std::string_view title;     ///< the standard's name
+  std::string_view title;     ///< the PGN's name as canboat's database spells it
   std::uint8_t priority = 6;  ///< default priority (0 highest .. 7)
   framing transport = framing::single_frame;
   std::uint16_t interval_ms = 0;  ///< default transmit interval; 0 = on demand
 };
+
+/// The enum of a lookup or flag set type: E of lookup<E, B> and flags<E, B>; void for any other
+/// value type.
+template <class V>
+struct value_enum {
+  using type = void;
+};
+template <class E, unsigned B>
+struct value_enum<lookup<E, B>> {
+  using type = E;
+};
+template <class E, unsigned B>
+struct value_enum<flags<E, B>> {
+  using type = E;
+};
+template <class V>
+using value_enum_t = typename value_enum<V>::type;
 
 namespace detail {
 template <class T>
@@ -723,20 +1005,38 @@ struct pgn_description {
   pgn_info info;
   std::tuple<F...> fields;
 
+  /// The bits of the fixed rows (a repeating group, always last, starts where they end).
   static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
   static_assert(bit_length % 8 == 0, "a PGN's fields must fill whole bytes");
-  /// The payload's length in bytes.
-  static constexpr std::size_t length = bit_length / 8;
   static constexpr std::size_t field_count = sizeof...(F);
+
+ private:
+  using last_row = std::tuple_element_t<sizeof...(F) - 1, std::tuple<F...>>;
+  static_assert(((detail::group_row<F> ? 1 : 0) + ... + 0) <= (detail::group_row<last_row> ? 1 : 0),
+                "a repeating group must be the last row of its table");
+  static constexpr std::size_t group_bytes = [] {
+    if constexpr (detail::group_row<last_row>) {
+      using G = typename last_row::value_type;
+      static_assert(G::capacity == group_capacity<typename G::item_type>(bit_length / 8),
+                    "a group's capacity is what a 223-byte payload holds after the fixed rows "
+                    "(group_capacity<Item>(header bytes))");
+      return G::capacity * (last_row::item_bits / 8);
+    } else {
+      return std::size_t{0};
+    }
+  }();
+
+ public:
+  /// Whether the table ends in a repeating group.
+  static constexpr bool has_group = detail::group_row<last_row>;
+  /// The payload's length in bytes: the largest, with a group at its capacity.
+  static constexpr std::size_t length = bit_length / 8 + group_bytes;
 
   /// fn(entry, bit_offset, number) for every row, reserved ones too, in wire order; `number`
   /// counts from 1 as the table does. What fn returns is ignored: every row is visited.
   template <class Fn>
   constexpr void for_each(Fn&& fn) const {
-    seawire::detail::for_each_row(fields, 0, [&](const auto& entry, unsigned at, std::uint16_t n) {
-      (void)fn(entry, at, n);
-      return true;
-    });
+    detail::each_row(fields, fn);
   }
 };
 
@@ -761,26 +1061,70 @@ using payload_of = std::array<std::uint8_t, description_of<P>::length>;
 // ---------------------------------------------------------------------------------------------
 // decode and encode
 
+namespace detail {
+
+/// Field row F of a table at bit `offset` of `payload` into `out` (a PGN or a group's
+/// repetition): not available when the payload does not hold it in full.
+template <class F, class T>
+constexpr void decode_field(std::span<const std::uint8_t> payload, unsigned offset,
+                            T& out) noexcept {
+  using V = typename F::value_type;
+  if (offset + F::bits > payload.size() * 8) {
+    out.*F::member = V{};  // not available
+    return;
+  }
+  const std::uint64_t u = seawire::detail::get_bits<payload_order>(payload, offset, F::bits);
+  auto raw = static_cast<std::int64_t>(u);  // two's complement for a 64-bit field
+  if constexpr (V::is_signed && F::bits < 64) {
+    if (((u >> (F::bits - 1)) & 1) != 0)
+      raw = static_cast<std::int64_t>(u) - (std::int64_t{1} << F::bits);
+  }
+  out.*F::member = V::from_raw(raw);
+}
+
+/// Group row F, starting at bit `offset`, into `out` (its count field already read). It holds
+/// as many repetitions as the count says, or for a group to the end (or a count that is not a
+/// value: it says nothing) as many as the payload starts; at most the capacity, and never more
+/// than the payload starts: a repetition cut short holds the fields it holds in full, the rest
+/// not available.
+template <class F, class P>
+constexpr void decode_group(std::span<const std::uint8_t> payload, unsigned offset,
+                            P& out) noexcept {
+  using G = typename F::value_type;
+  using Item = typename G::item_type;
+  const std::size_t have = payload.size() * 8 > offset ? payload.size() * 8 - offset : 0;
+  std::size_t n = std::min<std::size_t>(G::capacity, (have + F::item_bits - 1) / F::item_bits);
+  if constexpr (F::counted) {
+    const auto& count = out.*F::count;
+    if (count.has_value()) n = std::min(n, static_cast<std::size_t>(count.raw()));
+  }
+  G& g = out.*F::member;
+  g.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    Item item{};
+    const auto at = offset + static_cast<unsigned>(i) * F::item_bits;
+    Item::n2k_item.for_each([&](const auto& f, unsigned o, std::uint16_t) {
+      using R = std::remove_cvref_t<decltype(f)>;
+      if constexpr (!R::is_reserved) decode_field<R>(payload, at + o, item);
+    });
+    (void)g.push_back(item);
+  }
+}
+
+}  // namespace detail
+
 /// P from a payload. Fields the payload is too short to hold in full read as not available;
-/// bytes past P's length and reserved bits are ignored. Never fails.
+/// bytes past P's length and reserved bits are ignored; a repeating group as decode_group says.
+/// Never fails.
 template <pgn_like P>
 [[nodiscard]] constexpr P decode(std::span<const std::uint8_t> payload) noexcept {
   P out{};
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved) {
-      using V = typename F::value_type;
-      if (offset + F::bits > payload.size() * 8) {
-        out.*F::member = V{};  // not available
-        return;
-      }
-      const std::uint64_t u = seawire::detail::get_bits<payload_order>(payload, offset, F::bits);
-      std::int64_t raw = static_cast<std::int64_t>(u);
-      if constexpr (V::is_signed) {
-        if (F::bits < 64 && ((u >> (F::bits - 1)) & 1) != 0)
-          raw = static_cast<std::int64_t>(u) - (std::int64_t{1} << F::bits);
-      }
-      out.*F::member = V::from_raw(raw);
+    if constexpr (detail::group_row<F>) {
+      detail::decode_group<F>(payload, offset, out);
+    } else if constexpr (!F::is_reserved) {
+      detail::decode_field<F>(payload, offset, out);
     }
   });
   return out;
@@ -814,12 +1158,46 @@ struct encoded_bytes {
 template <pgn_like P>
 using encoded_payload = encoded_bytes<description_of<P>::length>;
 
+namespace detail {
+
+/// Field row F's value `v` at bit `offset` of `bytes`: its low F::bits bits.
+template <class F, class V, std::size_t N>
+constexpr void encode_field(std::array<std::uint8_t, N>& bytes, unsigned offset,
+                            const V& v) noexcept {
+  const std::uint64_t mask = F::bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << F::bits) - 1;
+  seawire::detail::put_bits<payload_order>(bytes, offset, F::bits,
+                                           static_cast<std::uint64_t>(v.raw()) & mask);
+}
+
+/// The row number and bit offset of the row of P's table whose member is `Member`.
+template <pgn_like P, auto Member>
+[[nodiscard]] constexpr std::pair<std::uint16_t, unsigned> row_of() noexcept {
+  std::pair<std::uint16_t, unsigned> out{0, 0};
+  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) {
+      if (seawire::detail::same_member<F::member, Member>) out = {n, offset};
+    }
+  });
+  return out;
+}
+
+}  // namespace detail
+
 /// P's payload: every field at its offset, reserved bits as ones (spare bits as zeros), a field
 /// not available as its "not available" value; a flag set not available ends the payload at the
-/// byte the word starts in (rounded up). Errors, `field` = the first such row number:
-///   value_too_large   a member holds a raw value (from_raw) its width cannot carry;
+/// byte the word starts in (rounded up). A repeating group's repetitions follow the fixed rows,
+/// and the payload ends after the last one held (the count field is written as held: a count
+/// larger than the repetitions held, up to the capacity, is sent as it is). Errors, `field` = the
+/// first such row number, `column` = the byte the field starts in:
+///   value_too_large   a member holds a raw value (from_raw) its width cannot carry (in a
+///                     group: the group's row, `column` the repetition's field);
 ///   missing_field     a flag set is not available but a field after it is not "not available"
-///                     either (the word can only be left out with everything after it).
+///                     either (the word can only be left out with everything after it);
+///   out_of_range      a group's count field says more repetitions than its capacity (the
+///                     count's row);
+///   too_many_fields   a group holds more repetitions than its count field says (a count that
+///                     is not a value says nothing: not available, out of range, reserved).
 template <pgn_like P>
 [[nodiscard]] constexpr result<encoded_payload<P>> encode(const P& msg) noexcept {
   result<encoded_payload<P>> r;
@@ -827,18 +1205,55 @@ template <pgn_like P>
   std::size_t cut = r.value.length;
   std::uint16_t cut_row = 0;
   unsigned cut_offset = 0;
+  const auto fail = [&](errc e, std::uint16_t row, unsigned at) {
+    if (r.ec != errc::ok) return;
+    r.ec = e;
+    r.field = row;
+    r.column = static_cast<std::uint16_t>(at / 8);
+  };
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (requires { F::sent_as_zero; }) {
       seawire::detail::put_bits<payload_order>(r.value.bytes, offset, F::bits, 0);
+    } else if constexpr (detail::group_row<F>) {
+      const auto& g = msg.*F::member;
+      if (cut_row != 0) {
+        if (!g.empty()) fail(errc::missing_field, cut_row, cut_offset);
+        return;
+      }
+      if constexpr (F::counted) {
+        const auto& count = msg.*F::count;
+        constexpr auto count_row = detail::row_of<P, F::count>();
+        if (count.has_value() && static_cast<std::uint64_t>(count.raw()) > g.capacity) {
+          fail(errc::out_of_range, count_row.first, count_row.second);
+          return;
+        }
+        if (count.has_value() && g.size() > static_cast<std::size_t>(count.raw())) {
+          fail(errc::too_many_fields, n, offset);
+          return;
+        }
+      }
+      using Item = typename F::value_type::item_type;
+      unsigned at = offset;
+      for (const Item& item : g) {
+        Item::n2k_item.for_each([&](const auto& e, unsigned o, std::uint16_t) {
+          using R = std::remove_cvref_t<decltype(e)>;
+          if constexpr (requires { R::sent_as_zero; }) {
+            seawire::detail::put_bits<payload_order>(r.value.bytes, at + o, R::bits, 0);
+          } else if constexpr (!R::is_reserved) {
+            const auto& v = item.*R::member;
+            if (!v.fits()) {
+              fail(errc::value_too_large, n, at + o);
+              return;
+            }
+            detail::encode_field<R>(r.value.bytes, at + o, v);
+          }
+        });
+        at += F::item_bits;
+      }
+      cut = at / 8;
     } else if constexpr (!F::is_reserved) {
       const auto& v = msg.*F::member;
-      const auto fail = [&](errc e, std::uint16_t row, unsigned at) {
-        if (r.ec != errc::ok) return;
-        r.ec = e;
-        r.field = row;
-        r.column = static_cast<std::uint16_t>(at / 8);
-      };
       if (!v.fits()) {
         fail(errc::value_too_large, n, offset);
         return;
@@ -855,10 +1270,7 @@ template <pgn_like P>
           return;
         }
       }
-      const std::uint64_t mask =
-          F::bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << F::bits) - 1;
-      seawire::detail::put_bits<payload_order>(r.value.bytes, offset, F::bits,
-                                               static_cast<std::uint64_t>(v.raw()) & mask);
+      detail::encode_field<F>(r.value.bytes, offset, v);
     }
   });
   r.value.length = cut;

@@ -7,6 +7,7 @@
 // takes a lookup as its number and a flag set as its raw word. The whole schema:
 // tools/decode/README.md and tools/encode/README.md (NMEA 2000).
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -32,8 +33,9 @@ using nmea::json_value;
 struct message_header {
   can_id id;
   std::optional<std::int64_t> time_us;
-  nmea::text<15> interface;  ///< empty when the log has none
-  char direction = 0;        ///< 'R' or 'T' for yd_raw, 0 otherwise
+  nmea::text<15> interface;          ///< empty when the log has none
+  char direction = 0;                ///< 'R' or 'T' for yd_raw, 0 otherwise
+  std::optional<log_format> format;  ///< the log's format (what time_us counts from)
 };
 
 /// The header of the message the log record `r` carries (or completes).
@@ -43,6 +45,7 @@ struct message_header {
   h.time_us = r.time_us;
   h.interface = r.interface;
   if (r.format == log_format::yd_raw) h.direction = r.direction;
+  h.format = r.format;
   return h;
 }
 
@@ -71,17 +74,6 @@ template <class T>
 struct is_flags : std::false_type {};
 template <class E, unsigned B>
 struct is_flags<flags<E, B>> : std::true_type {};
-
-template <class T>
-struct enum_of;
-template <class E, unsigned B>
-struct enum_of<lookup<E, B>> {
-  using type = E;
-};
-template <class E, unsigned B>
-struct enum_of<flags<E, B>> {
-  using type = E;
-};
 
 template <json_sink Sink>
 constexpr void json_int(Sink& s, std::int64_t v) noexcept {
@@ -114,7 +106,7 @@ constexpr bool flag_names(Sink& s, const T& v, char sep) noexcept {
     if (any) s.put(sep);
     any = true;
     quote<Style>(s);
-    const std::string_view n = enum_name<typename enum_of<T>::type>(bit);
+    const std::string_view n = enum_name<value_enum_t<T>>(bit);
     if (n.empty()) {
       s.put("bit_");
       nmea::detail::json_uint(s, bit);
@@ -190,6 +182,40 @@ constexpr void write_json_value(Sink& s, const keyed_reading<L>& v) noexcept {
   }
 }
 
+/// A repeating group as JSON: an array with an object per repetition, its fields by name in wire
+/// order (plain: `[{prn=30, elevation_rad=1.0646}, ...]`, fmt's form).
+template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, class G>
+requires detail::is_group_value<G>
+constexpr void write_json_value(Sink& s, const G& g) noexcept {
+  using Item = typename G::item_type;
+  s.put('[');
+  bool first_item = true;
+  for (const Item& item : g) {
+    if (!first_item) s.put(Style == nmea::json_style::json ? "," : ", ");
+    first_item = false;
+    s.put('{');
+    bool first = true;
+    Item::n2k_item.for_each([&](const auto& f, unsigned, std::uint16_t) {
+      using F = std::remove_cvref_t<decltype(f)>;
+      if constexpr (!F::is_reserved) {
+        if constexpr (Style == nmea::json_style::json) {
+          s.put(first ? "\"" : ",\"");
+          s.put(f.name);
+          s.put("\":");
+        } else {
+          if (!first) s.put(", ");
+          s.put(f.name);
+          s.put('=');
+        }
+        first = false;
+        write_json_value<Style>(s, item.*F::member);
+      }
+    });
+    s.put('}');
+  }
+  s.put(']');
+}
+
 /// `{"type":"PGN<n>"` and the header members, without the closing brace.
 template <json_sink Sink>
 constexpr void write_json_header(Sink& s, const message_header& h) noexcept {
@@ -233,7 +259,27 @@ requires(Info::kind ==
          wire_kind::nmea2000) constexpr void put_csv_value(Sink& s,
                                                            const field_view<Info>& f) noexcept {
   using V = typename Info::value_type;
-  if constexpr (detail::is_flags<V>::value) {
+  if constexpr (detail::is_group_value<V>) {
+    // One cell: the repetitions separated by ';', a repetition's fields by '|' in wire order,
+    // each as its own cell would be (empty when not available).
+    bool first_item = true;
+    for (const auto& item : f.value) {
+      if (!first_item) s.put(';');
+      first_item = false;
+      bool first = true;
+      std::remove_cvref_t<decltype(item)>::n2k_item.for_each(
+          [&](const auto& e, unsigned, std::uint16_t) {
+            using F = std::remove_cvref_t<decltype(e)>;
+            if constexpr (!F::is_reserved) {
+              if (!first) s.put('|');
+              first = false;
+              const auto& v = item.*F::member;
+              if (v.state() != field_state::not_available)
+                write_json_value<nmea::json_style::plain>(s, v);
+            }
+          });
+    }
+  } else if constexpr (detail::is_flags<V>::value) {
     if (f.value.has_value() && !detail::flag_names<nmea::json_style::plain>(s, f.value, ';'))
       s.put("none");
   } else if (f.state != field_state::not_available) {
@@ -350,7 +396,7 @@ template <field_value T, class Lookup>
 [[nodiscard]] constexpr errc read_json_value(const json_value& v, T& out, std::string_view name,
                                              Lookup&& lookup) noexcept {
   if constexpr (detail::is_flags<T>::value) {
-    using E = typename detail::enum_of<T>::type;
+    using E = value_enum_t<T>;
     if (v.kind == json_kind::number) {
       std::int64_t raw = 0;
       if (!detail::parse_plain_uint(v.text, raw) || raw > T::top_raw) return errc::out_of_range;
@@ -435,9 +481,71 @@ template <field_value T, class Lookup>
   }
 }
 
+namespace detail {
+
+/// "<i>" or "<i>.<name>" in `buf`: the key of a group's element i, or of a member of it.
+template <std::size_t N>
+[[nodiscard]] constexpr std::string_view element_key(std::array<char, N>& buf, std::size_t i,
+                                                     std::string_view name) noexcept {
+  std::size_t n = 0;
+  char digits[20] = {};
+  std::size_t k = 0;
+  do {
+    digits[k++] = static_cast<char>('0' + i % 10);
+    i /= 10;
+  } while (i != 0);
+  while (k > 0) buf[n++] = digits[--k];
+  if (!name.empty() && n + 1 + name.size() <= N) {
+    buf[n++] = '.';
+    for (const char c : name) buf[n++] = c;
+  }
+  return {buf.data(), n};
+}
+
+/// Group row F from the JSON array `name`: `lookup(name, "<i>")` gives element i (an object),
+/// `lookup(name, "<i>.<member>")` its members. Absent or null: no repetitions. Errors:
+/// bad_length when the member is not an array of objects, too_many_fields past the capacity, or
+/// a member's error (`column` set to the member's byte in the payload of that many repetitions).
+template <class F, class G, class Lookup>
+[[nodiscard]] constexpr errc read_json_group(G& out, std::string_view name, unsigned offset,
+                                             std::uint16_t& column, Lookup& lookup) noexcept {
+  using Item = typename G::item_type;
+  out.clear();
+  const json_value array = lookup(std::string_view{}, name);
+  if (array.blank()) return errc::ok;
+  if (array.kind != json_kind::other || array.text != "[") return errc::bad_length;
+  std::array<char, 80> buf{};
+  for (std::size_t i = 0;; ++i) {
+    const json_value e = lookup(name, element_key(buf, i, {}));
+    if (e.kind == json_kind::absent) return errc::ok;
+    if (e.kind != json_kind::other || e.text != "{") return errc::bad_length;
+    if (out.full()) return errc::too_many_fields;
+    Item item{};
+    errc ec = errc::ok;
+    Item::n2k_item.for_each([&](const auto& f, unsigned o, std::uint16_t) {
+      using R = std::remove_cvref_t<decltype(f)>;
+      if constexpr (!R::is_reserved) {
+        static_assert(!is_flags<typename R::value_type>::value,
+                      "a group's repetition holds no flag set");
+        if (ec != errc::ok) return;
+        const std::string_view key = element_key(buf, i, f.name);
+        const json_value v = lookup(name, key);
+        ec = read_json_value(v, item.*R::member, key, lookup);
+        if (ec != errc::ok)
+          column = static_cast<std::uint16_t>(
+              (offset + static_cast<unsigned>(i) * F::item_bits + o) / 8);
+      }
+    });
+    if (ec != errc::ok) return ec;
+    (void)out.push_back(item);
+  }
+}
+
+}  // namespace detail
+
 /// A message of PGN struct P from a JSON object: `lookup(object, key)` gives member `key` (object
-/// == "") or element `key` of array member `object`. Errors: `field` = the row of P's table.
-/// Unknown members are not looked at.
+/// == "") or element `key` of array member `object` ("0", "1", ...; a group's element's members
+/// "0.prn", ...). Errors: `field` = the row of P's table. Unknown members are not looked at.
 template <pgn_like P, class Lookup>
 [[nodiscard]] constexpr result<P> read_json(Lookup&& lookup) noexcept {
   result<P> r;
@@ -449,7 +557,16 @@ template <pgn_like P, class Lookup>
   };
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (!F::is_reserved && !keyed_row<F>) {
+    if constexpr (detail::group_row<F>) {
+      if (r.ec != errc::ok) return;
+      std::uint16_t column = static_cast<std::uint16_t>(offset / 8);
+      const errc e = detail::read_json_group<F>(r.value.*F::member, f.name, offset, column, lookup);
+      if (e != errc::ok) {
+        r.ec = e;
+        r.field = n;
+        r.column = column;
+      }
+    } else if constexpr (!F::is_reserved && !keyed_row<F>) {
       if (r.ec != errc::ok) return;
       const json_value v = lookup(std::string_view{}, f.name);
       fail(read_json_value(v, r.value.*F::member, f.name, lookup), n, offset);

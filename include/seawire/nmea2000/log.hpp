@@ -147,6 +147,27 @@ inline constexpr std::string_view format_header_prefix = "# format=";
   return r;
 }
 
+/// canboat's pseudo-PGNs: numbers from 0x40000 (262144) up, past every 18-bit PGN, that a gateway
+/// or one of canboat's converters gives messages of its own that never crossed the bus: canboat
+/// numbers them 0x40000-0x402FF (an Actisense NGT-1's operating mode and counters from 0x40000,
+/// iKonvert's from 0x40100, its own tools' from 0x40200), and logs of its Actisense reader hold
+/// others still (an empty "...,0,16057090,255,1,0"). canboat's loggers write them as canboat
+/// lines among the bus's messages, always whole ("...,0,262386,0,0,33,01,0e,..."), and its
+/// analyzer reads such a line without an error; an Actisense N2K ASCII line could name one of
+/// canboat's range in its five hex digits ("40100"). No CAN identifier carries one, so no candump
+/// or Yacht Devices line can. parse_log_line() reads them (a record no CAN identifier carries:
+/// write_log_line() refuses it, bad_can_id): from a canboat line any number of 32 bits; from an
+/// Actisense line canboat's range only (the format's own PGNs are 18-bit, and no gateway
+/// writes another there). log_reader skips and counts them.
+inline constexpr std::uint32_t first_pseudo_pgn = 0x40000;
+/// The last of the numbers canboat reserves for them.
+inline constexpr std::uint32_t last_canboat_pseudo_pgn = 0x402FF;
+
+/// Whether `pgn` is past every 18-bit PGN: a pseudo-PGN (see first_pseudo_pgn).
+[[nodiscard]] constexpr bool is_pseudo_pgn(std::uint32_t pgn) noexcept {
+  return pgn >= first_pseudo_pgn;
+}
+
 /// One line of a log: a CAN frame, or (canboat FAST, Actisense) a whole fast-packet payload.
 struct log_record {
   log_format format = log_format::candump_log;
@@ -466,14 +487,16 @@ constexpr result<log_record> parse_canboat(std::string_view line) noexcept {
   }
   const std::size_t at = c.pos();
   if (v[0] > 7) return log_fail(r, errc::bad_can_id, 2, at);
-  if (v[1] > max_pgn) return log_fail(r, errc::bad_can_id, 3, at);
+  if (v[1] > 0xFFFFFFFFU) return log_fail(r, errc::bad_can_id, 3, at);  // past 18: pseudo-PGN
   if (v[2] > 255) return log_fail(r, errc::bad_can_id, 4, at);
   if (v[3] > 255) return log_fail(r, errc::bad_can_id, 5, at);
   if (v[4] > max_fast_packet_length) return log_fail(r, errc::bad_length, 6, at);
   r.id.priority = static_cast<std::uint8_t>(v[0]);
   r.id.pgn = static_cast<std::uint32_t>(v[1]);
   r.id.source = static_cast<std::uint8_t>(v[2]);
-  r.id.destination = is_addressed(r.id.pgn) ? static_cast<std::uint8_t>(v[3]) : broadcast_address;
+  r.id.destination = is_addressed(r.id.pgn) || is_pseudo_pgn(r.id.pgn)
+                         ? static_cast<std::uint8_t>(v[3])
+                         : broadcast_address;
   if (!parse_byte_tokens<false>(c, r, max_fast_packet_length))
     return log_fail(r, errc::bad_number, 7, at);
   if (r.size != v[4]) return log_fail(r, errc::bad_length, 7, at);
@@ -550,12 +573,14 @@ constexpr result<log_record> parse_actisense_n2k_ascii(std::string_view line) no
   const std::string_view pgn_text = c.until(" \t");
   if (pgn_text.size() > 5 || !parse_hex(pgn_text, pgn)) return log_fail(r, errc::bad_can_id, 3, at);
   const auto priority = static_cast<std::uint8_t>(address & 0xF);
-  if (priority > 7 || pgn > max_pgn) return log_fail(r, errc::bad_can_id, priority > 7 ? 2 : 3, at);
+  if (priority > 7 || (pgn > max_pgn && pgn > last_canboat_pseudo_pgn))
+    return log_fail(r, errc::bad_can_id, priority > 7 ? 2 : 3, at);
   r.id.priority = priority;
   r.id.pgn = pgn;
   r.id.source = static_cast<std::uint8_t>(address >> 12);
-  r.id.destination =
-      is_addressed(pgn) ? static_cast<std::uint8_t>(address >> 4 & 0xFF) : broadcast_address;
+  r.id.destination = is_addressed(pgn) || is_pseudo_pgn(pgn)
+                         ? static_cast<std::uint8_t>(address >> 4 & 0xFF)
+                         : broadcast_address;
   c.skip_spaces();
   at = c.pos();
   const std::string_view hex = c.until(" \t");

@@ -34,6 +34,9 @@ enum class water_reference : std::uint8_t {
 constexpr std::array<std::string_view, 5> lookup_names(water_reference) noexcept {
   return {"paddle_wheel", "pitot_tube", "doppler", "correlation", "electro_magnetic"};
 }
+constexpr std::array<std::string_view, 5> lookup_titles(water_reference) noexcept {
+  return {"Paddle wheel", "Pitot tube", "Doppler", "Correlation (ultra sound)", "Electro Magnetic"};
+}
 
 /// Where a temperature is measured (130311).
 enum class temperature_source : std::uint8_t {
@@ -72,11 +75,32 @@ constexpr std::array<std::string_view, 16> lookup_names(temperature_source) noex
           "exhaust_gas",
           "shaft_seal"};
 }
+constexpr std::array<std::string_view, 16> lookup_titles(temperature_source) noexcept {
+  return {"Sea Temperature",
+          "Outside Temperature",
+          "Inside Temperature",
+          "Engine Room Temperature",
+          "Main Cabin Temperature",
+          "Live Well Temperature",
+          "Bait Well Temperature",
+          "Refrigeration Temperature",
+          "Heating System Temperature",
+          "Dew Point Temperature",
+          "Apparent Wind Chill Temperature",
+          "Theoretical Wind Chill Temperature",
+          "Heat Index Temperature",
+          "Freezer Temperature",
+          "Exhaust Gas Temperature",
+          "Shaft Seal Temperature"};
+}
 
 /// Where a humidity is measured (130311).
 enum class humidity_source : std::uint8_t { inside = 0, outside = 1 };
 constexpr std::array<std::string_view, 2> lookup_names(humidity_source) noexcept {
   return {"inside", "outside"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(humidity_source) noexcept {
+  return {"Inside", "Outside"};
 }
 
 /// Engine discrete status 1 (127489): bit numbers.
@@ -105,6 +129,13 @@ constexpr std::array<std::string_view, 16> lookup_names(engine_status_1) noexcep
       "water_in_fuel",      "charge_indicator",   "preheat_indicator",        "high_boost_pressure",
       "rev_limit_exceeded", "egr_system",         "throttle_position_sensor", "emergency_stop"};
 }
+constexpr std::array<std::string_view, 16> lookup_titles(engine_status_1) noexcept {
+  return {
+      "Check Engine",       "Over Temperature",   "Low Oil Pressure",         "Low Oil Level",
+      "Low Fuel Pressure",  "Low System Voltage", "Low Coolant Level",        "Water Flow",
+      "Water In Fuel",      "Charge Indicator",   "Preheat Indicator",        "High Boost Pressure",
+      "Rev Limit Exceeded", "EGR System",         "Throttle Position Sensor", "Emergency Stop"};
+}
 
 /// Engine discrete status 2 (127489): bit numbers. Bits 8-15 have no name and are kept as sent.
 enum class engine_status_2 : std::uint8_t {
@@ -122,6 +153,11 @@ constexpr std::array<std::string_view, 8> lookup_names(engine_status_2) noexcept
           "maintenance_needed",    "engine_comm_error",   "sub_or_secondary_throttle",
           "neutral_start_protect", "engine_shutting_down"};
 }
+constexpr std::array<std::string_view, 8> lookup_titles(engine_status_2) noexcept {
+  return {"Warning Level 1",       "Warning Level 2",     "Power Reduction",
+          "Maintenance Needed",    "Engine Comm Error",   "Sub or Secondary Throttle",
+          "Neutral Start Protect", "Engine Shutting Down"};
+}
 
 /// What a heading is measured from (127250). Raw values 2 and 3 are not values: out of range
 /// ("error") and not available.
@@ -131,6 +167,10 @@ enum class heading_reference : std::uint8_t {
 };
 constexpr std::array<std::string_view, 2> lookup_names(heading_reference) noexcept {
   return {"true", "magnetic"};
+}
+/// Raw 2, "error" (out of range), is a value canboat names.
+constexpr std::array<std::string_view, 3> lookup_titles(heading_reference) noexcept {
+  return {"True", "Magnetic", "Error"};
 }
 
 /// Where a magnetic variation comes from (127258): entered by hand, from a chart or table,
@@ -152,6 +192,11 @@ constexpr std::array<std::string_view, 10> lookup_names(variation_source) noexce
           "wmm_2000", "wmm_2005",        "wmm_2010",        "wmm_2015",
           "wmm_2020", "wmm_2025"};
 }
+constexpr std::array<std::string_view, 10> lookup_titles(variation_source) noexcept {
+  return {"Manual",   "Automatic Chart", "Automatic Table", "Automatic Calculation",
+          "WMM 2000", "WMM 2005",        "WMM 2010",        "WMM 2015",
+          "WMM 2020", "WMM 2025"};
+}
 
 /// Which way a rudder is ordered to move (127245).
 enum class rudder_direction : std::uint8_t {
@@ -161,6 +206,9 @@ enum class rudder_direction : std::uint8_t {
 };
 constexpr std::array<std::string_view, 3> lookup_names(rudder_direction) noexcept {
   return {"no_order", "to_starboard", "to_port"};
+}
+constexpr std::array<std::string_view, 3> lookup_titles(rudder_direction) noexcept {
+  return {"No Order", "Move to starboard", "Move to port"};
 }
 
 /// What a wind speed and angle are measured against (130306): true over the ground from north,
@@ -175,6 +223,10 @@ enum class wind_reference : std::uint8_t {
 };
 constexpr std::array<std::string_view, 5> lookup_names(wind_reference) noexcept {
   return {"true_north", "magnetic", "apparent", "true_boat", "true_water"};
+}
+constexpr std::array<std::string_view, 5> lookup_titles(wind_reference) noexcept {
+  return {"True (ground referenced to North)", "Magnetic (ground referenced to Magnetic North)",
+          "Apparent", "True (boat referenced)", "True (water referenced)"};
 }
 
 /// What a pressure is measured in (130314).
@@ -193,6 +245,10 @@ constexpr std::array<std::string_view, 9> lookup_names(pressure_source) noexcept
   return {"atmospheric",       "water", "steam", "compressed_air", "hydraulic", "filter",
           "altimeter_setting", "oil",   "fuel"};
 }
+constexpr std::array<std::string_view, 9> lookup_titles(pressure_source) noexcept {
+  return {"Atmospheric",      "Water", "Steam", "Compressed Air", "Hydraulic", "Filter",
+          "AltimeterSetting", "Oil",   "Fuel"};
+}
 
 /// What a tank holds (127505).
 enum class tank_type : std::uint8_t {
@@ -206,6 +262,9 @@ enum class tank_type : std::uint8_t {
 constexpr std::array<std::string_view, 6> lookup_names(tank_type) noexcept {
   return {"fuel", "water", "gray_water", "live_well", "oil", "black_water"};
 }
+constexpr std::array<std::string_view, 6> lookup_titles(tank_type) noexcept {
+  return {"Fuel", "Water", "Gray water", "Live well", "Oil", "Black water"};
+}
 
 /// The kind of DC source (127506).
 enum class dc_source : std::uint8_t {
@@ -218,6 +277,9 @@ enum class dc_source : std::uint8_t {
 constexpr std::array<std::string_view, 5> lookup_names(dc_source) noexcept {
   return {"battery", "alternator", "converter", "solar_cell", "wind_generator"};
 }
+constexpr std::array<std::string_view, 5> lookup_titles(dc_source) noexcept {
+  return {"Battery", "Alternator", "Convertor", "Solar cell", "Wind generator"};
+}
 
 /// How a navigation value was obtained (129283, 130577).
 enum class residual_mode : std::uint8_t {
@@ -229,6 +291,9 @@ enum class residual_mode : std::uint8_t {
 };
 constexpr std::array<std::string_view, 5> lookup_names(residual_mode) noexcept {
   return {"autonomous", "differential", "estimated", "simulator", "manual"};
+}
+constexpr std::array<std::string_view, 5> lookup_titles(residual_mode) noexcept {
+  return {"Autonomous", "Differential enhanced", "Estimated", "Simulator", "Manual"};
 }
 
 /// A two-bit yes or no (raw 2 is an error, 3 not available).
@@ -255,6 +320,15 @@ constexpr std::array<std::string_view, 6> lookup_names(time_source) noexcept {
           "local_rubidium_clock",
           "local_crystal_clock"};
 }
+constexpr std::array<std::string_view, 6> lookup_titles(time_source) noexcept {
+  return {"GPS",
+          "GLONASS",
+          "Radio Station",
+          "Local Cesium clock",
+          "Local Rubidium clock",
+          "Local Crystal clock"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(yes_no) noexcept { return {"No", "Yes"}; }
 
 /// A GNSS fix mode (129539): one, two or three dimensions, or chosen by the receiver.
 enum class gnss_mode : std::uint8_t {
@@ -266,6 +340,9 @@ enum class gnss_mode : std::uint8_t {
 constexpr std::array<std::string_view, 4> lookup_names(gnss_mode) noexcept {
   return {"1d", "2d", "3d", "auto"};
 }
+constexpr std::array<std::string_view, 4> lookup_titles(gnss_mode) noexcept {
+  return {"1D", "2D", "3D", "Auto"};
+}
 
 /// How a bearing to a waypoint is computed (129284).
 enum class bearing_mode : std::uint8_t {
@@ -274,6 +351,9 @@ enum class bearing_mode : std::uint8_t {
 };
 constexpr std::array<std::string_view, 2> lookup_names(bearing_mode) noexcept {
   return {"great_circle", "rhumb_line"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(bearing_mode) noexcept {
+  return {"Great Circle", "Rhumbline"};
 }
 
 /// An ISO acknowledgement's answer (59392): acknowledged, refused, access denied, or busy.
@@ -286,6 +366,20 @@ enum class iso_control : std::uint8_t {
 constexpr std::array<std::string_view, 4> lookup_names(iso_control) noexcept {
   return {"ack", "nak", "access_denied", "address_busy"};
 }
+constexpr std::array<std::string_view, 4> lookup_titles(iso_control) noexcept {
+  return {"ACK", "NAK", "Access Denied", "Address Busy"};
+}
+/// Which engine an engine PGN is of (127488, 127489), as canboat names the first two instance
+/// numbers. The field stays a number, written as one (an engine past the second has an instance
+/// too): these are only its titles.
+enum class engine_instance : std::uint8_t {
+  single_or_port = 0,  ///< the only engine, or the port one of two
+  starboard = 1,       ///< the starboard one of two
+};
+constexpr std::array<std::string_view, 2> lookup_titles(engine_instance) noexcept {
+  return {"Single Engine or Dual Engine Port", "Dual Engine Starboard"};
+}
+
 // ---------------------------------------------------------------------------------------------
 // the PGNs
 
@@ -315,12 +409,10 @@ struct engine_parameters_rapid {
   static constexpr auto n2k = describe_pgn(
       pgn_info{127488, "engine_parameters_rapid", "Engine Parameters, Rapid Update", 2,
                framing::single_frame, 100},
-      field<&engine_parameters_rapid::instance>("instance", "Engine Instance"),
-      field<&engine_parameters_rapid::speed_rpm>("speed_rpm", "Engine Speed"),
-      field<&engine_parameters_rapid::boost_pressure_pa>("boost_pressure_pa",
-                                                         "Engine Boost Pressure"),
-      field<&engine_parameters_rapid::tilt_trim_pct>("tilt_trim_pct", "Engine Tilt/Trim"),
-      reserved<16>);
+      field<&engine_parameters_rapid::instance, engine_instance>("instance", "Instance"),
+      field<&engine_parameters_rapid::speed_rpm>("speed_rpm", "Speed"),
+      field<&engine_parameters_rapid::boost_pressure_pa>("boost_pressure_pa", "Boost Pressure"),
+      field<&engine_parameters_rapid::tilt_trim_pct>("tilt_trim_pct", "Tilt/Trim"), reserved<16>);
   [[nodiscard]] constexpr bool operator==(const engine_parameters_rapid&) const noexcept = default;
 };
 
@@ -343,27 +435,25 @@ struct engine_parameters_dynamic {
   static constexpr auto n2k = describe_pgn(
       pgn_info{127489, "engine_parameters_dynamic", "Engine Parameters, Dynamic", 2,
                framing::fast_packet, 500},
-      field<&engine_parameters_dynamic::instance>("instance", "Engine Instance"),
-      field<&engine_parameters_dynamic::oil_pressure_pa>("oil_pressure_pa", "Engine Oil Pressure"),
-      field<&engine_parameters_dynamic::oil_temperature_k>("oil_temperature_k",
-                                                           "Engine Oil Temperature"),
-      field<&engine_parameters_dynamic::temperature_k>("temperature_k", "Engine Temperature"),
+      field<&engine_parameters_dynamic::instance, engine_instance>("instance", "Instance"),
+      field<&engine_parameters_dynamic::oil_pressure_pa>("oil_pressure_pa", "Oil pressure"),
+      field<&engine_parameters_dynamic::oil_temperature_k>("oil_temperature_k", "Oil temperature"),
+      field<&engine_parameters_dynamic::temperature_k>("temperature_k", "Temperature"),
       field<&engine_parameters_dynamic::alternator_potential_v>("alternator_potential_v",
                                                                 "Alternator Potential"),
       field<&engine_parameters_dynamic::fuel_rate_lph>("fuel_rate_lph", "Fuel Rate"),
       field<&engine_parameters_dynamic::total_engine_hours_s>("total_engine_hours_s",
-                                                              "Total Engine Hours"),
+                                                              "Total Engine hours"),
       field<&engine_parameters_dynamic::coolant_pressure_pa>("coolant_pressure_pa",
-                                                             "Engine Coolant Pressure"),
+                                                             "Coolant Pressure"),
       field<&engine_parameters_dynamic::fuel_pressure_pa>("fuel_pressure_pa", "Fuel Pressure"),
       reserved<8>,
       field<&engine_parameters_dynamic::discrete_status_1>("discrete_status_1",
-                                                           "Engine Discrete Status 1"),
+                                                           "Discrete Status 1"),
       field<&engine_parameters_dynamic::discrete_status_2>("discrete_status_2",
-                                                           "Engine Discrete Status 2"),
-      field<&engine_parameters_dynamic::engine_load_pct>("engine_load_pct", "Percent Engine Load"),
-      field<&engine_parameters_dynamic::engine_torque_pct>("engine_torque_pct",
-                                                           "Percent Engine Torque"));
+                                                           "Discrete Status 2"),
+      field<&engine_parameters_dynamic::engine_load_pct>("engine_load_pct", "Engine Load"),
+      field<&engine_parameters_dynamic::engine_torque_pct>("engine_torque_pct", "Engine Torque"));
   [[nodiscard]] constexpr bool operator==(const engine_parameters_dynamic&) const noexcept =
       default;
 };
@@ -377,9 +467,8 @@ struct speed_water_referenced {
   unsigned_number<4> speed_direction;  ///< meaning not published; senders leave it at 15
 
   static constexpr auto n2k = describe_pgn(
-      pgn_info{128259, "speed_water_referenced", "Speed, Water Referenced", 2,
-               framing::single_frame, 1000},
-      field<&speed_water_referenced::sid>("sid", "Sequence ID"),
+      pgn_info{128259, "speed_water_referenced", "Speed", 2, framing::single_frame, 1000},
+      field<&speed_water_referenced::sid>("sid", "SID"),
       field<&speed_water_referenced::speed_water_mps>("speed_water_mps", "Speed Water Referenced"),
       field<&speed_water_referenced::speed_ground_mps>("speed_ground_mps",
                                                        "Speed Ground Referenced"),
@@ -397,12 +486,11 @@ struct distance_log {
   unsigned_number<32> log_m;       ///< total cumulative distance
   unsigned_number<32> trip_log_m;  ///< distance since last reset
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{128275, "distance_log", "Distance Log", 6, framing::fast_packet, 1000},
-                   field<&distance_log::date>("date", "Measurement Date"),
-                   field<&distance_log::time>("time", "Measurement Time"),
-                   field<&distance_log::log_m>("log_m", "Total Cumulative Distance"),
-                   field<&distance_log::trip_log_m>("trip_log_m", "Distance Since Last Reset"));
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{128275, "distance_log", "Distance Log", 6, framing::fast_packet, 1000},
+      field<&distance_log::date>("date", "Date"), field<&distance_log::time>("time", "Time"),
+      field<&distance_log::log_m>("log_m", "Log"),
+      field<&distance_log::trip_log_m>("trip_log_m", "Trip Log"));
   [[nodiscard]] constexpr bool operator==(const distance_log&) const noexcept = default;
 };
 
@@ -418,7 +506,7 @@ struct environmental_parameters {
   static constexpr auto n2k = describe_pgn(
       pgn_info{130311, "environmental_parameters", "Environmental Parameters", 5,
                framing::single_frame, 500},
-      field<&environmental_parameters::sid>("sid", "Sequence ID"),
+      field<&environmental_parameters::sid>("sid", "SID"),
       field<&environmental_parameters::temperature_source>("temperature_source",
                                                            "Temperature Source"),
       field<&environmental_parameters::humidity_source>("humidity_source", "Humidity Source"),
@@ -469,7 +557,7 @@ struct vessel_heading {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{127250, "vessel_heading", "Vessel Heading", 2, framing::single_frame, 100},
-      field<&vessel_heading::sid>("sid", "Sequence ID"),
+      field<&vessel_heading::sid>("sid", "SID"),
       field<&vessel_heading::heading_rad>("heading_rad", "Heading"),
       field<&vessel_heading::deviation_rad>("deviation_rad", "Deviation"),
       field<&vessel_heading::variation_rad>("variation_rad", "Variation"),
@@ -485,7 +573,7 @@ struct rate_of_turn {
 
   static constexpr auto n2k =
       describe_pgn(pgn_info{127251, "rate_of_turn", "Rate of Turn", 2, framing::single_frame, 100},
-                   field<&rate_of_turn::sid>("sid", "Sequence ID"),
+                   field<&rate_of_turn::sid>("sid", "SID"),
                    field<&rate_of_turn::rate_radps>("rate_radps", "Rate"), reserved<24>);
   [[nodiscard]] constexpr bool operator==(const rate_of_turn&) const noexcept = default;
 };
@@ -498,11 +586,11 @@ struct attitude {
   signed_number<16, res::radian> pitch_rad;
   signed_number<16, res::radian> roll_rad;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127257, "attitude", "Attitude", 3, framing::single_frame, 1000},
-      field<&attitude::sid>("sid", "Sequence ID"), field<&attitude::yaw_rad>("yaw_rad", "Yaw"),
-      field<&attitude::pitch_rad>("pitch_rad", "Pitch"),
-      field<&attitude::roll_rad>("roll_rad", "Roll"), reserved<8>);
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{127257, "attitude", "Attitude", 3, framing::single_frame, 1000},
+                   field<&attitude::sid>("sid", "SID"), field<&attitude::yaw_rad>("yaw_rad", "Yaw"),
+                   field<&attitude::pitch_rad>("pitch_rad", "Pitch"),
+                   field<&attitude::roll_rad>("roll_rad", "Roll"), reserved<8>);
   [[nodiscard]] constexpr bool operator==(const attitude&) const noexcept = default;
 };
 
@@ -516,9 +604,9 @@ struct magnetic_variation {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{127258, "magnetic_variation", "Magnetic Variation", 7, framing::single_frame, 1000},
-      field<&magnetic_variation::sid>("sid", "Sequence ID"),
+      field<&magnetic_variation::sid>("sid", "SID"),
       field<&magnetic_variation::source>("source", "Source"), reserved<4>,
-      field<&magnetic_variation::age_of_service>("age_of_service", "Age of Service"),
+      field<&magnetic_variation::age_of_service>("age_of_service", "Age of service"),
       field<&magnetic_variation::variation_rad>("variation_rad", "Variation"), reserved<16>);
   [[nodiscard]] constexpr bool operator==(const magnetic_variation&) const noexcept = default;
 };
@@ -532,12 +620,11 @@ struct water_depth {
   signed_number<16, res::thousandth> offset_m;
   unsigned_number<8, res::ten> range_m;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{128267, "water_depth", "Water Depth", 3, framing::single_frame, 1000},
-                   field<&water_depth::sid>("sid", "Sequence ID"),
-                   field<&water_depth::depth_m>("depth_m", "Depth"),
-                   field<&water_depth::offset_m>("offset_m", "Offset"),
-                   field<&water_depth::range_m>("range_m", "Range"));
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{128267, "water_depth", "Water Depth", 3, framing::single_frame, 1000},
+      field<&water_depth::sid>("sid", "SID"), field<&water_depth::depth_m>("depth_m", "Depth"),
+      field<&water_depth::offset_m>("offset_m", "Offset"),
+      field<&water_depth::range_m>("range_m", "Range"));
   [[nodiscard]] constexpr bool operator==(const water_depth&) const noexcept = default;
 };
 
@@ -564,7 +651,7 @@ struct cog_sog_rapid {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{129026, "cog_sog_rapid", "COG & SOG, Rapid Update", 2, framing::single_frame, 250},
-      field<&cog_sog_rapid::sid>("sid", "Sequence ID"),
+      field<&cog_sog_rapid::sid>("sid", "SID"),
       field<&cog_sog_rapid::cog_reference>("cog_reference", "COG Reference"), reserved<6>,
       field<&cog_sog_rapid::cog_rad>("cog_rad", "COG"),
       field<&cog_sog_rapid::sog_mps>("sog_mps", "SOG"), reserved<16>);
@@ -598,7 +685,7 @@ struct wind_data {
 
   static constexpr auto n2k =
       describe_pgn(pgn_info{130306, "wind_data", "Wind Data", 2, framing::single_frame, 100},
-                   field<&wind_data::sid>("sid", "Sequence ID"),
+                   field<&wind_data::sid>("sid", "SID"),
                    field<&wind_data::wind_speed_mps>("wind_speed_mps", "Wind Speed"),
                    field<&wind_data::wind_angle_rad>("wind_angle_rad", "Wind Angle"),
                    field<&wind_data::reference>("reference", "Reference"), reserved<21>);
@@ -616,8 +703,7 @@ struct temperature {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{130312, "temperature", "Temperature", 5, framing::single_frame, 2000},
-      field<&temperature::sid>("sid", "Sequence ID"),
-      field<&temperature::instance>("instance", "Instance"),
+      field<&temperature::sid>("sid", "SID"), field<&temperature::instance>("instance", "Instance"),
       field<&temperature::source>("source", "Source"),
       field<&temperature::actual_temperature_k>("actual_temperature_k", "Actual Temperature"),
       field<&temperature::set_temperature_k>("set_temperature_k", "Set Temperature"), reserved<8>);
@@ -635,8 +721,7 @@ struct humidity {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{130313, "humidity", "Humidity", 5, framing::single_frame, 2000},
-      field<&humidity::sid>("sid", "Sequence ID"),
-      field<&humidity::instance>("instance", "Instance"),
+      field<&humidity::sid>("sid", "SID"), field<&humidity::instance>("instance", "Instance"),
       field<&humidity::source>("source", "Source"),
       field<&humidity::actual_humidity_pct>("actual_humidity_pct", "Actual Humidity"),
       field<&humidity::set_humidity_pct>("set_humidity_pct", "Set Humidity"), reserved<8>);
@@ -653,7 +738,7 @@ struct actual_pressure {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{130314, "actual_pressure", "Actual Pressure", 5, framing::single_frame, 2000},
-      field<&actual_pressure::sid>("sid", "Sequence ID"),
+      field<&actual_pressure::sid>("sid", "SID"),
       field<&actual_pressure::instance>("instance", "Instance"),
       field<&actual_pressure::source>("source", "Source"),
       field<&actual_pressure::pressure_pa>("pressure_pa", "Pressure"), reserved<8>);
@@ -672,7 +757,7 @@ struct temperature_extended {
   static constexpr auto n2k = describe_pgn(
       pgn_info{130316, "temperature_extended", "Temperature Extended Range", 5,
                framing::single_frame, 2000},
-      field<&temperature_extended::sid>("sid", "Sequence ID"),
+      field<&temperature_extended::sid>("sid", "SID"),
       field<&temperature_extended::instance>("instance", "Instance"),
       field<&temperature_extended::source>("source", "Source"),
       field<&temperature_extended::temperature_k>("temperature_k", "Temperature"),
@@ -695,7 +780,7 @@ struct battery_status {
       field<&battery_status::voltage_v>("voltage_v", "Voltage"),
       field<&battery_status::current_a>("current_a", "Current"),
       field<&battery_status::temperature_k>("temperature_k", "Temperature"),
-      field<&battery_status::sid>("sid", "Sequence ID"));
+      field<&battery_status::sid>("sid", "SID"));
   [[nodiscard]] constexpr bool operator==(const battery_status&) const noexcept = default;
 };
 
@@ -731,7 +816,7 @@ struct dc_detailed_status {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{127506, "dc_detailed_status", "DC Detailed Status", 6, framing::fast_packet, 1500},
-      field<&dc_detailed_status::sid>("sid", "Sequence ID"),
+      field<&dc_detailed_status::sid>("sid", "SID"),
       field<&dc_detailed_status::instance>("instance", "Instance"),
       field<&dc_detailed_status::dc_type>("dc_type", "DC Type"),
       field<&dc_detailed_status::state_of_charge_pct>("state_of_charge_pct", "State of Charge"),
@@ -739,7 +824,7 @@ struct dc_detailed_status {
       field<&dc_detailed_status::time_remaining_s>("time_remaining_s", "Time Remaining"),
       field<&dc_detailed_status::ripple_voltage_v>("ripple_voltage_v", "Ripple Voltage"),
       field<&dc_detailed_status::remaining_capacity_ah>("remaining_capacity_ah",
-                                                        "Remaining Capacity"));
+                                                        "Remaining capacity"));
   [[nodiscard]] constexpr bool operator==(const dc_detailed_status&) const noexcept = default;
 };
 
@@ -754,8 +839,8 @@ struct cross_track_error {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{129283, "cross_track_error", "Cross Track Error", 3, framing::single_frame, 1000},
-      field<&cross_track_error::sid>("sid", "Sequence ID"),
-      field<&cross_track_error::xte_mode>("xte_mode", "XTE Mode"), reserved<2>,
+      field<&cross_track_error::sid>("sid", "SID"),
+      field<&cross_track_error::xte_mode>("xte_mode", "XTE mode"), reserved<2>,
       field<&cross_track_error::navigation_terminated>("navigation_terminated",
                                                        "Navigation Terminated"),
       field<&cross_track_error::xte_m>("xte_m", "XTE"), reserved<16>);
@@ -772,9 +857,9 @@ struct system_time {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{126992, "system_time", "System Time", 3, framing::single_frame, 1000},
-      field<&system_time::sid>("sid", "Sequence ID"),
-      field<&system_time::source>("source", "Source"), reserved<4>,
-      field<&system_time::date>("date", "Date"), field<&system_time::time>("time", "Time"));
+      field<&system_time::sid>("sid", "SID"), field<&system_time::source>("source", "Source"),
+      reserved<4>, field<&system_time::date>("date", "Date"),
+      field<&system_time::time>("time", "Time"));
   [[nodiscard]] constexpr bool operator==(const system_time&) const noexcept = default;
 };
 
@@ -804,7 +889,7 @@ struct gnss_dops {
 
   static constexpr auto n2k =
       describe_pgn(pgn_info{129539, "gnss_dops", "GNSS DOPs", 6, framing::single_frame, 1000},
-                   field<&gnss_dops::sid>("sid", "Sequence ID"),
+                   field<&gnss_dops::sid>("sid", "SID"),
                    field<&gnss_dops::desired_mode>("desired_mode", "Desired Mode"),
                    field<&gnss_dops::actual_mode>("actual_mode", "Actual Mode"), reserved<2>,
                    field<&gnss_dops::hdop>("hdop", "HDOP"), field<&gnss_dops::vdop>("vdop", "VDOP"),
@@ -834,11 +919,11 @@ struct navigation_data {
 
   static constexpr auto n2k = describe_pgn(
       pgn_info{129284, "navigation_data", "Navigation Data", 3, framing::fast_packet, 1000},
-      field<&navigation_data::sid>("sid", "Sequence ID"),
+      field<&navigation_data::sid>("sid", "SID"),
       field<&navigation_data::distance_to_waypoint_m>("distance_to_waypoint_m",
                                                       "Distance to Waypoint"),
       field<&navigation_data::course_bearing_reference>("course_bearing_reference",
-                                                        "Course/Bearing Reference"),
+                                                        "Course/Bearing reference"),
       field<&navigation_data::perpendicular_crossed>("perpendicular_crossed",
                                                      "Perpendicular Crossed"),
       field<&navigation_data::arrival_circle_entered>("arrival_circle_entered",
@@ -880,8 +965,7 @@ struct direction_data {
       pgn_info{130577, "direction_data", "Direction Data", 3, framing::fast_packet, 1000},
       field<&direction_data::data_mode>("data_mode", "Data Mode"),
       field<&direction_data::cog_reference>("cog_reference", "COG Reference"), reserved<2>,
-      field<&direction_data::sid>("sid", "Sequence ID"),
-      field<&direction_data::cog_rad>("cog_rad", "COG"),
+      field<&direction_data::sid>("sid", "SID"), field<&direction_data::cog_rad>("cog_rad", "COG"),
       field<&direction_data::sog_mps>("sog_mps", "SOG"),
       field<&direction_data::heading_rad>("heading_rad", "Heading"),
       field<&direction_data::speed_water_mps>("speed_water_mps", "Speed through Water"),
@@ -1415,7 +1499,7 @@ struct transmission_parameters_dynamic {
   static constexpr auto n2k = describe_pgn(
       pgn_info{127493, "transmission_parameters_dynamic", "Transmission Parameters, Dynamic", 2,
                framing::single_frame, 100},
-      field<&transmission_parameters_dynamic::instance>("instance", "Instance"),
+      field<&transmission_parameters_dynamic::instance, engine_instance>("instance", "Instance"),
       field<&transmission_parameters_dynamic::transmission_gear>("transmission_gear",
                                                                  "Transmission Gear"),
       reserved<6>,
@@ -1457,7 +1541,7 @@ struct ais_class_a_position {
                framing::fast_packet, 0},
       field<&ais_class_a_position::message_id>("message_id", "Message ID"),
       field<&ais_class_a_position::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      field<&ais_class_a_position::user_id>("user_id", "User ID"),
+      field<&ais_class_a_position::user_id, raw_display::identifier>("user_id", "User ID"),
       field<&ais_class_a_position::longitude_deg>("longitude_deg", "Longitude"),
       field<&ais_class_a_position::latitude_deg>("latitude_deg", "Latitude"),
       field<&ais_class_a_position::position_accuracy>("position_accuracy", "Position Accuracy"),
@@ -1465,8 +1549,8 @@ struct ais_class_a_position {
       field<&ais_class_a_position::time_stamp>("time_stamp", "Time Stamp"),
       field<&ais_class_a_position::cog_rad>("cog_rad", "COG"),
       field<&ais_class_a_position::sog_mps>("sog_mps", "SOG"),
-      field<&ais_class_a_position::communication_state>("communication_state",
-                                                        "Communication State"),
+      field<&ais_class_a_position::communication_state, raw_display::bits>("communication_state",
+                                                                           "Communication State"),
       field<&ais_class_a_position::transceiver_information>("transceiver_information",
                                                             "AIS Transceiver information"),
       field<&ais_class_a_position::heading_rad>("heading_rad", "Heading"),
@@ -1509,7 +1593,7 @@ struct ais_class_b_position {
                framing::fast_packet, 0},
       field<&ais_class_b_position::message_id>("message_id", "Message ID"),
       field<&ais_class_b_position::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      field<&ais_class_b_position::user_id>("user_id", "User ID"),
+      field<&ais_class_b_position::user_id, raw_display::identifier>("user_id", "User ID"),
       field<&ais_class_b_position::longitude_deg>("longitude_deg", "Longitude"),
       field<&ais_class_b_position::latitude_deg>("latitude_deg", "Latitude"),
       field<&ais_class_b_position::position_accuracy>("position_accuracy", "Position Accuracy"),
@@ -1517,11 +1601,13 @@ struct ais_class_b_position {
       field<&ais_class_b_position::time_stamp>("time_stamp", "Time Stamp"),
       field<&ais_class_b_position::cog_rad>("cog_rad", "COG"),
       field<&ais_class_b_position::sog_mps>("sog_mps", "SOG"),
-      field<&ais_class_b_position::communication_state>("communication_state",
-                                                        "Communication State"),
+      field<&ais_class_b_position::communication_state, raw_display::bits>("communication_state",
+                                                                           "Communication State"),
       field<&ais_class_b_position::transceiver_information>("transceiver_information",
                                                             "AIS Transceiver information"),
-      field<&ais_class_b_position::heading_rad>("heading_rad", "Heading"), spare<10>,
+      field<&ais_class_b_position::heading_rad>("heading_rad", "Heading"),
+      spare_bits<8>{"regional_application", "Regional Application"},
+      spare_bits<2>{"regional_application_b", "Regional Application B"},
       field<&ais_class_b_position::unit_type>("unit_type", "Unit type"),
       field<&ais_class_b_position::integrated_display>("integrated_display", "Integrated Display"),
       field<&ais_class_b_position::dsc>("dsc", "DSC"),
@@ -1532,6 +1618,225 @@ struct ais_class_b_position {
                                                             "AIS communication state"),
       reserved<7>, field<&ais_class_b_position::sid>("sid", "Sequence ID"));
   [[nodiscard]] constexpr bool operator==(const ais_class_b_position&) const noexcept = default;
+};
+
+// ---------------------------------------------------------------------------------------------
+// ---- groups: PGNs with a repeating field group or 64-bit fields ----
+
+/// What a PGN list (126464) lists.
+enum class pgn_list_function : std::uint8_t { transmit = 0, receive = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(pgn_list_function) noexcept {
+  return {"transmit", "receive"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(pgn_list_function) noexcept {
+  return {"Transmit PGN list", "Receive PGN list"};
+}
+
+/// How range residuals relate to the position (129540).
+enum class range_residual_mode : std::uint8_t { used = 0, calculated_after = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(range_residual_mode) noexcept {
+  return {"used", "calculated_after"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(range_residual_mode) noexcept {
+  return {"Range residuals were used to calculate data",
+          "Range residuals were calculated after the position"};
+}
+
+/// A satellite's part in the fix (129540).
+enum class satellite_status : std::uint8_t {
+  not_tracked = 0,
+  tracked = 1,
+  used = 2,
+  not_tracked_diff = 3,
+  tracked_diff = 4,
+  used_diff = 5,
+};
+constexpr std::array<std::string_view, 6> lookup_names(satellite_status) noexcept {
+  return {"not_tracked", "tracked", "used", "not_tracked_diff", "tracked_diff", "used_diff"};
+}
+constexpr std::array<std::string_view, 6> lookup_titles(satellite_status) noexcept {
+  return {"Not tracked", "Tracked", "Used", "Not tracked+Diff", "Tracked+Diff", "Used+Diff"};
+}
+
+/// The constellation a satellite belongs to (129540).
+enum class gnss_system : std::uint8_t { gps = 0, glonass = 1, galileo = 2, beidou = 3, qzss = 4 };
+constexpr std::array<std::string_view, 5> lookup_names(gnss_system) noexcept {
+  return {"gps", "glonass", "galileo", "beidou", "qzss"};
+}
+constexpr std::array<std::string_view, 5> lookup_titles(gnss_system) noexcept {
+  return {"GPS", "GLONASS", "Galileo", "BeiDou", "QZSS"};
+}
+
+/// The kind of GNSS receiver or reference station (129029).
+enum class gnss_type : std::uint8_t {
+  gps = 0,
+  glonass = 1,
+  gps_glonass = 2,
+  gps_sbas = 3,
+  gps_sbas_glonass = 4,
+  chayka = 5,
+  integrated = 6,
+  surveyed = 7,
+  galileo = 8,
+};
+constexpr std::array<std::string_view, 9> lookup_names(gnss_type) noexcept {
+  return {"gps",    "glonass",    "gps_glonass", "gps_sbas", "gps_sbas_glonass",
+          "chayka", "integrated", "surveyed",    "galileo"};
+}
+constexpr std::array<std::string_view, 9> lookup_titles(gnss_type) noexcept {
+  return {"GPS",    "GLONASS",    "GPS+GLONASS", "GPS+SBAS/WAAS", "GPS+SBAS/WAAS+GLONASS",
+          "Chayka", "integrated", "surveyed",    "Galileo"};
+}
+
+/// How a position was fixed (129029).
+enum class gnss_method : std::uint8_t {
+  no_gnss = 0,
+  gnss_fix = 1,
+  dgnss_fix = 2,
+  precise_gnss = 3,
+  rtk_fixed = 4,
+  rtk_float = 5,
+  estimated = 6,
+  manual = 7,
+  simulated = 8,
+};
+constexpr std::array<std::string_view, 9> lookup_names(gnss_method) noexcept {
+  return {"no_gnss",   "gnss_fix",  "dgnss_fix", "precise_gnss", "rtk_fixed",
+          "rtk_float", "estimated", "manual",    "simulated"};
+}
+constexpr std::array<std::string_view, 9> lookup_titles(gnss_method) noexcept {
+  return {"no GNSS",           "GNSS fix",  "DGNSS fix",           "Precise GNSS",
+          "RTK Fixed Integer", "RTK float", "Estimated (DR) mode", "Manual Input",
+          "Simulate mode"};
+}
+
+/// The receiver's integrity check of the position (129029). A 2-bit lookup: raw 2 and 3 (which
+/// canboat names Caution and Unsafe) are the field's sentinels here, as for every 2-bit lookup.
+enum class gnss_integrity : std::uint8_t { none = 0, safe = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(gnss_integrity) noexcept {
+  return {"none", "safe"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(gnss_integrity) noexcept {
+  return {"No integrity checking", "Safe"};
+}
+
+/// PGN 126464 PGN List (Transmit and Receive): fast packet, priority 6, on demand. The PGNs a
+/// device sends or receives: a function code, then 24-bit PGNs to the end of the payload (no
+/// count field), at most 74. An addressed (PDU1) PGN.
+struct pgn_list_message {
+  /// One PGN of the list.
+  struct entry {
+    unsigned_number<24> pgn;
+
+    static constexpr auto n2k_item = describe_item(field<&entry::pgn>("pgn", "PGN"));
+    [[nodiscard]] constexpr bool operator==(const entry&) const noexcept = default;
+  };
+
+  lookup<nmea2000::pgn_list_function, 8> function_code;
+  group<entry, group_capacity<entry>(1)> pgns;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{126464, "pgn_list_message", "PGN List (Transmit and Receive)", 6,
+                            framing::fast_packet, 0},
+                   field<&pgn_list_message::function_code>("function_code", "Function Code"),
+                   repeating_to_end<&pgn_list_message::pgns>("pgns", "PGN"));
+  [[nodiscard]] constexpr bool operator==(const pgn_list_message&) const noexcept = default;
+};
+
+/// PGN 129540 GNSS Sats in View: fast packet, priority 6, 1 Hz. The satellites a receiver sees:
+/// a count, then 12 bytes per satellite (at most 18).
+struct gnss_sats_in_view {
+  /// One satellite.
+  struct satellite {
+    unsigned_number<8> prn;
+    signed_number<16, res::radian> elevation_rad;
+    unsigned_number<16, res::radian> azimuth_rad;
+    signed_number<16, res::hundredth> snr_db;
+    signed_number<32, resolution{1, -5}> range_residuals_m;
+    lookup<nmea2000::satellite_status, 4> status;
+    lookup<nmea2000::gnss_system, 4> gnss_system;
+
+    static constexpr auto n2k_item =
+        describe_item(field<&satellite::prn>("prn", "PRN"),
+                      field<&satellite::elevation_rad>("elevation_rad", "Elevation"),
+                      field<&satellite::azimuth_rad>("azimuth_rad", "Azimuth"),
+                      field<&satellite::snr_db>("snr_db", "SNR"),
+                      field<&satellite::range_residuals_m>("range_residuals_m", "Range residuals"),
+                      field<&satellite::status>("status", "Status"),
+                      field<&satellite::gnss_system>("gnss_system", "GNSS System"));
+    [[nodiscard]] constexpr bool operator==(const satellite&) const noexcept = default;
+  };
+
+  unsigned_number<8> sid;
+  lookup<nmea2000::range_residual_mode, 2> range_residual_mode;
+  unsigned_number<8> sats_in_view;
+  group<satellite, group_capacity<satellite>(3)> satellites;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129540, "gnss_sats_in_view", "GNSS Sats in View", 6, framing::fast_packet, 1000},
+      field<&gnss_sats_in_view::sid>("sid", "SID"),
+      field<&gnss_sats_in_view::range_residual_mode>("range_residual_mode", "Range Residual Mode"),
+      reserved<6>, field<&gnss_sats_in_view::sats_in_view>("sats_in_view", "Sats in View"),
+      repeating<&gnss_sats_in_view::satellites, &gnss_sats_in_view::sats_in_view>("satellites",
+                                                                                  "Satellites"));
+  [[nodiscard]] constexpr bool operator==(const gnss_sats_in_view&) const noexcept = default;
+};
+
+/// PGN 129029 GNSS Position Data: fast packet, priority 3, 1 Hz. A fix: date and time (UTC),
+/// latitude and longitude (signed 64-bit, 1e-16 degree), altitude (signed 64-bit, 1e-6 m), how
+/// it was fixed, DOPs, geoidal separation, then the reference stations used (a count, then 4
+/// bytes each, at most 45).
+struct gnss_position_data {
+  /// One reference station.
+  struct reference_station {
+    lookup<nmea2000::gnss_type, 4> station_type;
+    unsigned_number<12> station_id;
+    unsigned_number<16, res::hundredth> age_of_corrections_s;
+
+    static constexpr auto n2k_item = describe_item(
+        field<&reference_station::station_type>("station_type", "Reference Station Type"),
+        field<&reference_station::station_id>("station_id", "Reference Station ID"),
+        field<&reference_station::age_of_corrections_s>("age_of_corrections_s",
+                                                        "Age of DGNSS Corrections"));
+    [[nodiscard]] constexpr bool operator==(const reference_station&) const noexcept = default;
+  };
+
+  unsigned_number<8> sid;
+  nmea2000::day_count date;
+  nmea2000::time_since_midnight time;
+  signed_number<64, resolution{1, -16}> latitude_deg;
+  signed_number<64, resolution{1, -16}> longitude_deg;
+  signed_number<64, resolution{1, -6}> altitude_m;
+  lookup<nmea2000::gnss_type, 4> gnss_type;
+  lookup<nmea2000::gnss_method, 4> method;
+  lookup<nmea2000::gnss_integrity, 2> integrity;
+  unsigned_number<8> number_of_svs;
+  signed_number<16, res::hundredth> hdop;
+  signed_number<16, res::hundredth> pdop;
+  signed_number<32, res::hundredth> geoidal_separation_m;
+  unsigned_number<8> reference_stations;
+  group<reference_station, group_capacity<reference_station>(43)> stations;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129029, "gnss_position_data", "GNSS Position Data", 3, framing::fast_packet, 1000},
+      field<&gnss_position_data::sid>("sid", "SID"),
+      field<&gnss_position_data::date>("date", "Date"),
+      field<&gnss_position_data::time>("time", "Time"),
+      field<&gnss_position_data::latitude_deg>("latitude_deg", "Latitude"),
+      field<&gnss_position_data::longitude_deg>("longitude_deg", "Longitude"),
+      field<&gnss_position_data::altitude_m>("altitude_m", "Altitude"),
+      field<&gnss_position_data::gnss_type>("gnss_type", "GNSS type"),
+      field<&gnss_position_data::method>("method", "Method"),
+      field<&gnss_position_data::integrity>("integrity", "Integrity"), reserved<6>,
+      field<&gnss_position_data::number_of_svs>("number_of_svs", "Number of SVs"),
+      field<&gnss_position_data::hdop>("hdop", "HDOP"),
+      field<&gnss_position_data::pdop>("pdop", "PDOP"),
+      field<&gnss_position_data::geoidal_separation_m>("geoidal_separation_m",
+                                                       "Geoidal Separation"),
+      field<&gnss_position_data::reference_stations>("reference_stations", "Reference Stations"),
+      repeating<&gnss_position_data::stations, &gnss_position_data::reference_stations>(
+          "stations", "Reference Station"));
+  [[nodiscard]] constexpr bool operator==(const gnss_position_data&) const noexcept = default;
 };
 
 // ---------------------------------------------------------------------------------------------

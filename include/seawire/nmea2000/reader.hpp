@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// From CAN log lines to NMEA 2000 messages: each line parsed (log.hpp), fast-packet PGNs (those
-// of `Pgns`) assembled, every complete message handed to a callback with its header and payload;
-// canboat `# format=` headers followed, else canboat's own FAST detection (docs/nmea2000.md).
-// Fixed memory: the assembler's slots and one parsed line.
+// From CAN log lines to NMEA 2000 messages: each line parsed (log.hpp), fast-packet PGNs
+// assembled, every complete message handed to a callback with its header and payload; canboat
+// `# format=` headers followed, else canboat's own FAST detection (docs/nmea2000.md). A PGN's
+// framing is the one `Pgns` declares for it, else the standard's (is_fast_packet_pgn,
+// fast_packets.hpp), so a PGN without a description comes whole too. Lines of canboat's
+// pseudo-PGNs (a gateway's own messages, log.hpp) are skipped and counted. Fixed memory: the
+// assembler's slots and one parsed line.
 
 #include <cstddef>
 #include <cstdint>
@@ -13,6 +16,7 @@
 
 #include "seawire/error.hpp"
 #include "seawire/nmea2000/fast_packet.hpp"
+#include "seawire/nmea2000/fast_packets.hpp"
 #include "seawire/nmea2000/json.hpp"
 #include "seawire/nmea2000/log.hpp"
 #include "seawire/nmea2000/pgns.hpp"
@@ -28,7 +32,9 @@ class log_reader {
   /// for a blank line or a comment, or the error and the token (`field`,
   /// log_field_name(value, field)) and byte column; value = the line's format. A header naming a
   /// format seawire does not read is unknown_log_format (the format in force is kept); a line
-  /// of more than 8 bytes in a PLAIN log is bad_length (field 6, the length).
+  /// of more than 8 bytes in a PLAIN log is bad_length (field 6, the length). A line of a
+  /// pseudo-PGN is ok, fn not called: it is counted (pseudo_pgn_lines()) and says nothing of how
+  /// the log's canboat lines are written (a gateway writes its own messages whole in any log).
   template <class Fn>
   constexpr result<log_format> read_line(std::string_view line, Fn&& fn,
                                          std::optional<log_format> format = std::nullopt) {
@@ -48,6 +54,10 @@ class log_reader {
     result<log_format> r{record_.value.format, record_.ec, record_.field, record_.column};
     if (!record_) return r;
     log_record& rec = record_.value;
+    if (is_pseudo_pgn(rec.id.pgn)) {
+      ++pseudo_pgn_lines_;
+      return r;
+    }
     if (rec.format == log_format::canboat) {
       if (!canboat_) canboat_ = rec.size > 8 ? canboat_format::fast : canboat_format::plain_or_fast;
       if (*canboat_ == canboat_format::plain_or_fast && rec.size > 8)
@@ -64,8 +74,7 @@ class log_reader {
       rec.assembled =
           *canboat_ == canboat_format::fast || (*canboat_ != canboat_format::plain && rec.size > 8);
     }
-    const auto info = Pgns::info(rec.id.pgn);
-    if (!rec.assembled && info && info->transport == framing::fast_packet) {
+    if (!rec.assembled && is_fast(rec.id.pgn)) {
       const auto done = assembler_.feed(rec.id, rec.data());
       if (done) {
         message_header h = header_of(rec);
@@ -90,6 +99,18 @@ class log_reader {
     return canboat_;
   }
 
+  /// Lines of canboat's pseudo-PGNs skipped so far.
+  [[nodiscard]] constexpr std::uint64_t pseudo_pgn_lines() const noexcept {
+    return pseudo_pgn_lines_;
+  }
+
+  /// Whether frames of `pgn` are assembled: as `Pgns` declares the PGN, else as the standard
+  /// lists it (is_fast_packet_pgn).
+  [[nodiscard]] static constexpr bool is_fast(std::uint32_t pgn) noexcept {
+    const auto info = Pgns::info(pgn);
+    return info ? info->transport == framing::fast_packet : is_fast_packet_pgn(pgn);
+  }
+
   /// Drops unfinished fast packets (at the end of a log; counted as missing_frame).
   constexpr void flush() noexcept { assembler_.flush(); }
   [[nodiscard]] constexpr const fast_packet_assembler<Slots>& assembler() const noexcept {
@@ -101,6 +122,7 @@ class log_reader {
   fast_packet_assembler<Slots> assembler_;
   std::optional<log_format> fixed_;        ///< the format the log's header fixed
   std::optional<canboat_format> canboat_;  ///< how canboat lines are read
+  std::uint64_t pseudo_pgn_lines_ = 0;
 };
 
 }  // namespace seawire::nmea2000

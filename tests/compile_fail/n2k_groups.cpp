@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSL-1.0
+// NMEA 2000 declarations a number or a repeating group cannot hold exactly must not compile.
+// Each ctest case compiles this file with one CASE defined and expects the declaration's message;
+// CASE ok must compile (so a failure is the declaration's, not a broken file).
+#include <cstdint>
+
+#include "seawire/nmea2000/field.hpp"
+
+namespace n2k = seawire::nmea2000;
+
+struct item {
+  n2k::unsigned_number<16> value;
+  static constexpr auto n2k_item = n2k::describe_item(n2k::field<&item::value>("value", "Value"));
+  constexpr bool operator==(const item&) const noexcept = default;
+};
+
+#if defined(CASE_ok)
+n2k::signed_number<64, n2k::resolution{1, -16}> wide;
+n2k::unsigned_number<63> widest_unsigned;
+struct msg {
+  n2k::unsigned_number<8> count;
+  n2k::group<item, n2k::group_capacity<item>(1)> items;
+  static constexpr auto n2k =
+      n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&msg::count>("count", "Count"),
+                        n2k::repeating<&msg::items, &msg::count>("items", "Items"));
+};
+const auto ok_length = n2k::description_of<msg>::length;
+#elif defined(CASE_unsigned_64)
+n2k::unsigned_number<64> too_wide;
+#elif defined(CASE_scale_overflow)
+n2k::signed_number<64, n2k::resolution{25, -2}> too_fine;
+#elif defined(CASE_wrong_capacity)
+struct msg {
+  n2k::unsigned_number<8> count;
+  n2k::group<item, 200> items;
+  static constexpr auto n2k =
+      n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&msg::count>("count", "Count"),
+                        n2k::repeating<&msg::items, &msg::count>("items", "Items"));
+};
+const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_group_not_last)
+struct msg {
+  n2k::unsigned_number<8> count;
+  n2k::group<item, n2k::group_capacity<item>(1)> items;
+  n2k::unsigned_number<8> after;
+  static constexpr auto n2k =
+      n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&msg::count>("count", "Count"),
+                        n2k::repeating<&msg::items, &msg::count>("items", "Items"),
+                        n2k::field<&msg::after>("after", "After"));
+};
+const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_signed_count)
+struct msg {
+  n2k::signed_number<8> count;
+  n2k::group<item, n2k::group_capacity<item>(1)> items;
+  static constexpr auto n2k =
+      n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&msg::count>("count", "Count"),
+                        n2k::repeating<&msg::items, &msg::count>("items", "Items"));
+};
+#endif
