@@ -294,6 +294,29 @@ M generate(prng& g) {
   return m;
 }
 
+/// A byte of a string as senders send them: one time in four a byte the text ends at or is
+/// padded with (0x00, 0xFF, '@', a space), otherwise any byte.
+inline std::uint8_t text_byte(prng& g) {
+  constexpr std::uint8_t special[] = {0x00, 0xFF, '@', ' '};
+  return g.below(4) == 0 ? special[g.below(4)] : static_cast<std::uint8_t>(g.below(256));
+}
+
+/// A string field's bytes as sent: a fixed string's every byte; a counted string's encoding byte
+/// (ASCII, UTF-16 or another) and up to 70 bytes (three fit a fast packet).
+template <seawire::nmea2000::text_value V>
+V generate_text(prng& g) {
+  std::array<std::uint8_t, V::capacity> b{};
+  if constexpr (V::variable) {
+    const std::size_t n = g.below(std::min<std::size_t>(V::capacity, 70) + 1);
+    for (std::size_t i = 0; i < n; ++i) b[i] = text_byte(g);
+    const auto control = static_cast<std::uint8_t>(g.chance(10) ? g.below(256) : g.below(2));
+    return V::from_bytes(control, std::span<const std::uint8_t>(b.data(), n)).value;
+  } else {
+    for (auto& c : b) c = text_byte(g);
+    return V::from_bytes(b);
+  }
+}
+
 /// A PGN message with a raw value in every field, drawn from what the field's width holds (the
 /// not-available and out-of-range sentinels included: senders send them); reserved bits are not
 /// members.
@@ -313,15 +336,17 @@ void generate_field(prng& g, T& out) {
 
 /// A PGN message with a raw value in every field, drawn from what the field's width holds (the
 /// not-available and out-of-range sentinels included: senders send them); reserved bits are not
-/// members. A repeating group gets 0 to its capacity repetitions (a full one 8 times in 100), its
-/// count field that many, or sometimes more up to the capacity (a sender's count the payload
-/// did not hold in full), or a sentinel (which says nothing).
+/// members. A string: generate_text. A repeating group gets 0 to its capacity repetitions (a full
+/// one 8 times in 100), its count field that many, or sometimes more up to the capacity (a sender's
+/// count the payload did not hold in full), or a sentinel (which says nothing).
 template <seawire::nmea2000::pgn_like P>
 P generate(prng& g) {
   P m{};
   P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (seawire::nmea2000::detail::group_row<F>) {
+    if constexpr (seawire::nmea2000::detail::row_is_text<F>()) {
+      m.*F::member = generate_text<typename F::value_type>(g);
+    } else if constexpr (seawire::nmea2000::detail::group_row<F>) {
       using G = typename F::value_type;
       using Item = typename G::item_type;
       auto& group = m.*F::member;

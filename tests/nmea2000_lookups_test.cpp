@@ -13,6 +13,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "seawire/nmea/json.hpp"
@@ -606,8 +607,8 @@ TEST_CASE("129038 and 129039 AIS position reports: named top values, spare bits"
                                        0x5C, 0x3A, 0x69, 0x1F, 0xD3, 0x27, 0x49, 0xA9, 0x00,
                                        0x30, 0xF5, 0xA1, 0x51, 0x5C, 0x91, 0x1C, 0x00, 0xFE};
   const auto m = decode_bytes<n2k::ais_class_a_position>(a);
-  CHECK(m.message_id == n2k::ais_message_id::scheduled_class_a_position);
-  CHECK(m.repeat_indicator == n2k::repeat_indicator::initial);
+  CHECK(m.message_id == n2k::ais_message_id::scheduled_class_a_position_report);
+  CHECK(m.repeat_indicator == n2k::ais_repeat_indicator::initial);
   CHECK(m.user_id.raw() == 244710102);
   CHECK(m.longitude_deg.raw() == 52917916);
   CHECK(m.latitude_deg.raw() == 526989916);
@@ -634,7 +635,7 @@ TEST_CASE("129038 and 129039 AIS position reports: named top values, spare bits"
   // the named top values of a 6-bit time stamp and a 2-bit repeat indicator are values
   auto t = m;
   t.time_stamp = decltype(t.time_stamp)::from_raw(63);
-  t.repeat_indicator = n2k::repeat_indicator::final_retransmission;
+  t.repeat_indicator = n2k::ais_repeat_indicator::final_retransmission;
   t.nav_status = decltype(t.nav_status)::from_raw(14);
   t.special_maneuver = n2k::ais_special_maneuver::reserved_3;
   const std::string j = pgn_json(t);
@@ -651,7 +652,7 @@ TEST_CASE("129038 and 129039 AIS position reports: named top values, spare bits"
                                        0x19, 0xE0, 0x52, 0x1F, 0x98, 0x00, 0x00, 0x00, 0x00,
                                        0x06, 0x00, 0x26, 0xFF, 0xFF, 0x00, 0xF4, 0xFF};
   const auto c = decode_bytes<n2k::ais_class_b_position>(b);
-  CHECK(c.message_id == n2k::ais_message_id::class_b_position);
+  CHECK(c.message_id == n2k::ais_message_id::standard_class_b_position_report);
   CHECK(c.user_id.raw() == 244010225);
   CHECK(c.position_accuracy == n2k::position_accuracy::low);
   CHECK(c.raim == n2k::raim_flag::not_in_use);
@@ -672,7 +673,7 @@ TEST_CASE("129038 and 129039 AIS position reports: named top values, spare bits"
   check_sent(c, sent_b);
 
   check_titles<n2k::ais_message_id>();
-  check_titles<n2k::repeat_indicator>();
+  check_titles<n2k::ais_repeat_indicator>();
   check_titles<n2k::position_accuracy>();
   check_titles<n2k::raim_flag>();
   check_titles<n2k::ais_time_stamp>();
@@ -683,4 +684,27 @@ TEST_CASE("129038 and 129039 AIS position reports: named top values, spare bits"
   check_titles<n2k::ais_band>();
   check_titles<n2k::ais_mode>();
   check_titles<n2k::ais_communication_state>();
+}
+
+TEST_CASE("129029's integrity names all four raw values: each a value, none not available") {
+  using I = n2k::lookup<n2k::gnss_integrity, 2>;
+  STATIC_REQUIRE(std::is_same_v<decltype(n2k::gnss_position_data::integrity), I>);
+  STATIC_REQUIRE_FALSE(offers_not_available<I>);
+  // canboat's texts: No integrity checking, Safe, Caution, Unsafe
+  constexpr std::array<std::string_view, 4> names{"none", "safe", "caution", "unsafe"};
+  constexpr std::array<std::string_view, 4> titles{"No integrity checking", "Safe", "Caution",
+                                                   "Unsafe"};
+  for (std::int64_t raw = 0; raw < 4; ++raw) {
+    INFO(raw);
+    const auto k = static_cast<std::size_t>(raw);
+    CHECK(I::from_raw(raw).state() == field_state::value);
+    CHECK(I::from_raw(raw).name() == names[k]);
+    CHECK(n2k::lookup_title<n2k::gnss_integrity>(static_cast<std::uint64_t>(raw)) == titles[k]);
+    const auto back = I::from_name(names[k]);
+    REQUIRE(back);
+    CHECK(back.value.raw() == raw);
+  }
+  CHECK(I::from_raw(2) == n2k::gnss_integrity::caution);
+  CHECK(I::from_raw(3) == n2k::gnss_integrity::unsafe);
+  check_titles<n2k::gnss_integrity>();
 }

@@ -164,7 +164,11 @@ using pgns = detail::append_pgns<
     nmea2000::heave, nmea2000::transmission_parameters_dynamic, nmea2000::ais_class_a_position,
     nmea2000::ais_class_b_position,
     // repeating groups, 64-bit fields
-    nmea2000::pgn_list_message, nmea2000::gnss_sats_in_view, nmea2000::gnss_position_data>::type;
+    nmea2000::pgn_list_message, nmea2000::gnss_sats_in_view, nmea2000::gnss_position_data,
+    // ---- strings ----
+    nmea2000::product_information, nmea2000::configuration_information,
+    nmea2000::ais_class_a_static_data, nmea2000::ais_class_b_static_data_a,
+    nmea2000::ais_class_b_static_data_b>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

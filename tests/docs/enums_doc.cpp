@@ -417,6 +417,10 @@ int main() {
   table<nmea2000::raw_display>("seawire::nmea2000::raw_display", "nmea2000/field.hpp",
                                "How a number that is no quantity reads (canboat's JSON).",
                                kind::value);
+  table<nmea2000::text_encoding>(
+      "seawire::nmea2000::text_encoding", "nmea2000/field.hpp",
+      "What a counted string's encoding byte says its characters are (`counted_text::control()`).",
+      kind::value);
   table<nmea2000::fast_packet_drop>("seawire::nmea2000::fast_packet_drop",
                                     "nmea2000/fast_packet.hpp",
                                     "Why a fast-packet assembler dropped frames.", kind::value);

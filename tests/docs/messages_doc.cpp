@@ -206,6 +206,14 @@ std::string key_name() {
   return out;
 }
 
+// The PGN struct of a walk row.
+template <class Info>
+struct pgn_of_row;
+template <class P, std::size_t I>
+struct pgn_of_row<nmea2000::walk_field<P, I>> {
+  using type = P;
+};
+
 // A repeating group's row, then a row for each field of one repetition ("row.k", bit offsets
 // from the repetition's start).
 template <class F>
@@ -229,7 +237,7 @@ std::string group_rows() {
     std::string holds = "reserved: sent as ones, ignored when received";
     std::string step;
     std::string values;
-    if constexpr (requires { R::sent_as_zero; }) {
+    if constexpr (requires { R::is_spare; }) {
       holds = "spare: sent as zeros, ignored when received";
     } else if constexpr (!R::is_reserved) {
       holds = n2k_form<typename R::value_type>(step, values);
@@ -252,25 +260,41 @@ constexpr bool is_group_row() {
 }
 
 template <class F>
-std::string pgn_row(F) {
+std::string field_row(F) {
+  using P = typename pgn_of_row<typename F::info>::type;
+  std::string holds = "reserved: sent as ones, ignored when received";
+  if constexpr (requires { F::desc.is_spare; })
+    holds = "spare: sent as zeros, ignored when received";
+  std::string step;
+  std::string values;
+  if constexpr (!F::reserved && nmea2000::keyed_row<typename F::info::row_type>) {
+    using row = typename F::info::row_type;
+    holds = "lookup named by " + quoted(key_name<row>()) + " and its own value";
+    values = std::to_string(row::value_type::table::entries.size()) + " named pairs";
+  } else if constexpr (!F::reserved) {
+    holds = n2k_form<typename F::value_type>(step, values);
+  }
+  // After a counted string a row starts where the string ends.
+  const std::string offset = nmea2000::description_of<P>::fixed_layout || F::bit_offset == 0
+                                 ? std::to_string(F::bit_offset)
+                                 : "where the row before ends";
+  std::string bits = std::to_string(F::bits);
+  if constexpr (!F::reserved) {
+    if constexpr (nmea2000::text_value<typename F::value_type>) {
+      if constexpr (F::value_type::variable) bits = "16 to " + bits;
+    }
+  }
+  return "| " + std::to_string(F::number) + " | " + (F::reserved ? "" : quoted(F::name)) + " | " +
+         std::string(F::desc.title) + " | " + offset + " | " + bits + " | " + holds + " | " + step +
+         " | " + values + " |\n";
+}
+
+template <class F>
+std::string pgn_row(F f) {
   if constexpr (is_group_row<F>()) {
     return group_rows<F>();
   } else {
-    std::string holds = "reserved: sent as ones, ignored when received";
-    std::string step;
-    std::string values;
-    if constexpr (requires { std::remove_cvref_t<decltype(F::desc)>::sent_as_zero; }) {
-      holds = "spare: sent as zeros, ignored when received";
-    } else if constexpr (!F::reserved && nmea2000::keyed_row<typename F::info::row_type>) {
-      using row = typename F::info::row_type;
-      holds = "lookup named by " + quoted(key_name<row>()) + " and its own value";
-      values = std::to_string(row::value_type::table::entries.size()) + " named pairs";
-    } else if constexpr (!F::reserved) {
-      holds = n2k_form<typename F::value_type>(step, values);
-    }
-    return "| " + std::to_string(F::number) + " | " + (F::reserved ? "" : quoted(F::name)) + " | " +
-           std::string(F::desc.title) + " | " + std::to_string(F::bit_offset) + " | " +
-           std::to_string(F::bits) + " | " + holds + " | " + step + " | " + values + " |\n";
+    return field_row(f);
   }
 }
 
@@ -397,6 +421,16 @@ std::string n2k_form(std::string& step, std::string& range) {
   } else if constexpr (kind == 3) {
     range = names_of<typename n2k_kind<V>::enum_type>(true);
     return "flag set (`[]` when none is set, `null` when not sent)";
+  } else if constexpr (nmea2000::text_value<V>) {
+    if constexpr (V::variable) {
+      range = "up to " + std::to_string(V::capacity) + " bytes";
+      return "counted string: a length byte (itself, the next byte and the text), 1 ASCII or 0 "
+             "UTF-16, the text; JSON a string, `null` when empty";
+    } else {
+      range = std::to_string(V::capacity) + " characters";
+      return std::string("fixed string, one byte a character, padded with ") +
+             (V::padding == '@' ? "'@'" : "0xFF") + "; JSON a string, `null` when empty";
+    }
   } else if constexpr (std::is_same_v<V, nmea2000::day_count>) {
     step = "1 day";
     range = "1970-01-01 to 2149-06-03";
@@ -417,9 +451,13 @@ void pgn() {
   constexpr auto& d = P::n2k;
   const auto& info = d.info;
   std::printf("### PGN %u %s\n\n", unsigned{info.pgn}, std::string(info.title).c_str());
-  std::printf(d.has_group ? "`%s`: up to %zu bytes, %s, default priority %u"
-                          : "`%s`: %zu bytes, %s, default priority %u",
-              std::string(info.name).c_str(), d.length,
+  std::printf("`%s`: ", std::string(info.name).c_str());
+  if (d.has_group) {
+    std::printf("up to ");
+  } else if (d.min_length != d.length) {
+    std::printf("%zu to ", d.min_length);
+  }
+  std::printf("%zu bytes, %s, default priority %u", d.length,
               info.transport == nmea2000::framing::fast_packet ? "fast packet" : "single frame",
               unsigned{info.priority});
   if (info.interval_ms != 0) std::printf(", sent every %u ms", unsigned{info.interval_ms});

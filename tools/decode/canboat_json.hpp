@@ -4,7 +4,8 @@
 // units, field names as keys, no nulls), so that what reads analyzer's JSON can read
 // seawire-decode's. One walk over the PGN's description (visit_rows) writes every row by the
 // rules analyzer follows for its kind:
-//   identifier  a number shown as a string of its digits (an MMSI); a sentinel left out
+//   identifier  a number shown as a string of at least 9 digits (an MMSI: "002442000"); a
+//               sentinel left out
 //   bits        a number shown as its bytes in hex, whatever they are
 //   number      the value at its resolution, in canboat's std unit (nmea2000/canboat.hpp), with
 //               as many decimals as a step has (or the unit's fixed count); a whole number at
@@ -17,8 +18,12 @@
 //   time        "hh:mm:ss.ffff" (a time of day, and a number in seconds: a duration)
 //   keyed       the title of the (key, value) pair (60928's device function for its device
 //               class), or the number when the pair has none; a sentinel left out
-//   reserved    left out when every bit is one, else its bytes in hex ("0F 00")
-//   spare       left out when every bit is zero, else its bytes in hex
+//   reserved    left out when every bit is one, else its bytes in hex ("0F 00"); spare bits
+//               left out when every bit is zero
+//   string      the bytes before the first 0x00 less the padding at their end (0xFF, 0x00, '@',
+//               whitespace), up to the first 0xFF, JSON-escaped; a counted string's UTF-16 as
+//               UTF-8; empty: left out. A counted string's length byte below 2, or an encoding
+//               byte that is neither 0, 1 nor 0xFF, analyzer cannot read
 //   group       "list":[{...},...], each repetition's rows by these rules; none: left out
 // and reads the payload as analyzer does where it is cut short: a field the payload holds only a
 // part of is read at the width it has (a 16-bit field of which one byte came is that byte's
@@ -319,6 +324,27 @@ inline void put_date(std::string& out, std::int64_t days) {
 template <class M>
 bool put_rows(fields_text& f, const M& msg, std::span<const std::uint8_t> payload, unsigned base);
 
+// Whether M's rows start where the one before ended (a PGN with a counted string), not at
+// their declared offsets.
+template <class M>
+[[nodiscard]] consteval bool varying_rows() {
+  if constexpr (nmea2000::pgn_like<M>) {
+    return !nmea2000::description_of<M>::fixed_layout;
+  } else {
+    return false;
+  }
+}
+
+// Whether row L (a field_layout of visit_rows) is a string's.
+template <class L>
+[[nodiscard]] consteval bool string_row() {
+  if constexpr (L::reserved) {
+    return false;
+  } else {
+    return nmea2000::text_value<typename L::value_type>;
+  }
+}
+
 // The repetitions of group `g`, from bit `at` of the payload, as analyzer writes a repeating
 // field set: "list":[{...},...], each repetition's rows as a message's; no repetition: left out.
 template <class G>
@@ -343,19 +369,130 @@ bool put_group(fields_text& f, const G& g, std::span<const std::uint8_t> payload
   return ok;
 }
 
+// UTF-16 code units (little-endian, `bytes` / 2 of them) as UTF-8, as analyzer converts them: a
+// surrogate pair as its character, any other surrogate as U+FFFD.
+inline std::string utf16_to_utf8(std::span<const std::uint8_t> bytes) {
+  std::string out;
+  const std::size_t n = bytes.size() / 2;
+  const auto unit = [&](std::size_t i) {
+    return static_cast<std::uint32_t>(bytes[2 * i] | (bytes[2 * i + 1] << 8));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t c = unit(i);
+    if ((c & 0xF800U) == 0xD800U) {
+      if ((c & 0xFC00U) != 0xD800U || i + 1 == n || (unit(i + 1) & 0xFC00U) != 0xDC00U) {
+        c = 0xFFFD;
+      } else {
+        c = 0x10000U + (((c & 0x3FFU) << 10) | (unit(i + 1) & 0x3FFU));
+        ++i;
+      }
+    }
+    if (c < 0x80) {
+      out += static_cast<char>(c);
+    } else if (c < 0x800) {
+      out += static_cast<char>(0xC0 | (c >> 6));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+      out += static_cast<char>(0xE0 | (c >> 12));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+      out += static_cast<char>(0xF0 | (c >> 18));
+      out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+  }
+  return out;
+}
+
+// The text analyzer shows of a string's bytes: up to the first 0x00 (a last byte excepted), less
+// the padding at the end (0xFF, 0x00, '@', whitespace), written up to the first 0xFF, escaped;
+// empty: left out.
+inline void put_text(fields_text& f, std::string_view key, std::string_view bytes) {
+  std::size_t len = bytes.size();
+  if (len > 1) {
+    const std::size_t zero = bytes.substr(0, len - 1).find('\0');
+    if (zero != std::string_view::npos) len = zero;
+  }
+  const auto padding = [](unsigned char c) {
+    return c == 0xFF || c == 0 || c == '@' || c == ' ' || (c >= '\t' && c <= '\r');
+  };
+  while (len > 0 && padding(static_cast<unsigned char>(bytes[len - 1]))) --len;
+  if (len == 0) return;
+  f.key(key);
+  std::string& out = f.out();
+  out += '"';
+  for (const char ch : bytes.substr(0, len)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == 0xFF) break;
+    switch (c) {
+      case '\b': out += "\\b"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      case '\f': out += "\\f"; break;
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '/': out += "\\/"; break;
+      default:
+        if (c < 0x20) {
+          put_format(out, "\\u%04x", static_cast<unsigned>(c));
+        } else {
+          out += ch;
+        }
+    }
+  }
+  out += '"';
+}
+
+// String row V at bit `at` (a byte boundary the payload reaches), read from the payload as
+// analyzer reads it: a fixed string its bytes there (fewer where the payload ends), a counted
+// string its length byte's count of bytes (what is left where that runs past the end). `bits`:
+// the bits it takes. False when analyzer cannot read it.
+template <class V>
+bool put_string_row(fields_text& f, std::string_view key, std::span<const std::uint8_t> payload,
+                    unsigned at, unsigned& bits) {
+  const std::span<const std::uint8_t> data = payload.subspan(at / 8);
+  const auto chars = [](std::span<const std::uint8_t> b) {
+    return std::string(b.begin(), b.end());
+  };
+  if constexpr (V::variable) {
+    if (data.size() < 2 || data[0] < 2) return false;
+    const std::size_t taken = std::min<std::size_t>(data[0], data.size());
+    bits = static_cast<unsigned>(8 * taken);
+    const std::uint8_t control = data[1];
+    const std::span<const std::uint8_t> body = data.subspan(2, taken - 2);
+    if (control == 0) {
+      put_text(f, key, utf16_to_utf8(body));
+    } else if (control == 1 || control == 0xFF) {
+      put_text(f, key, chars(body));
+    } else {
+      return false;  // an encoding analyzer does not know
+    }
+  } else {
+    const std::span<const std::uint8_t> body = data.first(std::min(V::capacity, data.size()));
+    bits = static_cast<unsigned>(8 * V::capacity);
+    put_text(f, key, chars(body));
+  }
+  return true;
+}
+
 // Row L of a PGN or of a group's repetition (a field_layout of visit_rows) of `msg`, whose
-// payload is `payload` and first bit `base` in it: written into `f`, or left out; false when
-// analyzer cannot read it, and writes nothing of the message.
+// payload is `payload`, at bit `at` of it: written into `f`, or left out; false when analyzer
+// cannot read it, and writes nothing of the message.
 template <class L, class P>
 bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload, const row_read& r,
-             unsigned base = 0) {
+             unsigned at) {
   constexpr std::string_view key = L::desc.title;
-  const unsigned at = base + L::bit_offset;
   if constexpr (L::reserved) {
     if (!r.readable) return true;  // a reserved or spare row cut short is left out
     const std::int64_t raw = raw_bits(payload, at, r.bits, false);
-    constexpr bool spare = requires { std::remove_cvref_t<decltype(L::desc)>::sent_as_zero; };
-    if (raw == (spare ? 0 : top_of(r.bits, false))) return true;
+    if constexpr (requires { L::desc.is_spare; }) {
+      if (raw == 0) return true;  // spare bits are sent as zeros
+    } else {
+      if (raw == top_of(r.bits, false)) return true;
+    }
     f.key(key);
     put_binary(f.out(), payload, at, r.bits);
     return true;
@@ -391,7 +528,7 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
       } else {
         if (!number_has_value(raw, r.bits, V::sentinels, V::is_signed)) return true;
         f.key(key);
-        put_format(f.out(), "\"%lld\"", static_cast<long long>(raw));
+        put_format(f.out(), "\"%09lld\"", static_cast<long long>(raw));
       }
     } else if constexpr (kind<V>::number && requires { typename row::titles; }) {
       put_lookup<typename row::titles>(f, key, raw, r.bits);  // a number canboat names values of
@@ -487,15 +624,23 @@ template <class M>
 bool put_rows(fields_text& f, const M& msg, std::span<const std::uint8_t> payload, unsigned base) {
   bool ok = true;
   bool ended = false;
+  unsigned next = base;  // where the row before ended (after a counted string, where it did)
   visit_rows<M>([&](auto layout) {
     using L = decltype(layout);
     if (!ok || ended) return;
-    const row_read r = read_row(base + L::bit_offset, L::bits, payload.size());
+    const unsigned at = varying_rows<M>() ? next : base + L::bit_offset;
+    const row_read r = read_row(at, L::bits, payload.size());
     if (!r.reached) {
       ended = true;
       return;
     }
-    ok = put_row<L>(f, msg, payload, r, base);
+    unsigned bits = L::bits;
+    if constexpr (string_row<L>()) {
+      ok = put_string_row<typename L::value_type>(f, L::desc.title, payload, at, bits);
+    } else {
+      ok = put_row<L>(f, msg, payload, r, at);
+    }
+    next = at + bits;
   });
   return ok;
 }

@@ -228,6 +228,14 @@ def case_by_hand():
                                                  "description"]
           and out[0]["timestamp"] == "2024-07-03T15:42:58.123Z" and out[0]["src"] == 35,
           f"{out}")
+    # Strings from their bytes: a UTF-16 counted string as UTF-8, padding (' ', '@') trimmed, an
+    # empty one left out; the rows after a counted string start where it ended.
+    check(one(126998, "06 00 e9 00 ac 20 05 01 61 20 40 02 01", 6) ==
+          {"Installation Description #1": "\u00e9\u20ac", "Installation Description #2": "a"},
+          "126998 UTF-16 and ASCII")
+    # An encoding byte analyzer does not know (2): nothing of the message is written.
+    out, _ = canboat([], (line.format(6, 126998, 4) + ",04,02,41,42").encode())
+    check(out == [], f"126998 encoding byte 2: {out}")
 
 
 def case_usage():

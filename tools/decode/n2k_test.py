@@ -62,6 +62,7 @@ META = {"type", "time_s", "interface", "direction", "prio", "src", "dst"}
 FAST_PACKET = {127489, 128275, 130578, 127506, 129284, 130577}
 FAST_PACKET |= {127237, 129038, 129039}  # lookups
 FAST_PACKET |= {126464, 129540, 129029}  # repeating groups, 64-bit fields
+FAST_PACKET |= {126996, 126998, 129794, 129809, 129810}  # strings
 # A PGN seawire does not describe travels as the standard lists it: as fast packets the PGNs
 # canboat's database marks "Fast" (below) and the two proprietary fast-packet ranges whole
 # (126720-126975, 130816-131071); every other one as single frames.
@@ -131,6 +132,95 @@ TIME_SOURCE = {"gps": "GPS", "glonass": "GLONASS", "radio_station": "Radio Stati
 GNSS_MODE = {"1d": "1D", "2d": "2D", "3d": "3D", "auto": "Auto"}
 BEARING_MODE = {"great_circle": "Great Circle", "rhumb_line": "Rhumbline"}
 ISO_CONTROL = {"ack": "ACK", "nak": "NAK", "access_denied": "Access Denied", "address_busy": "Address Busy"}
+# strings: product information and AIS static data (the AIS lookups shared with 129038/129039)
+CERTIFICATION_LEVEL = {"level_a": "Level A", "level_b": "Level B"}
+AIS_MESSAGE_ID = {"scheduled_class_a_position_report": "Scheduled Class A position report",
+                  "assigned_scheduled_class_a_position_report":
+                      "Assigned scheduled Class A position report",
+                  "interrogated_class_a_position_report": "Interrogated Class A position report",
+                  "base_station_report": "Base station report",
+                  "static_and_voyage_related_data": "Static and voyage related data",
+                  "binary_addressed_message": "Binary addressed message",
+                  "binary_acknowledgement": "Binary acknowledgement",
+                  "binary_broadcast_message": "Binary broadcast message",
+                  "standard_sar_aircraft_position_report": "Standard SAR aircraft position report",
+                  "utc_date_inquiry": "UTC/date inquiry", "utc_date_response": "UTC/date response",
+                  "safety_related_addressed_message": "Safety related addressed message",
+                  "safety_related_acknowledgement": "Safety related acknowledgement",
+                  "safety_related_broadcast_message": "Satety related broadcast message",
+                  "interrogation": "Interrogation",
+                  "assignment_mode_command": "Assignment mode command",
+                  "dgnss_broadcast_binary_message": "DGNSS broadcast binary message",
+                  "standard_class_b_position_report": "Standard Class B position report",
+                  "extended_class_b_position_report": "Extended Class B position report",
+                  "data_link_management_message": "Data link management message",
+                  "aton_report": "ATON report", "channel_management": "Channel management",
+                  "group_assignment_command": "Group assignment command",
+                  "static_data_report": "Static data report",
+                  "single_slot_binary_message": "Single slot binary message",
+                  "multiple_slot_binary_message": "Multiple slot binary message",
+                  "position_report_for_long_range_applications":
+                      "Position report for long range applications"}
+REPEAT_INDICATOR = {"initial": "Initial", "first_retransmission": "First retransmission",
+                    "second_retransmission": "Second retransmission",
+                    "final_retransmission": "Final retransmission"}
+SHIP_TYPE = {"unavailable": "Unavailable", "wing_in_ground": "Wing In Ground",
+             "wing_in_ground_hazard_cat_x": "Wing In Ground (hazard cat X)",
+             "wing_in_ground_hazard_cat_y": "Wing In Ground (hazard cat Y)",
+             "wing_in_ground_hazard_cat_z": "Wing In Ground (hazard cat Z)",
+             "wing_in_ground_hazard_cat_os": "Wing In Ground (hazard cat OS)",
+             "wing_in_ground_no_additional_information": "Wing In Ground (no additional information)",
+             "fishing": "Fishing", "towing": "Towing",
+             "towing_exceeds_200m_or_wider_than_25m": "Towing exceeds 200m or wider than 25m",
+             "engaged_in_dredging_or_underwater_operations": "Engaged in dredging or underwater operations",
+             "engaged_in_diving_operations": "Engaged in diving operations",
+             "engaged_in_military_operations": "Engaged in military operations",
+             "sailing": "Sailing", "pleasure": "Pleasure", "high_speed_craft": "High speed craft",
+             "high_speed_craft_hazard_cat_x": "High speed craft (hazard cat X)",
+             "high_speed_craft_hazard_cat_y": "High speed craft (hazard cat Y)",
+             "high_speed_craft_hazard_cat_z": "High speed craft (hazard cat Z)",
+             "high_speed_craft_hazard_cat_os": "High speed craft (hazard cat OS)",
+             "high_speed_craft_no_additional_information": "High speed craft (no additional information)",
+             "pilot_vessel": "Pilot vessel", "sar": "SAR", "tug": "Tug",
+             "port_tender": "Port tender", "anti_pollution": "Anti-pollution",
+             "law_enforcement": "Law enforcement", "spare": "Spare", "spare_2": "Spare #2",
+             "medical": "Medical",
+             "ships_and_aircraft_of_states_not_parties_to_an_armed_conflict": "Ships and aircraft of States not parties to an armed conflict",
+             "passenger_ship": "Passenger ship",
+             "passenger_ship_hazard_cat_x": "Passenger ship (hazard cat X)",
+             "passenger_ship_hazard_cat_y": "Passenger ship (hazard cat Y)",
+             "passenger_ship_hazard_cat_z": "Passenger ship (hazard cat Z)",
+             "passenger_ship_hazard_cat_os": "Passenger ship (hazard cat OS)",
+             "passenger_ship_no_additional_information": "Passenger ship (no additional information)",
+             "cargo_ship": "Cargo ship", "cargo_ship_hazard_cat_x": "Cargo ship (hazard cat X)",
+             "cargo_ship_hazard_cat_y": "Cargo ship (hazard cat Y)",
+             "cargo_ship_hazard_cat_z": "Cargo ship (hazard cat Z)",
+             "cargo_ship_hazard_cat_os": "Cargo ship (hazard cat OS)",
+             "cargo_ship_no_additional_information": "Cargo ship (no additional information)",
+             "tanker": "Tanker", "tanker_hazard_cat_x": "Tanker (hazard cat X)",
+             "tanker_hazard_cat_y": "Tanker (hazard cat Y)",
+             "tanker_hazard_cat_z": "Tanker (hazard cat Z)",
+             "tanker_hazard_cat_os": "Tanker (hazard cat OS)",
+             "tanker_no_additional_information": "Tanker (no additional information)",
+             "other": "Other", "other_hazard_cat_x": "Other (hazard cat X)",
+             "other_hazard_cat_y": "Other (hazard cat Y)",
+             "other_hazard_cat_z": "Other (hazard cat Z)",
+             "other_hazard_cat_os": "Other (hazard cat OS)",
+             "other_no_additional_information": "Other (no additional information)"}
+AIS_VERSION = {"itu_r_m1371_1": "ITU-R M.1371-1", "itu_r_m1371_3": "ITU-R M.1371-3",
+               "itu_r_m1371_5": "ITU-R M.1371-5", "itu_r_m1371_future": "ITU-R M.1371 future edition"}
+POSITION_FIX_DEVICE = {"undefined": "Default: undefined", "gps": "GPS", "glonass": "GLONASS",
+                       "gps_glonass": "Combined GPS/GLONASS", "loran_c": "Loran-C",
+                       "chayka": "Chayka", "integrated_navigation_system":
+                           "Integrated navigation system", "surveyed": "Surveyed",
+                       "galileo": "Galileo"}
+DTE = {"available": "Available", "unavailable": "Not available"}
+AIS_TRANSCEIVER = {"channel_a_vdl_reception": "Channel A VDL reception",
+                   "channel_b_vdl_reception": "Channel B VDL reception",
+                   "channel_a_vdl_transmission": "Channel A VDL transmission",
+                   "channel_b_vdl_transmission": "Channel B VDL transmission",
+                   "own_information_not_broadcast": "Own information not broadcast",
+                   "reserved_5": "Reserved"}
 
 
 PGN_LIST_FUNCTION = {"transmit": "Transmit PGN list", "receive": "Receive PGN list"}
@@ -149,7 +239,8 @@ GNSS_METHOD = {"no_gnss": "no GNSS", "gnss_fix": "GNSS fix", "dgnss_fix": "DGNSS
                "precise_gnss": "Precise GNSS", "rtk_fixed": "RTK Fixed Integer",
                "rtk_float": "RTK float", "estimated": "Estimated (DR) mode",
                "manual": "Manual Input", "simulated": "Simulate mode"}
-GNSS_INTEGRITY = {"none": "No integrity checking", "safe": "Safe"}
+GNSS_INTEGRITY = {"none": "No integrity checking", "safe": "Safe", "caution": "Caution",
+                  "unsafe": "Unsafe"}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -312,45 +403,11 @@ TRANSMISSION_STATUS = {"check_transmission": "Check Transmission",
                        "over_temperature": "Over Temperature",
                        "low_oil_pressure": "Low Oil Pressure", "low_oil_level": "Low Oil Level",
                        "sail_drive": "Sail Drive"}
-AIS_MESSAGE_ID = {"scheduled_class_a_position": "Scheduled Class A position report",
-                  "assigned_class_a_position": "Assigned scheduled Class A position report",
-                  "interrogated_class_a_position": "Interrogated Class A position report",
-                  "base_station_report": "Base station report",
-                  "static_and_voyage_data": "Static and voyage related data",
-                  "binary_addressed": "Binary addressed message",
-                  "binary_acknowledgement": "Binary acknowledgement",
-                  "binary_broadcast": "Binary broadcast message",
-                  "sar_aircraft_position": "Standard SAR aircraft position report",
-                  "utc_date_inquiry": "UTC/date inquiry", "utc_date_response": "UTC/date response",
-                  "safety_addressed": "Safety related addressed message",
-                  "safety_acknowledgement": "Safety related acknowledgement",
-                  "safety_broadcast": "Satety related broadcast message",
-                  "interrogation": "Interrogation",
-                  "assignment_mode_command": "Assignment mode command",
-                  "dgnss_broadcast": "DGNSS broadcast binary message",
-                  "class_b_position": "Standard Class B position report",
-                  "extended_class_b_position": "Extended Class B position report",
-                  "data_link_management": "Data link management message",
-                  "aton_report": "ATON report", "channel_management": "Channel management",
-                  "group_assignment_command": "Group assignment command",
-                  "static_data_report": "Static data report",
-                  "single_slot_binary": "Single slot binary message",
-                  "multiple_slot_binary": "Multiple slot binary message",
-                  "long_range_position": "Position report for long range applications"}
-REPEAT = {"initial": "Initial", "first_retransmission": "First retransmission",
-          "second_retransmission": "Second retransmission",
-          "final_retransmission": "Final retransmission"}
 POSITION_ACCURACY = {"low": "Low", "high": "High"}
 RAIM = {"not_in_use": "not in use", "in_use": "in use"}
 TIME_STAMP = {"unavailable": "Not available", "manual_input": "Manual input mode",
               "dead_reckoning": "Dead reckoning mode",
               "positioning_inoperative": "Positioning system is inoperative"}
-TRANSCEIVER = {"channel_a_reception": "Channel A VDL reception",
-               "channel_b_reception": "Channel B VDL reception",
-               "channel_a_transmission": "Channel A VDL transmission",
-               "channel_b_transmission": "Channel B VDL transmission",
-               "own_information_not_broadcast": "Own information not broadcast",
-               "reserved_5": "Reserved"}
 NAV_STATUS = {"under_way_using_engine": "Under way using engine", "at_anchor": "At anchor",
               "not_under_command": "Not under command",
               "restricted_maneuverability": "Restricted maneuverability",
@@ -390,11 +447,13 @@ def snake_of_text(table):
 
 
 def mmsi(ours, theirs):
-    """canboat: the MMSI as a string of digits; ours a number."""
+    """canboat: the MMSI as 9-digit text ("244100633", "002442000"); ours the number."""
     r = null_rule(ours, theirs)
     if r != "continue":
         return r
-    return None if is_number(ours) and str(theirs).isdigit() and int(theirs) == ours else "differ"
+    if not (isinstance(theirs, str) and theirs.isdigit() and len(theirs) >= 9):
+        return f"canboat {theirs!r} is no 9-digit text"
+    return None if is_number(ours) and int(theirs) == ours else "MMSIs differ"
 
 
 def binary(ours, theirs):
@@ -408,7 +467,7 @@ def binary(ours, theirs):
 # 129038 and 129039 share their first 13 fields.
 AIS_POSITION_FIELDS = {
     "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
-    "repeat_indicator": ("repeatIndicator", lookup(REPEAT)),
+    "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
     "user_id": ("userId", mmsi),
     "longitude_deg": ("longitude", num("0.0000001")),
     "latitude_deg": ("latitude", num("0.0000001")),
@@ -418,9 +477,17 @@ AIS_POSITION_FIELDS = {
     "cog_rad": ("cog", num("0.0001")),
     "sog_mps": ("sog", num("0.01")),
     "communication_state": ("communicationState", binary),
-    "transceiver_information": ("aisTransceiverInformation", lookup(TRANSCEIVER)),
+    "transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
     "heading_rad": ("heading", num("0.0001")),
 }
+
+
+def text(ours, theirs):
+    """A string: the same characters (ours escaped in JSON, canboat's raw); null for both when
+    the text is empty (padding only) or not sent."""
+    if ours is None or theirs is None:
+        return None if ours is None and theirs is None else "one null, the other a text"
+    return None if ours == theirs else "texts differ"
 
 
 def num64(resolution):
@@ -747,6 +814,68 @@ CANBOAT_FIELDS = {
         "ais_communication_state": ("aisCommunicationState", lookup(AIS_COMM_STATE)),
         "sid": ("sequenceId", num("1")),
     },
+    # ---- strings ----
+    126996: {
+        "nmea2000_version": ("nmea2000Version", num("0.001")),
+        "product_code": ("productCode", num("1")),
+        "model_id": ("modelId", text),
+        "software_version_code": ("softwareVersionCode", text),
+        "model_version": ("modelVersion", text),
+        "model_serial_code": ("modelSerialCode", text),
+        "certification_level": ("certificationLevel", lookup(CERTIFICATION_LEVEL)),
+        "load_equivalency": ("loadEquivalency", num("1")),
+    },
+    126998: {
+        "installation_description_1": ("installationDescription1", text),
+        "installation_description_2": ("installationDescription2", text),
+        "manufacturer_information": ("manufacturerInformation", text),
+    },
+    129794: {
+        "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
+        "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
+        "user_id": ("userId", mmsi),
+        "imo_number": ("imoNumber", num("1")),
+        "callsign": ("callsign", text),
+        "name": ("name", text),
+        "type_of_ship": ("typeOfShip", lookup(SHIP_TYPE)),
+        "length_m": ("length", num("0.1")),
+        "beam_m": ("beam", num("0.1")),
+        "position_reference_from_starboard_m": ("positionReferenceFromStarboard", num("0.1")),
+        "position_reference_from_bow_m": ("positionReferenceFromBow", num("0.1")),
+        "eta_date": ("etaDate", date),
+        "eta_time": ("etaTime", time_of_day),
+        "draft_m": ("draft", num("0.01")),
+        "destination": ("destination", text),
+        "ais_version_indicator": ("aisVersionIndicator", lookup(AIS_VERSION)),
+        "gnss_type": ("gnssType", lookup(POSITION_FIX_DEVICE)),
+        "dte": ("dte", lookup(DTE)),
+        "ais_transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
+        "sequence_id": ("sequenceId", num("1")),
+    },
+    129809: {
+        "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
+        "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
+        "user_id": ("userId", mmsi),
+        "name": ("name", text),
+        "ais_transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
+        "sequence_id": ("sequenceId", num("1")),
+    },
+    129810: {
+        "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
+        "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
+        "user_id": ("userId", mmsi),
+        "type_of_ship": ("typeOfShip", lookup(SHIP_TYPE)),
+        "vendor_id": ("vendorId", text),
+        "callsign": ("callsign", text),
+        "length_m": ("length", num("0.1")),
+        "beam_m": ("beam", num("0.1")),
+        "position_reference_from_starboard_m": ("positionReferenceFromStarboard", num("0.1")),
+        "position_reference_from_bow_m": ("positionReferenceFromBow", num("0.1")),
+        "mothership_user_id": ("mothershipUserId", mmsi),
+        "gnss_type": ("gnssType", lookup(POSITION_FIX_DEVICE)),
+        "ais_transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
+        "sequence_id": ("sequenceId", num("1")),
+    },
     126464: {
         "function_code": ("functionCode", lookup(PGN_LIST_FUNCTION)),
         "pgns": ("list", group({"pgn": ("pgn", num("1"))})),
@@ -775,7 +904,7 @@ CANBOAT_FIELDS = {
         "altitude_m": ("altitude", num64("0.000001")),
         "gnss_type": ("gnssType", lookup(GNSS_TYPE)),
         "method": ("method", lookup(GNSS_METHOD)),
-        "integrity": ("integrity", lookup(GNSS_INTEGRITY, "Caution")),
+        "integrity": ("integrity", lookup(GNSS_INTEGRITY)),
         "number_of_svs": ("numberOfSvs", num("1")),
         "hdop": ("hdop", num("0.01")),
         "pdop": ("pdop", num("0.01")),
@@ -987,6 +1116,64 @@ L_TIME_SOURCE = ["gps", "glonass", "radio_station", "local_cesium_clock", "local
 L_GNSS_MODE = ["1d", "2d", "3d", "auto"]
 L_BEARING_MODE = ["great_circle", "rhumb_line"]
 L_ISO_CONTROL = ["ack", "nak", "access_denied", "address_busy"]
+# strings: lookups of 126996 and the AIS PGNs, by value (None: no name, shown as the number)
+L_CERTIFICATION = ["level_a", "level_b"]
+L_AIS_MESSAGE = [None, "scheduled_class_a_position_report",
+                 "assigned_scheduled_class_a_position_report",
+                 "interrogated_class_a_position_report", "base_station_report",
+                 "static_and_voyage_related_data", "binary_addressed_message",
+                 "binary_acknowledgement", "binary_broadcast_message",
+                 "standard_sar_aircraft_position_report", "utc_date_inquiry", "utc_date_response",
+                 "safety_related_addressed_message", "safety_related_acknowledgement",
+                 "safety_related_broadcast_message", "interrogation", "assignment_mode_command",
+                 "dgnss_broadcast_binary_message", "standard_class_b_position_report",
+                 "extended_class_b_position_report", "data_link_management_message",
+                 "aton_report", "channel_management", "group_assignment_command",
+                 "static_data_report", "single_slot_binary_message",
+                 "multiple_slot_binary_message", "position_report_for_long_range_applications"]
+L_REPEAT = ["initial", "first_retransmission", "second_retransmission", "final_retransmission"]
+L_SHIP_TYPE = [None] * 100
+L_SHIP_TYPE[0] = "unavailable"
+for _base, _kind in ((20, "wing_in_ground"), (40, "high_speed_craft"), (60, "passenger_ship"),
+                     (70, "cargo_ship"), (80, "tanker"), (90, "other")):
+    L_SHIP_TYPE[_base] = _kind
+    for _k, _cat in enumerate(("x", "y", "z", "os"), 1):
+        L_SHIP_TYPE[_base + _k] = f"{_kind}_hazard_cat_{_cat}"
+    L_SHIP_TYPE[_base + 9] = f"{_kind}_no_additional_information"
+for _k, _n in enumerate(["fishing", "towing", "towing_exceeds_200m_or_wider_than_25m",
+                         "engaged_in_dredging_or_underwater_operations",
+                         "engaged_in_diving_operations", "engaged_in_military_operations",
+                         "sailing", "pleasure"], 30):
+    L_SHIP_TYPE[_k] = _n
+for _k, _n in enumerate(["pilot_vessel", "sar", "tug", "port_tender", "anti_pollution",
+                         "law_enforcement", "spare", "spare_2", "medical",
+                         "ships_and_aircraft_of_states_not_parties_to_an_armed_conflict"], 50):
+    L_SHIP_TYPE[_k] = _n
+L_AIS_VERSION = ["itu_r_m1371_1", "itu_r_m1371_3", "itu_r_m1371_5", "itu_r_m1371_future"]
+L_FIX_DEVICE = ["undefined", "gps", "glonass", "gps_glonass", "loran_c", "chayka",
+                "integrated_navigation_system", "surveyed", "galileo"]
+L_DTE = ["available", "unavailable"]
+L_TRANSCEIVER = ["channel_a_vdl_reception", "channel_b_vdl_reception",
+                 "channel_a_vdl_transmission", "channel_b_vdl_transmission",
+                 "own_information_not_broadcast", "reserved_5"]
+
+# AIS PGNs: the rows they share (the message header; the ship's dimensions at bit `at`, 0.1 m;
+# the transceiver and sequence ID that end them, 3 reserved bits between)
+AIS_HEAD = [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
+            ("repeat_indicator", 6, 2, "lookup", L_REPEAT),
+            ("user_id", 8, 32, U, "1")]
+
+
+def ais_dimensions(at):
+    names = ("length_m", "beam_m", "position_reference_from_starboard_m",
+             "position_reference_from_bow_m")
+    return [(n, at + 16 * i, 16, U, "0.1") for i, n in enumerate(names)]
+
+
+def ais_end(at):
+    return [("ais_transceiver_information", at, 5, "lookup", L_TRANSCEIVER),
+            ("sequence_id", at + 8, 8, U, "1")]
+
 L_PGN_LIST_FUNCTION = ["transmit", "receive"]
 L_RANGE_RESIDUAL_MODE = ["used", "calculated_after"]
 L_SATELLITE_STATUS = ["not_tracked", "tracked", "used", "not_tracked_diff", "tracked_diff",
@@ -996,7 +1183,7 @@ L_GNSS_TYPE = ["gps", "glonass", "gps_glonass", "gps_sbas", "gps_sbas_glonass", 
                "integrated", "surveyed", "galileo"]
 L_GNSS_METHOD = ["no_gnss", "gnss_fix", "dgnss_fix", "precise_gnss", "rtk_fixed", "rtk_float",
                  "estimated", "manual", "simulated"]
-L_GNSS_INTEGRITY = ["none", "safe"]
+L_GNSS_INTEGRITY = ["none", "safe", "caution", "unsafe"]
 
 # lookups whose names sit in the sentinel range or depend on another field
 L_MANUFACTURER = {code: snake(text) for code, text in MANUFACTURERS.items()}
@@ -1016,21 +1203,8 @@ L_STEERING_MODE = ["main_steering", "non_follow_up", "follow_up", "heading_contr
 L_TURN_MODE = ["rudder_limit_controlled", "turn_rate_controlled", "radius_controlled"]
 F_TRANSMISSION_STATUS = ["check_transmission", "over_temperature", "low_oil_pressure",
                          "low_oil_level", "sail_drive"]
-L_AIS_MESSAGE_ID = ["", "scheduled_class_a_position", "assigned_class_a_position",
-                    "interrogated_class_a_position", "base_station_report",
-                    "static_and_voyage_data", "binary_addressed", "binary_acknowledgement",
-                    "binary_broadcast", "sar_aircraft_position", "utc_date_inquiry",
-                    "utc_date_response", "safety_addressed", "safety_acknowledgement",
-                    "safety_broadcast", "interrogation", "assignment_mode_command",
-                    "dgnss_broadcast", "class_b_position", "extended_class_b_position",
-                    "data_link_management", "aton_report", "channel_management",
-                    "group_assignment_command", "static_data_report", "single_slot_binary",
-                    "multiple_slot_binary", "long_range_position"]
-L_REPEAT = ["initial", "first_retransmission", "second_retransmission", "final_retransmission"]
 L_TIME_STAMP = {60: "unavailable", 61: "manual_input", 62: "dead_reckoning",
                 63: "positioning_inoperative"}
-L_TRANSCEIVER = ["channel_a_reception", "channel_b_reception", "channel_a_transmission",
-                 "channel_b_transmission", "own_information_not_broadcast", "reserved_5"]
 L_NAV_STATUS = ["under_way_using_engine", "at_anchor", "not_under_command",
                 "restricted_maneuverability", "constrained_by_draught", "moored", "aground",
                 "engaged_in_fishing", "under_way_sailing", "hazardous_material_high_speed",
@@ -1038,7 +1212,7 @@ L_NAV_STATUS = ["under_way_using_engine", "at_anchor", "not_under_command",
                 "pushing_ahead_or_towing_alongside", "", "ais_sart"]
 L_SPECIAL_MANEUVER = ["unavailable", "not_engaged", "engaged", "reserved_3"]
 # 129038 and 129039 share their first 184 bits: message, MMSI, position, course, speed, heading.
-AIS_POSITION = [("message_id", 0, 6, "lookup", L_AIS_MESSAGE_ID),
+AIS_POSITION = [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
                 ("repeat_indicator", 6, 2, "lookup", L_REPEAT),
                 ("user_id", 8, 32, U, "1"),
                 ("longitude_deg", 40, 32, S, "0.0000001"),
@@ -1259,6 +1433,36 @@ LAYOUT = {
                             ("ais_mode", 199, 1, "lookup", ["autonomous", "assigned"]),
                             ("ais_communication_state", 200, 1, "lookup", ["sotdma", "itdma"]),
                             ("sid", 208, 8, U, "1")],
+    # ---- strings: "text" = a fixed string of width / 8 bytes; "lau" = a counted string, at
+    # the bit where the row before it ended (offset and width None).
+    126996: [("nmea2000_version", 0, 16, U, "0.001"),
+             ("product_code", 16, 16, U, "1"),
+             ("model_id", 32, 256, "text", None),
+             ("software_version_code", 288, 256, "text", None),
+             ("model_version", 544, 256, "text", None),
+             ("model_serial_code", 800, 256, "text", None),
+             ("certification_level", 1056, 8, "lookup", L_CERTIFICATION),
+             ("load_equivalency", 1064, 8, U, "1")],
+    126998: [("installation_description_1", None, None, "lau", None),
+             ("installation_description_2", None, None, "lau", None),
+             ("manufacturer_information", None, None, "lau", None)],
+    129794: AIS_HEAD + [("imo_number", 40, 32, U, "1"),
+                        ("callsign", 72, 56, "text", None),
+                        ("name", 128, 160, "text", None),
+                        ("type_of_ship", 288, 8, "lookup", L_SHIP_TYPE)]
+            + ais_dimensions(296) + [("eta_date", 360, 16, "date", None),
+                                     ("eta_time", 376, 32, "time", None),
+                                     ("draft_m", 408, 16, U, "0.01"),
+                                     ("destination", 424, 160, "text", None),
+                                     ("ais_version_indicator", 584, 2, "lookup", L_AIS_VERSION),
+                                     ("gnss_type", 586, 4, "lookup", L_FIX_DEVICE),
+                                     ("dte", 590, 1, "lookup", L_DTE)] + ais_end(592),
+    129809: AIS_HEAD + [("name", 40, 160, "text", None)] + ais_end(200),
+    129810: AIS_HEAD + [("type_of_ship", 40, 8, "lookup", L_SHIP_TYPE),
+                        ("vendor_id", 48, 56, "text", None),
+                        ("callsign", 104, 56, "text", None)]
+            + ais_dimensions(160) + [("mothership_user_id", 224, 32, U, "1"),
+                                     ("gnss_type", 260, 4, "lookup", L_FIX_DEVICE)] + ais_end(264),
     # A repeating group: (name, offset, bits of one repetition, "group", (the count field's
     # name or None for "to the end of the payload", the repetition's fields from its start)).
     126464: [("function_code", 0, 8, "lookup", L_PGN_LIST_FUNCTION),
@@ -1313,6 +1517,58 @@ def group_value(data, layout, offset, item_bits, arg):
     for i in range(n):
         base = offset + i * item_bits
         out.append({name: field_value(data, base + o, w, k, a) for name, o, w, k, a in items})
+    return out
+
+
+# Strings (canboat's STRING_FIX and STRING_LAU), from the byte layouts: the text is the bytes
+# before the first 0x00 or 0xFF, less its trailing padding (0xFF, 0x00, '@', whitespace); a byte
+# is the character of its value (Latin-1); an empty text is null. A counted string: a length byte
+# (counting itself and the next), an encoding byte (0 = UTF-16LE, else one byte a character),
+# the bytes; a length past the payload takes what there is; a length below 2 ends the message
+# (that field and the rest null).
+STRING_PADDING = {0xFF, 0x00, ord("@"), ord(" "), 9, 10, 11, 12, 13}
+
+
+def single_byte_text(raw):
+    end = len(raw)
+    for i, b in enumerate(raw):
+        if b in (0x00, 0xFF):
+            end = i
+            break
+    while end > 0 and raw[end - 1] in STRING_PADDING:
+        end -= 1
+    return raw[:end].decode("latin-1") or None
+
+
+def utf16_text(raw):
+    units = [raw[i] | raw[i + 1] << 8 for i in range(0, len(raw) - 1, 2)]
+    end = len(units)
+    for i, u in enumerate(units):
+        if u in (0x0000, 0xFFFF):
+            end = i
+            break
+    while end > 0 and units[end - 1] in STRING_PADDING - {0xFF}:
+        end -= 1
+    data = b"".join(u.to_bytes(2, "little") for u in units[:end])
+    return data.decode("utf-16-le", "surrogatepass") or None
+
+
+def string_rows(data, layout):
+    """{name: expected} for the string rows of `layout`, the counted ones at running offsets."""
+    out, at, stop = {}, 0, False
+    for name, offset, width, kind, _ in layout:
+        if kind == "text":
+            start = offset // 8
+            out[name] = single_byte_text(data[start:start + width // 8]) if start < len(data) else None
+        elif kind == "lau":
+            if stop or at >= len(data) or data[at] < 2 or len(data) - at < 2:
+                stop = stop or at < len(data)
+                out[name] = None
+                continue
+            taken = min(data[at], len(data) - at)
+            body = data[at + 2:at + taken]
+            out[name] = utf16_text(body) if data[at + 1] == 0 else single_byte_text(body)
+            at += taken
     return out
 
 
@@ -1409,6 +1665,11 @@ LAYOUT_EXTRA = b"""\
 2024-07-03T15:42:58.000Z,3,129283,35,255,8,01,b4,00,00,00,80,ff,ff
 2024-07-03T15:42:58.000Z,3,129033,35,255,8,fe,ff,ff,ff,ff,ff,00,80
 2024-07-03T15:42:58.000Z,3,126992,35,255,8,01,f0,00,70,00,00,00,00
+2024-07-03T15:42:58.000Z,6,126996,40,255,134,34,08,01,00,43,61,66,e9,20,01,7f,80,fe,21,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,ff,41,42,ff,43,44,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,20,09,40,20,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,00,71,22,5c,2f,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,40,01,02
+2024-07-03T15:42:58.000Z,6,126998,40,255,23,0d,00,48,00,e9,00,ac,20,3d,d8,00,de,41,06,00,00,d8,41,00,04,01,e9,7f
+2024-07-03T15:42:58.000Z,6,126998,40,255,9,01,01,41,42,05,01,43,44,45
+2024-07-03T15:42:58.000Z,6,126998,40,255,14,0a,00,61,00,62,00,20,00,40,00,03,01,7a,09
+2024-07-03T15:42:58.000Z,6,129809,40,255,7,18,47,38,8c,0e,c4,d6
 """
 
 
@@ -1448,6 +1709,7 @@ def compare_layout(where, ours, want):
             return is_number(got) and Decimal(got) == expected
         return got == expected
 
+    strings = string_rows(want["data"], layout)
     for name, offset, width, kind, arg in layout:
         compared += 1
         got = ours.get(name, "<missing>")
@@ -1457,7 +1719,8 @@ def compare_layout(where, ours, want):
                   all(isinstance(g, dict) and set(g) == set(e) and
                       all(same_value(g[k], e[k]) for k in e) for g, e in zip(got, expected)))
         else:
-            expected = field_value(want["data"], offset, width, kind, arg)
+            expected = (strings[name] if name in strings
+                        else field_value(want["data"], offset, width, kind, arg))
             ok = same_value(got, expected)
         check(ok, f"{where}: {name} = {got!r}, expected {expected!r} "
               f"(bits {offset}+{width} of {want['data'].hex()})")

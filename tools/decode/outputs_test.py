@@ -67,6 +67,35 @@ def cell(v):
     return v
 
 
+# The NMEA 2000 string fields of the vectors (their values are JSON strings).
+STRINGS = {"model_id", "software_version_code", "model_version", "model_serial_code",
+           "installation_description_1", "installation_description_2",
+           "manufacturer_information", "callsign", "name", "destination", "vendor_id"}
+
+
+def text_cell(v):
+    """A string as its CSV cell: printable ASCII as it is, any other character escaped."""
+    short = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+
+    def escaped(c):
+        o = ord(c)
+        if o > 0xFFFF:  # UTF-16's surrogate pair
+            o -= 0x10000
+            return f"\\u{0xD800 + (o >> 10):04X}\\u{0xDC00 + (o & 0x3FF):04X}"
+        return short.get(c, f"\\u{o:04X}")
+    return "".join(c if " " <= c <= "~" else escaped(c) for c in v)
+
+
+# The NMEA 2000 repeating groups of the vectors (their values are JSON arrays of objects).
+GROUPS = {"pgns", "satellites", "stations"}
+
+
+def group_cell(v):
+    """A repeating group as its CSV cell."""
+    return ";".join("|".join(";".join(x) or "none" if isinstance(x, list) else cell(x)
+                             for x in item.values()) for item in v)
+
+
 # ---------------------------------------------------------------------------------------------
 
 def case_csv():
@@ -124,7 +153,13 @@ def case_csv():
                 for row, m in zip(table[1:], rows):
                     # a flag set: its names joined by ';', "none" when it was sent with no flag
                     # set (an empty cell, like any field not available, when it was not sent)
-                    want = [(";".join(m[k]) or "none") if isinstance(m.get(k), list)
+                    # a string: its text, a character outside printable ASCII escaped as in
+                    # JSON (\n, \u00E9)
+                    # a repeating group: its repetitions joined by ';', a repetition's fields
+                    # by '|', each as its own cell
+                    want = [group_cell(m[k]) if k in GROUPS
+                            else (";".join(m[k]) or "none") if isinstance(m.get(k), list)
+                            else text_cell(m[k]) if isinstance(m.get(k), str) and k in STRINGS
                             else cell(m.get(k)) for k in keys]
                     check(row == want, f"{log} {t}: row {row} vs JSON {want}")
 

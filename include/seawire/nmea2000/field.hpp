@@ -31,6 +31,7 @@
 #include "seawire/detail/rounding.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/decimal.hpp"
+#include "seawire/nmea2000/fast_packet.hpp"
 
 namespace seawire::nmea2000 {
 
@@ -528,11 +529,254 @@ using date [[deprecated("use nmea2000::day_count")]] = day_count;
 using time_of_day [[deprecated("use nmea2000::time_since_midnight")]] = time_since_midnight;
 
 // ---------------------------------------------------------------------------------------------
+// ---- strings ----
+
+namespace detail {
+
+/// Whether a byte (or UTF-16 unit) is trimmed from the end of a string's text: padding 0xFF and
+/// 0x00, '@' (AIS's padding), spaces and the other C whitespace (docs/nmea2000.md).
+[[nodiscard]] constexpr bool is_text_padding(std::uint32_t c) noexcept {
+  return c == 0xFF || c == 0x00 || c == '@' || c == ' ' || (c >= '\t' && c <= '\r');
+}
+
+/// The length of a single-byte string's text in `b`: the bytes before the first 0x00 or 0xFF,
+/// trailing padding trimmed.
+[[nodiscard]] constexpr std::size_t single_byte_text_length(std::string_view b) noexcept {
+  std::size_t n = 0;
+  while (n < b.size() && b[n] != '\0' && static_cast<unsigned char>(b[n]) != 0xFF) ++n;
+  while (n > 0 && is_text_padding(static_cast<unsigned char>(b[n - 1]))) --n;
+  return n;
+}
+
+/// Code unit `i` of UTF-16LE bytes `b`.
+[[nodiscard]] constexpr std::uint32_t utf16_unit(std::string_view b, std::size_t i) noexcept {
+  return static_cast<unsigned char>(b[2 * i]) |
+         (static_cast<std::uint32_t>(static_cast<unsigned char>(b[2 * i + 1])) << 8U);
+}
+
+/// The number of UTF-16 code units of a string's text in UTF-16LE bytes `b` (an odd last byte is
+/// no unit): the units before the first U+0000 or U+FFFF, trailing padding units trimmed.
+[[nodiscard]] constexpr std::size_t utf16_text_units(std::string_view b) noexcept {
+  const std::size_t units = b.size() / 2;
+  std::size_t n = 0;
+  while (n < units && utf16_unit(b, n) != 0 && utf16_unit(b, n) != 0xFFFF) ++n;
+  while (n > 0 && utf16_unit(b, n - 1) != 0xFF && is_text_padding(utf16_unit(b, n - 1))) --n;
+  return n;
+}
+
+/// The next code point of UTF-8 `t` at `i` (advanced past it); nullopt for bytes that are not
+/// UTF-8 (overlong forms, surrogates and values past U+10FFFF included).
+[[nodiscard]] constexpr std::optional<std::uint32_t> next_code_point(std::string_view t,
+                                                                     std::size_t& i) noexcept {
+  const auto b0 = static_cast<unsigned char>(t[i]);
+  if (b0 < 0x80) {
+    ++i;
+    return b0;
+  }
+  const std::size_t n = b0 >= 0xF0 ? 4 : b0 >= 0xE0 ? 3 : b0 >= 0xC0 ? 2 : 0;
+  if (n == 0 || b0 > 0xF4 || i + n > t.size()) return std::nullopt;
+  std::uint32_t c = b0 & (0x7FU >> n);
+  for (std::size_t k = 1; k < n; ++k) {
+    const auto b = static_cast<unsigned char>(t[i + k]);
+    if ((b & 0xC0) != 0x80) return std::nullopt;
+    c = (c << 6U) | (b & 0x3FU);
+  }
+  constexpr std::uint32_t least[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (c < least[n] || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return std::nullopt;
+  i += n;
+  return c;
+}
+
+/// Whether code point `c` may be a single-byte string's character: U+0001..U+00FE, the byte of
+/// the same value (0x00 and 0xFF end the text).
+[[nodiscard]] constexpr bool single_byte_char(std::uint32_t c) noexcept {
+  return c >= 0x01 && c <= 0xFE;
+}
+
+}  // namespace detail
+
+/// A string of exactly `Bytes` bytes, one character a byte (canboat's STRING_FIX): the text is
+/// the bytes before the first 0x00 or 0xFF, its trailing padding ('@', spaces, 0x00, 0xFF)
+/// trimmed; an empty text is "not available". Every byte is kept, so decode -> encode is byte
+/// for byte; from_text() pads with `Pad` (0xFF, the NMEA 2000 "no data" byte; '@' for the
+/// strings an AIS message carries). Bytes outside printable ASCII are characters U+0080..U+00FE
+/// of the text, shown escaped (docs/nmea2000.md).
+template <std::size_t Bytes, std::uint8_t Pad = 0xFF>
+class fixed_text {
+  static_assert(Bytes >= 1 && Bytes <= max_fast_packet_length, "a string of 1..223 bytes");
+  static_assert(detail::is_text_padding(Pad), "the padding must be a byte the text is cut at");
+
+ public:
+  static constexpr unsigned bits = 8 * static_cast<unsigned>(Bytes);
+  static constexpr bool is_signed = false;
+  static constexpr bool variable = false;  ///< always Bytes on the wire
+  static constexpr std::size_t capacity = Bytes;
+  static constexpr std::uint8_t padding = Pad;
+
+  constexpr fixed_text() noexcept { bytes_.fill(static_cast<char>(0xFF)); }  // not available
+
+  /// The field's bytes as sent: the first `Bytes` of `b`, 0xFF for those `b` is too short for.
+  [[nodiscard]] static constexpr fixed_text from_bytes(std::span<const std::uint8_t> b) noexcept {
+    fixed_text t;
+    for (std::size_t i = 0; i < Bytes && i < b.size(); ++i) t.bytes_[i] = static_cast<char>(b[i]);
+    return t;
+  }
+  [[nodiscard]] static constexpr fixed_text not_available() noexcept { return fixed_text{}; }
+  /// The string holding `text` (UTF-8), padded with `Pad`. text_too_long past `Bytes`
+  /// characters; bad_text for bytes that are not UTF-8, a character past U+00FE or U+0000 (one
+  /// byte a character, 0x00 and 0xFF end the text) or a text ending in padding (a space, '@':
+  /// the receiver would cut it). "" is the string not available.
+  [[nodiscard]] static constexpr result<fixed_text> from_text(std::string_view text) noexcept {
+    fixed_text t;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < text.size();) {
+      const std::optional<std::uint32_t> c = detail::next_code_point(text, i);
+      if (!c || !detail::single_byte_char(*c)) return {fixed_text{}, errc::bad_text};
+      if (n == Bytes) return {fixed_text{}, errc::text_too_long};
+      t.bytes_[n++] = static_cast<char>(*c);
+    }
+    if (n > 0 && detail::is_text_padding(static_cast<unsigned char>(t.bytes_[n - 1])))
+      return {fixed_text{}, errc::bad_text};
+    for (std::size_t i = n; i < Bytes; ++i) t.bytes_[i] = static_cast<char>(Pad);
+    return {t, errc::ok};
+  }
+
+  /// The bytes as sent, padding included.
+  [[nodiscard]] constexpr std::string_view bytes() const noexcept { return {bytes_.data(), Bytes}; }
+  /// The text: one character a byte (0x80..0xFE as U+0080..U+00FE), padding left out.
+  [[nodiscard]] constexpr std::string_view text() const noexcept {
+    return bytes().substr(0, detail::single_byte_text_length(bytes()));
+  }
+  [[nodiscard]] static constexpr bool is_utf16() noexcept { return false; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return true; }
+  [[nodiscard]] constexpr field_state state() const noexcept {
+    return text().empty() ? field_state::not_available : field_state::value;
+  }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return !text().empty(); }
+  [[nodiscard]] constexpr bool operator==(const fixed_text&) const noexcept = default;
+
+ private:
+  std::array<char, Bytes> bytes_{};
+};
+
+/// What the second byte of a counted string (counted_text) says its characters are.
+enum class text_encoding : std::uint8_t {
+  utf16 = 0,  ///< UTF-16, little-endian code units
+  ascii = 1,  ///< one byte a character
+};
+
+/// A string of varying length (canboat's STRING_LAU): a length byte counting itself, the
+/// encoding byte (text_encoding) and up to `MaxBytes` bytes of characters. The text is read as
+/// fixed_text's (cut at 0x00 / 0xFF, padding trimmed), UTF-16 by code units; an empty text is
+/// "not available", which is sent as the empty string (02 01). Every byte and the encoding byte
+/// are kept as sent, so decode -> encode is byte for byte. The fields after it start where it
+/// ends (decode<P> / encode<P> keep a running offset).
+template <std::size_t MaxBytes>
+class counted_text {
+  static_assert(MaxBytes >= 1 && MaxBytes + 2 <= max_fast_packet_length,
+                "a counted string of 1..221 bytes of text (a fast packet holds 223)");
+
+ public:
+  /// The field's width at its longest (its bytes on the wire vary: wire_size()).
+  static constexpr unsigned bits = 8 * static_cast<unsigned>(MaxBytes + 2);
+  static constexpr bool is_signed = false;
+  static constexpr bool variable = true;
+  static constexpr std::size_t capacity = MaxBytes;
+
+  constexpr counted_text() noexcept = default;  // not available: the empty string
+
+  [[nodiscard]] static constexpr counted_text not_available() noexcept { return counted_text{}; }
+  /// The string of encoding byte `control` and bytes `b` (its first MaxBytes; false when `b` is
+  /// longer).
+  [[nodiscard]] static constexpr result<counted_text> from_bytes(
+      std::uint8_t control, std::span<const std::uint8_t> b) noexcept {
+    counted_text t;
+    t.control_ = control;
+    t.size_ = static_cast<std::uint8_t>(std::min(b.size(), MaxBytes));
+    for (std::size_t i = 0; i < t.size_; ++i) t.bytes_[i] = static_cast<char>(b[i]);
+    return {t, b.size() > MaxBytes ? errc::text_too_long : errc::ok};
+  }
+  /// The string holding `text` (UTF-8): one byte a character (ascii) when every character is
+  /// U+0001..U+00FE, else UTF-16. text_too_long past MaxBytes bytes; bad_text for bytes that are
+  /// not UTF-8, U+0000, U+FFFF, or a text ending in padding (a space, '@').
+  [[nodiscard]] static constexpr result<counted_text> from_text(std::string_view text) noexcept {
+    bool single = true;
+    for (std::size_t i = 0; i < text.size();) {
+      const std::optional<std::uint32_t> c = detail::next_code_point(text, i);
+      if (!c || *c == 0 || *c == 0xFFFF) return {counted_text{}, errc::bad_text};
+      single = single && detail::single_byte_char(*c);
+    }
+    counted_text t;
+    t.control_ = static_cast<std::uint8_t>(single ? text_encoding::ascii : text_encoding::utf16);
+    std::uint32_t last = 0;
+    for (std::size_t i = 0; i < text.size();) {
+      last = *detail::next_code_point(text, i);
+      std::uint32_t units[2] = {last, 0};
+      std::size_t count = 1;
+      if (!single && last > 0xFFFF) {
+        units[0] = 0xD800 + ((last - 0x10000) >> 10U);
+        units[1] = 0xDC00 + ((last - 0x10000) & 0x3FFU);
+        count = 2;
+      }
+      for (std::size_t k = 0; k < count; ++k) {
+        if (t.size_ + (single ? 1U : 2U) > MaxBytes) return {counted_text{}, errc::text_too_long};
+        t.bytes_[t.size_++] = static_cast<char>(units[k] & 0xFFU);
+        if (!single) t.bytes_[t.size_++] = static_cast<char>(units[k] >> 8U);
+      }
+    }
+    if (last != 0 && last != 0xFF && detail::is_text_padding(last))
+      return {counted_text{}, errc::bad_text};
+    return {t, errc::ok};
+  }
+
+  /// The encoding byte as sent (text_encoding; others are kept, their bytes read as ascii).
+  [[nodiscard]] constexpr std::uint8_t control() const noexcept { return control_; }
+  [[nodiscard]] constexpr bool is_utf16() const noexcept {
+    return control_ == static_cast<std::uint8_t>(text_encoding::utf16);
+  }
+  /// The bytes after the encoding byte, as sent.
+  [[nodiscard]] constexpr std::string_view bytes() const noexcept { return {bytes_.data(), size_}; }
+  /// The bytes of the text: padding left out; UTF-16LE code units when is_utf16().
+  [[nodiscard]] constexpr std::string_view text() const noexcept {
+    if (is_utf16()) return bytes().substr(0, 2 * detail::utf16_text_units(bytes()));
+    return bytes().substr(0, detail::single_byte_text_length(bytes()));
+  }
+  /// The bytes on the wire: length, encoding, text.
+  [[nodiscard]] constexpr std::size_t wire_size() const noexcept { return size_ + 2U; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return size_ <= MaxBytes; }
+  [[nodiscard]] constexpr field_state state() const noexcept {
+    return text().empty() ? field_state::not_available : field_state::value;
+  }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return !text().empty(); }
+  [[nodiscard]] constexpr bool operator==(const counted_text& o) const noexcept {
+    return control_ == o.control_ && bytes() == o.bytes();
+  }
+
+ private:
+  std::array<char, MaxBytes> bytes_{};
+  std::uint8_t size_ = 0;
+  std::uint8_t control_ = static_cast<std::uint8_t>(text_encoding::ascii);
+};
+
+/// A string field's value type: fixed_text or counted_text.
+template <class T>
+concept text_value = requires(const T& t) {
+  { T::bits } -> std::convertible_to<unsigned>;
+  { T::variable } -> std::convertible_to<bool>;
+  { T::capacity } -> std::convertible_to<std::size_t>;
+  { t.text() } -> std::same_as<std::string_view>;
+  { t.bytes() } -> std::same_as<std::string_view>;
+  { t.is_utf16() } -> std::same_as<bool>;
+  { t.fits() } -> std::same_as<bool>;
+  { t.state() } -> std::same_as<field_state>;
+};
+
+// ---------------------------------------------------------------------------------------------
 // descriptions
 
 /// A value type a PGN member may have: bits, signedness, raw access.
 template <class T>
-concept field_value = requires(const T& t, std::int64_t raw) {
+concept raw_field_value = requires(const T& t, std::int64_t raw) {
   { T::bits } -> std::convertible_to<unsigned>;
   { T::is_signed } -> std::convertible_to<bool>;
   { T::from_raw(raw) } -> std::same_as<T>;
@@ -541,6 +785,10 @@ concept field_value = requires(const T& t, std::int64_t raw) {
   { t.state() } -> std::same_as<field_state>;
 };
 
+/// A value type a PGN member may have: one with a raw integer, or a string (text_value).
+template <class T>
+concept field_value = raw_field_value<T> || text_value<T>;
+
 /// One row of a PGN table: the member, its name (snake_case with the unit last, as JSON, CSV and
 /// fmt show it) and its title, the field's name as canboat's database spells it (the key of its
 /// JSON).
@@ -548,7 +796,8 @@ template <auto Member>
 struct field_entry {
   using value_type = seawire::detail::member_type_t<Member>;
   static_assert(field_value<value_type>,
-                "a PGN member must be a number, lookup, flags, day_count or time_since_midnight");
+                "a PGN member must be a number, lookup, flags, day_count, time_since_midnight "
+                "or a string (fixed_text, counted_text)");
   static constexpr auto member = Member;
   static constexpr unsigned bits = value_type::bits;
   static constexpr bool is_reserved = false;
@@ -753,9 +1002,10 @@ template <auto Member, class E>
 
 /// How a number that is no quantity reads: an identifier's digits (an AIS user's MMSI), or bits
 /// with no numeric meaning (AIS's communication state). seawire keeps and writes it as a number;
-/// writers that follow canboat show it as canboat does (a string of digits, the bytes in hex).
+/// writers that follow canboat show it as canboat does (a string of at least 9 digits, the bytes
+/// in hex).
 enum class raw_display : std::uint8_t {
-  identifier,  ///< an identifier's digits (an MMSI)
+  identifier,  ///< an identifier's digits (an MMSI, 9 of them)
   bits,        ///< bits with no numeric meaning, shown as bytes
 };
 
@@ -786,14 +1036,14 @@ template <unsigned Bits>
 inline constexpr reserved_bits<Bits> reserved{};
 
 /// `Bits` spare bits (AIS's and an ISO NAME's, by their standards' rule): sent as zeros, ignored
-/// when received.
+/// when received. `spare<N>` is named "spare"; a spare field the standard names is declared as
+/// spare_bits<N>{"name", "Title"}.
 template <unsigned Bits>
-struct spare_bits {
-  static constexpr unsigned bits = Bits;
-  static constexpr bool is_reserved = true;
-  static constexpr bool sent_as_zero = true;
-  std::string_view name = "spare";
-  std::string_view title = "Spare";
+struct spare_bits : reserved_bits<Bits> {
+  static constexpr bool is_spare = true;
+  constexpr spare_bits() noexcept : reserved_bits<Bits>{"spare", "Spare"} {}
+  constexpr spare_bits(std::string_view spare_name, std::string_view spare_title) noexcept
+      : reserved_bits<Bits>{spare_name, spare_title} {}
 };
 template <unsigned Bits>
 inline constexpr spare_bits<Bits> spare{};
@@ -999,15 +1249,64 @@ inline constexpr bool is_flag_word<flags<E, B>> = true;
 /// How PGN payloads lay out their bits (docs/nmea2000.md).
 inline constexpr auto payload_order = seawire::detail::bit_order::lsb_first;
 
+namespace detail {
+template <class Row>
+[[nodiscard]] consteval bool row_is_text() noexcept {
+  if constexpr (Row::is_reserved) {
+    return false;
+  } else {
+    return text_value<typename Row::value_type>;
+  }
+}
+template <class Row>
+[[nodiscard]] consteval bool row_is_flag_word() noexcept {
+  if constexpr (Row::is_reserved) {
+    return false;
+  } else {
+    return is_flag_word<typename Row::value_type>;
+  }
+}
+template <class Row>
+[[nodiscard]] consteval bool row_is_variable() noexcept {
+  if constexpr (row_is_text<Row>()) {
+    return Row::value_type::variable;
+  } else {
+    return false;
+  }
+}
+/// Whether every string row of a table starts on a byte boundary.
+template <class... F>
+[[nodiscard]] consteval bool text_rows_aligned() noexcept {
+  unsigned at = 0;
+  bool ok = true;
+  ((ok = ok && (!row_is_text<F>() || at % 8 == 0), at += F::bits), ...);
+  return ok;
+}
+}  // namespace detail
+
 /// A PGN's table: a binary layout (detail/bit_layout.hpp), each row where the one before ends.
+/// A counted string (counted_text) varies in length: the rows after it start where it ends.
 template <class... F>
 struct pgn_description {
   pgn_info info;
   std::tuple<F...> fields;
 
-  /// The bits of the fixed rows (a repeating group, always last, starts where they end).
+  /// Whether every row is at a fixed offset (no counted string).
+  static constexpr bool fixed_layout = !(detail::row_is_variable<F>() || ...);
+  /// The bits of the fixed rows (a repeating group, always last, starts where they end); with a
+  /// counted string, every counted string at its longest.
   static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
   static_assert(bit_length % 8 == 0, "a PGN's fields must fill whole bytes");
+  static_assert(detail::text_rows_aligned<F...>(), "a string starts on a byte boundary");
+  static_assert(fixed_layout || !(detail::row_is_flag_word<F>() || ...),
+                "a flag set cannot end a payload of varying length");
+  static_assert(fixed_layout || !(detail::group_row<F> || ...),
+                "a table with a counted string has no repeating group (the group starts at a "
+                "fixed offset)");
+  /// The payload's least length in bytes: every fixed row, every counted string empty, no
+  /// repetition of a group.
+  static constexpr std::size_t min_length =
+      (0U + ... + (detail::row_is_variable<F>() ? 16U : static_cast<unsigned>(F::bits))) / 8;
   static constexpr std::size_t field_count = sizeof...(F);
 
  private:
@@ -1029,8 +1328,11 @@ struct pgn_description {
  public:
   /// Whether the table ends in a repeating group.
   static constexpr bool has_group = detail::group_row<last_row>;
-  /// The payload's length in bytes: the largest, with a group at its capacity.
-  static constexpr std::size_t length = bit_length / 8 + group_bytes;
+  /// The payload's length in bytes: the largest, with a group at its capacity; with a counted
+  /// string, the most it may be (a fast packet's 223 bytes at most).
+  static constexpr std::size_t length =
+      fixed_layout ? bit_length / 8 + group_bytes
+                   : std::min<std::size_t>(bit_length / 8, max_fast_packet_length);
 
   /// fn(entry, bit_offset, number) for every row, reserved ones too, in wire order; `number`
   /// counts from 1 as the table does. What fn returns is ignored: every row is visited.
@@ -1111,6 +1413,58 @@ constexpr void decode_group(std::span<const std::uint8_t> payload, unsigned offs
   }
 }
 
+/// A fixed_text at byte `at` of `payload`: the bytes there, 0xFF past the payload's end (a
+/// string cut short keeps what was sent, as canboat's analyzer shows it).
+template <class V>
+[[nodiscard]] constexpr V read_fixed_text(std::span<const std::uint8_t> payload,
+                                          std::size_t at) noexcept {
+  return V::from_bytes(payload.subspan(std::min(at, payload.size())));
+}
+
+/// decode<P> for a table with a counted string: each row where the one before ended. A counted
+/// string takes its length byte's count of bytes, or what the payload still has when the count
+/// runs past its end (as canboat's analyzer reads it); a length byte below 2 (less than itself
+/// and the encoding byte) is no string: that field and every one after it read as not available.
+template <pgn_like P>
+[[nodiscard]] constexpr P decode_varying(std::span<const std::uint8_t> payload) noexcept {
+  // Bytes past the PGN's longest payload (a fast packet's) are no part of it, as for any PGN.
+  payload = payload.first(std::min(payload.size(), description_of<P>::length));
+  P out{};
+  std::size_t at = 0;  // bits
+  bool stop = false;
+  seawire::detail::for_each_row(P::n2k.fields, 0, [&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if (stop) return false;
+    if constexpr (F::is_reserved) {
+      at += F::bits;
+    } else {
+      using V = typename F::value_type;
+      auto& member = out.*F::member;
+      if constexpr (row_is_variable<F>()) {
+        const std::size_t byte = at / 8;
+        if (byte >= payload.size()) return false;  // not sent: this and the rest not available
+        const std::size_t left = payload.size() - byte;
+        const std::size_t count = payload[byte];
+        if (count < 2 || left < 2) {
+          stop = true;
+          return false;
+        }
+        const std::size_t taken = std::min(count, left);
+        member = V::from_bytes(payload[byte + 1], payload.subspan(byte + 2, taken - 2)).value;
+        at += 8 * taken;
+      } else if constexpr (row_is_text<F>()) {
+        member = read_fixed_text<V>(payload, at / 8);
+        at += F::bits;
+      } else {
+        decode_field<F>(payload, static_cast<unsigned>(at), out);
+        at += F::bits;
+      }
+    }
+    return true;
+  });
+  return out;
+}
+
 }  // namespace detail
 
 /// P from a payload. Fields the payload is too short to hold in full read as not available;
@@ -1118,11 +1472,15 @@ constexpr void decode_group(std::span<const std::uint8_t> payload, unsigned offs
 /// Never fails.
 template <pgn_like P>
 [[nodiscard]] constexpr P decode(std::span<const std::uint8_t> payload) noexcept {
+  if constexpr (!description_of<P>::fixed_layout) return detail::decode_varying<P>(payload);
   P out{};
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (detail::group_row<F>) {
       detail::decode_group<F>(payload, offset, out);
+    } else if constexpr (detail::row_is_text<F>()) {
+      if constexpr (!detail::row_is_variable<F>())  // a counted string: decode_varying
+        out.*F::member = detail::read_fixed_text<typename F::value_type>(payload, offset / 8);
     } else if constexpr (!F::is_reserved) {
       detail::decode_field<F>(payload, offset, out);
     }
@@ -1182,6 +1540,67 @@ template <pgn_like P, auto Member>
   return out;
 }
 
+/// A string's bytes at byte `at` of `out` (room checked by the caller): a fixed_text's bytes, a
+/// counted_text's length byte, encoding byte and bytes.
+template <std::size_t N, class V>
+constexpr void put_text(std::array<std::uint8_t, N>& out, std::size_t at, const V& v) noexcept {
+  if constexpr (V::variable) {
+    out[at++] = static_cast<std::uint8_t>(v.wire_size());
+    out[at++] = v.control();
+  }
+  for (const char c : v.bytes()) out[at++] = static_cast<std::uint8_t>(c);
+}
+
+/// encode<P> for a table with a counted string: each row where the one before ends, the payload
+/// as long as its rows. Where the rest does not fit a fast packet and every row left is not
+/// available, the payload ends there (a receiver reads them as not available: what decode gives
+/// for a string whose length byte ran to the payload's end). text_too_long (field = the row)
+/// when a row that does not fit holds a value.
+template <pgn_like P>
+[[nodiscard]] constexpr result<encoded_payload<P>> encode_varying(const P& msg) noexcept {
+  constexpr std::size_t room = description_of<P>::length;
+  result<encoded_payload<P>> r;
+  r.value.bytes.fill(0xFF);
+  std::size_t at = 0;         // bits
+  std::uint16_t cut_row = 0;  // the row the payload ended before, 0 while it goes on
+  std::size_t cut_at = 0;
+  seawire::detail::for_each_row(P::n2k.fields, 0, [&](const auto& f, unsigned, std::uint16_t n) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    const auto fail = [&](errc e) {
+      r.ec = e;
+      r.field = n;
+      r.column = static_cast<std::uint16_t>(at / 8);
+      return false;
+    };
+    bool available = false;
+    if constexpr (!F::is_reserved)
+      available = (msg.*F::member).state() != field_state::not_available;
+    std::size_t bits = F::bits;
+    if constexpr (row_is_variable<F>()) bits = 8 * (msg.*F::member).wire_size();
+    if (cut_row == 0 && at + bits > 8 * room) {
+      cut_row = n;
+      cut_at = at;
+    }
+    if (cut_row != 0) return available ? fail(errc::text_too_long) : true;
+    if constexpr (requires { F::is_spare; })
+      seawire::detail::put_bits<payload_order>(r.value.bytes, static_cast<unsigned>(at), F::bits,
+                                               0);
+    if constexpr (!F::is_reserved) {
+      const auto& v = msg.*F::member;
+      if (!v.fits()) return fail(errc::value_too_large);
+      if constexpr (row_is_text<F>()) {
+        put_text(r.value.bytes, at / 8, v);
+      } else {
+        encode_field<F>(r.value.bytes, static_cast<unsigned>(at), v);
+      }
+    }
+    at += bits;
+    return true;
+  });
+  r.value.length = ((cut_row != 0 ? cut_at : at) + 7) / 8;
+  return r;
+}
+
 }  // namespace detail
 
 /// P's payload: every field at its offset, reserved bits as ones (spare bits as zeros), a field
@@ -1200,6 +1619,7 @@ template <pgn_like P, auto Member>
 ///                     is not a value says nothing: not available, out of range, reserved).
 template <pgn_like P>
 [[nodiscard]] constexpr result<encoded_payload<P>> encode(const P& msg) noexcept {
+  if constexpr (!description_of<P>::fixed_layout) return detail::encode_varying<P>(msg);
   result<encoded_payload<P>> r;
   r.value.bytes.fill(0xFF);
   std::size_t cut = r.value.length;
@@ -1213,9 +1633,9 @@ template <pgn_like P>
   };
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
-    if constexpr (requires { F::sent_as_zero; }) {
+    if constexpr (requires { F::is_spare; })
       seawire::detail::put_bits<payload_order>(r.value.bytes, offset, F::bits, 0);
-    } else if constexpr (detail::group_row<F>) {
+    if constexpr (detail::group_row<F>) {
       const auto& g = msg.*F::member;
       if (cut_row != 0) {
         if (!g.empty()) fail(errc::missing_field, cut_row, cut_offset);
@@ -1238,7 +1658,7 @@ template <pgn_like P>
       for (const Item& item : g) {
         Item::n2k_item.for_each([&](const auto& e, unsigned o, std::uint16_t) {
           using R = std::remove_cvref_t<decltype(e)>;
-          if constexpr (requires { R::sent_as_zero; }) {
+          if constexpr (requires { R::is_spare; }) {
             seawire::detail::put_bits<payload_order>(r.value.bytes, at + o, R::bits, 0);
           } else if constexpr (!R::is_reserved) {
             const auto& v = item.*R::member;
@@ -1270,7 +1690,11 @@ template <pgn_like P>
           return;
         }
       }
-      detail::encode_field<F>(r.value.bytes, offset, v);
+      if constexpr (detail::row_is_text<F>()) {
+        detail::put_text(r.value.bytes, offset / 8, v);
+      } else {
+        detail::encode_field<F>(r.value.bytes, offset, v);
+      }
     }
   });
   r.value.length = cut;

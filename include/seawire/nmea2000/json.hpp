@@ -118,13 +118,84 @@ constexpr bool flag_names(Sink& s, const T& v, char sep) noexcept {
   return any;
 }
 
+/// A string's text as a JSON string's content (no quotes): printable ASCII as it is, '"' and '\'
+/// escaped, every other character as \u00XX (a single-byte string's byte XX) or \uXXXX (a UTF-16
+/// string's code unit, a pair for a character past U+FFFF), so any byte reads back exactly.
+template <json_sink Sink, text_value T>
+constexpr void json_text(Sink& s, const T& v) noexcept {
+  const std::string_view t = v.text();
+  if (!v.is_utf16()) {
+    nmea::detail::json_escape(s, t);
+    return;
+  }
+  for (std::size_t i = 0; i < t.size() / 2; ++i) {
+    const std::uint32_t u = utf16_unit(t, i);
+    if (u < 0x80) {
+      const char c = static_cast<char>(u);
+      nmea::detail::json_escape(s, std::string_view(&c, 1));
+      continue;
+    }
+    s.put("\\u");
+    for (unsigned shift = 16; shift > 0;) {
+      shift -= 4;
+      s.put(seawire::detail::hex_digit_upper(u >> shift));
+    }
+  }
+}
+
+/// A string's text as a CSV cell holds it: printable ASCII as it is (a quote, a backslash too),
+/// every other character escaped as json_text escapes it, so the cell is the JSON string's value
+/// but for those.
+template <json_sink Sink, text_value T>
+constexpr void csv_text(Sink& s, const T& v) noexcept {
+  const std::string_view t = v.text();
+  const std::size_t step = v.is_utf16() ? 2 : 1;
+  for (std::size_t i = 0; i + step <= t.size(); i += step) {
+    const std::uint32_t c = v.is_utf16() ? utf16_unit(t, i / 2) : static_cast<unsigned char>(t[i]);
+    if (c >= 0x20 && c < 0x7F) {
+      s.put(static_cast<char>(c));
+    } else if (c < 0x80) {
+      const char b = static_cast<char>(c);
+      nmea::detail::json_escape(s, std::string_view(&b, 1));
+    } else {
+      s.put("\\u");
+      for (unsigned shift = 16; shift > 0;) {
+        shift -= 4;
+        s.put(seawire::detail::hex_digit_upper(c >> shift));
+      }
+    }
+  }
+}
+
+/// Passes text on with every '"' doubled (inside a quoted CSV field).
+template <class Sink>
+struct csv_quoted_sink {
+  Sink& out;
+  constexpr void put(char c) noexcept {
+    if (c == '"') out.put('"');
+    out.put(c);
+  }
+  constexpr void put(std::string_view v) noexcept {
+    for (const char c : v) put(c);
+  }
+};
+
 }  // namespace detail
 
 /// One field value as JSON (or plain).
 template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, field_value T>
 constexpr void write_json_value(Sink& s, const T& v) noexcept {
   using nmea::detail::json_uint;
-  if constexpr (detail::is_flags<T>::value) {
+  if constexpr (text_value<T>) {
+    if (!v.has_value()) {  // an empty text: not available
+      s.put("null");
+      return;
+    }
+    s.put('"');  // quoted in plain text too, as a sentence's text is
+    detail::json_text(s, v);
+    s.put('"');
+    return;
+  } else if constexpr (detail::is_flags<T>::value) {
     if (!v.has_value()) {  // not sent: not the same as [] (sent, no flag set)
       s.put("null");
       return;
@@ -259,7 +330,18 @@ requires(Info::kind ==
          wire_kind::nmea2000) constexpr void put_csv_value(Sink& s,
                                                            const field_view<Info>& f) noexcept {
   using V = typename Info::value_type;
-  if constexpr (detail::is_group_value<V>) {
+  if constexpr (text_value<V>) {
+    // The text (csv_text), quoted by CSV's rule when it holds a comma or a quote.
+    if (!f.value.has_value()) return;
+    if (f.value.text().find_first_of(",\"") == std::string_view::npos) {
+      detail::csv_text(s, f.value);
+    } else {
+      s.put('"');
+      detail::csv_quoted_sink<Sink> q{s};
+      detail::csv_text(q, f.value);
+      s.put('"');
+    }
+  } else if constexpr (detail::is_group_value<V>) {
     // One cell: the repetitions separated by ';', a repetition's fields by '|' in wire order,
     // each as its own cell would be (empty when not available).
     bool first_item = true;
@@ -395,7 +477,16 @@ template <class T>
 template <field_value T, class Lookup>
 [[nodiscard]] constexpr errc read_json_value(const json_value& v, T& out, std::string_view name,
                                              Lookup&& lookup) noexcept {
-  if constexpr (detail::is_flags<T>::value) {
+  if constexpr (text_value<T>) {
+    if (v.blank()) {
+      out = T{};
+      return errc::ok;
+    }
+    if (v.kind != json_kind::string) return errc::bad_text;
+    const auto r = T::from_text(v.text);
+    if (r) out = r.value;
+    return r.ec;
+  } else if constexpr (detail::is_flags<T>::value) {
     using E = value_enum_t<T>;
     if (v.kind == json_kind::number) {
       std::int64_t raw = 0;

@@ -1093,109 +1093,126 @@ constexpr std::array<std::string_view, 5> lookup_titles(transmission_status) noe
           "Sail Drive"};
 }
 
-/// The AIS message an NMEA 2000 AIS PGN carries (6 bits; 0 has no name).
+namespace detail {
+/// A value of a lookup and its name.
+struct named_value {
+  std::size_t value = 0;
+  std::string_view name;
+};
+/// The names of a lookup whose values have gaps, by value ("" where none).
+template <std::size_t N, std::size_t M>
+[[nodiscard]] constexpr std::array<std::string_view, N> names_by_value(
+    const named_value (&values)[M]) noexcept {
+  std::array<std::string_view, N> out{};
+  for (const named_value& v : values) out[v.value] = v.name;
+  return out;
+}
+}  // namespace detail
+
+/// The AIS message an NMEA 2000 AIS PGN carries (6 bits, ITU-R M.1371 message numbers; 0 has no
+/// name).
 enum class ais_message_id : std::uint8_t {
-  scheduled_class_a_position = 1,
-  assigned_class_a_position = 2,
-  interrogated_class_a_position = 3,
+  scheduled_class_a_position_report = 1,
+  assigned_scheduled_class_a_position_report = 2,
+  interrogated_class_a_position_report = 3,
   base_station_report = 4,
-  static_and_voyage_data = 5,
-  binary_addressed = 6,
+  static_and_voyage_related_data = 5,
+  binary_addressed_message = 6,
   binary_acknowledgement = 7,
-  binary_broadcast = 8,
-  sar_aircraft_position = 9,
+  binary_broadcast_message = 8,
+  standard_sar_aircraft_position_report = 9,
   utc_date_inquiry = 10,
   utc_date_response = 11,
-  safety_addressed = 12,
-  safety_acknowledgement = 13,
-  safety_broadcast = 14,
+  safety_related_addressed_message = 12,
+  safety_related_acknowledgement = 13,
+  safety_related_broadcast_message = 14,
   interrogation = 15,
   assignment_mode_command = 16,
-  dgnss_broadcast = 17,
-  class_b_position = 18,
-  extended_class_b_position = 19,
-  data_link_management = 20,
+  dgnss_broadcast_binary_message = 17,
+  standard_class_b_position_report = 18,
+  extended_class_b_position_report = 19,
+  data_link_management_message = 20,
   aton_report = 21,
   channel_management = 22,
   group_assignment_command = 23,
   static_data_report = 24,
-  single_slot_binary = 25,
-  multiple_slot_binary = 26,
-  long_range_position = 27,
+  single_slot_binary_message = 25,
+  multiple_slot_binary_message = 26,
+  position_report_for_long_range_applications = 27,
 };
 constexpr std::array<std::string_view, 28> lookup_names(ais_message_id) noexcept {
-  return {"",
-          "scheduled_class_a_position",
-          "assigned_class_a_position",
-          "interrogated_class_a_position",
-          "base_station_report",
-          "static_and_voyage_data",
-          "binary_addressed",
-          "binary_acknowledgement",
-          "binary_broadcast",
-          "sar_aircraft_position",
-          "utc_date_inquiry",
-          "utc_date_response",
-          "safety_addressed",
-          "safety_acknowledgement",
-          "safety_broadcast",
-          "interrogation",
-          "assignment_mode_command",
-          "dgnss_broadcast",
-          "class_b_position",
-          "extended_class_b_position",
-          "data_link_management",
-          "aton_report",
-          "channel_management",
-          "group_assignment_command",
-          "static_data_report",
-          "single_slot_binary",
-          "multiple_slot_binary",
-          "long_range_position"};
+  return detail::names_by_value<28>({{1, "scheduled_class_a_position_report"},
+                                     {2, "assigned_scheduled_class_a_position_report"},
+                                     {3, "interrogated_class_a_position_report"},
+                                     {4, "base_station_report"},
+                                     {5, "static_and_voyage_related_data"},
+                                     {6, "binary_addressed_message"},
+                                     {7, "binary_acknowledgement"},
+                                     {8, "binary_broadcast_message"},
+                                     {9, "standard_sar_aircraft_position_report"},
+                                     {10, "utc_date_inquiry"},
+                                     {11, "utc_date_response"},
+                                     {12, "safety_related_addressed_message"},
+                                     {13, "safety_related_acknowledgement"},
+                                     {14, "safety_related_broadcast_message"},
+                                     {15, "interrogation"},
+                                     {16, "assignment_mode_command"},
+                                     {17, "dgnss_broadcast_binary_message"},
+                                     {18, "standard_class_b_position_report"},
+                                     {19, "extended_class_b_position_report"},
+                                     {20, "data_link_management_message"},
+                                     {21, "aton_report"},
+                                     {22, "channel_management"},
+                                     {23, "group_assignment_command"},
+                                     {24, "static_data_report"},
+                                     {25, "single_slot_binary_message"},
+                                     {26, "multiple_slot_binary_message"},
+                                     {27, "position_report_for_long_range_applications"}});
 }
+/// canboat's texts for ais_message_id's values, in the same order.
 constexpr std::array<std::string_view, 28> lookup_titles(ais_message_id) noexcept {
-  return {"",
-          "Scheduled Class A position report",
-          "Assigned scheduled Class A position report",
-          "Interrogated Class A position report",
-          "Base station report",
-          "Static and voyage related data",
-          "Binary addressed message",
-          "Binary acknowledgement",
-          "Binary broadcast message",
-          "Standard SAR aircraft position report",
-          "UTC/date inquiry",
-          "UTC/date response",
-          "Safety related addressed message",
-          "Safety related acknowledgement",
-          "Satety related broadcast message",
-          "Interrogation",
-          "Assignment mode command",
-          "DGNSS broadcast binary message",
-          "Standard Class B position report",
-          "Extended Class B position report",
-          "Data link management message",
-          "ATON report",
-          "Channel management",
-          "Group assignment command",
-          "Static data report",
-          "Single slot binary message",
-          "Multiple slot binary message",
-          "Position report for long range applications"};
+  return detail::names_by_value<28>({{1, "Scheduled Class A position report"},
+                                     {2, "Assigned scheduled Class A position report"},
+                                     {3, "Interrogated Class A position report"},
+                                     {4, "Base station report"},
+                                     {5, "Static and voyage related data"},
+                                     {6, "Binary addressed message"},
+                                     {7, "Binary acknowledgement"},
+                                     {8, "Binary broadcast message"},
+                                     {9, "Standard SAR aircraft position report"},
+                                     {10, "UTC/date inquiry"},
+                                     {11, "UTC/date response"},
+                                     {12, "Safety related addressed message"},
+                                     {13, "Safety related acknowledgement"},
+                                     {14, "Satety related broadcast message"},
+                                     {15, "Interrogation"},
+                                     {16, "Assignment mode command"},
+                                     {17, "DGNSS broadcast binary message"},
+                                     {18, "Standard Class B position report"},
+                                     {19, "Extended Class B position report"},
+                                     {20, "Data link management message"},
+                                     {21, "ATON report"},
+                                     {22, "Channel management"},
+                                     {23, "Group assignment command"},
+                                     {24, "Static data report"},
+                                     {25, "Single slot binary message"},
+                                     {26, "Multiple slot binary message"},
+                                     {27, "Position report for long range applications"}});
 }
 
-/// How many times an AIS message has been repeated (2 bits, every raw value named: none is "not
-/// available").
-enum class repeat_indicator : std::uint8_t {
+/// How many times an AIS message has been repeated (2 bits, every raw value named, so a value:
+/// none is "not available").
+enum class ais_repeat_indicator : std::uint8_t {
   initial = 0,
   first_retransmission = 1,
   second_retransmission = 2,
   final_retransmission = 3,
 };
-constexpr std::array<std::string_view, 4> lookup_names(repeat_indicator) noexcept {
+constexpr std::array<std::string_view, 4> lookup_names(ais_repeat_indicator) noexcept {
   return {"initial", "first_retransmission", "second_retransmission", "final_retransmission"};
 }
-constexpr std::array<std::string_view, 4> lookup_titles(repeat_indicator) noexcept {
+/// canboat's texts for ais_repeat_indicator's values, in the same order.
+constexpr std::array<std::string_view, 4> lookup_titles(ais_repeat_indicator) noexcept {
   return {"Initial", "First retransmission", "Second retransmission", "Final retransmission"};
 }
 
@@ -1242,19 +1259,21 @@ constexpr std::array<std::string_view, 64> lookup_titles(ais_time_stamp) noexcep
   return a;
 }
 
-/// Which AIS channel a report came in on or went out on (5 bits).
+/// Which AIS channel a message came from, or was sent on (5 bits).
 enum class ais_transceiver : std::uint8_t {
-  channel_a_reception = 0,
-  channel_b_reception = 1,
-  channel_a_transmission = 2,
-  channel_b_transmission = 3,
+  channel_a_vdl_reception = 0,
+  channel_b_vdl_reception = 1,
+  channel_a_vdl_transmission = 2,
+  channel_b_vdl_transmission = 3,
   own_information_not_broadcast = 4,
-  reserved_5 = 5,  ///< named "Reserved" by the standard
+  reserved_5 = 5,
 };
 constexpr std::array<std::string_view, 6> lookup_names(ais_transceiver) noexcept {
-  return {"channel_a_reception",    "channel_b_reception",           "channel_a_transmission",
-          "channel_b_transmission", "own_information_not_broadcast", "reserved_5"};
+  return {"channel_a_vdl_reception",       "channel_b_vdl_reception",
+          "channel_a_vdl_transmission",    "channel_b_vdl_transmission",
+          "own_information_not_broadcast", "reserved_5"};
 }
+/// canboat's texts for ais_transceiver's values, in the same order.
 constexpr std::array<std::string_view, 6> lookup_titles(ais_transceiver) noexcept {
   return {"Channel A VDL reception",       "Channel B VDL reception",
           "Channel A VDL transmission",    "Channel B VDL transmission",
@@ -1519,7 +1538,7 @@ struct transmission_parameters_dynamic {
 /// is the 19 bits of AIS's slot allocation as sent; bits 208-210 are spare (zero).
 struct ais_class_a_position {
   lookup<ais_message_id, 6> message_id;
-  lookup<nmea2000::repeat_indicator, 2> repeat_indicator;
+  lookup<nmea2000::ais_repeat_indicator, 2> repeat_indicator;
   unsigned_number<32> user_id;  ///< MMSI
   signed_number<32, res::degree_e7> longitude_deg;
   signed_number<32, res::degree_e7> latitude_deg;
@@ -1567,7 +1586,7 @@ struct ais_class_a_position {
 /// unit can do. The 10 bits of regional application are spare (zero).
 struct ais_class_b_position {
   lookup<ais_message_id, 6> message_id;
-  lookup<nmea2000::repeat_indicator, 2> repeat_indicator;
+  lookup<nmea2000::ais_repeat_indicator, 2> repeat_indicator;
   unsigned_number<32> user_id;  ///< MMSI
   signed_number<32, res::degree_e7> longitude_deg;
   signed_number<32, res::degree_e7> latitude_deg;
@@ -1710,14 +1729,14 @@ constexpr std::array<std::string_view, 9> lookup_titles(gnss_method) noexcept {
           "Simulate mode"};
 }
 
-/// The receiver's integrity check of the position (129029). A 2-bit lookup: raw 2 and 3 (which
-/// canboat names Caution and Unsafe) are the field's sentinels here, as for every 2-bit lookup.
-enum class gnss_integrity : std::uint8_t { none = 0, safe = 1 };
-constexpr std::array<std::string_view, 2> lookup_names(gnss_integrity) noexcept {
-  return {"none", "safe"};
+/// The receiver's integrity check of the position (129029; 2 bits, every raw value named, so a
+/// value: none is "not available").
+enum class gnss_integrity : std::uint8_t { none = 0, safe = 1, caution = 2, unsafe = 3 };
+constexpr std::array<std::string_view, 4> lookup_names(gnss_integrity) noexcept {
+  return {"none", "safe", "caution", "unsafe"};
 }
-constexpr std::array<std::string_view, 2> lookup_titles(gnss_integrity) noexcept {
-  return {"No integrity checking", "Safe"};
+constexpr std::array<std::string_view, 4> lookup_titles(gnss_integrity) noexcept {
+  return {"No integrity checking", "Safe", "Caution", "Unsafe"};
 }
 
 /// PGN 126464 PGN List (Transmit and Receive): fast packet, priority 6, on demand. The PGNs a
@@ -1837,6 +1856,434 @@ struct gnss_position_data {
       repeating<&gnss_position_data::stations, &gnss_position_data::reference_stations>(
           "stations", "Reference Station"));
   [[nodiscard]] constexpr bool operator==(const gnss_position_data&) const noexcept = default;
+};
+
+// ---------------------------------------------------------------------------------------------
+// ---- strings: product and configuration information, AIS static data ----
+
+/// An NMEA 2000 certification level (126996).
+enum class certification_level : std::uint8_t {
+  level_a = 0,
+  level_b = 1,
+};
+constexpr std::array<std::string_view, 2> lookup_names(certification_level) noexcept {
+  return {"level_a", "level_b"};
+}
+/// canboat's texts for certification_level's values, in the same order.
+constexpr std::array<std::string_view, 2> lookup_titles(certification_level) noexcept {
+  return {"Level A", "Level B"};
+}
+
+/// An AIS ship and cargo type (ITU-R M.1371); values without a name are kept as numbers.
+enum class ship_type : std::uint8_t {
+  unavailable = 0,
+  wing_in_ground = 20,
+  wing_in_ground_hazard_cat_x = 21,
+  wing_in_ground_hazard_cat_y = 22,
+  wing_in_ground_hazard_cat_z = 23,
+  wing_in_ground_hazard_cat_os = 24,
+  wing_in_ground_no_additional_information = 29,
+  fishing = 30,
+  towing = 31,
+  towing_exceeds_200m_or_wider_than_25m = 32,
+  engaged_in_dredging_or_underwater_operations = 33,
+  engaged_in_diving_operations = 34,
+  engaged_in_military_operations = 35,
+  sailing = 36,
+  pleasure = 37,
+  high_speed_craft = 40,
+  high_speed_craft_hazard_cat_x = 41,
+  high_speed_craft_hazard_cat_y = 42,
+  high_speed_craft_hazard_cat_z = 43,
+  high_speed_craft_hazard_cat_os = 44,
+  high_speed_craft_no_additional_information = 49,
+  pilot_vessel = 50,
+  sar = 51,
+  tug = 52,
+  port_tender = 53,
+  anti_pollution = 54,
+  law_enforcement = 55,
+  spare = 56,
+  spare_2 = 57,
+  medical = 58,
+  ships_and_aircraft_of_states_not_parties_to_an_armed_conflict = 59,
+  passenger_ship = 60,
+  passenger_ship_hazard_cat_x = 61,
+  passenger_ship_hazard_cat_y = 62,
+  passenger_ship_hazard_cat_z = 63,
+  passenger_ship_hazard_cat_os = 64,
+  passenger_ship_no_additional_information = 69,
+  cargo_ship = 70,
+  cargo_ship_hazard_cat_x = 71,
+  cargo_ship_hazard_cat_y = 72,
+  cargo_ship_hazard_cat_z = 73,
+  cargo_ship_hazard_cat_os = 74,
+  cargo_ship_no_additional_information = 79,
+  tanker = 80,
+  tanker_hazard_cat_x = 81,
+  tanker_hazard_cat_y = 82,
+  tanker_hazard_cat_z = 83,
+  tanker_hazard_cat_os = 84,
+  tanker_no_additional_information = 89,
+  other = 90,
+  other_hazard_cat_x = 91,
+  other_hazard_cat_y = 92,
+  other_hazard_cat_z = 93,
+  other_hazard_cat_os = 94,
+  other_no_additional_information = 99,
+};
+constexpr std::array<std::string_view, 100> lookup_names(ship_type) noexcept {
+  return detail::names_by_value<100>(
+      {{0, "unavailable"},
+       {20, "wing_in_ground"},
+       {21, "wing_in_ground_hazard_cat_x"},
+       {22, "wing_in_ground_hazard_cat_y"},
+       {23, "wing_in_ground_hazard_cat_z"},
+       {24, "wing_in_ground_hazard_cat_os"},
+       {29, "wing_in_ground_no_additional_information"},
+       {30, "fishing"},
+       {31, "towing"},
+       {32, "towing_exceeds_200m_or_wider_than_25m"},
+       {33, "engaged_in_dredging_or_underwater_operations"},
+       {34, "engaged_in_diving_operations"},
+       {35, "engaged_in_military_operations"},
+       {36, "sailing"},
+       {37, "pleasure"},
+       {40, "high_speed_craft"},
+       {41, "high_speed_craft_hazard_cat_x"},
+       {42, "high_speed_craft_hazard_cat_y"},
+       {43, "high_speed_craft_hazard_cat_z"},
+       {44, "high_speed_craft_hazard_cat_os"},
+       {49, "high_speed_craft_no_additional_information"},
+       {50, "pilot_vessel"},
+       {51, "sar"},
+       {52, "tug"},
+       {53, "port_tender"},
+       {54, "anti_pollution"},
+       {55, "law_enforcement"},
+       {56, "spare"},
+       {57, "spare_2"},
+       {58, "medical"},
+       {59, "ships_and_aircraft_of_states_not_parties_to_an_armed_conflict"},
+       {60, "passenger_ship"},
+       {61, "passenger_ship_hazard_cat_x"},
+       {62, "passenger_ship_hazard_cat_y"},
+       {63, "passenger_ship_hazard_cat_z"},
+       {64, "passenger_ship_hazard_cat_os"},
+       {69, "passenger_ship_no_additional_information"},
+       {70, "cargo_ship"},
+       {71, "cargo_ship_hazard_cat_x"},
+       {72, "cargo_ship_hazard_cat_y"},
+       {73, "cargo_ship_hazard_cat_z"},
+       {74, "cargo_ship_hazard_cat_os"},
+       {79, "cargo_ship_no_additional_information"},
+       {80, "tanker"},
+       {81, "tanker_hazard_cat_x"},
+       {82, "tanker_hazard_cat_y"},
+       {83, "tanker_hazard_cat_z"},
+       {84, "tanker_hazard_cat_os"},
+       {89, "tanker_no_additional_information"},
+       {90, "other"},
+       {91, "other_hazard_cat_x"},
+       {92, "other_hazard_cat_y"},
+       {93, "other_hazard_cat_z"},
+       {94, "other_hazard_cat_os"},
+       {99, "other_no_additional_information"}});
+}
+/// canboat's texts for ship_type's values, in the same order.
+constexpr std::array<std::string_view, 100> lookup_titles(ship_type) noexcept {
+  return detail::names_by_value<100>(
+      {{0, "Unavailable"},
+       {20, "Wing In Ground"},
+       {21, "Wing In Ground (hazard cat X)"},
+       {22, "Wing In Ground (hazard cat Y)"},
+       {23, "Wing In Ground (hazard cat Z)"},
+       {24, "Wing In Ground (hazard cat OS)"},
+       {29, "Wing In Ground (no additional information)"},
+       {30, "Fishing"},
+       {31, "Towing"},
+       {32, "Towing exceeds 200m or wider than 25m"},
+       {33, "Engaged in dredging or underwater operations"},
+       {34, "Engaged in diving operations"},
+       {35, "Engaged in military operations"},
+       {36, "Sailing"},
+       {37, "Pleasure"},
+       {40, "High speed craft"},
+       {41, "High speed craft (hazard cat X)"},
+       {42, "High speed craft (hazard cat Y)"},
+       {43, "High speed craft (hazard cat Z)"},
+       {44, "High speed craft (hazard cat OS)"},
+       {49, "High speed craft (no additional information)"},
+       {50, "Pilot vessel"},
+       {51, "SAR"},
+       {52, "Tug"},
+       {53, "Port tender"},
+       {54, "Anti-pollution"},
+       {55, "Law enforcement"},
+       {56, "Spare"},
+       {57, "Spare #2"},
+       {58, "Medical"},
+       {59, "Ships and aircraft of States not parties to an armed conflict"},
+       {60, "Passenger ship"},
+       {61, "Passenger ship (hazard cat X)"},
+       {62, "Passenger ship (hazard cat Y)"},
+       {63, "Passenger ship (hazard cat Z)"},
+       {64, "Passenger ship (hazard cat OS)"},
+       {69, "Passenger ship (no additional information)"},
+       {70, "Cargo ship"},
+       {71, "Cargo ship (hazard cat X)"},
+       {72, "Cargo ship (hazard cat Y)"},
+       {73, "Cargo ship (hazard cat Z)"},
+       {74, "Cargo ship (hazard cat OS)"},
+       {79, "Cargo ship (no additional information)"},
+       {80, "Tanker"},
+       {81, "Tanker (hazard cat X)"},
+       {82, "Tanker (hazard cat Y)"},
+       {83, "Tanker (hazard cat Z)"},
+       {84, "Tanker (hazard cat OS)"},
+       {89, "Tanker (no additional information)"},
+       {90, "Other"},
+       {91, "Other (hazard cat X)"},
+       {92, "Other (hazard cat Y)"},
+       {93, "Other (hazard cat Z)"},
+       {94, "Other (hazard cat OS)"},
+       {99, "Other (no additional information)"}});
+}
+
+/// The ITU-R M.1371 edition an AIS station follows (2 bits, every raw value named, so a value:
+/// none is "not available").
+enum class ais_version : std::uint8_t {
+  itu_r_m1371_1 = 0,
+  itu_r_m1371_3 = 1,
+  itu_r_m1371_5 = 2,
+  itu_r_m1371_future = 3,
+};
+constexpr std::array<std::string_view, 4> lookup_names(ais_version) noexcept {
+  return {"itu_r_m1371_1", "itu_r_m1371_3", "itu_r_m1371_5", "itu_r_m1371_future"};
+}
+/// canboat's texts for ais_version's values, in the same order.
+constexpr std::array<std::string_view, 4> lookup_titles(ais_version) noexcept {
+  return {"ITU-R M.1371-1", "ITU-R M.1371-3", "ITU-R M.1371-5", "ITU-R M.1371 future edition"};
+}
+
+/// The kind of position fixing device of an AIS station.
+enum class position_fix_device : std::uint8_t {
+  undefined = 0,
+  gps = 1,
+  glonass = 2,
+  gps_glonass = 3,
+  loran_c = 4,
+  chayka = 5,
+  integrated_navigation_system = 6,
+  surveyed = 7,
+  galileo = 8,
+};
+constexpr std::array<std::string_view, 9> lookup_names(position_fix_device) noexcept {
+  return {"undefined",
+          "gps",
+          "glonass",
+          "gps_glonass",
+          "loran_c",
+          "chayka",
+          "integrated_navigation_system",
+          "surveyed",
+          "galileo"};
+}
+/// canboat's texts for position_fix_device's values, in the same order.
+constexpr std::array<std::string_view, 9> lookup_titles(position_fix_device) noexcept {
+  return {"Default: undefined",           "GPS",      "GLONASS",
+          "Combined GPS/GLONASS",         "Loran-C",  "Chayka",
+          "Integrated navigation system", "Surveyed", "Galileo"};
+}
+
+/// Whether an AIS station's data terminal is ready (DTE).
+enum class dte_availability : std::uint8_t {
+  available = 0,
+  unavailable = 1,
+};
+constexpr std::array<std::string_view, 2> lookup_names(dte_availability) noexcept {
+  return {"available", "unavailable"};
+}
+/// canboat's texts for dte_availability's values, in the same order.
+constexpr std::array<std::string_view, 2> lookup_titles(dte_availability) noexcept {
+  return {"Available", "Not available"};
+}
+
+/// PGN 126996 Product Information: 134 bytes, fast packet, priority 6, on request. The device's
+/// NMEA 2000 version (0.001: 2.100 is 2100), product code, four 32-byte strings (model, software
+/// version, model version, serial), certification level and load (LEN: 50 mA each).
+struct product_information {
+  unsigned_number<16, res::thousandth> nmea2000_version;
+  unsigned_number<16> product_code;
+  fixed_text<32> model_id;
+  fixed_text<32> software_version_code;
+  fixed_text<32> model_version;
+  fixed_text<32> model_serial_code;
+  lookup<nmea2000::certification_level, 8> certification_level;
+  unsigned_number<8> load_equivalency;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{126996, "product_information", "Product Information", 6, framing::fast_packet, 0},
+      field<&product_information::nmea2000_version>("nmea2000_version", "NMEA 2000 Version"),
+      field<&product_information::product_code>("product_code", "Product Code"),
+      field<&product_information::model_id>("model_id", "Model ID"),
+      field<&product_information::software_version_code>("software_version_code",
+                                                         "Software Version Code"),
+      field<&product_information::model_version>("model_version", "Model Version"),
+      field<&product_information::model_serial_code>("model_serial_code", "Model Serial Code"),
+      field<&product_information::certification_level>("certification_level",
+                                                       "Certification Level"),
+      field<&product_information::load_equivalency>("load_equivalency", "Load Equivalency"));
+  [[nodiscard]] constexpr bool operator==(const product_information&) const noexcept = default;
+};
+
+/// The most text a counted string can carry: a fast packet less its length and encoding bytes.
+inline constexpr std::size_t max_counted_text = max_fast_packet_length - 2;
+
+/// PGN 126998 Configuration Information: 6 to 223 bytes, fast packet, priority 6, on request.
+/// Three counted strings (installation notes and the manufacturer's), each where the one before
+/// ends; together at most a fast packet.
+struct configuration_information {
+  counted_text<max_counted_text> installation_description_1;
+  counted_text<max_counted_text> installation_description_2;
+  counted_text<max_counted_text> manufacturer_information;
+
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{126998, "configuration_information", "Configuration Information", 6,
+                            framing::fast_packet, 0},
+                   field<&configuration_information::installation_description_1>(
+                       "installation_description_1", "Installation Description #1"),
+                   field<&configuration_information::installation_description_2>(
+                       "installation_description_2", "Installation Description #2"),
+                   field<&configuration_information::manufacturer_information>(
+                       "manufacturer_information", "Manufacturer Information"));
+  [[nodiscard]] constexpr bool operator==(const configuration_information&) const noexcept =
+      default;
+};
+
+/// An AIS string: 6-bit AIS text pads with '@' (docs/nmea2000.md).
+template <std::size_t Bytes>
+using ais_text = fixed_text<Bytes, '@'>;
+
+/// PGN 129794 AIS Class A Static and Voyage Related Data: 76 bytes, fast packet, priority 6, as
+/// received. AIS message 5: the station's MMSI, IMO number, call sign, name, ship type,
+/// dimensions (0.1 m) and antenna position, ETA (UTC), draught (0.01 m) and destination.
+struct ais_class_a_static_data {
+  lookup<nmea2000::ais_message_id, 6> message_id;
+  lookup<nmea2000::ais_repeat_indicator, 2> repeat_indicator;
+  unsigned_number<32> user_id;
+  unsigned_number<32> imo_number;
+  ais_text<7> callsign;
+  ais_text<20> name;
+  lookup<nmea2000::ship_type, 8> type_of_ship;
+  unsigned_number<16, res::tenth> length_m;
+  unsigned_number<16, res::tenth> beam_m;
+  unsigned_number<16, res::tenth> position_reference_from_starboard_m;
+  unsigned_number<16, res::tenth> position_reference_from_bow_m;
+  nmea2000::day_count eta_date;
+  nmea2000::time_since_midnight eta_time;
+  unsigned_number<16, res::hundredth> draft_m;
+  ais_text<20> destination;
+  lookup<nmea2000::ais_version, 2> ais_version_indicator;
+  lookup<nmea2000::position_fix_device, 4> gnss_type;
+  lookup<nmea2000::dte_availability, 1> dte;
+  lookup<nmea2000::ais_transceiver, 5> ais_transceiver_information;
+  unsigned_number<8> sequence_id;
+
+  using self = ais_class_a_static_data;
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129794, "ais_class_a_static_data", "AIS Class A Static and Voyage Related Data", 6,
+               framing::fast_packet, 0},
+      field<&self::message_id>("message_id", "Message ID"),
+      field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+      field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
+      field<&self::imo_number>("imo_number", "IMO number"),
+      field<&self::callsign>("callsign", "Callsign"), field<&self::name>("name", "Name"),
+      field<&self::type_of_ship>("type_of_ship", "Type of ship"),
+      field<&self::length_m>("length_m", "Length"), field<&self::beam_m>("beam_m", "Beam"),
+      field<&self::position_reference_from_starboard_m>("position_reference_from_starboard_m",
+                                                        "Position reference from Starboard"),
+      field<&self::position_reference_from_bow_m>("position_reference_from_bow_m",
+                                                  "Position reference from Bow"),
+      field<&self::eta_date>("eta_date", "ETA Date"),
+      field<&self::eta_time>("eta_time", "ETA Time"), field<&self::draft_m>("draft_m", "Draft"),
+      field<&self::destination>("destination", "Destination"),
+      field<&self::ais_version_indicator>("ais_version_indicator", "AIS version indicator"),
+      field<&self::gnss_type>("gnss_type", "GNSS type"), field<&self::dte>("dte", "DTE"),
+      reserved<1>,
+      field<&self::ais_transceiver_information>("ais_transceiver_information",
+                                                "AIS Transceiver information"),
+      reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
+  [[nodiscard]] constexpr bool operator==(const ais_class_a_static_data&) const noexcept = default;
+};
+
+/// PGN 129809 AIS Class B static data (msg 24 Part A): 27 bytes, fast packet, priority 6, as
+/// received. The station's MMSI and name.
+struct ais_class_b_static_data_a {
+  lookup<nmea2000::ais_message_id, 6> message_id;
+  lookup<nmea2000::ais_repeat_indicator, 2> repeat_indicator;
+  unsigned_number<32> user_id;
+  ais_text<20> name;
+  lookup<nmea2000::ais_transceiver, 5> ais_transceiver_information;
+  unsigned_number<8> sequence_id;
+
+  using self = ais_class_b_static_data_a;
+  static constexpr auto n2k =
+      describe_pgn(pgn_info{129809, "ais_class_b_static_data_a",
+                            "AIS Class B static data (msg 24 Part A)", 6, framing::fast_packet, 0},
+                   field<&self::message_id>("message_id", "Message ID"),
+                   field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+                   field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
+                   field<&self::name>("name", "Name"),
+                   field<&self::ais_transceiver_information>("ais_transceiver_information",
+                                                             "AIS Transceiver information"),
+                   reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
+  [[nodiscard]] constexpr bool operator==(const ais_class_b_static_data_a&) const noexcept =
+      default;
+};
+
+/// PGN 129810 AIS Class B static data (msg 24 Part B): 35 bytes, fast packet, priority 6, as
+/// received. The station's ship type, vendor ID, call sign, dimensions (0.1 m), antenna
+/// position and, for an auxiliary craft, its mother ship's MMSI.
+struct ais_class_b_static_data_b {
+  lookup<nmea2000::ais_message_id, 6> message_id;
+  lookup<nmea2000::ais_repeat_indicator, 2> repeat_indicator;
+  unsigned_number<32> user_id;
+  lookup<nmea2000::ship_type, 8> type_of_ship;
+  ais_text<7> vendor_id;
+  ais_text<7> callsign;
+  unsigned_number<16, res::tenth> length_m;
+  unsigned_number<16, res::tenth> beam_m;
+  unsigned_number<16, res::tenth> position_reference_from_starboard_m;
+  unsigned_number<16, res::tenth> position_reference_from_bow_m;
+  unsigned_number<32> mothership_user_id;
+  lookup<nmea2000::position_fix_device, 4> gnss_type;
+  lookup<nmea2000::ais_transceiver, 5> ais_transceiver_information;
+  unsigned_number<8> sequence_id;
+
+  using self = ais_class_b_static_data_b;
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129810, "ais_class_b_static_data_b", "AIS Class B static data (msg 24 Part B)", 6,
+               framing::fast_packet, 0},
+      field<&self::message_id>("message_id", "Message ID"),
+      field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+      field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
+      field<&self::type_of_ship>("type_of_ship", "Type of ship"),
+      field<&self::vendor_id>("vendor_id", "Vendor ID"),
+      field<&self::callsign>("callsign", "Callsign"), field<&self::length_m>("length_m", "Length"),
+      field<&self::beam_m>("beam_m", "Beam"),
+      field<&self::position_reference_from_starboard_m>("position_reference_from_starboard_m",
+                                                        "Position reference from Starboard"),
+      field<&self::position_reference_from_bow_m>("position_reference_from_bow_m",
+                                                  "Position reference from Bow"),
+      field<&self::mothership_user_id, raw_display::identifier>("mothership_user_id",
+                                                                "Mothership User ID"),
+      reserved<2>, spare<2>, field<&self::gnss_type>("gnss_type", "GNSS type"),
+      field<&self::ais_transceiver_information>("ais_transceiver_information",
+                                                "AIS Transceiver information"),
+      reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
+  [[nodiscard]] constexpr bool operator==(const ais_class_b_static_data_b&) const noexcept =
+      default;
 };
 
 // ---------------------------------------------------------------------------------------------
