@@ -1637,7 +1637,8 @@ def field_value(data, offset, width, kind, arg):
 
 
 # Edge values not in the vectors, run through both decoders in the layout case: every sentinel
-# of every field width, the largest plain values, unnamed lookup values and flag bits.
+# of every field width, the largest plain values, unnamed lookup values and flag bits (129029's
+# integrity 2 and 3: Caution and Unsafe, as analyzer names them).
 LAYOUT_EXTRA = b"""\
 2024-07-03T15:42:58.000Z,2,128259,35,255,8,fd,fd,ff,fc,ff,fd,fd,ff
 2024-07-03T15:42:58.000Z,2,128259,35,255,8,fc,fc,ff,00,80,07,0d,ff
@@ -1670,6 +1671,8 @@ LAYOUT_EXTRA = b"""\
 2024-07-03T15:42:58.000Z,6,126998,40,255,9,01,01,41,42,05,01,43,44,45
 2024-07-03T15:42:58.000Z,6,126998,40,255,14,0a,00,61,00,62,00,20,00,40,00,03,01,7a,09
 2024-07-03T15:42:58.000Z,6,129809,40,255,7,18,47,38,8c,0e,c4,d6
+2024-07-03T15:42:58.000Z,3,129029,52,255,43,ff,84,50,90,ed,fb,03,c0,f2,28,38,52,24,f4,02,00,66,c0,75,30,4b,18,ea,d7,8a,43,01,00,00,00,00,24,fe,1a,32,00,46,00,4a,01,00,00,00
+2024-07-03T15:42:58.000Z,3,129029,52,255,43,ff,84,50,90,ed,fb,03,c0,f2,28,38,52,24,f4,02,00,66,c0,75,30,4b,18,ea,d7,8a,43,01,00,00,00,00,24,ff,1a,32,00,46,00,4a,01,00,00,00
 """
 
 
