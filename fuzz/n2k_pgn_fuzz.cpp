@@ -5,7 +5,7 @@
 // Properties:
 //  - decode -> encode -> decode is the identity: encode accepts whatever decode produced (every
 //    raw value fits its field) and writes a payload that decodes to the same message;
-//  - encode writes every reserved bit as one and every spare bit (AIS) as zero (of the bytes it
+//  - encode writes every reserved bit as one and every spare bit as zero (of the bytes it
 //    writes: a flag word not sent ends the payload, see encode);
 //  - encode keeps the bits the sender sent: each field the payload holds in full comes out bit
 //    for bit (so a payload of the PGN's length or longer comes back as its first `length` bytes

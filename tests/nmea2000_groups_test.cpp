@@ -442,8 +442,10 @@ TEST_CASE("groups: JSON, CSV and fmt forms; JSON read back", "[groups]") {
             .ends_with("stations=[{station_type=glonass, station_id=120, age_of_corrections_s=1.50}"
                        ", {station_type=null, station_id=null, age_of_corrections_s=null}]}"));
 
-  // read back: the count and each element's members
+  // read back: the count and each element's members; the integrity, which names every raw
+  // value (so has no "not available" to leave out), as m holds it (all ones: unsafe)
   fake_json in;
+  in.add("", "integrity", json_kind::string, "unsafe");
   in.add("", "reference_stations", json_kind::number, "2");
   in.add("", "stations", json_kind::other, "[");
   in.add("stations", "0", json_kind::other, "{");
@@ -464,11 +466,19 @@ TEST_CASE("groups: JSON, CSV and fmt forms; JSON read back", "[groups]") {
     CHECK(e.field == 16);
     CHECK(e.column == 43 + 4);  // the second station's first byte
 
+    fake_json no_integrity;  // a field without "not available" cannot be left out
+    no_integrity.add("", "reference_stations", json_kind::number, "0");
+    const auto n = n2k::read_json<n2k::gnss_position_data>(no_integrity);
+    CHECK(n.ec == errc::missing_field);
+    CHECK(n2k::field_name<n2k::gnss_position_data>(n.field) == "integrity");
+
     fake_json not_array;
+    not_array.add("", "integrity", json_kind::string, "none");
     not_array.add("", "stations", json_kind::number, "3");
     CHECK(n2k::read_json<n2k::gnss_position_data>(not_array).ec == errc::bad_length);
 
     fake_json scalar_element;
+    scalar_element.add("", "integrity", json_kind::string, "none");
     scalar_element.add("", "stations", json_kind::other, "[");
     scalar_element.add("stations", "0", json_kind::number, "1");
     CHECK(n2k::read_json<n2k::gnss_position_data>(scalar_element).ec == errc::bad_length);

@@ -475,7 +475,7 @@ TEST_CASE("129794, 129809, 129810 AIS static data: captures decoded by hand", "[
   CHECK(m.dte == n2k::dte_availability::available);            // bit 6
   CHECK(m.ais_transceiver_information.raw() == 0);             // 0xe0: bits 0-4
   CHECK(m.sequence_id.state() == field_state::not_available);  // not sent (76th byte)
-  // Both 2-bit AIS lookups have no sentinels: 3 is a value
+  // Both 2-bit AIS lookups name every raw value: 3 is a value, none is "not available"
   CHECK(n2k::lookup<n2k::ais_repeat_indicator, 2>::from_raw(3).state() == field_state::value);
   CHECK(n2k::lookup<n2k::ais_version, 2>::from_raw(3).name() == "itu_r_m1371_future");
   CHECK(n2k::lookup<n2k::dte_availability, 1>::from_raw(1).name() == "unavailable");

@@ -159,6 +159,10 @@ using pgns = detail::append_pgns<
     nmea2000::cross_track_error, nmea2000::system_time, nmea2000::time_date, nmea2000::gnss_dops,
     nmea2000::navigation_data, nmea2000::direction_data, nmea2000::iso_request,
     nmea2000::iso_acknowledgement,
+    // lookups whose names sit in the sentinel range or depend on another field
+    nmea2000::iso_address_claim, nmea2000::heartbeat, nmea2000::heading_track_control,
+    nmea2000::heave, nmea2000::transmission_parameters_dynamic, nmea2000::ais_class_a_position,
+    nmea2000::ais_class_b_position,
     // repeating groups, 64-bit fields
     nmea2000::pgn_list_message, nmea2000::gnss_sats_in_view, nmea2000::gnss_position_data,
     // ---- strings ----

@@ -188,6 +188,12 @@ template <class Row>
 struct row_value<Row, true> {
   using type = void;
 };
+// A keyed field is walked with its key's value beside it (its name needs both).
+template <class Row>
+requires keyed_row<Row>
+struct row_value<Row, false> {
+  using type = keyed_reading<typename Row::value_type>;
+};
 /// The rows of a PGN's table, or of one repetition of a repeating group's.
 template <class P>
 [[nodiscard]] consteval const auto& rows_of() noexcept {
@@ -211,7 +217,7 @@ struct walk_field
   using row_type = std::tuple_element_t<I, detail::rows_type<P>>;
   static constexpr const auto& desc = std::get<I>(detail::rows_of<P>());
   using value_type = typename detail::row_value<row_type>::type;
-  static constexpr bool by_value = false;
+  static constexpr bool by_value = keyed_row<row_type>;
   static constexpr std::string_view name = desc.name;
   static constexpr std::string_view key = desc.name;
   static constexpr position_axis axis = position_axis::none;
@@ -219,8 +225,13 @@ struct walk_field
 
   // (Templates, since a reserved row has neither.)
   template <class Msg>
-  [[nodiscard]] static constexpr const auto& value(const Msg& msg) noexcept {
-    return msg.*row_type::member;
+  [[nodiscard]] static constexpr decltype(auto) value(const Msg& msg) noexcept {
+    if constexpr (keyed_row<row_type>) {
+      const auto& k = msg.*row_type::key_member;
+      return value_type{msg.*row_type::member, k.raw(), k.has_value()};
+    } else {
+      return (msg.*row_type::member);
+    }
   }
   template <class V>
   [[nodiscard]] static constexpr field_state state(const V& v) noexcept {

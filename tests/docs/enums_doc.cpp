@@ -57,6 +57,7 @@ std::string enumerator() {
 struct row {
   std::string name;
   unsigned value = 0;
+  std::string meaning;  ///< when the header has no enumerator to take it from
 };
 
 template <class E, auto... V>
@@ -65,7 +66,7 @@ std::vector<row> rows_of(std::integer_sequence<std::underlying_type_t<E>, V...>)
   (
       [&] {
         std::string n = enumerator<static_cast<E>(V)>();
-        if (!n.empty()) out.push_back({std::move(n), static_cast<unsigned>(V)});
+        if (!n.empty()) out.push_back({std::move(n), static_cast<unsigned>(V), {}});
       }(),
       ...);
   return out;
@@ -137,7 +138,18 @@ std::string code(std::string_view s) { return "`" + std::string(s) + "`"; }
 template <class E>
 void table(std::string_view qualified, const std::string& header, std::string_view about, kind k,
            std::vector<std::string> spelled = {}) {
-  const std::vector<row> rows = enumerators<E>();
+  std::vector<row> rows = enumerators<E>();
+  // A lookup that declares its values only (the manufacturer codes, up to 2047): its names by
+  // value, the standard's texts as their meaning.
+  if constexpr (nmea2000::named_enum<E> && requires { lookup_titles(E{}); }) {
+    if (rows.empty()) {
+      const auto names = lookup_names(E{});
+      const auto titles = lookup_titles(E{});
+      for (std::size_t i = 0; i < names.size(); ++i)
+        if (!names[i].empty())
+          rows.push_back({std::string(names[i]), static_cast<unsigned>(i), std::string(titles[i])});
+    }
+  }
   if (rows.empty()) fail("no enumerators found for", qualified);
   const std::string_view type = qualified.substr(qualified.rfind("::") + 2);
   std::printf("### `%.*s`\n\n`seawire/%s`. %.*s\n\n", static_cast<int>(qualified.size()),
@@ -173,7 +185,7 @@ void table(std::string_view qualified, const std::string& header, std::string_vi
       case kind::value: v = std::to_string(r.value); break;
     }
     std::printf("| `%s` | %s | %s |\n", r.name.c_str(), v.c_str(),
-                comment_of(header, type, r.name).c_str());
+                r.meaning.empty() ? comment_of(header, type, r.name).c_str() : r.meaning.c_str());
   }
   std::printf("\n");
 }
@@ -402,6 +414,9 @@ int main() {
                                "What a PGN field's raw value holds.", kind::value);
   table<nmea2000::framing>("seawire::nmea2000::framing", "nmea2000/field.hpp",
                            "How a PGN is carried: one CAN frame or a fast packet.", kind::value);
+  table<nmea2000::raw_display>("seawire::nmea2000::raw_display", "nmea2000/field.hpp",
+                               "How a number that is no quantity reads (canboat's JSON).",
+                               kind::value);
   table<nmea2000::text_encoding>(
       "seawire::nmea2000::text_encoding", "nmea2000/field.hpp",
       "What a counted string's encoding byte says its characters are (`counted_text::control()`).",

@@ -192,6 +192,20 @@ std::string frame_row(F) {
   return line;
 }
 
+// The JSON name of the field a keyed row is named by.
+template <class Row>
+std::string key_name() {
+  using P = seawire::detail::member_class_t<Row::key_member>;
+  std::string out;
+  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using E = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!E::is_reserved) {
+      if (seawire::detail::same_member<E::member, Row::key_member>) out = std::string(f.name);
+    }
+  });
+  return out;
+}
+
 // The PGN struct of a walk row.
 template <class Info>
 struct pgn_of_row;
@@ -223,7 +237,11 @@ std::string group_rows() {
     std::string holds = "reserved: sent as ones, ignored when received";
     std::string step;
     std::string values;
-    if constexpr (!R::is_reserved) holds = n2k_form<typename R::value_type>(step, values);
+    if constexpr (requires { R::is_spare; }) {
+      holds = "spare: sent as zeros, ignored when received";
+    } else if constexpr (!R::is_reserved) {
+      holds = n2k_form<typename R::value_type>(step, values);
+    }
     s += "| " + std::to_string(F::number) + "." + std::to_string(k) + " | " +
          (R::is_reserved ? "" : quoted(e.name)) + " | " + std::string(e.title) + " | +" +
          std::to_string(o) + " | " + std::to_string(R::bits) + " | " + holds + " | " + step +
@@ -249,7 +267,13 @@ std::string field_row(F) {
     holds = "spare: sent as zeros, ignored when received";
   std::string step;
   std::string values;
-  if constexpr (!F::reserved) holds = n2k_form<typename F::value_type>(step, values);
+  if constexpr (!F::reserved && nmea2000::keyed_row<typename F::info::row_type>) {
+    using row = typename F::info::row_type;
+    holds = "lookup named by " + quoted(key_name<row>()) + " and its own value";
+    values = std::to_string(row::value_type::table::entries.size()) + " named pairs";
+  } else if constexpr (!F::reserved) {
+    holds = n2k_form<typename F::value_type>(step, values);
+  }
   // After a counted string a row starts where the string ends.
   const std::string offset = nmea2000::description_of<P>::fixed_layout || F::bit_offset == 0
                                  ? std::to_string(F::bit_offset)
@@ -350,8 +374,8 @@ template <class T>
 struct n2k_kind {
   static constexpr int value = 0;
 };
-template <unsigned B, bool S, nmea2000::resolution R>
-struct n2k_kind<nmea2000::number<B, S, R>> {
+template <unsigned B, bool S, nmea2000::resolution R, unsigned N>
+struct n2k_kind<nmea2000::number<B, S, R, N>> {
   static constexpr int value = 1;
 };
 template <class E, unsigned B>

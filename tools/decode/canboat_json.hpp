@@ -4,6 +4,9 @@
 // units, field names as keys, no nulls), so that what reads analyzer's JSON can read
 // seawire-decode's. One walk over the PGN's description (visit_rows) writes every row by the
 // rules analyzer follows for its kind:
+//   identifier  a number shown as a string of at least 9 digits (an MMSI: "002442000"); a
+//               sentinel left out
+//   bits        a number shown as its bytes in hex, whatever they are
 //   number      the value at its resolution, in canboat's std unit (nmea2000/canboat.hpp), with
 //               as many decimals as a step has (or the unit's fixed count); a whole number at
 //               resolution 1 as an integer; a sentinel (not available, out of range, reserved)
@@ -13,9 +16,10 @@
 //   flags       the titles of the bits set, a bit without one as its value; no bit set: left out
 //   day_count   "YYYY.MM.DD"
 //   time        "hh:mm:ss.ffff" (a time of day, and a number in seconds: a duration)
+//   keyed       the title of the (key, value) pair (60928's device function for its device
+//               class), or the number when the pair has none; a sentinel left out
 //   reserved    left out when every bit is one, else its bytes in hex ("0F 00"); spare bits
 //               left out when every bit is zero
-//   MMSI        9-digit text ("244100633"); a sentinel left out
 //   string      the bytes before the first 0x00 less the padding at their end (0xFF, 0x00, '@',
 //               whitespace), up to the first 0xFF, JSON-escaped; a counted string's UTF-16 as
 //               UTF-8; empty: left out. A counted string's length byte below 2, or an encoding
@@ -56,8 +60,8 @@ template <class V>
 struct kind {
   static constexpr bool number = false, lookup = false, flags = false;
 };
-template <unsigned B, bool S, nmea2000::resolution R>
-struct kind<nmea2000::number<B, S, R>> {
+template <unsigned B, bool S, nmea2000::resolution R, unsigned N>
+struct kind<nmea2000::number<B, S, R, N>> {
   static constexpr bool number = true, lookup = false, flags = false;
 };
 template <class E, unsigned B>
@@ -487,7 +491,7 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
              unsigned at) {
   constexpr std::string_view key = L::desc.title;
   if constexpr (L::reserved) {
-    if (!r.readable) return true;  // a reserved row cut short is left out
+    if (!r.readable) return true;  // a reserved or spare row cut short is left out
     const std::int64_t raw = raw_bits(payload, at, r.bits, false);
     if constexpr (requires { L::desc.is_spare; }) {
       if (raw == 0) return true;  // spare bits are sent as zeros
@@ -499,6 +503,21 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
     return true;
   } else if constexpr (is_group<typename L::value_type>) {
     return put_group(f, L::info::value(msg), payload, at);
+  } else if constexpr (nmea2000::keyed_row<typename L::info::row_type>) {
+    if (!r.readable) return false;
+    // The pair's title when the key is known (a value), else the number unless a sentinel.
+    const auto v = L::info::value(msg);
+    using K = decltype(v.value);
+    const K read = r.bits == L::bits ? v.value : K::from_raw(raw_bits(payload, at, r.bits, false));
+    const std::string_view title = v.key_known ? read.title(v.key) : std::string_view{};
+    if (!title.empty()) {
+      f.key(key);
+      put_string(f.out(), title);
+    } else if (!(r.bits > 1 && read.raw() >= top_of(r.bits, false) - (r.bits > 2 ? 2 : 1))) {
+      f.key(key);
+      put_format(f.out(), "%lld", static_cast<long long>(read.raw()));
+    }
+    return true;
   } else {
     using V = typename L::value_type;
     if (!r.readable) return false;
@@ -507,10 +526,15 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
     const std::int64_t raw =
         whole ? L::info::value(msg).raw() : raw_bits(payload, at, r.bits, V::is_signed);
     using row = std::remove_cvref_t<decltype(L::desc)>;
-    if constexpr (requires { row::is_mmsi; }) {
-      if (!number_has_value(raw, r.bits, V::sentinels, false)) return true;
-      f.key(key);
-      put_format(f.out(), "\"%09u\"", static_cast<unsigned>(raw));
+    if constexpr (kind<V>::number && requires { row::display; }) {
+      if constexpr (row::display == nmea2000::raw_display::bits) {
+        f.key(key);  // analyzer shows binary bits whatever they are
+        put_binary(f.out(), payload, at, r.bits);
+      } else {
+        if (!number_has_value(raw, r.bits, V::sentinels, V::is_signed)) return true;
+        f.key(key);
+        put_format(f.out(), "\"%09lld\"", static_cast<long long>(raw));
+      }
     } else if constexpr (kind<V>::number && requires { typename row::titles; }) {
       put_lookup<typename row::titles>(f, key, raw, r.bits);  // a number canboat names values of
     } else if constexpr (kind<V>::number) {

@@ -236,6 +236,15 @@ def case_by_hand():
     # An encoding byte analyzer does not know (2): nothing of the message is written.
     out, _ = canboat([], (line.format(6, 126998, 4) + ",04,02,41,42").encode())
     check(out == [], f"126998 encoding byte 2: {out}")
+    # An identifier (an MMSI) as 9-digit text, leading zeros kept; not available left out
+    # (analyzer's output for these two lines).
+    name = " ".join(["41"] * 4 + ["40"] * 16)
+    head = {"Message ID": "Static data report", "Repeat Indicator": "Initial"}
+    tail = {"Name": "AAAA", "AIS Transceiver information": "Channel A VDL reception"}
+    check(one(129809, f"18 10 43 25 00 {name} e0 ff", 6) ==
+          head | {"User ID": "002442000"} | tail, "129809: MMSI 2442000")
+    check(one(129809, f"18 ff ff ff ff {name} e0 ff", 6) == head | tail,
+          "129809: MMSI not available")
 
 
 def case_usage():

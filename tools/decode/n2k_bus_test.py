@@ -64,8 +64,10 @@ CANDUMP_126720 = [
     "(1502984867.025937) slcan0 1DEFFFCC#01000CA5FFFFFFFF",
 ]
 # A Furuno autopilot in canboat PLAIN lines (canboat's furuno-fap7011c-autopilot-maneuvers.raw):
-# a standard fast-packet PGN seawire does not describe, 127237 Heading/Track control (21 bytes
-# in four frames, a 127250 among them), and its proprietary 130821 (12 bytes in two frames).
+# a standard fast-packet PGN, 127237 Heading/Track control (21 bytes in four frames, a 127250
+# among them), and its proprietary 130821 (12 bytes in two frames). seawire describes 127237 now:
+# the same four frames sent as 127233 (a standard fast-packet PGN seawire does not describe) are
+# assembled whole too.
 PLAIN_FURUNO = [
     "2021-08-06-11:45:30.505,2,127237,5,255,8,80,15,00,40,1f,ff,7f,ff",
     "2021-08-06-11:45:30.506,2,127237,5,255,8,81,ff,ff,ff,ff,ff,ff,ff",
@@ -74,6 +76,10 @@ PLAIN_FURUNO = [
     "2021-08-06-11:45:30.508,2,127237,5,255,8,83,5e,ff,ff,ff,ff,ff,ff",
     "2021-08-06-11:45:35.071,7,130821,1,255,8,20,0c,3f,9f,04,00,1c,45",
     "2021-08-06-11:45:35.071,7,130821,1,255,8,21,e2,e7,00,af,78,c0,ff",
+    "2021-08-06-11:45:36.505,2,127233,5,255,8,80,15,00,40,1f,ff,7f,ff",
+    "2021-08-06-11:45:36.506,2,127233,5,255,8,81,ff,ff,ff,ff,ff,ff,ff",
+    "2021-08-06-11:45:36.507,2,127233,5,255,8,82,ff,7f,ff,7f,ff,7f,d5",
+    "2021-08-06-11:45:36.508,2,127233,5,255,8,83,5e,ff,ff,ff,ff,ff,ff",
 ]
 
 
@@ -91,10 +97,12 @@ def case_unknown_fast():
     p = run([], ("\n".join(PLAIN_FURUNO) + "\n").encode(), 0)
     got = decoded(p)
     check([(m["type"], m.get("data")) for m in got] ==
-          [("PGN127250", None),
-           ("PGN127237", "00401FFF7FFF" "FFFFFFFFFFFFFF" "FF7FFF7FFF7FD5" "5E"),
-           ("PGN130821", "3F9F04001C45" "E2E700AF78C0")],
-          f"canboat PLAIN: 127237 and 130821 not one message each, whole: {got}")
+          [("PGN127250", None), ("PGN127237", None),
+           ("PGN130821", "3F9F04001C45" "E2E700AF78C0"),
+           ("PGN127233", "00401FFF7FFF" "FFFFFFFFFFFFFF" "FF7FFF7FFF7FD5" "5E")],
+          f"canboat PLAIN: 127237, 130821 and 127233 not one message each, whole: {got}")
+    if len(got) == 4:  # 127237's last field, in its last frame: 0x5ED5 = 2.4277 rad
+        check(got[1].get("vessel_heading_rad") == 2.4277, f"127237 not whole: {got[1]}")
 
     # Every 126720 of the real capture: once each, as many as canboat's analyzer decoded.
     path = os.path.join(DATA, "70_candump_proprietary_fast.in")

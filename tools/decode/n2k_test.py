@@ -60,6 +60,7 @@ def is_number(v):
 NULLS = (None, "out_of_range", "reserved")  # all shown as null by canboat -empty
 META = {"type", "time_s", "interface", "direction", "prio", "src", "dst"}
 FAST_PACKET = {127489, 128275, 130578, 127506, 129284, 130577}
+FAST_PACKET |= {127237, 129038, 129039}  # lookups
 FAST_PACKET |= {126464, 129540, 129029}  # repeating groups, 64-bit fields
 FAST_PACKET |= {126996, 126998, 129794, 129809, 129810}  # strings
 # A PGN seawire does not describe travels as the standard lists it: as fast packets the PGNs
@@ -131,10 +132,35 @@ TIME_SOURCE = {"gps": "GPS", "glonass": "GLONASS", "radio_station": "Radio Stati
 GNSS_MODE = {"1d": "1D", "2d": "2D", "3d": "3D", "auto": "Auto"}
 BEARING_MODE = {"great_circle": "Great Circle", "rhumb_line": "Rhumbline"}
 ISO_CONTROL = {"ack": "ACK", "nak": "NAK", "access_denied": "Access Denied", "address_busy": "Address Busy"}
-# strings: product information and AIS static data
+# strings: product information and AIS static data (the AIS lookups shared with 129038/129039)
 CERTIFICATION_LEVEL = {"level_a": "Level A", "level_b": "Level B"}
-AIS_MESSAGE_ID = {"static_and_voyage_related_data": "Static and voyage related data",
-                  "static_data_report": "Static data report"}
+AIS_MESSAGE_ID = {"scheduled_class_a_position_report": "Scheduled Class A position report",
+                  "assigned_scheduled_class_a_position_report":
+                      "Assigned scheduled Class A position report",
+                  "interrogated_class_a_position_report": "Interrogated Class A position report",
+                  "base_station_report": "Base station report",
+                  "static_and_voyage_related_data": "Static and voyage related data",
+                  "binary_addressed_message": "Binary addressed message",
+                  "binary_acknowledgement": "Binary acknowledgement",
+                  "binary_broadcast_message": "Binary broadcast message",
+                  "standard_sar_aircraft_position_report": "Standard SAR aircraft position report",
+                  "utc_date_inquiry": "UTC/date inquiry", "utc_date_response": "UTC/date response",
+                  "safety_related_addressed_message": "Safety related addressed message",
+                  "safety_related_acknowledgement": "Safety related acknowledgement",
+                  "safety_related_broadcast_message": "Satety related broadcast message",
+                  "interrogation": "Interrogation",
+                  "assignment_mode_command": "Assignment mode command",
+                  "dgnss_broadcast_binary_message": "DGNSS broadcast binary message",
+                  "standard_class_b_position_report": "Standard Class B position report",
+                  "extended_class_b_position_report": "Extended Class B position report",
+                  "data_link_management_message": "Data link management message",
+                  "aton_report": "ATON report", "channel_management": "Channel management",
+                  "group_assignment_command": "Group assignment command",
+                  "static_data_report": "Static data report",
+                  "single_slot_binary_message": "Single slot binary message",
+                  "multiple_slot_binary_message": "Multiple slot binary message",
+                  "position_report_for_long_range_applications":
+                      "Position report for long range applications"}
 REPEAT_INDICATOR = {"initial": "Initial", "first_retransmission": "First retransmission",
                     "second_retransmission": "Second retransmission",
                     "final_retransmission": "Final retransmission"}
@@ -213,7 +239,8 @@ GNSS_METHOD = {"no_gnss": "no GNSS", "gnss_fix": "GNSS fix", "dgnss_fix": "DGNSS
                "precise_gnss": "Precise GNSS", "rtk_fixed": "RTK Fixed Integer",
                "rtk_float": "RTK float", "estimated": "Estimated (DR) mode",
                "manual": "Manual Input", "simulated": "Simulate mode"}
-GNSS_INTEGRITY = {"none": "No integrity checking", "safe": "Safe"}
+GNSS_INTEGRITY = {"none": "No integrity checking", "safe": "Safe", "caution": "Caution",
+                  "unsafe": "Unsafe"}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -330,20 +357,137 @@ def same(ours, theirs):
     return r if r != "continue" else (None if ours == theirs else "differ")
 
 
+# ---- lookups whose names sit in the sentinel range or depend on another field ----
+# The ISO NAME's manufacturer and device function texts (canboat's), from a data file beside the
+# vectors; our names are those texts in snake_case, by the rule below (not the library's code).
+with open(os.path.join(DATA, "iso_name_codes.json")) as f:
+    ISO_CODES = json.load(f)
+MANUFACTURERS = {int(k): v for k, v in ISO_CODES["manufacturer_codes"].items()}
+DEVICE_FUNCTIONS = {(k, v): t for k, v, t in ISO_CODES["device_functions"]}
+
+
+def snake(text):
+    text = text.replace("&", " and ").replace("+", " plus ")
+    return re.sub(r"[^A-Za-z0-9]+", "_", text).strip("_").lower()
+
+
+DEVICE_CLASS = {"reserved_2000": "Reserved for 2000 Use", "system_tools": "System tools",
+                "safety": "Safety systems", "internetwork": "Internetwork device",
+                "electrical_distribution": "Electrical Distribution",
+                "electrical_generation": "Electrical Generation",
+                "steering_and_control_surfaces": "Steering and Control surfaces",
+                "propulsion": "Propulsion", "navigation": "Navigation",
+                "communication": "Communication",
+                "sensor_communication_interface": "Sensor Communication Interface",
+                "instrumentation": "Instrumentation/general systems",
+                "external_environment": "External Environment",
+                "internal_environment": "Internal Environment",
+                "deck_cargo_fishing": "Deck + cargo + fishing equipment systems",
+                "human_interface": "Human Interface", "display": "Display",
+                "entertainment": "Entertainment"}
+INDUSTRY = {"global": "Global", "highway": "Highway", "agriculture": "Agriculture",
+            "construction": "Construction", "marine": "Marine Industry",
+            "industrial": "Industrial"}
+CONTROLLER_STATE = {"error_active": "Error Active", "error_passive": "Error Passive",
+                    "bus_off": "Bus Off"}
+EQUIPMENT_STATUS = {"operational": "Operational", "fault": "Fault"}
+GEAR = {"forward": "Forward", "neutral": "Neutral", "reverse": "Reverse"}
+STEERING_MODE = {"main_steering": "Main Steering", "non_follow_up": "Non-Follow-Up Device",
+                 "follow_up": "Follow-Up Device",
+                 "heading_control_standalone": "Heading Control Standalone",
+                 "heading_control": "Heading Control", "track_control": "Track Control"}
+TURN_MODE = {"rudder_limit_controlled": "Rudder limit controlled",
+             "turn_rate_controlled": "Turn rate controlled",
+             "radius_controlled": "Radius controlled"}
+TRANSMISSION_STATUS = {"check_transmission": "Check Transmission",
+                       "over_temperature": "Over Temperature",
+                       "low_oil_pressure": "Low Oil Pressure", "low_oil_level": "Low Oil Level",
+                       "sail_drive": "Sail Drive"}
+POSITION_ACCURACY = {"low": "Low", "high": "High"}
+RAIM = {"not_in_use": "not in use", "in_use": "in use"}
+TIME_STAMP = {"unavailable": "Not available", "manual_input": "Manual input mode",
+              "dead_reckoning": "Dead reckoning mode",
+              "positioning_inoperative": "Positioning system is inoperative"}
+NAV_STATUS = {"under_way_using_engine": "Under way using engine", "at_anchor": "At anchor",
+              "not_under_command": "Not under command",
+              "restricted_maneuverability": "Restricted maneuverability",
+              "constrained_by_draught": "Constrained by her draught", "moored": "Moored",
+              "aground": "Aground", "engaged_in_fishing": "Engaged in Fishing",
+              "under_way_sailing": "Under way sailing",
+              "hazardous_material_high_speed": "Hazardous material - High Speed",
+              "hazardous_material_wing_in_ground": "Hazardous material - Wing in Ground",
+              "towing_astern": "Power-driven vessel towing astern",
+              "pushing_ahead_or_towing_alongside":
+                  "Power-driven vessel pushing ahead or towing alongside",
+              "ais_sart": "AIS-SART"}
+SPECIAL_MANEUVER = {"unavailable": "Not available",
+                    "not_engaged": "Not engaged in special maneuver",
+                    "engaged": "Engaged in special maneuver", "reserved_3": "Reserved"}
+UNIT_TYPE = {"sotdma": "SOTDMA", "cs": "CS"}
+AIS_BAND = {"top_525_khz": "Top 525 kHz of marine band", "entire_marine_band": "Entire marine band"}
+AIS_MODE = {"autonomous": "Autonomous", "assigned": "Assigned"}
+AIS_COMM_STATE = {"sotdma": "SOTDMA", "itdma": "ITDMA"}
+
+
+def snake_of_text(table):
+    """ours: the snake_case form of canboat's text, which must be one of `table`'s texts (the
+    value itself is checked by the layout case); or the number when canboat has no text."""
+    texts = set(table.values())
+
+    def cmp(ours, theirs):
+        r = null_rule(ours, theirs)
+        if r != "continue":
+            return r
+        if is_number(ours):
+            return None if ours == theirs else "numbers differ"
+        if theirs not in texts:
+            return f"canboat {theirs!r} is no text of the table"
+        return None if snake(theirs) == ours else f"expected {snake(theirs)!r}"
+    return cmp
+
+
+def mmsi(ours, theirs):
+    """canboat: the MMSI as 9-digit text ("244100633", "002442000"); ours the number."""
+    r = null_rule(ours, theirs)
+    if r != "continue":
+        return r
+    if not (isinstance(theirs, str) and theirs.isdigit() and len(theirs) >= 9):
+        return f"canboat {theirs!r} is no 9-digit text"
+    return None if is_number(ours) and int(theirs) == ours else "MMSIs differ"
+
+
+def binary(ours, theirs):
+    """canboat: the field's bytes in hex, first byte first ("53 2F 00"); ours the number."""
+    if theirs is None:
+        return "canboat null for a field without sentinels"
+    n = int.from_bytes(bytes.fromhex(theirs.replace(" ", "")), "little")
+    return None if is_number(ours) and n == ours else f"canboat {n}"
+
+
+# 129038 and 129039 share their first 13 fields.
+AIS_POSITION_FIELDS = {
+    "message_id": ("messageId", lookup(AIS_MESSAGE_ID)),
+    "repeat_indicator": ("repeatIndicator", lookup(REPEAT_INDICATOR)),
+    "user_id": ("userId", mmsi),
+    "longitude_deg": ("longitude", num("0.0000001")),
+    "latitude_deg": ("latitude", num("0.0000001")),
+    "position_accuracy": ("positionAccuracy", lookup(POSITION_ACCURACY)),
+    "raim": ("raim", lookup(RAIM)),
+    "time_stamp": ("timeStamp", lookup(TIME_STAMP)),
+    "cog_rad": ("cog", num("0.0001")),
+    "sog_mps": ("sog", num("0.01")),
+    "communication_state": ("communicationState", binary),
+    "transceiver_information": ("aisTransceiverInformation", lookup(AIS_TRANSCEIVER)),
+    "heading_rad": ("heading", num("0.0001")),
+}
+
+
 def text(ours, theirs):
     """A string: the same characters (ours escaped in JSON, canboat's raw); null for both when
     the text is empty (padding only) or not sent."""
     if ours is None or theirs is None:
         return None if ours is None and theirs is None else "one null, the other a text"
     return None if ours == theirs else "texts differ"
-
-
-def mmsi(ours, theirs):
-    """canboat prints an MMSI as 9-digit text ("244100633"); ours the number."""
-    r = null_rule(ours, theirs)
-    if r != "continue":
-        return r
-    return None if is_number(ours) and int(theirs) == ours else "MMSIs differ"
 
 
 def num64(resolution):
@@ -603,6 +747,73 @@ CANBOAT_FIELDS = {
         "group_function": ("groupFunction", num("1")),
         "acknowledged_pgn": ("pgn", num("1")),
     },
+    # lookups whose names sit in the sentinel range or depend on another field
+    60928: {
+        "unique_number": ("uniqueNumber", num("1")),
+        "manufacturer_code": ("manufacturerCode", snake_of_text(MANUFACTURERS)),
+        "device_instance_lower": ("deviceInstanceLower", num("1")),
+        "device_instance_upper": ("deviceInstanceUpper", num("1")),
+        "device_function": ("deviceFunction", snake_of_text(DEVICE_FUNCTIONS)),
+        "device_class": ("deviceClass", lookup(DEVICE_CLASS)),
+        "system_instance": ("systemInstance", num("1")),
+        "industry_group": ("industryGroup", lookup(INDUSTRY)),
+        "arbitrary_address_capable": ("arbitraryAddressCapable", lookup(YES_NO)),
+    },
+    126993: {
+        "data_transmit_offset_s": ("dataTransmitOffset", duration),
+        "sequence_counter": ("sequenceCounter", num("1")),
+        "controller_1_state": ("controller1State", lookup(CONTROLLER_STATE)),
+        "controller_2_state": ("controller2State", lookup(CONTROLLER_STATE)),
+        "equipment_status": ("equipmentStatus", lookup(EQUIPMENT_STATUS)),
+    },
+    127237: {
+        "rudder_limit_exceeded": ("rudderLimitExceeded", lookup(YES_NO)),
+        "off_heading_limit_exceeded": ("offHeadingLimitExceeded", lookup(YES_NO)),
+        "off_track_limit_exceeded": ("offTrackLimitExceeded", lookup(YES_NO)),
+        "override": ("override", lookup(YES_NO)),
+        "steering_mode": ("steeringMode", lookup(STEERING_MODE)),
+        "turn_mode": ("turnMode", lookup(TURN_MODE)),
+        "heading_reference": ("headingReference", lookup(DIRECTION_REFERENCE, "Error")),
+        "commanded_rudder_direction": ("commandedRudderDirection", lookup(RUDDER_DIRECTION)),
+        "commanded_rudder_angle_rad": ("commandedRudderAngle", num("0.0001")),
+        "heading_to_steer_rad": ("headingToSteerCourse", num("0.0001")),
+        "track_rad": ("track", num("0.0001")),
+        "rudder_limit_rad": ("rudderLimit", num("0.0001")),
+        "off_heading_limit_rad": ("offHeadingLimit", num("0.0001")),
+        "radius_of_turn_order_m": ("radiusOfTurnOrder", num("1")),
+        "rate_of_turn_order_radps": ("rateOfTurnOrder", num("0.00003125")),
+        "off_track_limit_m": ("offTrackLimit", num("1")),
+        "vessel_heading_rad": ("vesselHeading", num("0.0001")),
+    },
+    127252: {
+        "sid": ("sid", num("1")),
+        "heave_m": ("heave", num("0.01")),
+    },
+    127493: {
+        "instance": ("instance", lookup(ENGINE_INSTANCE)),
+        "transmission_gear": ("transmissionGear", lookup(GEAR)),
+        "oil_pressure_pa": ("oilPressure", num("100")),
+        "oil_temperature_k": ("oilTemperature", num("0.1")),
+        "discrete_status_1": ("discreteStatus1", flag_set(TRANSMISSION_STATUS)),
+    },
+    129038: {
+        **AIS_POSITION_FIELDS,
+        "rate_of_turn_radps": ("rateOfTurn", num("0.00003125")),
+        "nav_status": ("navStatus", lookup(NAV_STATUS)),
+        "special_maneuver": ("specialManeuverIndicator", lookup(SPECIAL_MANEUVER)),
+        "sid": ("sequenceId", num("1")),
+    },
+    129039: {
+        **AIS_POSITION_FIELDS,
+        "unit_type": ("unitType", lookup(UNIT_TYPE)),
+        "integrated_display": ("integratedDisplay", lookup(YES_NO)),
+        "dsc": ("dsc", lookup(YES_NO)),
+        "band": ("band", lookup(AIS_BAND)),
+        "can_handle_msg_22": ("canHandleMsg22", lookup(YES_NO)),
+        "ais_mode": ("aisMode", lookup(AIS_MODE)),
+        "ais_communication_state": ("aisCommunicationState", lookup(AIS_COMM_STATE)),
+        "sid": ("sequenceId", num("1")),
+    },
     # ---- strings ----
     126996: {
         "nmea2000_version": ("nmea2000Version", num("0.001")),
@@ -693,7 +904,7 @@ CANBOAT_FIELDS = {
         "altitude_m": ("altitude", num64("0.000001")),
         "gnss_type": ("gnssType", lookup(GNSS_TYPE)),
         "method": ("method", lookup(GNSS_METHOD)),
-        "integrity": ("integrity", lookup(GNSS_INTEGRITY, "Caution")),
+        "integrity": ("integrity", lookup(GNSS_INTEGRITY)),
         "number_of_svs": ("numberOfSvs", num("1")),
         "hdop": ("hdop", num("0.01")),
         "pdop": ("pdop", num("0.01")),
@@ -709,8 +920,9 @@ CANBOAT_FIELDS = {
 # canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones, named
 # "reserved" and, for a PGN's later reserved fields, "reserved" with the field's number
 # ("reserved6"); seawire ignores reserved bits on receive (N2K.md section 1), so it has no such
-# field.
-CANBOAT_IGNORED = re.compile(r"reserved\d*|spare\d*")  # AIS spare bits: as reserved ones
+# field. Likewise spare bits (AIS's and the ISO NAME's: "spare", "spare18", 129039's regional
+# application), which canboat lists when they are not zero.
+CANBOAT_IGNORED = re.compile(r"reserved\d*|spare\d*|regionalApplicationB?")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -948,7 +1160,7 @@ L_TRANSCEIVER = ["channel_a_vdl_reception", "channel_b_vdl_reception",
 # AIS PGNs: the rows they share (the message header; the ship's dimensions at bit `at`, 0.1 m;
 # the transceiver and sequence ID that end them, 3 reserved bits between)
 AIS_HEAD = [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
-            ("repeat_indicator", 6, 2, "lookup_all", L_REPEAT),
+            ("repeat_indicator", 6, 2, "lookup", L_REPEAT),
             ("user_id", 8, 32, U, "1")]
 
 
@@ -971,7 +1183,48 @@ L_GNSS_TYPE = ["gps", "glonass", "gps_glonass", "gps_sbas", "gps_sbas_glonass", 
                "integrated", "surveyed", "galileo"]
 L_GNSS_METHOD = ["no_gnss", "gnss_fix", "dgnss_fix", "precise_gnss", "rtk_fixed", "rtk_float",
                  "estimated", "manual", "simulated"]
-L_GNSS_INTEGRITY = ["none", "safe"]
+L_GNSS_INTEGRITY = ["none", "safe", "caution", "unsafe"]
+
+# lookups whose names sit in the sentinel range or depend on another field
+L_MANUFACTURER = {code: snake(text) for code, text in MANUFACTURERS.items()}
+L_DEVICE_CLASS = {0: "reserved_2000", 10: "system_tools", 20: "safety", 25: "internetwork",
+                  30: "electrical_distribution", 35: "electrical_generation",
+                  40: "steering_and_control_surfaces", 50: "propulsion", 60: "navigation",
+                  70: "communication", 75: "sensor_communication_interface",
+                  80: "instrumentation", 85: "external_environment", 90: "internal_environment",
+                  100: "deck_cargo_fishing", 110: "human_interface", 120: "display",
+                  125: "entertainment"}
+L_INDUSTRY = ["global", "highway", "agriculture", "construction", "marine", "industrial"]
+L_CONTROLLER_STATE = ["error_active", "error_passive", "bus_off"]
+L_EQUIPMENT_STATUS = ["operational", "fault"]
+L_GEAR = ["forward", "neutral", "reverse"]
+L_STEERING_MODE = ["main_steering", "non_follow_up", "follow_up", "heading_control_standalone",
+                   "heading_control", "track_control"]
+L_TURN_MODE = ["rudder_limit_controlled", "turn_rate_controlled", "radius_controlled"]
+F_TRANSMISSION_STATUS = ["check_transmission", "over_temperature", "low_oil_pressure",
+                         "low_oil_level", "sail_drive"]
+L_TIME_STAMP = {60: "unavailable", 61: "manual_input", 62: "dead_reckoning",
+                63: "positioning_inoperative"}
+L_NAV_STATUS = ["under_way_using_engine", "at_anchor", "not_under_command",
+                "restricted_maneuverability", "constrained_by_draught", "moored", "aground",
+                "engaged_in_fishing", "under_way_sailing", "hazardous_material_high_speed",
+                "hazardous_material_wing_in_ground", "towing_astern",
+                "pushing_ahead_or_towing_alongside", "", "ais_sart"]
+L_SPECIAL_MANEUVER = ["unavailable", "not_engaged", "engaged", "reserved_3"]
+# 129038 and 129039 share their first 184 bits: message, MMSI, position, course, speed, heading.
+AIS_POSITION = [("message_id", 0, 6, "lookup", L_AIS_MESSAGE),
+                ("repeat_indicator", 6, 2, "lookup", L_REPEAT),
+                ("user_id", 8, 32, U, "1"),
+                ("longitude_deg", 40, 32, S, "0.0000001"),
+                ("latitude_deg", 72, 32, S, "0.0000001"),
+                ("position_accuracy", 104, 1, "lookup", ["low", "high"]),
+                ("raim", 105, 1, "lookup", ["not_in_use", "in_use"]),
+                ("time_stamp", 106, 6, "lookup", L_TIME_STAMP),
+                ("cog_rad", 112, 16, U, "0.0001"),
+                ("sog_mps", 128, 16, U, "0.01"),
+                ("communication_state", 144, 19, "u0", None),
+                ("transceiver_information", 163, 5, "lookup", L_TRANSCEIVER),
+                ("heading_rad", 168, 16, U, "0.0001")]
 
 LAYOUT = {
     127488: [("instance", 0, 8, U, "1"),
@@ -1128,9 +1381,60 @@ LAYOUT = {
     59392: [("control", 0, 8, "lookup", L_ISO_CONTROL),
              ("group_function", 8, 8, U, "1"),
              ("acknowledged_pgn", 40, 24, U, "1")],
+    # lookups whose names sit in the sentinel range or depend on another field (canboat's
+    # database; the ISO NAME is the 64 bits of 60928, bit 48 spare)
+    60928: [("unique_number", 0, 21, U, "1"),
+            ("manufacturer_code", 21, 11, "lookup", L_MANUFACTURER),
+            ("device_instance_lower", 32, 3, "u0", None),
+            ("device_instance_upper", 35, 5, "u0", None),
+            ("device_function", 40, 8, "keyed", (49, 7, DEVICE_FUNCTIONS)),
+            ("device_class", 49, 7, "lookup", L_DEVICE_CLASS),
+            ("system_instance", 56, 4, U, "1"),
+            ("industry_group", 60, 3, "lookup", L_INDUSTRY),
+            ("arbitrary_address_capable", 63, 1, "lookup", L_YES_NO)],
+    126993: [("data_transmit_offset_s", 0, 16, U, "0.001"),
+             ("sequence_counter", 16, 8, U, "1"),
+             ("controller_1_state", 24, 2, "lookup", L_CONTROLLER_STATE),
+             ("controller_2_state", 26, 2, "lookup", L_CONTROLLER_STATE),
+             ("equipment_status", 28, 2, "lookup", L_EQUIPMENT_STATUS)],
+    127237: [("rudder_limit_exceeded", 0, 2, "lookup", L_YES_NO),
+             ("off_heading_limit_exceeded", 2, 2, "lookup", L_YES_NO),
+             ("off_track_limit_exceeded", 4, 2, "lookup", L_YES_NO),
+             ("override", 6, 2, "lookup", L_YES_NO),
+             ("steering_mode", 8, 3, "lookup", L_STEERING_MODE),
+             ("turn_mode", 11, 3, "lookup", L_TURN_MODE),
+             ("heading_reference", 14, 2, "lookup", L_DIRECTION),
+             ("commanded_rudder_direction", 21, 3, "lookup", L_RUDDER_DIRECTION),
+             ("commanded_rudder_angle_rad", 24, 16, S, "0.0001"),
+             ("heading_to_steer_rad", 40, 16, U, "0.0001"),
+             ("track_rad", 56, 16, U, "0.0001"),
+             ("rudder_limit_rad", 72, 16, U, "0.0001"),
+             ("off_heading_limit_rad", 88, 16, U, "0.0001"),
+             ("radius_of_turn_order_m", 104, 16, S, "1"),
+             ("rate_of_turn_order_radps", 120, 16, S, "0.00003125"),
+             ("off_track_limit_m", 136, 16, S, "1"),
+             ("vessel_heading_rad", 152, 16, U, "0.0001")],
+    127252: [("sid", 0, 8, U, "1"),
+             ("heave_m", 8, 16, S, "0.01")],
+    127493: [("instance", 0, 8, U, "1"),
+             ("transmission_gear", 8, 2, "lookup", L_GEAR),
+             ("oil_pressure_pa", 16, 16, U, "100"),
+             ("oil_temperature_k", 32, 16, U, "0.1"),
+             ("discrete_status_1", 48, 8, "flags", F_TRANSMISSION_STATUS)],
+    129038: AIS_POSITION + [("rate_of_turn_radps", 184, 16, S, "0.00003125"),
+                            ("nav_status", 200, 4, "lookup", L_NAV_STATUS),
+                            ("special_maneuver", 204, 2, "lookup", L_SPECIAL_MANEUVER),
+                            ("sid", 216, 8, U, "1")],
+    129039: AIS_POSITION + [("unit_type", 194, 1, "lookup", ["sotdma", "cs"]),
+                            ("integrated_display", 195, 1, "lookup", L_YES_NO),
+                            ("dsc", 196, 1, "lookup", L_YES_NO),
+                            ("band", 197, 1, "lookup", ["top_525_khz", "entire_marine_band"]),
+                            ("can_handle_msg_22", 198, 1, "lookup", L_YES_NO),
+                            ("ais_mode", 199, 1, "lookup", ["autonomous", "assigned"]),
+                            ("ais_communication_state", 200, 1, "lookup", ["sotdma", "itdma"]),
+                            ("sid", 208, 8, U, "1")],
     # ---- strings: "text" = a fixed string of width / 8 bytes; "lau" = a counted string, at
-    # the bit where the row before it ended (offset and width None); "lookup_all" = a lookup
-    # whose every raw value is a value (AIS fields).
+    # the bit where the row before it ended (offset and width None).
     126996: [("nmea2000_version", 0, 16, U, "0.001"),
              ("product_code", 16, 16, U, "1"),
              ("model_id", 32, 256, "text", None),
@@ -1150,9 +1454,9 @@ LAYOUT = {
                                      ("eta_time", 376, 32, "time", None),
                                      ("draft_m", 408, 16, U, "0.01"),
                                      ("destination", 424, 160, "text", None),
-                                     ("ais_version_indicator", 584, 2, "lookup_all", L_AIS_VERSION),
+                                     ("ais_version_indicator", 584, 2, "lookup", L_AIS_VERSION),
                                      ("gnss_type", 586, 4, "lookup", L_FIX_DEVICE),
-                                     ("dte", 590, 1, "lookup_all", L_DTE)] + ais_end(592),
+                                     ("dte", 590, 1, "lookup", L_DTE)] + ais_end(592),
     129809: AIS_HEAD + [("name", 40, 160, "text", None)] + ais_end(200),
     129810: AIS_HEAD + [("type_of_ship", 40, 8, "lookup", L_SHIP_TYPE),
                         ("vendor_id", 48, 56, "text", None),
@@ -1293,11 +1597,23 @@ def field_value(data, offset, width, kind, arg):
     raw = bits(data, offset, width)
     if kind == "flags":  # no sentinel: every bit is a flag
         return [arg[b] if b < len(arg) else f"bit_{b}" for b in range(width) if raw >> b & 1]
-    if kind == "lookup_all":  # every raw value is a value
-        return arg[raw] if raw < len(arg) else raw
     signed = kind == S
     if signed and raw >> (width - 1):
         raw -= 1 << width
+    if kind == "lookup" and isinstance(arg, dict):  # names of some values only
+        if arg.get(raw):
+            return arg[raw]
+        kind, arg = "lookup", []
+    if kind == "lookup" and raw < len(arg) and arg[raw]:
+        return arg[raw]  # a named raw value is a value, even among the top (sentinel) values
+    if kind == "u0":  # every raw value a value: no sentinel
+        return Decimal(raw)
+    if kind == "keyed":  # named by (key field's raw value, raw value); unnamed pairs as numbers
+        key_offset, key_width, table = arg
+        key = bits(data, key_offset, key_width) if key_offset + key_width <= len(data) * 8 else None
+        if raw <= (1 << width) - 4 and (key, raw) in table:
+            return snake(table[(key, raw)])
+        kind, arg = "lookup", []
     if kind == "lookup":
         # canboat's rule for an unnamed lookup value: the top three of more than 2 bits, the top
         # two of 2 bits (J1939's error / not available) are no values
@@ -1311,7 +1627,7 @@ def field_value(data, offset, width, kind, arg):
     if kind in (U, S):
         return raw * Decimal(arg)
     if kind == "lookup":
-        return arg[raw] if raw < len(arg) and arg[raw] is not None else raw
+        return arg[raw] if raw < len(arg) and arg[raw] else raw  # "": a value with no name
     if kind == "date":
         return (datetime.date(1970, 1, 1) + datetime.timedelta(days=raw)).isoformat()
     if kind == "time":
@@ -1321,7 +1637,8 @@ def field_value(data, offset, width, kind, arg):
 
 
 # Edge values not in the vectors, run through both decoders in the layout case: every sentinel
-# of every field width, the largest plain values, unnamed lookup values and flag bits.
+# of every field width, the largest plain values, unnamed lookup values and flag bits (129029's
+# integrity 2 and 3: Caution and Unsafe, as analyzer names them).
 LAYOUT_EXTRA = b"""\
 2024-07-03T15:42:58.000Z,2,128259,35,255,8,fd,fd,ff,fc,ff,fd,fd,ff
 2024-07-03T15:42:58.000Z,2,128259,35,255,8,fc,fc,ff,00,80,07,0d,ff
@@ -1354,6 +1671,8 @@ LAYOUT_EXTRA = b"""\
 2024-07-03T15:42:58.000Z,6,126998,40,255,9,01,01,41,42,05,01,43,44,45
 2024-07-03T15:42:58.000Z,6,126998,40,255,14,0a,00,61,00,62,00,20,00,40,00,03,01,7a,09
 2024-07-03T15:42:58.000Z,6,129809,40,255,7,18,47,38,8c,0e,c4,d6
+2024-07-03T15:42:58.000Z,3,129029,52,255,43,ff,84,50,90,ed,fb,03,c0,f2,28,38,52,24,f4,02,00,66,c0,75,30,4b,18,ea,d7,8a,43,01,00,00,00,00,24,fe,1a,32,00,46,00,4a,01,00,00,00
+2024-07-03T15:42:58.000Z,3,129029,52,255,43,ff,84,50,90,ed,fb,03,c0,f2,28,38,52,24,f4,02,00,66,c0,75,30,4b,18,ea,d7,8a,43,01,00,00,00,00,24,ff,1a,32,00,46,00,4a,01,00,00,00
 """
 
 

@@ -137,10 +137,10 @@ def case_refusals():
         '{"type":"PGN126464","function_code":"transmit","pgns":[%s]}' % ",".join(['{"pgn":59904}'] * 75),  # 4
         '{"type":"PGN126464","function_code":"transmit","pgns":[59904]}',    # 5: no object
         '{"type":"PGN129540","sats_in_view":1,"satellites":[{"prn":7,"status":"lost"}]}',  # 6
-        '{"type":"PGN129029","reference_stations":1,"stations":[{"station_id":4093}]}',    # 7
+        '{"type":"PGN129029","integrity":"none","reference_stations":1,"stations":[{"station_id":4093}]}',  # 7
         '{"type":"PGN129540","sats_in_view":1,"satellites":{"prn":7}}',     # 8: no array
-        '{"type":"PGN129029","latitude_deg":922.3372036854775805}',         # 9: a sentinel's value
-        '{"type":"PGN129029","latitude_deg":-922.3372036854775808,"longitude_deg":1e-16,"reference_stations":null,"stations":[{"station_type":"gps","station_id":12,"age_of_corrections_s":1.5}]}',
+        '{"type":"PGN129029","latitude_deg":922.3372036854775805,"integrity":"none"}',  # 9: a sentinel's value
+        '{"type":"PGN129029","latitude_deg":-922.3372036854775808,"longitude_deg":1e-16,"integrity":"none","reference_stations":null,"stations":[{"station_type":"gps","station_id":12,"age_of_corrections_s":1.5}]}',
     ]
     out = run(ENCODE, ["--output", "canboat"], ("\n".join(lines) + "\n").encode())
     check(out.returncode == 1, f"exit {out.returncode}")

@@ -169,6 +169,8 @@ for fmt in FORMATS:
 # PGN's (bytes biased to the top of each range, where the sentinels are), as a canboat FAST log,
 # through seawire-decode | seawire-encode | seawire-decode in every format.
 LENGTHS = {127488: 8, 127489: 26, 128259: 8, 128275: 14, 130311: 8, 130578: 12, 127250: 8, 127251: 8, 127257: 8, 127258: 8, 128267: 8, 129025: 8, 129026: 8, 127245: 8, 130306: 8, 130312: 8, 130313: 8, 130314: 8, 130316: 8, 127508: 8, 127505: 8, 127506: 11, 129283: 8, 126992: 8, 129033: 8, 129539: 8, 129284: 34, 130577: 14, 59904: 3, 59392: 8}
+# lookups whose names sit in the sentinel range or depend on another field
+LENGTHS.update({60928: 8, 126993: 8, 127237: 21, 127252: 8, 127493: 8, 129038: 28, 129039: 27})
 rng = random.Random(20261127)
 lines = [b"# format=FAST"]
 for pgn, length in LENGTHS.items():
@@ -193,5 +195,29 @@ for fmt in FORMATS:
     check(len(again) == len(msgs), f"random -> {fmt}: {len(again)} messages, not {len(msgs)}")
     bad = [(a, b) for a, b in zip(msgs, again) if comparable(a, fmt)[0] != comparable(b, "")[0]]
     check(not bad, f"random -> {fmt}: {len(bad)} messages changed, e.g. {bad[:1]}")
+
+
+# Lookups: a device function is read by name for the device class given, wherever the class is
+# among the members; a name of another class is refused naming the field; a named top value (127493
+# reverse, raw 2) is sent as its value; a field with no "not available" (AIS's repeat indicator)
+# cannot be left out.
+claim = ('{"type":"PGN60928","device_function":"%s","unique_number":5,"manufacturer_code":"garmin",'
+         '"device_instance_lower":7,"device_instance_upper":31,"device_class":"%s",'
+         '"system_instance":0,"industry_group":"marine","arbitrary_address_capable":"yes"}\n')
+lines = ((claim % ("pc_gateway", "safety")) + (claim % ("pc_gateway", "internetwork"))
+         + '{"type":"PGN127493","transmission_gear":"reverse","discrete_status_1":[]}\n'
+         + '{"type":"PGN129039","user_id":1}\n').encode()
+enc = run(ENCODE, [], lines)
+check(enc.returncode == 1, f"lookups: encode exit {enc.returncode}")
+err = enc.stderr.decode()
+check("line 1: PGN60928 field 5 (device_function)" in err and "bad_enum" in err,
+      f"lookups: a function of another class: {err!r}")
+check("line 4: PGN129039 field 2 (repeat_indicator)" in err and "missing_field" in err,
+      f"lookups: repeat indicator left out: {err!r}")
+back = [json.loads(l) for l in run(DECODE, [], enc.stdout).stdout.decode().splitlines()]
+check(len(back) == 2 and back[0].get("device_function") == "pc_gateway"
+      and back[0].get("device_class") == "internetwork"
+      and back[0].get("device_instance_upper") == 31
+      and back[1].get("transmission_gear") == "reverse", f"lookups: {back}")
 
 harness.finish()

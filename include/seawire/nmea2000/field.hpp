@@ -121,8 +121,11 @@ template <resolution R>
 
 /// An integer field of `Bits` bits, `Signed` or not, at resolution `Res` (1 by default); "not
 /// available" by default. Built with from() (a physical value) or from_raw(), never from a plain
-/// number (3 m/s is not raw 3 = 0.03 m/s).
-template <unsigned Bits, bool Signed, resolution Res = resolution{}>
+/// number (3 m/s is not raw 3 = 0.03 m/s). `Sentinels` top raw values are sentinels, by default
+/// as many as the width has (docs/nmea2000.md); 0 for a field every raw value of which is a
+/// value (unsigned_no_sentinel).
+template <unsigned Bits, bool Signed, resolution Res = resolution{},
+          unsigned Sentinels = detail::sentinel_count(Bits)>
 class number {
   // Raw values are kept in an int64_t: every signed width up to 64 bits and every unsigned width
   // up to 63 bits fits exactly. An unsigned 64-bit field does not, and does not compile.
@@ -130,12 +133,13 @@ class number {
   static_assert(Signed || Bits <= 63,
                 "an unsigned 64-bit field's raw values do not fit the int64_t a number keeps");
   static_assert(Res.mantissa > 0, "resolution must be positive");
+  static_assert(Sentinels <= detail::sentinel_count(Bits), "more sentinels than the width has");
 
  public:
   static constexpr unsigned bits = Bits;
   static constexpr bool is_signed = Signed;
   static constexpr resolution res = Res;
-  static constexpr unsigned sentinels = detail::sentinel_count(Bits);
+  static constexpr unsigned sentinels = Sentinels;
   /// All ones (unsigned) or the largest positive value (signed): "not available".
   static constexpr std::int64_t top_raw = static_cast<std::int64_t>(
       Signed ? (std::uint64_t{1} << (Bits - 1)) - 1 : (std::uint64_t{1} << Bits) - 1);
@@ -246,6 +250,10 @@ template <unsigned Bits, resolution Res = resolution{}>
 using unsigned_number = number<Bits, false, Res>;
 template <unsigned Bits, resolution Res = resolution{}>
 using signed_number = number<Bits, true, Res>;
+/// An unsigned integer field every raw value of which is a value, all ones included (an ISO
+/// NAME's device instances): no sentinel, so never "not available".
+template <unsigned Bits>
+using unsigned_no_sentinel = number<Bits, false, resolution{}, 0>;
 
 // ---------------------------------------------------------------------------------------------
 // lookups and flag sets
@@ -312,7 +320,8 @@ template <titled_enum E>
 
 /// A field of `Bits` bits whose values name things (a speed sensor's type). Values the standard
 /// has not named are kept and sent as they are; the top 3 raw values are sentinels (2 of a 2-bit
-/// lookup).
+/// lookup), except those the lookup names: a named raw value is always a value (a 2-bit gear's
+/// 2 is "reverse", not J1939's "error").
 template <named_enum E, unsigned Bits>
 class lookup {
   static_assert(Bits >= 1 && Bits <= 16);
@@ -320,19 +329,22 @@ class lookup {
  public:
   static constexpr unsigned bits = Bits;
   static constexpr bool is_signed = false;
-  /// An enum whose values fill the field (an AIS repeat indicator) says so beside lookup_names:
-  /// `constexpr unsigned lookup_sentinels(E) noexcept { return 0; }`.
-  static constexpr unsigned sentinels = [] {
-    if constexpr (requires { lookup_sentinels(E{}); }) {
-      return lookup_sentinels(E{});
-    } else {
-      return detail::lookup_sentinel_count(Bits);
-    }
-  }();
+  static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
+  /// The largest raw value that is a value whether named or not.
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
-  static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(max_valid_raw) + 1,
-                "more names than the field has ordinary values");
+  static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(top_raw) + 1,
+                "more names than the field has raw values");
+  static_assert(!detail::enum_value<E>("not_available") && !detail::enum_value<E>("out_of_range") &&
+                    !detail::enum_value<E>("reserved"),
+                "a lookup's name cannot be a state's: JSON could not tell them apart");
+
+  /// Whether raw value `raw` is a value: below the sentinels, or one the lookup names.
+  [[nodiscard]] static constexpr bool is_value(std::int64_t raw) noexcept {
+    return (raw >= 0 && raw <= max_valid_raw) ||
+           (raw > max_valid_raw && raw <= top_raw &&
+            !detail::enum_name<E>(static_cast<std::uint64_t>(raw)).empty());
+  }
 
   constexpr lookup() noexcept = default;
   // NOLINTNEXTLINE(google-explicit-constructor): m.speed_type = water_reference::doppler;
@@ -343,7 +355,11 @@ class lookup {
     l.raw_ = raw;
     return l;
   }
-  [[nodiscard]] static constexpr lookup not_available() noexcept { return lookup{}; }
+  /// All ones; not offered when the lookup names all ones (then no raw value means "not
+  /// available").
+  [[nodiscard]] static constexpr lookup not_available() noexcept requires(!is_value(top_raw)) {
+    return lookup{};
+  }
   /// The value called `name` (a name of lookup_names); bad_enum for any other.
   [[nodiscard]] static constexpr result<lookup> from_name(std::string_view name) noexcept {
     const auto v = detail::enum_value<E>(name);
@@ -354,7 +370,7 @@ class lookup {
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
   [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
   [[nodiscard]] constexpr field_state state() const noexcept {
-    return detail::state_of(raw_, top_raw, sentinels);
+    return is_value(raw_) ? field_state::value : detail::state_of(raw_, top_raw, sentinels);
   }
   [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
   /// The value, named or not; nullopt unless state() is value.
@@ -795,6 +811,177 @@ template <auto Member>
   return {name, title};
 }
 
+// ---------------------------------------------------------------------------------------------
+// lookups whose names depend on another field
+
+/// One name of a lookup whose names depend on another field (its key): 60928's device function
+/// 130 is "diagnostic" in device class 10 and "bus_traffic_logger" is 140 there, but 130 of class
+/// 20 is an EPIRB. `name` is snake_case (JSON, CSV, fmt), `title` the standard's text.
+struct keyed_name {
+  std::uint16_t key = 0;
+  std::uint16_t value = 0;
+  std::string_view name;
+  std::string_view title;
+};
+
+namespace detail {
+[[nodiscard]] constexpr bool keyed_before(const keyed_name& a, std::int64_t key,
+                                          std::int64_t value) noexcept {
+  return a.key < key || (a.key == key && a.value < value);
+}
+/// Whether `t` is sorted by (key, value), each pair once, every name set and unique in its key.
+template <std::size_t N>
+[[nodiscard]] constexpr bool keyed_table_valid(const std::array<keyed_name, N>& t) noexcept {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (t[i].name.empty() || t[i].title.empty()) return false;
+    if (i > 0 && !keyed_before(t[i - 1], t[i].key, t[i].value)) return false;
+    for (std::size_t j = i + 1; j < N && t[j].key == t[i].key; ++j)
+      if (t[j].name == t[i].name) return false;
+  }
+  return true;
+}
+/// The index of (key, value) in a sorted table, by binary search; N when it has none.
+template <std::size_t N>
+[[nodiscard]] constexpr std::size_t keyed_find(const std::array<keyed_name, N>& t, std::int64_t key,
+                                               std::int64_t value) noexcept {
+  std::size_t lo = 0;
+  std::size_t hi = N;
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (keyed_before(t[mid], key, value)) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo < N && t[lo].key == key && t[lo].value == value ? lo : N;
+}
+}  // namespace detail
+
+/// A table of keyed names: a type with `static constexpr std::array<keyed_name, N> entries`.
+template <class T>
+concept keyed_table = requires {
+  T::entries.size();
+  { T::entries[0] } -> std::convertible_to<const keyed_name&>;
+};
+
+/// A field of `Bits` bits whose names depend on another field of the PGN, its key (declared with
+/// keyed_field). Table T lists the named (key, value) pairs once, sorted; a pair it does not list
+/// is kept and shown as its number. The top raw values are sentinels as for a lookup; no pair may
+/// name one, so the state never depends on the key.
+template <keyed_table T, unsigned Bits>
+class keyed_lookup {
+  static_assert(Bits >= 1 && Bits <= 16);
+  static_assert(detail::keyed_table_valid(T::entries),
+                "a keyed table must be sorted by (key, value), each pair and name once");
+
+ public:
+  using table = T;
+  static constexpr unsigned bits = Bits;
+  static constexpr bool is_signed = false;
+  static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
+  static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
+  static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
+  static_assert(std::ranges::all_of(T::entries,
+                                    [](const keyed_name& e) { return e.value <= max_valid_raw; }),
+                "a keyed table names a sentinel");
+
+  constexpr keyed_lookup() noexcept = default;
+  [[nodiscard]] static constexpr keyed_lookup from_raw(std::int64_t raw) noexcept {
+    keyed_lookup l;
+    l.raw_ = raw;
+    return l;
+  }
+  [[nodiscard]] static constexpr keyed_lookup not_available() noexcept { return keyed_lookup{}; }
+  /// The value called `name` when the key is `key`; bad_enum when no value of that key is.
+  [[nodiscard]] static constexpr result<keyed_lookup> from_name(std::int64_t key,
+                                                                std::string_view name) noexcept {
+    for (const keyed_name& e : T::entries)
+      if (e.key == key && e.name == name) return {from_raw(e.value), errc::ok};
+    return {keyed_lookup{}, errc::bad_enum};
+  }
+
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return raw_ >= 0 && raw_ <= top_raw; }
+  [[nodiscard]] constexpr field_state state() const noexcept {
+    return detail::state_of(raw_, top_raw, sentinels);
+  }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return state() == field_state::value; }
+  /// The value's name when the key is `key` (O(log n)); empty for a sentinel or a pair the table
+  /// does not name.
+  [[nodiscard]] constexpr std::string_view name(std::int64_t key) const noexcept {
+    const std::size_t i = at(key);
+    return i < T::entries.size() ? T::entries[i].name : std::string_view{};
+  }
+  /// The standard's text for the value when the key is `key`; empty as for name().
+  [[nodiscard]] constexpr std::string_view title(std::int64_t key) const noexcept {
+    const std::size_t i = at(key);
+    return i < T::entries.size() ? T::entries[i].title : std::string_view{};
+  }
+  [[nodiscard]] constexpr bool operator==(const keyed_lookup&) const noexcept = default;
+
+ private:
+  [[nodiscard]] constexpr std::size_t at(std::int64_t key) const noexcept {
+    return has_value() ? detail::keyed_find(T::entries, key, raw_) : T::entries.size();
+  }
+
+  std::int64_t raw_ = top_raw;
+};
+
+namespace detail {
+template <class V>
+inline constexpr bool is_keyed_lookup = false;
+template <class T, unsigned B>
+inline constexpr bool is_keyed_lookup<keyed_lookup<T, B>> = true;
+}  // namespace detail
+
+/// A keyed lookup's value read beside its key: what the walk gives writers for a keyed field
+/// (the name needs both). The key counts only when its field holds a value.
+template <class L>
+struct keyed_reading {
+  static constexpr bool is_signed = L::is_signed;
+  L value;
+  std::int64_t key = 0;
+  bool key_known = false;
+
+  [[nodiscard]] constexpr std::int64_t raw() const noexcept { return value.raw(); }
+  [[nodiscard]] constexpr field_state state() const noexcept { return value.state(); }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return value.has_value(); }
+  /// The name of the (key, value) pair; empty when the key is not known or the pair not named.
+  [[nodiscard]] constexpr std::string_view name() const noexcept {
+    return key_known ? value.name(key) : std::string_view{};
+  }
+  [[nodiscard]] constexpr std::string_view title() const noexcept {
+    return key_known ? value.title(key) : std::string_view{};
+  }
+};
+
+/// A row of a PGN table whose value is a keyed_lookup named by the value of member KeyMember
+/// (a field of the same PGN, before or after it).
+template <auto Member, auto KeyMember>
+struct keyed_field_entry : field_entry<Member> {
+  using key_type = seawire::detail::member_type_t<KeyMember>;
+  static_assert(detail::is_keyed_lookup<typename field_entry<Member>::value_type>,
+                "a keyed field's member must be a keyed_lookup");
+  static_assert(field_value<key_type> && std::is_same_v<seawire::detail::member_class_t<Member>,
+                                                        seawire::detail::member_class_t<KeyMember>>,
+                "a keyed field's key must be another field of the same PGN");
+  static_assert(!seawire::detail::same_member<Member, KeyMember>, "a field cannot key itself");
+  static constexpr auto key_member = KeyMember;
+};
+
+template <auto Member, auto KeyMember>
+[[nodiscard]] constexpr keyed_field_entry<Member, KeyMember> keyed_field(
+    std::string_view name, std::string_view title) noexcept {
+  return {{name, title}};
+}
+
+/// Whether row type F is a keyed field.
+template <class F>
+concept keyed_row = requires {
+  F::key_member;
+};
+
 /// A number field whose values canboat's database names (an engine instance: 0 "Single Engine or
 /// Dual Engine Port"): a number as seawire keeps and writes it, with E's lookup_titles for the
 /// writers that show canboat's texts. Declared as field<&P::m, E>(name, title).
@@ -813,22 +1000,27 @@ template <auto Member, class E>
   return {{name, title}};
 }
 
-/// A number field that holds an MMSI (a vessel's or station's 9-digit radio identity): a number
-/// as seawire keeps and writes it; canboat's JSON shows it as 9-digit text ("244100633").
-/// Declared as mmsi<&P::m>(name, title).
-template <auto Member>
-struct mmsi_field_entry : field_entry<Member> {
-  static_assert(
-      requires { field_entry<Member>::value_type::res; }, "an MMSI is a number field");
-  static_assert(!field_entry<Member>::value_type::is_signed &&
-                    field_entry<Member>::value_type::bits == 32,
-                "an MMSI is an unsigned 32-bit number");
-  static constexpr bool is_mmsi = true;
+/// How a number that is no quantity reads: an identifier's digits (an AIS user's MMSI), or bits
+/// with no numeric meaning (AIS's communication state). seawire keeps and writes it as a number;
+/// writers that follow canboat show it as canboat does (a string of at least 9 digits, the bytes
+/// in hex).
+enum class raw_display : std::uint8_t {
+  identifier,  ///< an identifier's digits (an MMSI, 9 of them)
+  bits,        ///< bits with no numeric meaning, shown as bytes
 };
 
-template <auto Member>
-[[nodiscard]] constexpr mmsi_field_entry<Member> mmsi(std::string_view name,
-                                                      std::string_view title) noexcept {
+/// A number field read as D says. Declared as field<&P::m, raw_display::bits>(name, title).
+template <auto Member, raw_display D>
+struct displayed_field_entry : field_entry<Member> {
+  static_assert(
+      requires { field_entry<Member>::value_type::res; },
+      "only a number field is shown as an identifier or bits");
+  static constexpr raw_display display = D;
+};
+
+template <auto Member, raw_display D>
+[[nodiscard]] constexpr displayed_field_entry<Member, D> field(std::string_view name,
+                                                               std::string_view title) noexcept {
   return {{name, title}};
 }
 
@@ -843,11 +1035,15 @@ struct reserved_bits {
 template <unsigned Bits>
 inline constexpr reserved_bits<Bits> reserved{};
 
-/// `Bits` spare bits (AIS messages): sent as zeros, ignored when received.
+/// `Bits` spare bits (AIS's and an ISO NAME's, by their standards' rule): sent as zeros, ignored
+/// when received. `spare<N>` is named "spare"; a spare field the standard names is declared as
+/// spare_bits<N>{"name", "Title"}.
 template <unsigned Bits>
 struct spare_bits : reserved_bits<Bits> {
   static constexpr bool is_spare = true;
   constexpr spare_bits() noexcept : reserved_bits<Bits>{"spare", "Spare"} {}
+  constexpr spare_bits(std::string_view spare_name, std::string_view spare_title) noexcept
+      : reserved_bits<Bits>{spare_name, spare_title} {}
 };
 template <unsigned Bits>
 inline constexpr spare_bits<Bits> spare{};
@@ -1407,12 +1603,12 @@ template <pgn_like P>
 
 }  // namespace detail
 
-/// P's payload: every field at its offset, reserved bits as ones, a field not available as its
-/// "not available" value; a flag set not available ends the payload at the byte the word starts
-/// in (rounded up). A repeating group's repetitions follow the fixed rows, and the payload ends
-/// after the last one held (the count field is written as held: a count larger than the
-/// repetitions held, up to the capacity, is sent as it is). Errors, `field` = the first such row
-/// number, `column` = the byte the field starts in:
+/// P's payload: every field at its offset, reserved bits as ones (spare bits as zeros), a field
+/// not available as its "not available" value; a flag set not available ends the payload at the
+/// byte the word starts in (rounded up). A repeating group's repetitions follow the fixed rows,
+/// and the payload ends after the last one held (the count field is written as held: a count
+/// larger than the repetitions held, up to the capacity, is sent as it is). Errors, `field` = the
+/// first such row number, `column` = the byte the field starts in:
 ///   value_too_large   a member holds a raw value (from_raw) its width cannot carry (in a
 ///                     group: the group's row, `column` the repetition's field);
 ///   missing_field     a flag set is not available but a field after it is not "not available"
@@ -1462,7 +1658,9 @@ template <pgn_like P>
       for (const Item& item : g) {
         Item::n2k_item.for_each([&](const auto& e, unsigned o, std::uint16_t) {
           using R = std::remove_cvref_t<decltype(e)>;
-          if constexpr (!R::is_reserved) {
+          if constexpr (requires { R::is_spare; }) {
+            seawire::detail::put_bits<payload_order>(r.value.bytes, at + o, R::bits, 0);
+          } else if constexpr (!R::is_reserved) {
             const auto& v = item.*R::member;
             if (!v.fits()) {
               fail(errc::value_too_large, n, at + o);

@@ -64,8 +64,8 @@ constexpr void json_state(Sink& s, field_state st) noexcept {
 
 template <class T>
 struct is_number : std::false_type {};
-template <unsigned B, bool S, resolution R>
-struct is_number<number<B, S, R>> : std::true_type {};
+template <unsigned B, bool S, resolution R, unsigned N>
+struct is_number<number<B, S, R, N>> : std::true_type {};
 template <class T>
 struct is_lookup : std::false_type {};
 template <class E, unsigned B>
@@ -219,6 +219,8 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
         s.put(v.name());
         detail::quote<Style>(s);
       }
+    } else if constexpr (detail::is_keyed_lookup<T>) {
+      json_uint(s, static_cast<std::uint64_t>(v.raw()));  // alone, without its key: no name
     } else if constexpr (std::is_same_v<T, day_count>) {
       const std::chrono::year_month_day ymd(*v.value());
       nmea::detail::json_joined<Style == nmea::json_style::json>(
@@ -233,6 +235,21 @@ constexpr void write_json_value(Sink& s, const T& v) noexcept {
           s, {{{ticks / 36'000'000, 2}, {ticks / 600'000 % 60, 2}, {ticks / 10'000 % 60, 2}}}, ':',
           {ticks % 10'000, 4});
     }
+  }
+}
+
+/// A keyed field's value beside its key: the pair's name, or the number when the table does not
+/// name the pair (or the key is not available).
+template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, class L>
+constexpr void write_json_value(Sink& s, const keyed_reading<L>& v) noexcept {
+  if (!v.has_value()) {
+    detail::json_state<Style>(s, v.state());
+  } else if (v.name().empty()) {
+    nmea::detail::json_uint(s, static_cast<std::uint64_t>(v.raw()));
+  } else {
+    detail::quote<Style>(s);
+    s.put(v.name());
+    detail::quote<Style>(s);
   }
 }
 
@@ -402,10 +419,13 @@ template <class T>
       return detail::sentinel_count(T::bits);
     }
   }();
-  if (st == field_state::not_available && n >= 1) return T::from_raw(top);
-  if (st == field_state::out_of_range && n >= 2) return T::from_raw(top - 1);
-  if (st == field_state::reserved && n >= 3) return T::from_raw(top - 2);
-  return std::nullopt;
+  std::optional<T> out;
+  if (st == field_state::not_available && n >= 1) out = T::from_raw(top);
+  if (st == field_state::out_of_range && n >= 2) out = T::from_raw(top - 1);
+  if (st == field_state::reserved && n >= 3) out = T::from_raw(top - 2);
+  // A raw value a lookup names is that value, not the state (a 2-bit gear's 2 is reverse).
+  if (out && out->state() != st) return std::nullopt;
+  return out;
 }
 
 [[nodiscard]] constexpr bool parse_plain_uint(std::string_view t, std::int64_t& out) noexcept {
@@ -500,7 +520,9 @@ template <field_value T, class Lookup>
   } else {
     if (const auto st = detail::state_named(v)) {
       const auto s = detail::sentinel<T>(*st);
-      if (!s) return errc::out_of_range;  // a state this field cannot carry
+      // A state this field cannot carry; a field every raw value of which is a value (all
+      // named, no sentinel) cannot be left out.
+      if (!s) return *st == field_state::not_available ? errc::missing_field : errc::out_of_range;
       out = *s;
       return errc::ok;
     }
@@ -510,11 +532,21 @@ template <field_value T, class Lookup>
       const auto r = T::from(d);
       if (r) out = r.value;
       return r.ec;
+    } else if constexpr (detail::is_keyed_lookup<T>) {
+      // Alone, without its key, a keyed field reads a number only (read_json gives names).
+      std::int64_t raw = 0;
+      if (v.kind != json_kind::number &&
+          !(v.kind == json_kind::string && detail::parse_plain_uint(v.text, raw)))
+        return errc::bad_enum;
+      if (!detail::parse_plain_uint(v.text, raw) || raw > T::max_valid_raw)
+        return errc::out_of_range;
+      out = T::from_raw(raw);
+      return errc::ok;
     } else if constexpr (detail::is_lookup<T>::value) {
       std::int64_t raw = 0;
       if (v.kind == json_kind::number ||
           (v.kind == json_kind::string && detail::parse_plain_uint(v.text, raw))) {
-        if (!detail::parse_plain_uint(v.text, raw) || raw > T::max_valid_raw)
+        if (!detail::parse_plain_uint(v.text, raw) || raw > T::top_raw || !T::is_value(raw))
           return errc::out_of_range;
         out = T::from_raw(raw);
         return errc::ok;
@@ -608,6 +640,12 @@ template <class F, class G, class Lookup>
 template <pgn_like P, class Lookup>
 [[nodiscard]] constexpr result<P> read_json(Lookup&& lookup) noexcept {
   result<P> r;
+  const auto fail = [&](errc e, std::uint16_t n, unsigned offset) {
+    if (e == errc::ok || (r.ec != errc::ok && r.field < n)) return;
+    r.ec = e;
+    r.field = n;
+    r.column = static_cast<std::uint16_t>(offset / 8);
+  };
   P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (detail::group_row<F>) {
@@ -619,15 +657,33 @@ template <pgn_like P, class Lookup>
         r.field = n;
         r.column = column;
       }
-    } else if constexpr (!F::is_reserved) {
+    } else if constexpr (!F::is_reserved && !keyed_row<F>) {
       if (r.ec != errc::ok) return;
       const json_value v = lookup(std::string_view{}, f.name);
-      const errc e = read_json_value(v, r.value.*F::member, f.name, lookup);
-      if (e != errc::ok) {
-        r.ec = e;
-        r.field = n;
-        r.column = static_cast<std::uint16_t>(offset / 8);
+      fail(read_json_value(v, r.value.*F::member, f.name, lookup), n, offset);
+    }
+  });
+  // Keyed fields once their keys are read: a name counts for the key the message has. The
+  // error reported is the first row's either way.
+  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (keyed_row<F>) {
+      if (r.ec != errc::ok && r.field < n) return;
+      using V = typename F::value_type;
+      const json_value v = lookup(std::string_view{}, f.name);
+      const auto& key = r.value.*F::key_member;
+      errc e = errc::ok;
+      std::int64_t number = 0;
+      if (v.kind == json_kind::string && !detail::state_named(v) &&
+          !detail::parse_plain_uint(v.text, number)) {
+        const auto named =
+            key.has_value() ? V::from_name(key.raw(), v.text) : result<V>{V{}, errc::bad_enum};
+        if (named) r.value.*F::member = named.value;
+        e = named.ec;
+      } else {
+        e = read_json_value(v, r.value.*F::member, f.name, lookup);
       }
+      fail(e, n, offset);
     }
   });
   return r;

@@ -15,6 +15,7 @@
 #include <span>
 #include <string_view>
 
+#include "seawire/nmea2000/device_names.hpp"
 #include "seawire/nmea2000/field.hpp"
 
 namespace seawire::nmea2000 {
@@ -1001,6 +1002,644 @@ struct iso_acknowledgement {
 };
 
 // ---------------------------------------------------------------------------------------------
+// ---- lookups: the ISO NAME, heartbeat, steering, transmission and AIS position reports ----
+// Some of these name raw values a lookup otherwise keeps as sentinels (a 2-bit gear's reverse,
+// a 3-bit steering mode's track control): a named raw value is a value (field.hpp, lookup).
+
+/// A CAN controller's error state (126993), ISO 11898's: raw 2 (bus off) is named, so a value.
+enum class controller_state : std::uint8_t {
+  error_active = 0,
+  error_passive = 1,
+  bus_off = 2,
+};
+constexpr std::array<std::string_view, 3> lookup_names(controller_state) noexcept {
+  return {"error_active", "error_passive", "bus_off"};
+}
+constexpr std::array<std::string_view, 3> lookup_titles(controller_state) noexcept {
+  return {"Error Active", "Error Passive", "Bus Off"};
+}
+
+/// Whether a device works (126993).
+enum class equipment_status : std::uint8_t {
+  operational = 0,
+  fault = 1,
+};
+constexpr std::array<std::string_view, 2> lookup_names(equipment_status) noexcept {
+  return {"operational", "fault"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(equipment_status) noexcept {
+  return {"Operational", "Fault"};
+}
+
+/// A transmission's gear (127493): raw 2 (reverse) is named, so a value.
+enum class gear_status : std::uint8_t {
+  forward = 0,
+  neutral = 1,
+  reverse = 2,
+};
+constexpr std::array<std::string_view, 3> lookup_names(gear_status) noexcept {
+  return {"forward", "neutral", "reverse"};
+}
+constexpr std::array<std::string_view, 3> lookup_titles(gear_status) noexcept {
+  return {"Forward", "Neutral", "Reverse"};
+}
+
+/// Who steers (127237): raw 5 (track control) is named, so a value.
+enum class steering_mode : std::uint8_t {
+  main_steering = 0,
+  non_follow_up = 1,  ///< a non-follow-up device (a jog lever)
+  follow_up = 2,      ///< a follow-up device (a helm that sets the rudder angle)
+  heading_control_standalone = 3,
+  heading_control = 4,
+  track_control = 5,
+};
+constexpr std::array<std::string_view, 6> lookup_names(steering_mode) noexcept {
+  return {"main_steering",   "non_follow_up", "follow_up", "heading_control_standalone",
+          "heading_control", "track_control"};
+}
+constexpr std::array<std::string_view, 6> lookup_titles(steering_mode) noexcept {
+  return {"Main Steering",    "Non-Follow-Up Device",
+          "Follow-Up Device", "Heading Control Standalone",
+          "Heading Control",  "Track Control"};
+}
+
+/// How a turn is controlled (127237).
+enum class turn_mode : std::uint8_t {
+  rudder_limit_controlled = 0,
+  turn_rate_controlled = 1,
+  radius_controlled = 2,
+};
+constexpr std::array<std::string_view, 3> lookup_names(turn_mode) noexcept {
+  return {"rudder_limit_controlled", "turn_rate_controlled", "radius_controlled"};
+}
+constexpr std::array<std::string_view, 3> lookup_titles(turn_mode) noexcept {
+  return {"Rudder limit controlled", "Turn rate controlled", "Radius controlled"};
+}
+
+/// Transmission discrete status 1 (127493): bit numbers.
+enum class transmission_status : std::uint8_t {
+  check_transmission = 0,
+  over_temperature = 1,
+  low_oil_pressure = 2,
+  low_oil_level = 3,
+  sail_drive = 4,
+};
+constexpr std::array<std::string_view, 5> lookup_names(transmission_status) noexcept {
+  return {"check_transmission", "over_temperature", "low_oil_pressure", "low_oil_level",
+          "sail_drive"};
+}
+constexpr std::array<std::string_view, 5> lookup_titles(transmission_status) noexcept {
+  return {"Check Transmission", "Over Temperature", "Low Oil Pressure", "Low Oil Level",
+          "Sail Drive"};
+}
+
+namespace detail {
+/// A value of a lookup and its name.
+struct named_value {
+  std::size_t value = 0;
+  std::string_view name;
+};
+/// The names of a lookup whose values have gaps, by value ("" where none).
+template <std::size_t N, std::size_t M>
+[[nodiscard]] constexpr std::array<std::string_view, N> names_by_value(
+    const named_value (&values)[M]) noexcept {
+  std::array<std::string_view, N> out{};
+  for (const named_value& v : values) out[v.value] = v.name;
+  return out;
+}
+}  // namespace detail
+
+/// The AIS message an NMEA 2000 AIS PGN carries (6 bits, ITU-R M.1371 message numbers; 0 has no
+/// name).
+enum class ais_message_id : std::uint8_t {
+  scheduled_class_a_position_report = 1,
+  assigned_scheduled_class_a_position_report = 2,
+  interrogated_class_a_position_report = 3,
+  base_station_report = 4,
+  static_and_voyage_related_data = 5,
+  binary_addressed_message = 6,
+  binary_acknowledgement = 7,
+  binary_broadcast_message = 8,
+  standard_sar_aircraft_position_report = 9,
+  utc_date_inquiry = 10,
+  utc_date_response = 11,
+  safety_related_addressed_message = 12,
+  safety_related_acknowledgement = 13,
+  safety_related_broadcast_message = 14,
+  interrogation = 15,
+  assignment_mode_command = 16,
+  dgnss_broadcast_binary_message = 17,
+  standard_class_b_position_report = 18,
+  extended_class_b_position_report = 19,
+  data_link_management_message = 20,
+  aton_report = 21,
+  channel_management = 22,
+  group_assignment_command = 23,
+  static_data_report = 24,
+  single_slot_binary_message = 25,
+  multiple_slot_binary_message = 26,
+  position_report_for_long_range_applications = 27,
+};
+constexpr std::array<std::string_view, 28> lookup_names(ais_message_id) noexcept {
+  return detail::names_by_value<28>({{1, "scheduled_class_a_position_report"},
+                                     {2, "assigned_scheduled_class_a_position_report"},
+                                     {3, "interrogated_class_a_position_report"},
+                                     {4, "base_station_report"},
+                                     {5, "static_and_voyage_related_data"},
+                                     {6, "binary_addressed_message"},
+                                     {7, "binary_acknowledgement"},
+                                     {8, "binary_broadcast_message"},
+                                     {9, "standard_sar_aircraft_position_report"},
+                                     {10, "utc_date_inquiry"},
+                                     {11, "utc_date_response"},
+                                     {12, "safety_related_addressed_message"},
+                                     {13, "safety_related_acknowledgement"},
+                                     {14, "safety_related_broadcast_message"},
+                                     {15, "interrogation"},
+                                     {16, "assignment_mode_command"},
+                                     {17, "dgnss_broadcast_binary_message"},
+                                     {18, "standard_class_b_position_report"},
+                                     {19, "extended_class_b_position_report"},
+                                     {20, "data_link_management_message"},
+                                     {21, "aton_report"},
+                                     {22, "channel_management"},
+                                     {23, "group_assignment_command"},
+                                     {24, "static_data_report"},
+                                     {25, "single_slot_binary_message"},
+                                     {26, "multiple_slot_binary_message"},
+                                     {27, "position_report_for_long_range_applications"}});
+}
+/// canboat's texts for ais_message_id's values, in the same order.
+constexpr std::array<std::string_view, 28> lookup_titles(ais_message_id) noexcept {
+  return detail::names_by_value<28>({{1, "Scheduled Class A position report"},
+                                     {2, "Assigned scheduled Class A position report"},
+                                     {3, "Interrogated Class A position report"},
+                                     {4, "Base station report"},
+                                     {5, "Static and voyage related data"},
+                                     {6, "Binary addressed message"},
+                                     {7, "Binary acknowledgement"},
+                                     {8, "Binary broadcast message"},
+                                     {9, "Standard SAR aircraft position report"},
+                                     {10, "UTC/date inquiry"},
+                                     {11, "UTC/date response"},
+                                     {12, "Safety related addressed message"},
+                                     {13, "Safety related acknowledgement"},
+                                     {14, "Satety related broadcast message"},
+                                     {15, "Interrogation"},
+                                     {16, "Assignment mode command"},
+                                     {17, "DGNSS broadcast binary message"},
+                                     {18, "Standard Class B position report"},
+                                     {19, "Extended Class B position report"},
+                                     {20, "Data link management message"},
+                                     {21, "ATON report"},
+                                     {22, "Channel management"},
+                                     {23, "Group assignment command"},
+                                     {24, "Static data report"},
+                                     {25, "Single slot binary message"},
+                                     {26, "Multiple slot binary message"},
+                                     {27, "Position report for long range applications"}});
+}
+
+/// How many times an AIS message has been repeated (2 bits, every raw value named, so a value:
+/// none is "not available").
+enum class ais_repeat_indicator : std::uint8_t {
+  initial = 0,
+  first_retransmission = 1,
+  second_retransmission = 2,
+  final_retransmission = 3,
+};
+constexpr std::array<std::string_view, 4> lookup_names(ais_repeat_indicator) noexcept {
+  return {"initial", "first_retransmission", "second_retransmission", "final_retransmission"};
+}
+/// canboat's texts for ais_repeat_indicator's values, in the same order.
+constexpr std::array<std::string_view, 4> lookup_titles(ais_repeat_indicator) noexcept {
+  return {"Initial", "First retransmission", "Second retransmission", "Final retransmission"};
+}
+
+/// An AIS position's accuracy (1 bit): high is better than 10 m.
+enum class position_accuracy : std::uint8_t { low = 0, high = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(position_accuracy) noexcept {
+  return {"low", "high"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(position_accuracy) noexcept {
+  return {"Low", "High"};
+}
+
+/// Whether receiver autonomous integrity monitoring is in use (1 bit).
+enum class raim_flag : std::uint8_t { not_in_use = 0, in_use = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(raim_flag) noexcept {
+  return {"not_in_use", "in_use"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(raim_flag) noexcept {
+  return {"not in use", "in use"};
+}
+
+/// An AIS report's time stamp (6 bits): 0-59 the UTC second of the report (unnamed numbers),
+/// 60-63 why there is none. All four top values are named, so values: none is "not available".
+enum class ais_time_stamp : std::uint8_t {
+  unavailable = 60,
+  manual_input = 61,
+  dead_reckoning = 62,
+  positioning_inoperative = 63,
+};
+constexpr std::array<std::string_view, 64> lookup_names(ais_time_stamp) noexcept {
+  std::array<std::string_view, 64> a{};
+  a[60] = "unavailable";
+  a[61] = "manual_input";
+  a[62] = "dead_reckoning";
+  a[63] = "positioning_inoperative";
+  return a;
+}
+constexpr std::array<std::string_view, 64> lookup_titles(ais_time_stamp) noexcept {
+  std::array<std::string_view, 64> a{};
+  a[60] = "Not available";
+  a[61] = "Manual input mode";
+  a[62] = "Dead reckoning mode";
+  a[63] = "Positioning system is inoperative";
+  return a;
+}
+
+/// Which AIS channel a message came from, or was sent on (5 bits).
+enum class ais_transceiver : std::uint8_t {
+  channel_a_vdl_reception = 0,
+  channel_b_vdl_reception = 1,
+  channel_a_vdl_transmission = 2,
+  channel_b_vdl_transmission = 3,
+  own_information_not_broadcast = 4,
+  reserved_5 = 5,
+};
+constexpr std::array<std::string_view, 6> lookup_names(ais_transceiver) noexcept {
+  return {"channel_a_vdl_reception",       "channel_b_vdl_reception",
+          "channel_a_vdl_transmission",    "channel_b_vdl_transmission",
+          "own_information_not_broadcast", "reserved_5"};
+}
+/// canboat's texts for ais_transceiver's values, in the same order.
+constexpr std::array<std::string_view, 6> lookup_titles(ais_transceiver) noexcept {
+  return {"Channel A VDL reception",       "Channel B VDL reception",
+          "Channel A VDL transmission",    "Channel B VDL transmission",
+          "Own information not broadcast", "Reserved"};
+}
+
+/// A vessel's navigational status (4 bits); 14 (AIS-SART) is named, so a value, 13 is not.
+enum class nav_status : std::uint8_t {
+  under_way_using_engine = 0,
+  at_anchor = 1,
+  not_under_command = 2,
+  restricted_maneuverability = 3,
+  constrained_by_draught = 4,
+  moored = 5,
+  aground = 6,
+  engaged_in_fishing = 7,
+  under_way_sailing = 8,
+  hazardous_material_high_speed = 9,
+  hazardous_material_wing_in_ground = 10,
+  towing_astern = 11,
+  pushing_ahead_or_towing_alongside = 12,
+  ais_sart = 14,
+};
+constexpr std::array<std::string_view, 15> lookup_names(nav_status) noexcept {
+  return {"under_way_using_engine",
+          "at_anchor",
+          "not_under_command",
+          "restricted_maneuverability",
+          "constrained_by_draught",
+          "moored",
+          "aground",
+          "engaged_in_fishing",
+          "under_way_sailing",
+          "hazardous_material_high_speed",
+          "hazardous_material_wing_in_ground",
+          "towing_astern",
+          "pushing_ahead_or_towing_alongside",
+          "",
+          "ais_sart"};
+}
+constexpr std::array<std::string_view, 15> lookup_titles(nav_status) noexcept {
+  return {"Under way using engine",
+          "At anchor",
+          "Not under command",
+          "Restricted maneuverability",
+          "Constrained by her draught",
+          "Moored",
+          "Aground",
+          "Engaged in Fishing",
+          "Under way sailing",
+          "Hazardous material - High Speed",
+          "Hazardous material - Wing in Ground",
+          "Power-driven vessel towing astern",
+          "Power-driven vessel pushing ahead or towing alongside",
+          "",
+          "AIS-SART"};
+}
+
+/// Whether a vessel is engaged in a special maneuver (2 bits, every raw value named).
+enum class ais_special_maneuver : std::uint8_t {
+  unavailable = 0,
+  not_engaged = 1,
+  engaged = 2,
+  reserved_3 = 3,  ///< named "Reserved" by the standard
+};
+constexpr std::array<std::string_view, 4> lookup_names(ais_special_maneuver) noexcept {
+  return {"unavailable", "not_engaged", "engaged", "reserved_3"};
+}
+constexpr std::array<std::string_view, 4> lookup_titles(ais_special_maneuver) noexcept {
+  return {"Not available", "Not engaged in special maneuver", "Engaged in special maneuver",
+          "Reserved"};
+}
+
+/// A class B unit's kind (1 bit): SOTDMA or carrier sense.
+enum class ais_unit_type : std::uint8_t { sotdma = 0, cs = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(ais_unit_type) noexcept {
+  return {"sotdma", "cs"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(ais_unit_type) noexcept {
+  return {"SOTDMA", "CS"};
+}
+
+/// The band a class B unit can use (1 bit).
+enum class ais_band : std::uint8_t { top_525_khz = 0, entire_marine_band = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(ais_band) noexcept {
+  return {"top_525_khz", "entire_marine_band"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(ais_band) noexcept {
+  return {"Top 525 kHz of marine band", "Entire marine band"};
+}
+
+/// A class B unit's mode (1 bit).
+enum class ais_mode : std::uint8_t { autonomous = 0, assigned = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(ais_mode) noexcept {
+  return {"autonomous", "assigned"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(ais_mode) noexcept {
+  return {"Autonomous", "Assigned"};
+}
+
+/// The kind of communication state a class B report carries (1 bit).
+enum class ais_communication_state : std::uint8_t { sotdma = 0, itdma = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(ais_communication_state) noexcept {
+  return {"sotdma", "itdma"};
+}
+constexpr std::array<std::string_view, 2> lookup_titles(ais_communication_state) noexcept {
+  return {"SOTDMA", "ITDMA"};
+}
+
+namespace res {
+inline constexpr resolution rotation{3125, -8};  ///< 3.125e-5 rad/s
+}  // namespace res
+
+/// PGN 60928 ISO Address Claim: 8 bytes, single frame, priority 6, on demand. A device's 64-bit
+/// ISO NAME, claiming the source address it is sent from. An addressed (PDU1) PGN, normally sent
+/// to 255. The device function's name depends on the device class (device_functions); the
+/// device instances are numbers every raw value of which is a value; bit 48 is spare (zero).
+struct iso_address_claim {
+  unsigned_number<21> unique_number;
+  lookup<nmea2000::manufacturer_code, 11> manufacturer_code;
+  unsigned_no_sentinel<3> device_instance_lower;
+  unsigned_no_sentinel<5> device_instance_upper;
+  keyed_lookup<device_functions, 8> device_function;
+  lookup<nmea2000::device_class, 7> device_class;
+  unsigned_number<4> system_instance;
+  lookup<nmea2000::industry_group, 3> industry_group;
+  lookup<yes_no, 1> arbitrary_address_capable;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{60928, "iso_address_claim", "ISO Address Claim", 6, framing::single_frame, 0},
+      field<&iso_address_claim::unique_number>("unique_number", "Unique Number"),
+      field<&iso_address_claim::manufacturer_code>("manufacturer_code", "Manufacturer Code"),
+      field<&iso_address_claim::device_instance_lower>("device_instance_lower",
+                                                       "Device Instance Lower"),
+      field<&iso_address_claim::device_instance_upper>("device_instance_upper",
+                                                       "Device Instance Upper"),
+      keyed_field<&iso_address_claim::device_function, &iso_address_claim::device_class>(
+          "device_function", "Device Function"),
+      spare<1>, field<&iso_address_claim::device_class>("device_class", "Device Class"),
+      field<&iso_address_claim::system_instance>("system_instance", "System Instance"),
+      field<&iso_address_claim::industry_group>("industry_group", "Industry Group"),
+      field<&iso_address_claim::arbitrary_address_capable>("arbitrary_address_capable",
+                                                           "Arbitrary address capable"));
+  [[nodiscard]] constexpr bool operator==(const iso_address_claim&) const noexcept = default;
+};
+
+/// PGN 126993 Heartbeat: 8 bytes, single frame, priority 7, every 60 s. A device's sign of life:
+/// its transmit offset (s, at 0.001 s), a counter, and its CAN controllers' and its own state.
+struct heartbeat {
+  unsigned_number<16, res::thousandth> data_transmit_offset_s;
+  unsigned_number<8> sequence_counter;
+  lookup<nmea2000::controller_state, 2> controller_1_state;
+  lookup<nmea2000::controller_state, 2> controller_2_state;
+  lookup<nmea2000::equipment_status, 2> equipment_status;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{126993, "heartbeat", "Heartbeat", 7, framing::single_frame, 60000},
+      field<&heartbeat::data_transmit_offset_s>("data_transmit_offset_s", "Data transmit offset"),
+      field<&heartbeat::sequence_counter>("sequence_counter", "Sequence Counter"),
+      field<&heartbeat::controller_1_state>("controller_1_state", "Controller 1 State"),
+      field<&heartbeat::controller_2_state>("controller_2_state", "Controller 2 State"),
+      field<&heartbeat::equipment_status>("equipment_status", "Equipment Status"), reserved<34>);
+  [[nodiscard]] constexpr bool operator==(const heartbeat&) const noexcept = default;
+};
+
+/// PGN 127237 Heading/Track control: 21 bytes, fast packet, priority 2, 4 Hz. An autopilot's
+/// mode, orders and limits: angles in rad (0.0001 rad), radius and off-track limit in m, rate
+/// of turn in rad/s (3.125e-5 rad/s).
+struct heading_track_control {
+  lookup<yes_no, 2> rudder_limit_exceeded;
+  lookup<yes_no, 2> off_heading_limit_exceeded;
+  lookup<yes_no, 2> off_track_limit_exceeded;
+  lookup<yes_no, 2> override;
+  lookup<nmea2000::steering_mode, 3> steering_mode;
+  lookup<nmea2000::turn_mode, 3> turn_mode;
+  lookup<nmea2000::heading_reference, 2> heading_reference;
+  lookup<rudder_direction, 3> commanded_rudder_direction;
+  signed_number<16, res::radian> commanded_rudder_angle_rad;
+  unsigned_number<16, res::radian> heading_to_steer_rad;
+  unsigned_number<16, res::radian> track_rad;
+  unsigned_number<16, res::radian> rudder_limit_rad;
+  unsigned_number<16, res::radian> off_heading_limit_rad;
+  signed_number<16> radius_of_turn_order_m;
+  signed_number<16, res::rotation> rate_of_turn_order_radps;
+  signed_number<16> off_track_limit_m;
+  unsigned_number<16, res::radian> vessel_heading_rad;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127237, "heading_track_control", "Heading/Track control", 2, framing::fast_packet,
+               250},
+      field<&heading_track_control::rudder_limit_exceeded>("rudder_limit_exceeded",
+                                                           "Rudder Limit Exceeded"),
+      field<&heading_track_control::off_heading_limit_exceeded>("off_heading_limit_exceeded",
+                                                                "Off-Heading Limit Exceeded"),
+      field<&heading_track_control::off_track_limit_exceeded>("off_track_limit_exceeded",
+                                                              "Off-Track Limit Exceeded"),
+      field<&heading_track_control::override>("override", "Override"),
+      field<&heading_track_control::steering_mode>("steering_mode", "Steering Mode"),
+      field<&heading_track_control::turn_mode>("turn_mode", "Turn Mode"),
+      field<&heading_track_control::heading_reference>("heading_reference", "Heading Reference"),
+      reserved<5>,
+      field<&heading_track_control::commanded_rudder_direction>("commanded_rudder_direction",
+                                                                "Commanded Rudder Direction"),
+      field<&heading_track_control::commanded_rudder_angle_rad>("commanded_rudder_angle_rad",
+                                                                "Commanded Rudder Angle"),
+      field<&heading_track_control::heading_to_steer_rad>("heading_to_steer_rad",
+                                                          "Heading-To-Steer (Course)"),
+      field<&heading_track_control::track_rad>("track_rad", "Track"),
+      field<&heading_track_control::rudder_limit_rad>("rudder_limit_rad", "Rudder Limit"),
+      field<&heading_track_control::off_heading_limit_rad>("off_heading_limit_rad",
+                                                           "Off-Heading Limit"),
+      field<&heading_track_control::radius_of_turn_order_m>("radius_of_turn_order_m",
+                                                            "Radius of Turn Order"),
+      field<&heading_track_control::rate_of_turn_order_radps>("rate_of_turn_order_radps",
+                                                              "Rate of Turn Order"),
+      field<&heading_track_control::off_track_limit_m>("off_track_limit_m", "Off-Track Limit"),
+      field<&heading_track_control::vessel_heading_rad>("vessel_heading_rad", "Vessel Heading"));
+  [[nodiscard]] constexpr bool operator==(const heading_track_control&) const noexcept = default;
+};
+
+/// PGN 127252 Heave: 8 bytes, single frame, priority 3. The vessel's vertical displacement in m
+/// (0.01 m, positive down as sent).
+struct heave {
+  unsigned_number<8> sid;
+  signed_number<16, res::hundredth> heave_m;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127252, "heave", "Heave", 3, framing::single_frame, 0},
+      field<&heave::sid>("sid", "SID"), field<&heave::heave_m>("heave_m", "Heave"), reserved<40>);
+  [[nodiscard]] constexpr bool operator==(const heave&) const noexcept = default;
+};
+
+/// PGN 127493 Transmission Parameters, Dynamic: 8 bytes, single frame, priority 2, 10 Hz. A
+/// transmission's gear, oil pressure (100 Pa) and temperature (0.1 K) and warnings.
+struct transmission_parameters_dynamic {
+  unsigned_number<8> instance;
+  lookup<gear_status, 2> transmission_gear;
+  unsigned_number<16, res::hundred> oil_pressure_pa;
+  unsigned_number<16, res::tenth> oil_temperature_k;
+  flags<transmission_status, 8> discrete_status_1;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{127493, "transmission_parameters_dynamic", "Transmission Parameters, Dynamic", 2,
+               framing::single_frame, 100},
+      field<&transmission_parameters_dynamic::instance, engine_instance>("instance", "Instance"),
+      field<&transmission_parameters_dynamic::transmission_gear>("transmission_gear",
+                                                                 "Transmission Gear"),
+      reserved<6>,
+      field<&transmission_parameters_dynamic::oil_pressure_pa>("oil_pressure_pa", "Oil pressure"),
+      field<&transmission_parameters_dynamic::oil_temperature_k>("oil_temperature_k",
+                                                                 "Oil temperature"),
+      field<&transmission_parameters_dynamic::discrete_status_1>("discrete_status_1",
+                                                                 "Discrete Status 1"),
+      reserved<8>);
+  [[nodiscard]] constexpr bool operator==(const transmission_parameters_dynamic&) const noexcept =
+      default;
+};
+
+/// PGN 129038 AIS Class A Position Report: 28 bytes, fast packet, priority 4, as received. A
+/// class A vessel's AIS message 1, 2 or 3: its MMSI, position (1e-7 degree), course (rad) and
+/// speed (m/s), heading, rate of turn (rad/s) and navigational status. The communication state
+/// is the 19 bits of AIS's slot allocation as sent; bits 208-210 are spare (zero).
+struct ais_class_a_position {
+  lookup<ais_message_id, 6> message_id;
+  lookup<nmea2000::ais_repeat_indicator, 2> repeat_indicator;
+  unsigned_number<32> user_id;  ///< MMSI
+  signed_number<32, res::degree_e7> longitude_deg;
+  signed_number<32, res::degree_e7> latitude_deg;
+  lookup<nmea2000::position_accuracy, 1> position_accuracy;
+  lookup<raim_flag, 1> raim;
+  lookup<ais_time_stamp, 6> time_stamp;
+  unsigned_number<16, res::radian> cog_rad;
+  unsigned_number<16, res::hundredth> sog_mps;
+  unsigned_no_sentinel<19> communication_state;
+  lookup<ais_transceiver, 5> transceiver_information;
+  unsigned_number<16, res::radian> heading_rad;
+  signed_number<16, res::rotation> rate_of_turn_radps;
+  lookup<nmea2000::nav_status, 4> nav_status;
+  lookup<ais_special_maneuver, 2> special_maneuver;
+  unsigned_number<8> sid;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129038, "ais_class_a_position", "AIS Class A Position Report", 4,
+               framing::fast_packet, 0},
+      field<&ais_class_a_position::message_id>("message_id", "Message ID"),
+      field<&ais_class_a_position::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+      field<&ais_class_a_position::user_id, raw_display::identifier>("user_id", "User ID"),
+      field<&ais_class_a_position::longitude_deg>("longitude_deg", "Longitude"),
+      field<&ais_class_a_position::latitude_deg>("latitude_deg", "Latitude"),
+      field<&ais_class_a_position::position_accuracy>("position_accuracy", "Position Accuracy"),
+      field<&ais_class_a_position::raim>("raim", "RAIM"),
+      field<&ais_class_a_position::time_stamp>("time_stamp", "Time Stamp"),
+      field<&ais_class_a_position::cog_rad>("cog_rad", "COG"),
+      field<&ais_class_a_position::sog_mps>("sog_mps", "SOG"),
+      field<&ais_class_a_position::communication_state, raw_display::bits>("communication_state",
+                                                                           "Communication State"),
+      field<&ais_class_a_position::transceiver_information>("transceiver_information",
+                                                            "AIS Transceiver information"),
+      field<&ais_class_a_position::heading_rad>("heading_rad", "Heading"),
+      field<&ais_class_a_position::rate_of_turn_radps>("rate_of_turn_radps", "Rate of Turn"),
+      field<&ais_class_a_position::nav_status>("nav_status", "Nav Status"),
+      field<&ais_class_a_position::special_maneuver>("special_maneuver",
+                                                     "Special Maneuver Indicator"),
+      reserved<2>, spare<3>, reserved<5>, field<&ais_class_a_position::sid>("sid", "Sequence ID"));
+  [[nodiscard]] constexpr bool operator==(const ais_class_a_position&) const noexcept = default;
+};
+
+/// PGN 129039 AIS Class B Position Report: 27 bytes, fast packet, priority 4, as received. A
+/// class B vessel's AIS message 18: as 129038 without rate of turn and status, plus what the
+/// unit can do. The 10 bits of regional application are spare (zero).
+struct ais_class_b_position {
+  lookup<ais_message_id, 6> message_id;
+  lookup<nmea2000::ais_repeat_indicator, 2> repeat_indicator;
+  unsigned_number<32> user_id;  ///< MMSI
+  signed_number<32, res::degree_e7> longitude_deg;
+  signed_number<32, res::degree_e7> latitude_deg;
+  lookup<nmea2000::position_accuracy, 1> position_accuracy;
+  lookup<raim_flag, 1> raim;
+  lookup<ais_time_stamp, 6> time_stamp;
+  unsigned_number<16, res::radian> cog_rad;
+  unsigned_number<16, res::hundredth> sog_mps;
+  unsigned_no_sentinel<19> communication_state;
+  lookup<ais_transceiver, 5> transceiver_information;
+  unsigned_number<16, res::radian> heading_rad;
+  lookup<ais_unit_type, 1> unit_type;
+  lookup<yes_no, 1> integrated_display;
+  lookup<yes_no, 1> dsc;
+  lookup<ais_band, 1> band;
+  lookup<yes_no, 1> can_handle_msg_22;
+  lookup<nmea2000::ais_mode, 1> ais_mode;
+  lookup<nmea2000::ais_communication_state, 1> ais_communication_state;
+  unsigned_number<8> sid;
+
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{129039, "ais_class_b_position", "AIS Class B Position Report", 4,
+               framing::fast_packet, 0},
+      field<&ais_class_b_position::message_id>("message_id", "Message ID"),
+      field<&ais_class_b_position::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+      field<&ais_class_b_position::user_id, raw_display::identifier>("user_id", "User ID"),
+      field<&ais_class_b_position::longitude_deg>("longitude_deg", "Longitude"),
+      field<&ais_class_b_position::latitude_deg>("latitude_deg", "Latitude"),
+      field<&ais_class_b_position::position_accuracy>("position_accuracy", "Position Accuracy"),
+      field<&ais_class_b_position::raim>("raim", "RAIM"),
+      field<&ais_class_b_position::time_stamp>("time_stamp", "Time Stamp"),
+      field<&ais_class_b_position::cog_rad>("cog_rad", "COG"),
+      field<&ais_class_b_position::sog_mps>("sog_mps", "SOG"),
+      field<&ais_class_b_position::communication_state, raw_display::bits>("communication_state",
+                                                                           "Communication State"),
+      field<&ais_class_b_position::transceiver_information>("transceiver_information",
+                                                            "AIS Transceiver information"),
+      field<&ais_class_b_position::heading_rad>("heading_rad", "Heading"),
+      spare_bits<8>{"regional_application", "Regional Application"},
+      spare_bits<2>{"regional_application_b", "Regional Application B"},
+      field<&ais_class_b_position::unit_type>("unit_type", "Unit type"),
+      field<&ais_class_b_position::integrated_display>("integrated_display", "Integrated Display"),
+      field<&ais_class_b_position::dsc>("dsc", "DSC"),
+      field<&ais_class_b_position::band>("band", "Band"),
+      field<&ais_class_b_position::can_handle_msg_22>("can_handle_msg_22", "Can handle Msg 22"),
+      field<&ais_class_b_position::ais_mode>("ais_mode", "AIS mode"),
+      field<&ais_class_b_position::ais_communication_state>("ais_communication_state",
+                                                            "AIS communication state"),
+      reserved<7>, field<&ais_class_b_position::sid>("sid", "Sequence ID"));
+  [[nodiscard]] constexpr bool operator==(const ais_class_b_position&) const noexcept = default;
+};
+
+// ---------------------------------------------------------------------------------------------
 // ---- groups: PGNs with a repeating field group or 64-bit fields ----
 
 /// What a PGN list (126464) lists.
@@ -1090,14 +1729,14 @@ constexpr std::array<std::string_view, 9> lookup_titles(gnss_method) noexcept {
           "Simulate mode"};
 }
 
-/// The receiver's integrity check of the position (129029). A 2-bit lookup: raw 2 and 3 (which
-/// canboat names Caution and Unsafe) are the field's sentinels here, as for every 2-bit lookup.
-enum class gnss_integrity : std::uint8_t { none = 0, safe = 1 };
-constexpr std::array<std::string_view, 2> lookup_names(gnss_integrity) noexcept {
-  return {"none", "safe"};
+/// The receiver's integrity check of the position (129029; 2 bits, every raw value named, so a
+/// value: none is "not available").
+enum class gnss_integrity : std::uint8_t { none = 0, safe = 1, caution = 2, unsafe = 3 };
+constexpr std::array<std::string_view, 4> lookup_names(gnss_integrity) noexcept {
+  return {"none", "safe", "caution", "unsafe"};
 }
-constexpr std::array<std::string_view, 2> lookup_titles(gnss_integrity) noexcept {
-  return {"No integrity checking", "Safe"};
+constexpr std::array<std::string_view, 4> lookup_titles(gnss_integrity) noexcept {
+  return {"No integrity checking", "Safe", "Caution", "Unsafe"};
 }
 
 /// PGN 126464 PGN List (Transmit and Receive): fast packet, priority 6, on demand. The PGNs a
@@ -1222,22 +1861,6 @@ struct gnss_position_data {
 // ---------------------------------------------------------------------------------------------
 // ---- strings: product and configuration information, AIS static data ----
 
-namespace detail {
-/// A value of a lookup and its name.
-struct named_value {
-  std::size_t value = 0;
-  std::string_view name;
-};
-/// The names of a lookup whose values have gaps, by value ("" where none).
-template <std::size_t N, std::size_t M>
-[[nodiscard]] constexpr std::array<std::string_view, N> names_by_value(
-    const named_value (&values)[M]) noexcept {
-  std::array<std::string_view, N> out{};
-  for (const named_value& v : values) out[v.value] = v.name;
-  return out;
-}
-}  // namespace detail
-
 /// An NMEA 2000 certification level (126996).
 enum class certification_level : std::uint8_t {
   level_a = 0,
@@ -1250,113 +1873,6 @@ constexpr std::array<std::string_view, 2> lookup_names(certification_level) noex
 constexpr std::array<std::string_view, 2> lookup_titles(certification_level) noexcept {
   return {"Level A", "Level B"};
 }
-
-/// The AIS message a PGN carries (ITU-R M.1371 message numbers; 0 has no name).
-enum class ais_message_id : std::uint8_t {
-  scheduled_class_a_position_report = 1,
-  assigned_scheduled_class_a_position_report = 2,
-  interrogated_class_a_position_report = 3,
-  base_station_report = 4,
-  static_and_voyage_related_data = 5,
-  binary_addressed_message = 6,
-  binary_acknowledgement = 7,
-  binary_broadcast_message = 8,
-  standard_sar_aircraft_position_report = 9,
-  utc_date_inquiry = 10,
-  utc_date_response = 11,
-  safety_related_addressed_message = 12,
-  safety_related_acknowledgement = 13,
-  safety_related_broadcast_message = 14,
-  interrogation = 15,
-  assignment_mode_command = 16,
-  dgnss_broadcast_binary_message = 17,
-  standard_class_b_position_report = 18,
-  extended_class_b_position_report = 19,
-  data_link_management_message = 20,
-  aton_report = 21,
-  channel_management = 22,
-  group_assignment_command = 23,
-  static_data_report = 24,
-  single_slot_binary_message = 25,
-  multiple_slot_binary_message = 26,
-  position_report_for_long_range_applications = 27,
-};
-constexpr std::array<std::string_view, 28> lookup_names(ais_message_id) noexcept {
-  return detail::names_by_value<28>({{1, "scheduled_class_a_position_report"},
-                                     {2, "assigned_scheduled_class_a_position_report"},
-                                     {3, "interrogated_class_a_position_report"},
-                                     {4, "base_station_report"},
-                                     {5, "static_and_voyage_related_data"},
-                                     {6, "binary_addressed_message"},
-                                     {7, "binary_acknowledgement"},
-                                     {8, "binary_broadcast_message"},
-                                     {9, "standard_sar_aircraft_position_report"},
-                                     {10, "utc_date_inquiry"},
-                                     {11, "utc_date_response"},
-                                     {12, "safety_related_addressed_message"},
-                                     {13, "safety_related_acknowledgement"},
-                                     {14, "safety_related_broadcast_message"},
-                                     {15, "interrogation"},
-                                     {16, "assignment_mode_command"},
-                                     {17, "dgnss_broadcast_binary_message"},
-                                     {18, "standard_class_b_position_report"},
-                                     {19, "extended_class_b_position_report"},
-                                     {20, "data_link_management_message"},
-                                     {21, "aton_report"},
-                                     {22, "channel_management"},
-                                     {23, "group_assignment_command"},
-                                     {24, "static_data_report"},
-                                     {25, "single_slot_binary_message"},
-                                     {26, "multiple_slot_binary_message"},
-                                     {27, "position_report_for_long_range_applications"}});
-}
-/// canboat's texts for ais_message_id's values, in the same order.
-constexpr std::array<std::string_view, 28> lookup_titles(ais_message_id) noexcept {
-  return detail::names_by_value<28>({{1, "Scheduled Class A position report"},
-                                     {2, "Assigned scheduled Class A position report"},
-                                     {3, "Interrogated Class A position report"},
-                                     {4, "Base station report"},
-                                     {5, "Static and voyage related data"},
-                                     {6, "Binary addressed message"},
-                                     {7, "Binary acknowledgement"},
-                                     {8, "Binary broadcast message"},
-                                     {9, "Standard SAR aircraft position report"},
-                                     {10, "UTC/date inquiry"},
-                                     {11, "UTC/date response"},
-                                     {12, "Safety related addressed message"},
-                                     {13, "Safety related acknowledgement"},
-                                     {14, "Satety related broadcast message"},
-                                     {15, "Interrogation"},
-                                     {16, "Assignment mode command"},
-                                     {17, "DGNSS broadcast binary message"},
-                                     {18, "Standard Class B position report"},
-                                     {19, "Extended Class B position report"},
-                                     {20, "Data link management message"},
-                                     {21, "ATON report"},
-                                     {22, "Channel management"},
-                                     {23, "Group assignment command"},
-                                     {24, "Static data report"},
-                                     {25, "Single slot binary message"},
-                                     {26, "Multiple slot binary message"},
-                                     {27, "Position report for long range applications"}});
-}
-
-/// How many times an AIS message has been repeated; all four values are values.
-enum class ais_repeat_indicator : std::uint8_t {
-  initial = 0,
-  first_retransmission = 1,
-  second_retransmission = 2,
-  final_retransmission = 3,
-};
-constexpr std::array<std::string_view, 4> lookup_names(ais_repeat_indicator) noexcept {
-  return {"initial", "first_retransmission", "second_retransmission", "final_retransmission"};
-}
-/// canboat's texts for ais_repeat_indicator's values, in the same order.
-constexpr std::array<std::string_view, 4> lookup_titles(ais_repeat_indicator) noexcept {
-  return {"Initial", "First retransmission", "Second retransmission", "Final retransmission"};
-}
-/// Every raw value of the field is a value (no sentinel).
-constexpr unsigned lookup_sentinels(ais_repeat_indicator) noexcept { return 0; }
 
 /// An AIS ship and cargo type (ITU-R M.1371); values without a name are kept as numbers.
 enum class ship_type : std::uint8_t {
@@ -1534,7 +2050,8 @@ constexpr std::array<std::string_view, 100> lookup_titles(ship_type) noexcept {
        {99, "Other (no additional information)"}});
 }
 
-/// The ITU-R M.1371 edition an AIS station follows; all four values are values.
+/// The ITU-R M.1371 edition an AIS station follows (2 bits, every raw value named, so a value:
+/// none is "not available").
 enum class ais_version : std::uint8_t {
   itu_r_m1371_1 = 0,
   itu_r_m1371_3 = 1,
@@ -1548,8 +2065,6 @@ constexpr std::array<std::string_view, 4> lookup_names(ais_version) noexcept {
 constexpr std::array<std::string_view, 4> lookup_titles(ais_version) noexcept {
   return {"ITU-R M.1371-1", "ITU-R M.1371-3", "ITU-R M.1371-5", "ITU-R M.1371 future edition"};
 }
-/// Every raw value of the field is a value (no sentinel).
-constexpr unsigned lookup_sentinels(ais_version) noexcept { return 0; }
 
 /// The kind of position fixing device of an AIS station.
 enum class position_fix_device : std::uint8_t {
@@ -1592,27 +2107,6 @@ constexpr std::array<std::string_view, 2> lookup_names(dte_availability) noexcep
 /// canboat's texts for dte_availability's values, in the same order.
 constexpr std::array<std::string_view, 2> lookup_titles(dte_availability) noexcept {
   return {"Available", "Not available"};
-}
-
-/// Which AIS channel a message came from, or was sent on.
-enum class ais_transceiver : std::uint8_t {
-  channel_a_vdl_reception = 0,
-  channel_b_vdl_reception = 1,
-  channel_a_vdl_transmission = 2,
-  channel_b_vdl_transmission = 3,
-  own_information_not_broadcast = 4,
-  reserved_5 = 5,
-};
-constexpr std::array<std::string_view, 6> lookup_names(ais_transceiver) noexcept {
-  return {"channel_a_vdl_reception",       "channel_b_vdl_reception",
-          "channel_a_vdl_transmission",    "channel_b_vdl_transmission",
-          "own_information_not_broadcast", "reserved_5"};
-}
-/// canboat's texts for ais_transceiver's values, in the same order.
-constexpr std::array<std::string_view, 6> lookup_titles(ais_transceiver) noexcept {
-  return {"Channel A VDL reception",       "Channel B VDL reception",
-          "Channel A VDL transmission",    "Channel B VDL transmission",
-          "Own information not broadcast", "Reserved"};
 }
 
 /// PGN 126996 Product Information: 134 bytes, fast packet, priority 6, on request. The device's
@@ -1702,7 +2196,7 @@ struct ais_class_a_static_data {
                framing::fast_packet, 0},
       field<&self::message_id>("message_id", "Message ID"),
       field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      mmsi<&self::user_id>("user_id", "User ID"),
+      field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
       field<&self::imo_number>("imo_number", "IMO number"),
       field<&self::callsign>("callsign", "Callsign"), field<&self::name>("name", "Name"),
       field<&self::type_of_ship>("type_of_ship", "Type of ship"),
@@ -1739,7 +2233,8 @@ struct ais_class_b_static_data_a {
                             "AIS Class B static data (msg 24 Part A)", 6, framing::fast_packet, 0},
                    field<&self::message_id>("message_id", "Message ID"),
                    field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-                   mmsi<&self::user_id>("user_id", "User ID"), field<&self::name>("name", "Name"),
+                   field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
+                   field<&self::name>("name", "Name"),
                    field<&self::ais_transceiver_information>("ais_transceiver_information",
                                                              "AIS Transceiver information"),
                    reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
@@ -1772,7 +2267,7 @@ struct ais_class_b_static_data_b {
                framing::fast_packet, 0},
       field<&self::message_id>("message_id", "Message ID"),
       field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      mmsi<&self::user_id>("user_id", "User ID"),
+      field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
       field<&self::type_of_ship>("type_of_ship", "Type of ship"),
       field<&self::vendor_id>("vendor_id", "Vendor ID"),
       field<&self::callsign>("callsign", "Callsign"), field<&self::length_m>("length_m", "Length"),
@@ -1781,8 +2276,9 @@ struct ais_class_b_static_data_b {
                                                         "Position reference from Starboard"),
       field<&self::position_reference_from_bow_m>("position_reference_from_bow_m",
                                                   "Position reference from Bow"),
-      mmsi<&self::mothership_user_id>("mothership_user_id", "Mothership User ID"), reserved<2>,
-      spare<2>, field<&self::gnss_type>("gnss_type", "GNSS type"),
+      field<&self::mothership_user_id, raw_display::identifier>("mothership_user_id",
+                                                                "Mothership User ID"),
+      reserved<2>, spare<2>, field<&self::gnss_type>("gnss_type", "GNSS type"),
       field<&self::ais_transceiver_information>("ais_transceiver_information",
                                                 "AIS Transceiver information"),
       reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
