@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // NMEA 2000: one row per field mechanism and per framing step, so that what each costs shows
-// apart, beside a baseline that copies the same bytes and sums them. Items are CAN frames (8
-// bytes each), so items_per_second is frames per second.
+// apart, beside a baseline that copies the same bytes and sums them. An item is a payload (of
+// the first four rows, a CAN frame of 8 bytes), a PGN looked up, or a log line (a frame).
 //
 //   n2k/mechanism/baseline            each 8-byte payload copied to a buffer and summed
 //   n2k/mechanism/numbers             decode of 8 bytes of four numbers (16 bits, signed and
@@ -10,16 +10,34 @@
 //                                     each read as its name
 //   n2k/mechanism/flags               decode of 8 bytes of four 16-bit flag words, each bit
 //                                     tested
+//   n2k/mechanism/numbers64           decode of 32 bytes of four signed 64-bit numbers (1e-16 and
+//                                     1e-6 resolutions, as 129029's latitude, longitude and
+//                                     altitude), each read as a double
+//   n2k/mechanism/strings/fixed       decode of 80 bytes of four 20-byte fixed_text strings (two
+//                                     '@'-padded as AIS sends them, two 0xFF-padded), each read
+//                                     as its text
+//   n2k/mechanism/strings/counted_ascii  decode of PGN 126998 Configuration Information (three
+//   n2k/mechanism/strings/counted_utf16  counted strings of 1..32 characters, ASCII or UTF-16),
+//                                     each read as its text: the layout varies (decode_varying)
+//   n2k/mechanism/groups/repeating    decode of PGN 129540 GNSS Sats in View with 12 satellites
+//                                     (147 bytes: a count, then 12 bytes a satellite), every field
+//                                     of every satellite read
+//   n2k/mechanism/groups/repeating_to_end  decode of PGN 126464 PGN List with 30 PGNs (91 bytes:
+//                                     24-bit PGNs to the end of the payload), every PGN read
 //   n2k/mechanism/is_fast_packet_pgn  the standard's fast-packet list looked up (binary search)
 //                                     for 1,000 PGNs of a bus
 //   n2k/mechanism/fast_packet/undescribed  log_reader::read_line of `candump -L` lines of a
 //                                     proprietary fast-packet PGN no PGN set declares (130842,
 //                                     20 bytes in 3 frames): parsed, assembled by the list
 //
-// Adding a mechanism (strings, repeating groups, ...): a struct of four fields of that mechanism
-// (`four_fields` below, or one of its own; a PGN number of the proprietary range, as no registry
-// holds it), its corpus (`corpus_of`, from random raw values), a reader of its fields (`read`),
-// and one BENCHMARK line naming the row `n2k/mechanism/<kind>`.
+// The string and group rows report time_per_element too: the time per string or per repetition
+// of the group (the payload's time over their count, its other fields included).
+//
+// Adding a mechanism: a struct of four fields of that mechanism (`four_fields` below, or one of
+// its own; a PGN number of the proprietary range, as no registry holds it) or a real PGN that
+// has it, its corpus (`corpus_of`, from random raw values, with a `fill` for what is not a raw
+// value: strings, a group's repetitions), a reader of its fields (`read`), and one BENCHMARK
+// line naming the row `n2k/mechanism/<kind>`.
 
 #include <benchmark/benchmark.h>
 
@@ -53,18 +71,18 @@ namespace sb = seawire::bench;
 constexpr std::size_t frame_count = 1000;
 
 // ---------------------------------------------------------------------------------------------
-// one struct per mechanism (PGN numbers of the proprietary single-frame range: no registry
-// holds them)
+// one struct per mechanism (PGN numbers of the proprietary ranges: no registry holds them)
 
 /// Four fields of types A-D (the payload as long as they are).
-template <class A, class B, class C, class D, std::uint32_t Pgn>
+template <class A, class B, class C, class D, std::uint32_t Pgn,
+          n2k::framing Framing = n2k::framing::single_frame>
 struct four_fields {
   A a;
   B b;
   C c;
   D d;
   static constexpr auto n2k = n2k::describe_pgn(
-      n2k::pgn_info{Pgn, "four_fields", "four fields", 6, n2k::framing::single_frame, 0},
+      n2k::pgn_info{Pgn, "four_fields", "four fields", 6, Framing, 0},
       n2k::field<&four_fields::a>("a", "a"), n2k::field<&four_fields::b>("b", "b"),
       n2k::field<&four_fields::c>("c", "c"), n2k::field<&four_fields::d>("d", "d"));
   [[nodiscard]] constexpr bool operator==(const four_fields&) const noexcept = default;
@@ -81,37 +99,151 @@ using mechanism_lookups =
 using mechanism_flags =
     four_fields<n2k::flags<n2k::engine_status_1, 16>, n2k::flags<n2k::engine_status_2, 16>,
                 n2k::flags<n2k::engine_status_1, 16>, n2k::flags<n2k::engine_status_2, 16>, 65282>;
+using degrees64 = n2k::signed_number<64, n2k::resolution{1, -16}>;
+using metres64 = n2k::signed_number<64, n2k::resolution{1, -6}>;
+using mechanism_numbers64 =
+    four_fields<degrees64, degrees64, metres64, metres64, 130960, n2k::framing::fast_packet>;
+using mechanism_fixed_text = four_fields<n2k::ais_text<20>, n2k::fixed_text<20>, n2k::ais_text<20>,
+                                         n2k::fixed_text<20>, 130961, n2k::framing::fast_packet>;
 
 // ---------------------------------------------------------------------------------------------
 // corpora: random raw values of every field (10% not available), written by the library's
 // encoder, deterministic (splitmix64)
 
-template <n2k::pgn_like P>
-std::vector<std::vector<std::uint8_t>> corpus_of(std::uint64_t seed) {
+/// A random raw value of a number, lookup or flag set type V; not available one time in ten.
+template <class V>
+V random_value(sb::rng& r) noexcept {
+  const auto top = static_cast<std::uint64_t>(V::top_raw);
+  std::int64_t raw = static_cast<std::int64_t>(r.next() % (top + 1));
+  if constexpr (requires { V::max_valid_raw; }) {
+    raw = static_cast<std::int64_t>(r.next() % (static_cast<std::uint64_t>(V::max_valid_raw) + 1));
+  }
+  if constexpr (V::is_signed) raw -= static_cast<std::int64_t>((top + 1) / 2);
+  return r.chance(0.1) ? V{} : V::from_raw(raw);
+}
+
+/// Whether row type F of a table holds a raw value (not reserved bits, a string or a group).
+template <class F>
+constexpr bool is_raw_row() noexcept {
+  if constexpr (F::is_reserved || requires { F::is_group; }) {
+    return false;
+  } else {
+    return !n2k::text_value<typename F::value_type>;
+  }
+}
+
+/// Every raw-valued field of `m` (a PGN, or a group's repetition with its table `table`) random.
+template <class T, class Table>
+void randomize(sb::rng& r, T& m, const Table& table) noexcept {
+  table.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (is_raw_row<F>()) m.*F::member = random_value<typename F::value_type>(r);
+  });
+}
+
+/// What a PGN of raw values alone needs besides randomize(): nothing.
+struct raw_values_only {
+  template <class P>
+  void operator()(sb::rng&, P&) const noexcept {}
+};
+
+/// 1,000 payloads of P: its raw values random, then `fill(rng, message)` for the rest (strings,
+/// a group's repetitions). Each one checked to decode back to the message it was encoded from.
+template <n2k::pgn_like P, class Fill = raw_values_only>
+std::vector<std::vector<std::uint8_t>> corpus_of(std::uint64_t seed, Fill fill = {}) {
   sb::rng r(seed);
   std::vector<std::vector<std::uint8_t>> out;
   while (out.size() < frame_count) {
     P m{};
-    P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
-      using F = std::remove_cvref_t<decltype(f)>;
-      if constexpr (!F::is_reserved) {
-        using V = typename F::value_type;
-        const auto top = static_cast<std::uint64_t>(V::top_raw);
-        std::int64_t raw = static_cast<std::int64_t>(r.next() % (top + 1));
-        if constexpr (requires { V::max_valid_raw; }) {
-          raw = static_cast<std::int64_t>(r.next() %
-                                          (static_cast<std::uint64_t>(V::max_valid_raw) + 1));
-        }
-        if constexpr (V::is_signed) raw -= static_cast<std::int64_t>((top + 1) / 2);
-        m.*F::member = r.chance(0.1) ? V{} : V::from_raw(raw);
-      }
-    });
+    randomize(r, m, P::n2k);
+    fill(r, m);
     const auto e = n2k::encode(m);
     if (!e) continue;  // a value the encoder refuses (a sentinel of a signed number): draw again
+    if (!(n2k::decode<P>(e.value.view()) == m)) std::abort();  // not the message measured
     out.emplace_back(e.value.begin(), e.value.end());
   }
   return out;
 }
+
+/// A text of 1..`most` characters drawn from `alphabet` (UTF-8 characters), not ending in
+/// padding (a last space becomes alphabet[0]); "" (not available) one time in ten.
+template <std::size_t N>
+std::string random_text(sb::rng& r, std::size_t most,
+                        const std::array<std::string_view, N>& alphabet) {
+  std::string text;
+  if (r.chance(0.1)) return text;
+  const auto length = static_cast<std::size_t>(r.between(1, static_cast<int>(most)));
+  for (std::size_t i = 0; i < length; ++i) {
+    const std::string_view c = r.pick(alphabet);
+    text += i + 1 == length && c == " " ? alphabet[0] : c;
+  }
+  return text;
+}
+
+/// Sets `v` (a fixed_text or counted_text) to `text`; aborts if the type refuses it.
+template <class V>
+void set_text(V& v, std::string_view text) {
+  const auto t = V::from_text(text);
+  if (!t) std::abort();
+  v = t.value;
+}
+
+// Names as AIS sends them (upper case, digits, spaces), and the free text of the rest of the bus.
+constexpr std::array<std::string_view, 39> ais_alphabet = {
+    "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M",
+    "N", "O", "P", "Q", "R", "S", "T", "U", "V", "W", "X", "Y", "Z",
+    "0", "1", "2", "3", "4", "5", "6", "7", "8", "9", " ", " ", "-"};
+constexpr std::array<std::string_view, 40> ascii_alphabet = {
+    "a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n",
+    "o", "p", "q", "r", "s", "t", "u", "v", "w", "x", "y", "z", "A", "B",
+    "C", "D", "E", "F", "0", "1", "2", "3", " ", " ", ".", "/"};
+// Greek and Cyrillic, every letter past U+00FE: the string goes as UTF-16.
+constexpr std::array<std::string_view, 20> utf16_alphabet = {"Ω", "α", "β", "γ", "δ", "ε", "λ",
+                                                             "π", "ρ", "σ", "Ж", "а", "д", "и",
+                                                             "к", "м", "р", "я", " ", " "};
+
+void fixed_texts(sb::rng& r, mechanism_fixed_text& m) {
+  set_text(m.a, random_text(r, 20, ais_alphabet));
+  set_text(m.b, random_text(r, 20, ascii_alphabet));
+  set_text(m.c, random_text(r, 20, ais_alphabet));
+  set_text(m.d, random_text(r, 20, ascii_alphabet));
+}
+
+template <std::size_t N>
+auto counted_texts(const std::array<std::string_view, N>& alphabet) {
+  return [&alphabet](sb::rng& r, n2k::configuration_information& m) {
+    set_text(m.installation_description_1, random_text(r, 32, alphabet));
+    set_text(m.installation_description_2, random_text(r, 32, alphabet));
+    set_text(m.manufacturer_information, random_text(r, 32, alphabet));
+  };
+}
+
+/// 129540 with 12 satellites (the count says 12), each field of each random.
+void twelve_satellites(sb::rng& r, n2k::gnss_sats_in_view& m) {
+  using satellite = n2k::gnss_sats_in_view::satellite;
+  m.sats_in_view = decltype(m.sats_in_view)::from_raw(12);
+  for (int i = 0; i < 12; ++i) {
+    satellite s{};
+    randomize(r, s, satellite::n2k_item);
+    (void)m.satellites.push_back(s);
+  }
+}
+
+/// 126464 with 30 PGNs, each random.
+void thirty_pgns(sb::rng& r, n2k::pgn_list_message& m) {
+  using entry = n2k::pgn_list_message::entry;
+  for (int i = 0; i < 30; ++i) {
+    entry e{};
+    randomize(r, e, entry::n2k_item);
+    (void)m.pgns.push_back(e);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// reading every field as a user would
+
+template <class T, class Table>
+void read_fields(sb::sink& s, const T& m, const Table& table) noexcept;
 
 template <class V>
 void read(sb::sink& s, const V& v) noexcept {
@@ -119,29 +251,50 @@ void read(sb::sink& s, const V& v) noexcept {
     s.bits += v.name().size();  // a lookup: its name
   } else if constexpr (requires { v.test_bit(0U); }) {
     for (unsigned b = 0; b < V::bits; ++b) s.bits += v.test_bit(b) ? b : 0U;  // flags
+  } else if constexpr (n2k::text_value<V>) {
+    const std::string_view t = v.text();  // a string: its text
+    s.bits += t.size() + (t.empty() ? 0U : static_cast<unsigned char>(t[0]));
+  } else if constexpr (requires { v.items(); }) {
+    for (const auto& item : v) read_fields(s, item, item.n2k_item);  // a group: every repetition
   } else {
     s.sum += v.value().value_or(0.0);  // a number in its unit
   }
 }
 
+/// Every field of `m` (a PGN, or a group's repetition with its table `table`).
+template <class T, class Table>
+void read_fields(sb::sink& s, const T& m, const Table& table) noexcept {
+  table.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (!F::is_reserved) read(s, m.*F::member);
+  });
+}
+
+/// decode<P> of every payload of `corpus`, every field read; `elements` strings or repetitions
+/// a payload (0: no time_per_element).
 template <n2k::pgn_like P>
-void decode_row(benchmark::State& state, std::uint64_t seed) {
-  const std::vector<std::vector<std::uint8_t>> corpus = corpus_of<P>(seed);
+void decode_row(benchmark::State& state, const std::vector<std::vector<std::uint8_t>>& corpus,
+                std::size_t elements = 0) {
   sb::sink s;
   const std::uint64_t before = sb::allocation_count();
   for (auto _ : state) {
     for (const std::vector<std::uint8_t>& payload : corpus) {
       const P m = n2k::decode<P>(payload);
-      P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
-        using F = std::remove_cvref_t<decltype(f)>;
-        if constexpr (!F::is_reserved) read(s, m.*F::member);
-      });
+      read_fields(s, m, P::n2k);
       benchmark::DoNotOptimize(s);
     }
   }
+  const std::uint64_t allocations = sb::allocation_count() - before;
   std::size_t bytes = 0;
   for (const std::vector<std::uint8_t>& payload : corpus) bytes += payload.size();
-  sb::report(state, corpus.size(), bytes, sb::allocation_count() - before);
+  sb::report(state, corpus.size(), bytes, allocations);
+  if (elements > 0) {
+    const auto count =
+        static_cast<double>(state.iterations()) * static_cast<double>(corpus.size() * elements);
+    state.counters["time_per_element"] =
+        benchmark::Counter(count, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  }
+  if (allocations != 0) state.SkipWithError("decode allocated");
 }
 
 void baseline(benchmark::State& state) {
@@ -160,9 +313,37 @@ void baseline(benchmark::State& state) {
   sb::report(state, corpus.size(), corpus.size() * 8, sb::allocation_count() - before);
 }
 
-void numbers(benchmark::State& state) { decode_row<mechanism_numbers>(state, 65280); }
-void lookups(benchmark::State& state) { decode_row<mechanism_lookups>(state, 65281); }
-void flag_words(benchmark::State& state) { decode_row<mechanism_flags>(state, 65282); }
+void numbers(benchmark::State& state) {
+  decode_row<mechanism_numbers>(state, corpus_of<mechanism_numbers>(65280));
+}
+void lookups(benchmark::State& state) {
+  decode_row<mechanism_lookups>(state, corpus_of<mechanism_lookups>(65281));
+}
+void flag_words(benchmark::State& state) {
+  decode_row<mechanism_flags>(state, corpus_of<mechanism_flags>(65282));
+}
+void numbers64(benchmark::State& state) {
+  decode_row<mechanism_numbers64>(state, corpus_of<mechanism_numbers64>(130960));
+}
+void fixed_strings(benchmark::State& state) {
+  decode_row<mechanism_fixed_text>(state, corpus_of<mechanism_fixed_text>(130961, fixed_texts), 4);
+}
+void counted_ascii(benchmark::State& state) {
+  decode_row<n2k::configuration_information>(
+      state, corpus_of<n2k::configuration_information>(126998, counted_texts(ascii_alphabet)), 3);
+}
+void counted_utf16(benchmark::State& state) {
+  decode_row<n2k::configuration_information>(
+      state, corpus_of<n2k::configuration_information>(126999, counted_texts(utf16_alphabet)), 3);
+}
+void repeating(benchmark::State& state) {
+  decode_row<n2k::gnss_sats_in_view>(
+      state, corpus_of<n2k::gnss_sats_in_view>(129540, twelve_satellites), 12);
+}
+void repeating_to_end(benchmark::State& state) {
+  decode_row<n2k::pgn_list_message>(state, corpus_of<n2k::pgn_list_message>(126464, thirty_pgns),
+                                    30);
+}
 
 // ---------------------------------------------------------------------------------------------
 // framing
@@ -241,6 +422,12 @@ BENCHMARK(baseline)->Name("n2k/mechanism/baseline");
 BENCHMARK(numbers)->Name("n2k/mechanism/numbers");
 BENCHMARK(lookups)->Name("n2k/mechanism/lookups");
 BENCHMARK(flag_words)->Name("n2k/mechanism/flags");
+BENCHMARK(numbers64)->Name("n2k/mechanism/numbers64");
+BENCHMARK(fixed_strings)->Name("n2k/mechanism/strings/fixed");
+BENCHMARK(counted_ascii)->Name("n2k/mechanism/strings/counted_ascii");
+BENCHMARK(counted_utf16)->Name("n2k/mechanism/strings/counted_utf16");
+BENCHMARK(repeating)->Name("n2k/mechanism/groups/repeating");
+BENCHMARK(repeating_to_end)->Name("n2k/mechanism/groups/repeating_to_end");
 BENCHMARK(is_fast)->Name("n2k/mechanism/is_fast_packet_pgn");
 BENCHMARK(undescribed_fast)->Name("n2k/mechanism/fast_packet/undescribed");
 
