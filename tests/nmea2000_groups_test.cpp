@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hex_of.hpp"
 #include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/decimal.hpp"
 #include "seawire/nmea/json.hpp"
@@ -29,18 +30,9 @@
 namespace n2k = seawire::nmea2000;
 using n2k::field_state;
 using seawire::errc;
+using support::hex_bytes;
 
 namespace {
-
-std::vector<std::uint8_t> from_hex(std::string_view hex) {
-  std::vector<std::uint8_t> out;
-  const auto nibble = [](char c) {
-    return static_cast<std::uint8_t>(c <= '9' ? c - '0' : (c | 0x20) - 'a' + 10);
-  };
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
-    out.push_back(static_cast<std::uint8_t>(nibble(hex[i]) << 4 | nibble(hex[i + 1])));
-  return out;
-}
 
 // The hand decode: `n` bytes at byte `at`, least significant first.
 std::uint64_t le(const std::vector<std::uint8_t>& p, std::size_t at, std::size_t n) {
@@ -142,7 +134,7 @@ TEST_CASE("groups: the PGNs' facts, capacities from the 223-byte payload", "[gro
 }
 
 TEST_CASE("129540: a capture against the hand decode, the last satellite cut short", "[groups]") {
-  const std::vector<std::uint8_t> p = from_hex(sats_hex);
+  const std::vector<std::uint8_t> p = hex_bytes(sats_hex);
   REQUIRE(p.size() == 216);
   const auto m = n2k::decode<n2k::gnss_sats_in_view>(p);
   CHECK(m.sid.raw() == p[0]);
@@ -192,7 +184,7 @@ TEST_CASE("129540: a capture against the hand decode, the last satellite cut sho
 }
 
 TEST_CASE("129029: a capture against the hand decode, 64-bit fields", "[groups]") {
-  const std::vector<std::uint8_t> p = from_hex(position_hex);
+  const std::vector<std::uint8_t> p = hex_bytes(position_hex);
   REQUIRE(p.size() == 43);
   const auto m = n2k::decode<n2k::gnss_position_data>(p);
   CHECK(m.sid.state() == field_state::not_available);
@@ -231,7 +223,7 @@ TEST_CASE("129029: a capture against the hand decode, 64-bit fields", "[groups]"
 }
 
 TEST_CASE("126464: a group to the end of the payload", "[groups]") {
-  const std::vector<std::uint8_t> p = from_hex(pgn_list_hex);
+  const std::vector<std::uint8_t> p = hex_bytes(pgn_list_hex);
   REQUIRE(p.size() == 49);
   const auto m = n2k::decode<n2k::pgn_list_message>(p);
   CHECK(m.function_code == n2k::pgn_list_function::transmit);

@@ -21,21 +21,10 @@
 
 namespace n2k = seawire::nmea2000;
 using seawire::errc;
+using support::hex_bytes;
 using support::hex_of;
 
 namespace {
-
-std::vector<std::uint8_t> hex_bytes(std::string_view hex) {
-  std::vector<std::uint8_t> out;
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
-    if (hex[i] == ' ' || hex[i] == ',') {
-      --i;
-      continue;
-    }
-    out.push_back(static_cast<std::uint8_t>(std::stoi(std::string(hex.substr(i, 2)), nullptr, 16)));
-  }
-  return out;
-}
 
 template <n2k::pgn_like P>
 P decode_hex(std::string_view hex) {
