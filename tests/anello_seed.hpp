@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "hex_of.hpp"
 #include "seawire/anello/frame.hpp"
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/crc32.hpp"
@@ -23,19 +24,11 @@ inline constexpr std::string_view seed_hex =
     "AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF00000000000200"
     "6C0003005AFFFFFFFF";
 
-/// A hex digit's value, or -1.
-constexpr int hex_nibble(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
-
 /// The frame whose bytes `hex` spells (two digits a byte, no separators).
 constexpr seawire::anello::frame_bytes frame_from_hex(std::string_view hex) {
   seawire::anello::frame_bytes out{};
   for (std::size_t i = 0; i < out.size() && 2 * i + 1 < hex.size(); ++i) {
-    out[i] = static_cast<std::uint8_t>(hex_nibble(hex[2 * i]) * 16 + hex_nibble(hex[2 * i + 1]));
+    out[i] = static_cast<std::uint8_t>(hex_digit(hex[2 * i]) * 16 + hex_digit(hex[2 * i + 1]));
   }
   return out;
 }
@@ -56,7 +49,7 @@ inline std::string seed_hex_from_file() {
   REQUIRE(file != nullptr);
   std::string hex;
   for (int c = std::fgetc(file); c != EOF; c = std::fgetc(file)) {
-    if (hex_nibble(static_cast<char>(c)) >= 0) hex.push_back(static_cast<char>(c));
+    if (hex_digit(static_cast<char>(c)) >= 0) hex.push_back(static_cast<char>(c));
   }
   std::fclose(file);
   return hex;

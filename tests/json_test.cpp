@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "anello_seed.hpp"
 #include "seawire/anello/frame_json.hpp"
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/csv.hpp"
@@ -631,26 +632,8 @@ TEST_CASE("decode -> JSON -> read_json -> encode gives the line back") {
 }
 #endif
 
-namespace {
-constexpr std::string_view kSeedFrameHex =
-    "AB0000308EF7F176005901F4ECFFF903369A0000FFFF00000190794363D0000001E07FFFFFFFFFFF00000000000200"
-    "6C0003005AFFFFFFFF";
-
-anello::frame_bytes seed_frame() {
-  anello::frame_bytes b{};
-  for (std::size_t i = 0; i < b.size(); ++i) {
-    const auto hex = [](char c) {
-      return static_cast<std::uint8_t>(seawire::detail::hex_value(c));
-    };
-    b[i] =
-        static_cast<std::uint8_t>(hex(kSeedFrameHex[2 * i]) * 16 + hex(kSeedFrameHex[2 * i + 1]));
-  }
-  return b;
-}
-}  // namespace
-
 TEST_CASE("ANELLO frame JSON: the spec's example frame, exact digits, null for not available") {
-  const auto f = anello::decode_frame(seed_frame());
+  const auto f = anello::decode_frame(support::seed);
   REQUIRE(f);
   string_sink k;
   anello::write_json(k, f.value);
@@ -717,7 +700,7 @@ TEST_CASE("ANELLO frame JSON read back: exact, strict, errors by field number") 
   auto r = anello::read_frame_json(o);
   REQUIRE(r);
   // The spec's example sends 0xFFFF for air temperature; "not available" is written as 0x7FFF.
-  auto expected = anello::decode_frame(seed_frame()).value;
+  auto expected = anello::decode_frame(support::seed).value;
   expected.air_temp = 0x7FFF;
   CHECK(r.value == expected);
 
@@ -843,7 +826,7 @@ struct flat_frame_object {
 // accepts reads back from its JSON as the same frame, and every frame it refuses is refused.
 TEST_CASE("ANELLO frame JSON: validate() and read_frame_json agree on every field's values") {
   std::mt19937_64 rng(11);
-  const auto base = anello::decode_frame(seed_frame());
+  const auto base = anello::decode_frame(support::seed);
   REQUIRE(base);
   int accepted = 0, refused = 0;
   anello::detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
@@ -1074,7 +1057,7 @@ TEST_CASE("CSV: text is quoted only when it must be, quotes doubled") {
 }
 
 TEST_CASE("CSV of ANELLO frames: the JSON keys, unquoted values, empty when not available") {
-  const auto f = anello::decode_frame(seed_frame());
+  const auto f = anello::decode_frame(support::seed);
   REQUIRE(f);
   string_sink h;
   anello::write_csv_header(h);
