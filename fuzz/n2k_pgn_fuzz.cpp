@@ -60,7 +60,7 @@ template <class F>
 void check_group_bits(const std::string& pgn, std::span<const std::uint8_t> payload,
                       std::span<const std::uint8_t> out, unsigned offset, std::size_t held) {
   using Item = typename F::value_type::item_type;
-  SEAWIRE_FUZZ_CHECK(out.size() * 8 == offset + held * F::item_bits,
+  SEAWIRE_FUZZ_CHECK(out.size() == (offset + held * F::item_bits + 7) / 8,
                      "the payload does not end after the last repetition", pgn, hex_of(payload),
                      hex_of(out));
   for (std::size_t i = 0; i < held; ++i) {
@@ -88,6 +88,13 @@ void check_payload(std::span<const std::uint8_t> payload) {
   const std::string pgn = number(P::n2k.info.pgn);
   const P m = n2k::decode<P>(payload);
   const auto e = n2k::encode(m);
+  if (!n2k::layout_matches<P>(payload)) {
+    // another layout of the PGN (another function code): decoded as asked, never sent as this
+    SEAWIRE_FUZZ_CHECK(!e && e.ec == errc::wrong_address,
+                       "encode did not refuse a message of another layout", pgn, hex_of(payload),
+                       name(e.ec));
+    return;
+  }
   if (count_over_capacity(m)) {
     SEAWIRE_FUZZ_CHECK(!e && e.ec == errc::out_of_range,
                        "encode did not refuse a count over the group's capacity", pgn,
@@ -105,6 +112,18 @@ void check_payload(std::span<const std::uint8_t> payload) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (n2k::detail::group_row<F>) {
       check_group_bits<F>(pgn, payload, out, offset, (m.*F::member).size());
+      return;
+    } else if constexpr (n2k::detail::bytes_row<F>) {
+      // the bytes after the fixed rows, as sent (up to the capacity), and the payload ends there
+      const std::size_t at = std::min<std::size_t>(offset / 8, payload.size());
+      const std::size_t n = std::min(F::value_type::capacity, payload.size() - at);
+      SEAWIRE_FUZZ_CHECK(out.size() == offset / 8 + n,
+                         "the payload does not end after the opaque bytes", pgn, hex_of(payload),
+                         hex_of(out));
+      for (std::size_t i = 0; i < n; ++i)
+        SEAWIRE_FUZZ_CHECK(out[offset / 8 + i] == payload[at + i],
+                           "an opaque byte changed on the way through", pgn, hex_of(payload),
+                           hex_of(out));
       return;
     }
     if (offset + F::bits > out.size() * 8) return;  // past a flag word not sent: left out
@@ -167,8 +186,9 @@ void check_built(byte_source& src) {
   std::uint16_t first_bad = 0;  // a fixed row's field that does not fit
   std::uint16_t group_bad = 0;  // a repetition's field that does not fit: the group's row
   std::uint16_t first_too_long = 0;
-  P left_out{};            // m as a receiver reads it back: filled in below
-  std::size_t length = 0;  // bits, counted strings as they are
+  std::uint16_t odd_group = 0;  // a group of sub-byte repetitions that does not fill its byte
+  P left_out{};                 // m as a receiver reads it back: filled in below
+  std::size_t length = 0;       // bits, counted strings as they are
   P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (n2k::detail::row_is_text<F>()) {
@@ -199,6 +219,9 @@ void check_built(byte_source& src) {
       if constexpr (F::counted) {
         const auto& c = m.*F::count;
         if (c.has_value()) n = std::min(n, static_cast<std::size_t>(c.raw()));
+        // repetitions of less than a byte the count does not say exactly fill the last byte
+        const bool exact = c.has_value() && static_cast<std::size_t>(c.raw()) == n;
+        if (!exact && (n * F::item_bits) % 8 != 0) odd_group = row;
       }
       auto& g = m.*F::member;
       g.clear();
@@ -215,8 +238,15 @@ void check_built(byte_source& src) {
         });
         (void)g.push_back(item);
       }
-    } else if constexpr (F::is_reserved) {
-      length += F::bits;
+    } else if constexpr (n2k::detail::bytes_row<F>) {
+      using B = typename F::value_type;
+      const std::string_view chosen = src.bytes(B::capacity);
+      m.*F::member =
+          B::from_bytes(std::span<const std::uint8_t>(
+                            reinterpret_cast<const std::uint8_t*>(chosen.data()), chosen.size()))
+              .value;
+    } else if constexpr (F::is_reserved || n2k::detail::match_row<F>) {
+      length += F::bits;  // a match row keeps the struct's own layout
     } else {
       length += F::bits;
       using V = typename F::value_type;
@@ -266,6 +296,13 @@ void check_built(byte_source& src) {
     SEAWIRE_FUZZ_CHECK(!e && e.ec == errc::value_too_large && e.field == first_bad,
                        "encode did not refuse the first field that does not fit", pgn, name(e.ec),
                        number(e.field), number(first_bad));
+    return;
+  }
+  if (odd_group != 0) {
+    SEAWIRE_FUZZ_CHECK(!e && e.ec == errc::bad_length && e.field == odd_group,
+                       "encode did not refuse sub-byte repetitions that no count counts and "
+                       "that do not fill their byte",
+                       pgn, name(e.ec), number(e.field));
     return;
   }
   SEAWIRE_FUZZ_CHECK(e.ok(), "encode refused fields that fit", pgn, name(e.ec), number(e.field));

@@ -338,7 +338,8 @@ void generate_field(prng& g, T& out) {
 /// not-available and out-of-range sentinels included: senders send them); reserved bits are not
 /// members. A string: generate_text. A repeating group gets 0 to its capacity repetitions (a full
 /// one 8 times in 100), its count field that many, or sometimes more up to the capacity (a sender's
-/// count the payload did not hold in full), or a sentinel (which says nothing).
+/// count the payload did not hold in full), or a sentinel (which says nothing). Opaque bytes: 0 to
+/// their capacity random bytes. A match row keeps the struct's own layout.
 template <seawire::nmea2000::pgn_like P>
 P generate(prng& g) {
   P m{};
@@ -351,18 +352,28 @@ P generate(prng& g) {
       using Item = typename G::item_type;
       auto& group = m.*F::member;
       group.clear();
-      std::size_t n =
-          g.chance(8) ? G::capacity : static_cast<std::size_t>(g.below(G::capacity + 1));
+      // At most what the count can say (an 8-bit count says 252 of 434 4-bit repetitions).
+      std::size_t most = G::capacity;
+      if constexpr (F::counted)
+        most = std::min<std::size_t>(
+            most,
+            static_cast<std::size_t>(std::remove_cvref_t<decltype(m.*F::count)>::max_valid_raw));
+      std::size_t n = g.chance(8) ? most : static_cast<std::size_t>(g.below(most + 1));
       if constexpr (F::counted) {
         using C = std::remove_cvref_t<decltype(m.*F::count)>;
         if (g.chance(10)) {  // a sentinel: says nothing
           m.*F::count = C::from_raw(C::top_raw - static_cast<std::int64_t>(g.below(3)));
         } else {
-          const std::size_t extra = g.chance(10) ? g.below(G::capacity - n + 1) : 0;
+          const std::size_t extra = g.chance(10) ? g.below(most - n + 1) : 0;
           m.*F::count = C::from_raw(static_cast<std::int64_t>(n + extra));
         }
         if ((m.*F::count).has_value())
           n = std::min(n, static_cast<std::size_t>((m.*F::count).raw()));
+        // Repetitions of less than a byte the count does not say exactly fill the last byte
+        // (a receiver counts them by the payload's length).
+        constexpr std::size_t per_byte = F::item_bits < 8 ? 8 / F::item_bits : 1;
+        const auto& c = m.*F::count;
+        if (!(c.has_value() && static_cast<std::size_t>(c.raw()) == n)) n -= n % per_byte;
       }
       for (std::size_t i = 0; i < n; ++i) {
         Item item{};
@@ -372,6 +383,14 @@ P generate(prng& g) {
         });
         (void)group.push_back(item);
       }
+    } else if constexpr (seawire::nmea2000::detail::bytes_row<F>) {
+      using B = typename F::value_type;
+      std::array<std::uint8_t, B::capacity> b{};
+      const std::size_t n = g.chance(8) ? B::capacity : g.below(B::capacity + 1);
+      for (std::size_t i = 0; i < n; ++i) b[i] = static_cast<std::uint8_t>(g.below(256));
+      m.*F::member = B::from_bytes(std::span<const std::uint8_t>(b.data(), n)).value;
+    } else if constexpr (seawire::nmea2000::detail::match_row<F>) {
+      // the struct's own layout (the value its member starts with)
     } else if constexpr (!F::is_reserved) {
       // a group's count is drawn with its group (the row after it)
       detail::generate_field<F>(g, m);

@@ -132,6 +132,8 @@ void count_units(unit_counts& c) {
     using V = typename L::value_type;
     if constexpr (n2k::detail::is_group_value<V>) {
       count_units<typename V::item_type>(c);
+    } else if constexpr (n2k::detail::is_opaque_bytes<V>) {
+      // bytes: no unit
     } else {
       const n2k::canboat_unit u = n2k::canboat_std_unit(L::unit, V::is_signed);
       INFO(L::name);

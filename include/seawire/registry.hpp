@@ -168,7 +168,10 @@ using pgns = detail::append_pgns<
     // ---- strings ----
     nmea2000::product_information, nmea2000::configuration_information,
     nmea2000::ais_class_a_static_data, nmea2000::ais_class_b_static_data_a,
-    nmea2000::ais_class_b_static_data_b>::type;
+    nmea2000::ais_class_b_static_data_b,
+    // a layout per function code (the function code picks the struct)
+    nmea2000::group_function_request, nmea2000::group_function_command,
+    nmea2000::group_function_acknowledge>::type;
 
 /// The ANELLO 0xAB00 binary sensor frame.
 using frames = type_list<anello::sensor_frame_raw>;

@@ -2,7 +2,9 @@
 // NMEA 2000 declarations a number or a repeating group cannot hold exactly must not compile.
 // Each ctest case compiles this file with one CASE defined and expects the declaration's message;
 // CASE ok must compile (so a failure is the declaration's, not a broken file).
+#include <array>
 #include <cstdint>
+#include <string_view>
 
 #include "seawire/nmea2000/field.hpp"
 
@@ -25,6 +27,15 @@ struct msg {
                         n2k::repeating<&msg::items, &msg::count>("items", "Items"));
 };
 const auto ok_length = n2k::description_of<msg>::length;
+struct with_bytes {
+  n2k::unsigned_number<8> first;
+  n2k::opaque_bytes<222> rest;
+  static constexpr auto n2k =
+      n2k::describe_pgn(n2k::pgn_info{2, "with_bytes", "With bytes"},
+                        n2k::field<&with_bytes::first>("first", "First"),
+                        n2k::bytes_to_end<&with_bytes::rest>("rest", "Rest"));
+};
+const auto ok_bytes_length = n2k::description_of<with_bytes>::length;
 #elif defined(CASE_unsigned_64)
 n2k::unsigned_number<64> too_wide;
 #elif defined(CASE_scale_overflow)
@@ -47,6 +58,35 @@ struct msg {
       n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&msg::count>("count", "Count"),
                         n2k::repeating<&msg::items, &msg::count>("items", "Items"),
                         n2k::field<&msg::after>("after", "After"));
+};
+const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_bytes_not_last)
+struct msg {
+  n2k::opaque_bytes<222> rest;
+  n2k::unsigned_number<8> after;
+  static constexpr auto n2k = n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"},
+                                                n2k::bytes_to_end<&msg::rest>("rest", "Rest"),
+                                                n2k::field<&msg::after>("after", "After"));
+};
+const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_bytes_wrong_capacity)
+struct msg {
+  n2k::unsigned_number<8> first;
+  n2k::opaque_bytes<100> rest;
+  static constexpr auto n2k =
+      n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&msg::first>("first", "First"),
+                        n2k::bytes_to_end<&msg::rest>("rest", "Rest"));
+};
+const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_two_match_rows)
+enum class code : std::uint8_t { a = 0, b = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(code) noexcept { return {"a", "b"}; }
+struct msg {
+  n2k::lookup<code, 8> first = code::a;
+  n2k::lookup<code, 8> second = code::b;
+  static constexpr auto n2k = n2k::describe_pgn(
+      n2k::pgn_info{1, "msg", "Msg"}, n2k::match<&msg::first, code::a>("first", "First"),
+      n2k::match<&msg::second, code::b>("second", "Second"));
 };
 const auto bad_length = n2k::description_of<msg>::length;
 #elif defined(CASE_signed_count)

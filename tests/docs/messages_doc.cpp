@@ -192,18 +192,24 @@ std::string frame_row(F) {
   return line;
 }
 
-// The JSON name of the field a keyed row is named by.
-template <class Row>
-std::string key_name() {
-  using P = seawire::detail::member_class_t<Row::key_member>;
+// The JSON name of a PGN struct's member.
+template <auto Member>
+std::string json_name() {
+  using P = seawire::detail::member_class_t<Member>;
   std::string out;
   P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using E = std::remove_cvref_t<decltype(f)>;
     if constexpr (!E::is_reserved) {
-      if (seawire::detail::same_member<E::member, Row::key_member>) out = std::string(f.name);
+      if (seawire::detail::same_member<E::member, Member>) out = std::string(f.name);
     }
   });
   return out;
+}
+
+// The JSON name of the field a keyed row is named by.
+template <class Row>
+std::string key_name() {
+  return json_name<Row::key_member>();
 }
 
 // The PGN struct of a walk row.
@@ -282,6 +288,14 @@ std::string field_row(F) {
   if constexpr (!F::reserved) {
     if constexpr (nmea2000::text_value<typename F::value_type>) {
       if constexpr (F::value_type::variable) bits = "16 to " + bits;
+    } else if constexpr (nmea2000::detail::is_opaque_bytes<typename F::value_type>) {
+      bits = "the rest";
+      using row = std::remove_cvref_t<decltype(F::desc)>;
+      if constexpr (requires { row::is_pairs; })
+        holds = "parameter pairs: a field's number (8 bits) in the PGN `" +
+                json_name<row::pgn_member>() +
+                "` names, then its value in as many bytes as that field needs; kept as sent, "
+                "JSON a string of hex digits, two a byte";
     }
   }
   return "| " + std::to_string(F::number) + " | " + (F::reserved ? "" : quoted(F::name)) + " | " +
@@ -410,7 +424,6 @@ std::string names_of(bool bits) {
 template <class V>
 std::string n2k_form(std::string& step, std::string& range) {
   constexpr int kind = n2k_kind<V>::value;
-  const std::string width = std::to_string(V::bits) + " bits";
   if constexpr (kind == 1) {
     step = exact_text<V>(1);
     range = exact_text<V>(V::min_raw) + " to " + exact_text<V>(V::max_valid_raw);
@@ -441,6 +454,9 @@ std::string n2k_form(std::string& step, std::string& range) {
         "00:00:00.0000 to 24:00:01.0000 (a leap second); later times as sent, to "
         "119:18:16.7292";
     return "UTC time of day, JSON `\"hh:mm:ss.ffff\"`";
+  } else if constexpr (nmea2000::detail::is_opaque_bytes<V>) {
+    range = "up to " + std::to_string(V::capacity) + " bytes";
+    return "bytes to the end of the payload, as sent; JSON a string of hex digits, two a byte";
   } else {
     static_assert(!sizeof(V), "messages_doc: say what this PGN field holds");
   }
@@ -452,7 +468,7 @@ void pgn() {
   const auto& info = d.info;
   std::printf("### PGN %u %s\n\n", unsigned{info.pgn}, std::string(info.title).c_str());
   std::printf("`%s`: ", std::string(info.name).c_str());
-  if (d.has_group) {
+  if (d.has_group || (d.fixed_layout && d.length != d.bit_length / 8)) {  // a group, or bytes
     std::printf("up to ");
   } else if (d.min_length != d.length) {
     std::printf("%zu to ", d.min_length);
@@ -462,6 +478,17 @@ void pgn() {
               unsigned{info.priority});
   if (info.interval_ms != 0) std::printf(", sent every %u ms", unsigned{info.interval_ms});
   std::printf(". JSON `\"type\":\"PGN%u\"`.\n\n", unsigned{info.pgn});
+  d.for_each([](const auto& f, unsigned, std::uint16_t) {
+    using F = std::remove_cvref_t<decltype(f)>;
+    if constexpr (requires { F::is_match; }) {
+      std::printf(
+          "This is the PGN's layout for the messages whose `%s` is `\"%s\"` (%lld): a "
+          "receiver gives it those; encode refuses another value there.\n\n",
+          std::string(f.name).c_str(),
+          std::string(F::value_type::from_raw(F::match_raw).name()).c_str(),
+          static_cast<long long>(F::match_raw));
+    }
+  });
   std::printf(
       "| Field | Name (JSON key) | Standard name | Bit offset | Bits | Holds | Step | Values |\n"
       "|---|---|---|---|---|---|---|---|\n");

@@ -2,7 +2,8 @@
 # Fails unless every message the public headers declare is in seawire/registry.hpp (LIST, a
 # program iterating the registry, prints its addresses and PGNs) and described in
 # docs/messages.md. A declared message is a sentence address given as a template argument
-# (`sentence<"--RMC">`, `bluefin::nav_update<"CPNVG", ...>`) or a PGN (`pgn_info{127488, ...`),
+# (`sentence<"--RMC">`, `bluefin::nav_update<"CPNVG", ...>`) or a PGN struct (`pgn_info{127488,
+# "engine_parameters_rapid", ...`: a PGN whose layout a field picks has a struct per layout),
 # outside comments, in SOURCE/include/seawire. Every `static constexpr auto nmea =` or `n2k =`
 # must be one of these forms (or the bluefin templates' `sentence<Address>`, declared through
 # their instances), so that a message declared another way fails here rather than going unseen.
@@ -20,9 +21,10 @@ foreach(header IN LISTS headers)
     string(REGEX REPLACE "^<\"(.*)\"$" "\\1" a "${a}")
     list(APPEND declared "${a}")
   endforeach()
-  string(REGEX MATCHALL "pgn_info{[0-9]+" pgns "${text}")
+  # A PGN as "PGN <number> <struct>": a PGN may have several layouts, a struct each.
+  string(REGEX MATCHALL "pgn_info{[0-9]+,[ \n]*\"[a-z0-9_]+\"" pgns "${text}")
   foreach(p IN LISTS pgns)
-    string(REPLACE "pgn_info{" "PGN " p "${p}")
+    string(REGEX REPLACE "^pgn_info{([0-9]+),[ \n]*\"([a-z0-9_]+)\"$" "PGN \\1 \\2" p "${p}")
     list(APPEND declared "${p}")
   endforeach()
   # Every description must name its address or PGN in one of those forms.
@@ -58,9 +60,13 @@ foreach(m IN LISTS declared)
   if(at EQUAL -1)
     list(APPEND not_registered "${m}")
   endif()
-  string(FIND "${doc}" "\n### ${m}\n" at)
-  if(at EQUAL -1)
-    string(FIND "${doc}" "\n### ${m} " at)
+  if(m MATCHES "^PGN [0-9]+ ([a-z0-9_]+)$")
+    string(FIND "${doc}" "\n`${CMAKE_MATCH_1}`: " at)  # a PGN struct's section
+  else()
+    string(FIND "${doc}" "\n### ${m}\n" at)
+    if(at EQUAL -1)
+      string(FIND "${doc}" "\n### ${m} " at)
+    endif()
   endif()
   if(at EQUAL -1)
     list(APPEND not_documented "${m}")

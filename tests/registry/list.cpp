@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // Prints every message seawire/registry.hpp lists, one a line: each sentence's address, each
-// PGN as "PGN <number>", the 0xAB00 frame as "frame". registry_complete.cmake compares this with
-// what the headers declare and what docs/messages.md describes.
+// PGN struct as "PGN <number> <struct>", the 0xAB00 frame as "frame". registry_complete.cmake
+// compares this with what the headers declare and what docs/messages.md describes.
 
 #include <cstdio>
 #include <string>
@@ -16,7 +16,8 @@ int main() {
   });
   registry::for_each_type<registry::pgns>([](auto tag) {
     using P = typename decltype(tag)::type;
-    std::printf("PGN %u\n", static_cast<unsigned>(P::n2k.info.pgn));
+    std::printf("PGN %u %s\n", static_cast<unsigned>(P::n2k.info.pgn),
+                std::string(P::n2k.info.name).c_str());
   });
   registry::for_each_type<registry::frames>([](auto) { std::printf("frame\n"); });
   return 0;

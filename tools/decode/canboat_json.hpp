@@ -25,6 +25,10 @@
 //               UTF-8; empty: left out. A counted string's length byte below 2, or an encoding
 //               byte that is neither 0, 1 nor 0xFF, analyzer cannot read
 //   group       "list":[{...},...], each repetition's rows by these rules; none: left out
+//   pairs       a group function's parameter pairs, "list":[{"Parameter":n,"Value":v},...]: v
+//               as the named PGN's field n is written, read from as many whole bytes as that
+//               field needs (put_pair_value); a field seawire has no description of: the rest
+//               of the bytes as bytes, and no more pairs
 // and reads the payload as analyzer does where it is cut short: a field the payload holds only a
 // part of is read at the width it has (a 16-bit field of which one byte came is that byte's
 // value), the rows after the payload's end are left out, and a message whose cut field analyzer
@@ -50,6 +54,7 @@
 #include "seawire/nmea2000/field.hpp"
 #include "seawire/nmea2000/json.hpp"
 #include "seawire/nmea2000/log.hpp"
+#include "seawire/registry.hpp"
 #include "seawire/walk.hpp"
 
 namespace seawire::tools::canboat {
@@ -79,6 +84,10 @@ template <class V>
 inline constexpr bool is_group = false;
 template <class I, std::size_t C>
 inline constexpr bool is_group<nmea2000::group<I, C>> = true;
+template <class V>
+inline constexpr bool is_opaque = false;
+template <std::size_t N>
+inline constexpr bool is_opaque<nmea2000::opaque_bytes<N>> = true;
 
 // ---- numbers as analyzer computes and prints them ----
 
@@ -486,10 +495,12 @@ bool put_string_row(fields_text& f, std::string_view key, std::span<const std::u
 // Row L of a PGN or of a group's repetition (a field_layout of visit_rows) of `msg`, whose
 // payload is `payload`, at bit `at` of it: written into `f`, or left out; false when analyzer
 // cannot read it, and writes nothing of the message.
+template <class R, class P>
+bool put_pairs(fields_text& f, const P& msg, std::span<const std::uint8_t> payload, unsigned at);
+
 template <class L, class P>
 bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload, const row_read& r,
-             unsigned at) {
-  constexpr std::string_view key = L::desc.title;
+             unsigned at, std::string_view key = L::desc.title) {
   if constexpr (L::reserved) {
     if (!r.readable) return true;  // a reserved or spare row cut short is left out
     const std::int64_t raw = raw_bits(payload, at, r.bits, false);
@@ -503,6 +514,16 @@ bool put_row(fields_text& f, const P& msg, std::span<const std::uint8_t> payload
     return true;
   } else if constexpr (is_group<typename L::value_type>) {
     return put_group(f, L::info::value(msg), payload, at);
+  } else if constexpr (is_opaque<typename L::value_type>) {
+    using row = std::remove_cvref_t<decltype(L::desc)>;
+    const auto& b = L::info::value(msg);
+    if constexpr (requires { row::is_pairs; }) {
+      return put_pairs<row>(f, msg, payload, at);
+    } else if (!b.empty()) {
+      f.key(key);  // bytes no table lays out, as analyzer writes bytes
+      put_binary(f.out(), payload, at, 8 * b.size());
+    }
+    return true;
   } else if constexpr (nmea2000::keyed_row<typename L::info::row_type>) {
     if (!r.readable) return false;
     // The pair's title when the key is known (a value), else the number unless a sentinel.
@@ -648,6 +669,119 @@ bool put_rows(fields_text& f, const M& msg, std::span<const std::uint8_t> payloa
     next = at + bits;
   });
   return ok;
+}
+
+// The value of field `index` of PGN `pgn` (a parameter pair's), at bit `at` of `payload`, as
+// analyzer reads it: the field's bits at the start of as many whole bytes as the field needs
+// (a 2-bit field's value takes a byte, an 11-bit one two), written as that PGN's field is, `at`
+// moved past the bytes: fields of a PGN seawire describes (its first layout's), and a
+// proprietary PGN's first three (manufacturer, reserved bits, industry). A value the payload
+// ends in is read from the bits there are, as analyzer reads a field cut short; none at all
+// (cut): no value. A number that is no field of a PGN seawire describes: analyzer gives up on
+// the message (none). Any other field: the caller writes the rest of the bytes as analyzer
+// does for a field it does not know (unknown). No more pairs are read after any of those.
+enum class pair_value : std::uint8_t { read, unknown, cut, none };
+inline pair_value put_pair_value(fields_text& item, std::uint32_t pgn, std::int64_t index,
+                                 std::span<const std::uint8_t> payload, unsigned& at) {
+  bool described = false;
+  pair_value written = pair_value::none;
+  registry::for_each_type<registry::pgns>([&](auto tag) {
+    using Q = typename decltype(tag)::type;
+    if (described || Q::n2k.info.pgn != pgn) return;
+    described = true;
+    visit_rows<Q>([&](auto layout) {
+      using L = decltype(layout);
+      if (L::number != index) return;
+      written = pair_value::unknown;
+      if (at / 8 >= payload.size()) {
+        written = pair_value::cut;
+        return;
+      }
+      if constexpr (string_row<L>()) {
+        unsigned bits = 0;
+        if (at % 8 == 0 && at / 8 < payload.size() &&
+            put_string_row<typename L::value_type>(item, "Value", payload, at, bits))
+          written = pair_value::read;
+        at += bits;
+      } else if constexpr (L::bits == 0 || !nmea2000::description_of<Q>::fixed_layout) {
+        // a group, bytes, or a field whose offset a string before it moves
+      } else {
+        constexpr unsigned taken = (L::bits + 7) / 8 * 8;  // a value takes whole bytes
+        const unsigned have =
+            std::min<unsigned>(L::bits, static_cast<unsigned>(payload.size() * 8) - at);
+        // The field at its own offset in a payload of Q (as long as the bits there are), as Q's
+        // rows read it.
+        std::array<std::uint8_t, nmea2000::max_fast_packet_length> q{};
+        q.fill(0xFF);
+        for (unsigned i = 0; i < have; ++i) {
+          const unsigned from = at + i;
+          const unsigned to = L::bit_offset + i;
+          const auto bit = static_cast<std::uint8_t>((payload[from / 8] >> (from % 8)) & 1U);
+          q[to / 8] =
+              static_cast<std::uint8_t>((q[to / 8] & ~(1U << (to % 8))) | (bit << (to % 8)));
+        }
+        const std::span<const std::uint8_t> qs(q.data(), (L::bit_offset + have + 7) / 8);
+        const Q decoded = nmea2000::decode<Q>(qs);
+        if (put_row<L>(item, decoded, qs, read_row(L::bit_offset, L::bits, qs.size()),
+                       L::bit_offset, "Value"))
+          written = have == L::bits ? pair_value::read : pair_value::cut;
+        at += taken;
+      }
+    });
+  });
+  if (described) return written;
+  if (!catch_all_of(pgn).manufacturer) return pair_value::unknown;
+  constexpr unsigned widths[] = {11, 2, 3};
+  if (index < 1 || index > 3) return pair_value::unknown;
+  const unsigned bits = widths[index - 1];
+  if (at + (bits + 7) / 8 * 8 > payload.size() * 8) return pair_value::cut;
+  const std::int64_t raw = raw_bits(payload, at, bits, false);
+  if (index == 1) {
+    put_lookup<nmea2000::manufacturer_code>(item, "Value", raw, bits);
+  } else if (index == 2) {
+    item.key("Value");
+    put_binary(item.out(), payload, at, bits);
+  } else {
+    put_lookup<industry_code>(item, "Value", raw, bits);
+  }
+  at += (bits + 7) / 8 * 8;
+  return pair_value::read;
+}
+
+// A group function's parameter pairs (row R of `msg`, from bit `at`) as analyzer reads them:
+// "list":[{"Parameter":n,"Value":...},...], as many as the count says while the payload lasts,
+// each value at the bit where the pair before ended (put_pair_value); the first value it cannot
+// read takes the rest of the bytes, as bytes, and ends the list. False when analyzer writes
+// nothing of the message (a number that is no field of the PGN).
+template <class R, class P>
+bool put_pairs(fields_text& f, const P& msg, std::span<const std::uint8_t> payload, unsigned at) {
+  const auto& count = msg.*R::count_member;
+  const auto& pgn = msg.*R::pgn_member;
+  if (!count.has_value() || count.raw() == 0 || at / 8 >= payload.size()) return true;
+  f.key("list");
+  std::string& out = f.out();
+  out += '[';
+  for (std::int64_t i = 0; i < count.raw() && at / 8 < payload.size(); ++i) {
+    if (i != 0) out += ',';
+    fields_text item(out, "{");
+    const std::int64_t index = payload[at / 8];
+    item.key("Parameter");
+    put_format(item.out(), "%lld", static_cast<long long>(index));
+    at += 8;
+    const pair_value v =
+        pgn.has_value()
+            ? put_pair_value(item, static_cast<std::uint32_t>(pgn.raw()), index, payload, at)
+            : pair_value::unknown;
+    if (v == pair_value::unknown && at / 8 < payload.size()) {
+      item.key("Value");
+      put_binary(item.out(), payload, at, payload.size() * 8 - at);
+    }
+    if (v == pair_value::none) return false;
+    item.close();
+    if (v != pair_value::read) break;
+  }
+  out += ']';
+  return true;
 }
 
 // A message of a PGN seawire has no description of, as analyzer writes one of a PGN it has

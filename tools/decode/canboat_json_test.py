@@ -95,6 +95,27 @@ def same_value(key, ours, theirs, where):
     return check(False, f"{where}: {key} {ours!r} != {theirs!r}")
 
 
+HEX_BYTES = re.compile(r"^[0-9A-F]{2}( [0-9A-F]{2})*$")
+
+
+def same_pairs(ours, theirs, where):
+    """A group function's parameter pairs: pair for pair the same up to the first value of a
+    field seawire has no description of (a PGN it does not describe, past a proprietary PGN's
+    manufacturer and industry codes), which ours gives as bytes with the rest of the payload and
+    stops, where analyzer knows the field and reads on (README: DIFFERENCES)."""
+    if not check(isinstance(ours, list) and isinstance(theirs, list), f"{where}: list {ours!r}"):
+        return
+    for i, o in enumerate(ours):
+        t = theirs[i] if i < len(theirs) else None
+        if o == t:
+            continue
+        check(i == len(ours) - 1 and t is not None and o.get("Parameter") == t.get("Parameter")
+              and HEX_BYTES.match(str(o.get("Value", ""))) is not None,
+              f"{where}: pair {i + 1} {o!r} != {t!r}")
+        return
+    check(len(ours) == len(theirs), f"{where}: {len(ours)} pairs, analyzer {len(theirs)}")
+
+
 def same_message(ours, theirs, text, where):
     check(list(ours) == list(theirs), f"{where}: keys {list(ours)} != {list(theirs)}")
     for key in ("prio", "src", "dst", "pgn", "description"):
@@ -103,8 +124,11 @@ def same_message(ours, theirs, text, where):
     same_timestamp(ours.get("timestamp"), theirs.get("timestamp"), text, where)
     a, b = ours.get("fields", {}), theirs.get("fields", {})
     check(list(a) == list(b), f"{where}: fields {list(a)} != {list(b)}")
+    pairs = ours.get("pgn") == 126208 and a.get("Function Code") in ("Request", "Command")
     for key in b:
-        if key in a:
+        if key in a and key == "list" and pairs:
+            same_pairs(a[key], b[key], where)
+        elif key in a:
             same_value(key, a[key], b[key], where)
 
 
@@ -215,6 +239,32 @@ def case_by_hand():
     # A date of one byte: analyzer writes nothing of the message; said on stderr.
     out, p = canboat([], (line.format(3, 126992, 3) + ",01,f0,00\n").encode())
     check(out == [] and b"126992" in p.stderr, f"126992 of 3 bytes: {out} {p.stderr!r}")
+    # A group function's parameter pairs: each value read from as many whole bytes as the named
+    # field needs (127250's SID 1 byte, its 2-bit reference a byte, its heading 2), written as
+    # that field is; a value the payload ends in read from the byte there is (0x39 = 57 x
+    # 0.0001 rad, 0.3 degrees); a counted string (126998's #2); a proprietary PGN's manufacturer
+    # (11 bits in 2 bytes) and industry (3 bits in a byte); a field seawire does not describe:
+    # the rest as bytes, and no more pairs.
+    gf = "01 12 f1 01 f8 03 01 07 05 01 02 39 30"
+    check(one(126208, gf, 3) == {
+        "Function Code": "Command", "PGN": 127250, "Priority": "Leave unchanged",
+        "Number of Parameters": 3, "list": [{"Parameter": 1, "Value": 7},
+                                            {"Parameter": 5, "Value": "Magnetic"},
+                                            {"Parameter": 2, "Value": Decimal("70.7")}]},
+          "126208 command for 127250")
+    check(one(126208, "01 12 f1 01 f8 04 01 07 02 39", 3)["list"] ==
+          [{"Parameter": 1, "Value": 7}, {"Parameter": 2, "Value": Decimal("0.3")}],
+          "126208: a value cut short")
+    check(one(126208, "01 16 f0 01 f8 01 02 06 01 41 42 43 44", 3)["list"] ==
+          [{"Parameter": 2, "Value": "ABCD"}], "126208 command for 126998's text")
+    check(one(126208, "01 10 ff 01 f8 03 01 89 00 03 04 07 aa bb", 3)["list"] ==
+          [{"Parameter": 1, "Value": "Maretron"}, {"Parameter": 3, "Value": "Marine Industry"},
+           {"Parameter": 7, "Value": "AA BB"}], "126208 command for proprietary 130832")
+    check(one(126208, "01 0d f2 01 f8 02 03 01 04 00", 3)["list"] ==
+          [{"Parameter": 3, "Value": "01 04 00"}], "126208 command for 127501, which seawire lacks")
+    # A number that is no field of the PGN named: analyzer writes nothing of the message.
+    out, p = canboat([], (line.format(3, 126208, 9) + ",01,12,f1,01,f8,01,09,aa,bb\n").encode())
+    check(out == [] and b"126208" in p.stderr, f"126208 field 9 of 127250: {out} {p.stderr!r}")
     # Undescribed PGNs: the catch-all of their range, the data after it as bytes.
     check(one(60000, "01 02 03 04 05 06 07 08 09") == {"Data": "01 02 03 04 05 06 07 08"},
           "60000 of 9 bytes: 64 bits of data")

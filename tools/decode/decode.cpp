@@ -232,10 +232,25 @@ class decoder {
     std::sort(rows.begin(), rows.end());
     if (!rows.empty()) std::fprintf(stderr, "  by PGN:\n");
     for (const auto& [pgn, n] : rows) {
-      const std::optional<nmea2000::pgn_info> info = n2k_pgns::info(pgn);
-      const std::string_view named = info ? info->name : std::string_view("(no description)");
+      // The struct's name; of a PGN with several layouts, what their names share
+      // ("group_function").
+      std::optional<std::string_view> named;
+      n2k_pgns::for_each_type([&](const auto& tag) {
+        using P = std::remove_cvref_t<decltype(tag)>;
+        if (P::n2k.info.pgn != pgn) return;
+        const std::string_view name = P::n2k.info.name;
+        if (!named) {
+          named = name;
+          return;
+        }
+        std::size_t k = 0;
+        while (k < named->size() && k < name.size() && (*named)[k] == name[k]) ++k;
+        while (k > 0 && (*named)[k - 1] == '_') --k;
+        named = named->substr(0, k);
+      });
+      if (!named) named = "(no description)";
       std::fprintf(stderr, "    %-7u %-32.*s %llu\n", static_cast<unsigned>(pgn),
-                   static_cast<int>(named.size()), named.data(),
+                   static_cast<int>(named->size()), named->data(),
                    static_cast<unsigned long long>(n));
     }
     if (other_types_ > 0)

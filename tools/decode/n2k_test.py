@@ -63,6 +63,7 @@ FAST_PACKET = {127489, 128275, 130578, 127506, 129284, 130577}
 FAST_PACKET |= {127237, 129038, 129039}  # lookups
 FAST_PACKET |= {126464, 129540, 129029}  # repeating groups, 64-bit fields
 FAST_PACKET |= {126996, 126998, 129794, 129809, 129810}  # strings
+FAST_PACKET |= {126208}  # a layout per function code
 # A PGN seawire does not describe travels as the standard lists it: as fast packets the PGNs
 # canboat's database marks "Fast" (below) and the two proprietary fast-packet ranges whole
 # (126720-126975, 130816-131071); every other one as single frames.
@@ -224,6 +225,23 @@ AIS_TRANSCEIVER = {"channel_a_vdl_reception": "Channel A VDL reception",
 
 
 PGN_LIST_FUNCTION = {"transmit": "Transmit PGN list", "receive": "Receive PGN list"}
+GROUP_FUNCTION = {"request": "Request", "command": "Command", "acknowledge": "Acknowledge"}
+PRIORITY_SETTING = {**{f"priority_{i}": str(i) for i in range(8)},
+                    "leave_unchanged": "Leave unchanged", "reset_to_default": "Reset to default"}
+PGN_ERROR_CODE = {"acknowledge": "Acknowledge", "pgn_not_supported": "PGN not supported",
+                  "pgn_not_available": "PGN not available", "access_denied": "Access denied",
+                  "not_supported": "Not supported", "tag_not_supported": "Tag not supported",
+                  "read_or_write_not_supported": "Read or Write not supported"}
+INTERVAL_ERROR_CODE = {"acknowledge": "Acknowledge",
+                       "not_supported_here": "Transmit Interval/Priority not supported",
+                       "interval_too_low": "Transmit Interval too low",
+                       "access_denied": "Access denied", "not_supported": "Not supported"}
+PARAMETER_ERROR_CODE = {"acknowledge": "Acknowledge",
+                        "invalid_parameter_field": "Invalid parameter field",
+                        "temporary_error": "Temporary error",
+                        "parameter_out_of_range": "Parameter out of range",
+                        "access_denied": "Access denied", "not_supported": "Not supported",
+                        "read_or_write_not_supported": "Read or Write not supported"}
 RANGE_RESIDUAL_MODE = {"used": "Range residuals were used to calculate data",
                        "calculated_after": "Range residuals were calculated after the position"}
 SATELLITE_STATUS = {"not_tracked": "Not tracked", "tracked": "Tracked", "used": "Used",
@@ -917,6 +935,56 @@ CANBOAT_FIELDS = {
         })),
     },
 }
+
+
+def parameter_pairs(ours, theirs):
+    """A group function's parameter pairs: ours the bytes as hex; canboat decodes each value as
+    the field it names of the PGN the message names, from its own database, which seawire does
+    not (a value is as wide as that field). Checked: no pairs, no list; otherwise canboat's first
+    pair names the field our first byte holds."""
+    if not isinstance(ours, str):
+        return "ours not a hex string"
+    if not theirs:
+        return None if ours == "" else f"ours {ours!r}, canboat no pairs"
+    first = theirs[0].get("parameter")
+    if not ours:
+        return "ours no bytes, canboat has pairs"
+    return None if first == int(ours[:2], 16) else f"first field {int(ours[:2], 16)}, canboat {first}"
+
+
+# A PGN whose layout its first byte picks (126208's function code): per code, the mapping. A code
+# without one is raw in ours (canboat may know it: its Read and Write Fields layouts).
+CANBOAT_FIELDS_BY_CODE = {
+    126208: {
+        0: {
+            "function_code": ("functionCode", lookup(GROUP_FUNCTION)),
+            "pgn": ("pgn", num("1")),
+            "transmission_interval_s": ("transmissionInterval", duration),
+            "transmission_interval_offset_s": ("transmissionIntervalOffset", duration),
+            "number_of_parameters": ("numberOfParameters", num("1")),
+            "parameters": ("list", parameter_pairs),
+        },
+        1: {
+            "function_code": ("functionCode", lookup(GROUP_FUNCTION)),
+            "pgn": ("pgn", num("1")),
+            "priority": ("priority", lookup(PRIORITY_SETTING)),
+            "number_of_parameters": ("numberOfParameters", num("1")),
+            "parameters": ("list", parameter_pairs),
+        },
+        2: {
+            "function_code": ("functionCode", lookup(GROUP_FUNCTION)),
+            "pgn": ("pgn", num("1")),
+            "pgn_error_code": ("pgnErrorCode", lookup(PGN_ERROR_CODE)),
+            "transmission_interval_priority_error_code":
+                ("transmissionIntervalPriorityErrorCode", lookup(INTERVAL_ERROR_CODE)),
+            "number_of_parameters": ("numberOfParameters", num("1")),
+            "parameters": ("list", group({
+                "parameter": ("parameter", lookup(PARAMETER_ERROR_CODE)),
+            })),
+        },
+    },
+}
+
 # canboat lists a "reserved" field (as hex text) when the reserved bits are not all ones, named
 # "reserved" and, for a PGN's later reserved fields, "reserved" with the field's number
 # ("reserved6"); seawire ignores reserved bits on receive (N2K.md section 1), so it has no such
@@ -1175,6 +1243,16 @@ def ais_end(at):
             ("sequence_id", at + 8, 8, U, "1")]
 
 L_PGN_LIST_FUNCTION = ["transmit", "receive"]
+L_GROUP_FUNCTION = ["request", "command", "acknowledge", "read_fields", "read_fields_reply",
+                    "write_fields", "write_fields_reply"]
+L_PRIORITY_SETTING = [f"priority_{i}" for i in range(8)] + ["leave_unchanged", "reset_to_default"]
+L_PGN_ERROR_CODE = ["acknowledge", "pgn_not_supported", "pgn_not_available", "access_denied",
+                    "not_supported", "tag_not_supported", "read_or_write_not_supported"]
+L_INTERVAL_ERROR_CODE = ["acknowledge", "not_supported_here", "interval_too_low",
+                         "access_denied", "not_supported"]
+L_PARAMETER_ERROR_CODE = ["acknowledge", "invalid_parameter_field", "temporary_error",
+                          "parameter_out_of_range", "access_denied", "not_supported",
+                          "read_or_write_not_supported"]
 L_RANGE_RESIDUAL_MODE = ["used", "calculated_after"]
 L_SATELLITE_STATUS = ["not_tracked", "tracked", "used", "not_tracked_diff", "tracked_diff",
                       "used_diff"]
@@ -1500,6 +1578,34 @@ LAYOUT = {
 MAX_PAYLOAD = 223  # a fast packet's most bytes: a group's capacity follows from it
 
 
+# A PGN whose layout its first byte picks (126208's function code), per code; a code not here
+# has no layout: the payload is raw. "bytes": the payload from the offset on, as hex.
+LAYOUT_BY_CODE = {
+    126208: {
+        0: [("function_code", 0, 8, "lookup", L_GROUP_FUNCTION), ("pgn", 8, 24, U, "1"),
+            ("transmission_interval_s", 32, 32, U, "0.001"),
+            ("transmission_interval_offset_s", 64, 16, U, "0.01"),
+            ("number_of_parameters", 80, 8, U, "1"), ("parameters", 88, 0, "bytes", None)],
+        1: [("function_code", 0, 8, "lookup", L_GROUP_FUNCTION), ("pgn", 8, 24, U, "1"),
+            ("priority", 32, 4, "lookup", L_PRIORITY_SETTING),
+            ("number_of_parameters", 40, 8, U, "1"), ("parameters", 48, 0, "bytes", None)],
+        2: [("function_code", 0, 8, "lookup", L_GROUP_FUNCTION), ("pgn", 8, 24, U, "1"),
+            ("pgn_error_code", 32, 4, "lookup", L_PGN_ERROR_CODE),
+            ("transmission_interval_priority_error_code", 36, 4, "lookup", L_INTERVAL_ERROR_CODE),
+            ("number_of_parameters", 40, 8, U, "1"),
+            ("parameters", 48, 4, "group", ("number_of_parameters", [
+                ("parameter", 0, 4, "lookup", L_PARAMETER_ERROR_CODE)]))],
+    },
+}
+
+
+def layout_of(pgn, data):
+    """The layout of a message of `pgn` with payload `data`; None: no layout (raw)."""
+    if pgn in LAYOUT_BY_CODE:
+        return LAYOUT_BY_CODE[pgn].get(data[0]) if data else None
+    return LAYOUT.get(pgn)
+
+
 def group_value(data, layout, offset, item_bits, arg):
     """A repeating group, by the rule of docs/nmea2000.md: as many repetitions as the count field
     says, or to the end of the payload (without a count field, or when the count is a sentinel);
@@ -1592,6 +1698,8 @@ def sentinel(raw, width, signed):
 
 
 def field_value(data, offset, width, kind, arg):
+    if kind == "bytes":
+        return data[offset // 8:].hex().upper()
     if offset + width > len(data) * 8:
         return None  # not sent (a short payload)
     raw = bits(data, offset, width)
@@ -1696,14 +1804,14 @@ def compare_layout(where, ours, want):
         got = ours.get("time_s")
         check(is_number(got) and abs(Decimal(got) - want["time"]) < Decimal("0.000001"),
               f"{where}: time_s {got}, expected {want['time']}")
-    if pgn not in LAYOUT:
-        # A PGN seawire does not describe: its whole payload, as assembled here.
+    layout = layout_of(pgn, want["data"])
+    if layout is None:
+        # A PGN (or layout) seawire does not describe: its whole payload, as assembled here.
         compared += 1
         check(set(ours) - META == {"data"} and ours["data"] == want["data"].hex().upper(),
               f"{where}: {ours.get('data')!r} ({sorted(set(ours) - META)}), assembled here "
               f"{want['data'].hex().upper()}")
         return
-    layout = LAYOUT[pgn]
     names = {f[0] for f in layout}
     check(set(ours) - META == names, f"{where}: fields {sorted(set(ours) - META)}, "
           f"expected {sorted(names)}")
@@ -1735,7 +1843,8 @@ def case_layout():
     for name, data in inputs:
         lines = [l for l in data.decode().splitlines() if l.strip()]
         want = [m for m in messages(lines)
-                if m["pgn"] in LAYOUT or m["pgn"] not in CANBOAT_FIELDS]
+                if m["pgn"] in LAYOUT or m["pgn"] in LAYOUT_BY_CODE
+                or m["pgn"] not in CANBOAT_FIELDS]
         p = run([], data, 0)
         ours = [exact(l) for l in p.stdout.decode().splitlines()]
         check(len(ours) == len(want),
@@ -1828,6 +1937,15 @@ def case_canboat():
                 compare_raw(where, o, t)
                 continue
             table = CANBOAT_FIELDS.get(t["pgn"])
+            if t["pgn"] in CANBOAT_FIELDS_BY_CODE:
+                # the layout the function code picks; a code seawire has none for: raw
+                code = L_GROUP_FUNCTION.index(o["function_code"]) if "function_code" in o else None
+                table = CANBOAT_FIELDS_BY_CODE[t["pgn"]].get(code)
+                if table is None:
+                    compared += 1
+                    check(set(o) - META == {"data"}, f"{where}: a layout seawire does not "
+                          f"describe, fields {sorted(set(o) - META)}")
+                    continue
             if not check(table is not None, f"{where}: no mapping for this PGN"):
                 continue
             check(set(o) - META == set(table),
@@ -1838,8 +1956,8 @@ def case_canboat():
             check(not unmapped, f"{where}: canboat fields not in the mapping: {sorted(unmapped)}")
             for ours_name, (their_name, cmp) in table.items():
                 compared += 1
-                if their_name == "list" and their_name not in fields and o.get(ours_name) == []:
-                    continue  # canboat has no "list" for a group of no repetitions
+                if their_name == "list" and their_name not in fields and o.get(ours_name) in ([], ""):
+                    continue  # canboat has no "list" for a group of no repetitions (no bytes)
                 if their_name not in fields:
                     # canboat leaves out a field a short message did not send; seawire gives null
                     check(o.get(ours_name, "<missing>") is None,

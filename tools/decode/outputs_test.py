@@ -87,7 +87,7 @@ def text_cell(v):
 
 
 # The NMEA 2000 repeating groups of the vectors (their values are JSON arrays of objects).
-GROUPS = {"pgns", "satellites", "stations"}
+GROUPS = {"pgns", "satellites", "stations", "parameters"}  # a request's parameters: hex text
 
 
 def group_cell(v):
@@ -134,12 +134,14 @@ def case_csv():
             by_type = {}
             for m in json_messages(data):
                 if "data" in m and m["type"][3:].isdigit():
-                    # A PGN seawire does not describe has no table: said on stderr.
-                    check(re.search(rf"\b\d+ {m['type']} sentences? left out",
+                    # A PGN (or layout) seawire does not describe has no table: said on stderr.
+                    check(re.search(rf"\b\d+ {m['type']} messages? left out",
                                     p.stderr.decode()),
                           f"{log}: {m['type']} not said to be left out")
                     continue
-                by_type.setdefault(m["type"], []).append(m)
+                # 126208: a table per layout (its function code)
+                layout = "_" + m["function_code"] if m["type"] == "PGN126208" else ""
+                by_type.setdefault(m["type"] + layout, []).append(m)
             check(by_type != {} and sorted(f[:-4] for f in os.listdir(d)) == sorted(by_type),
                   f"{log}: one table per PGN: {sorted(os.listdir(d))} vs {sorted(by_type)}")
             for t, rows in by_type.items():
@@ -157,7 +159,7 @@ def case_csv():
                     # JSON (\n, \u00E9)
                     # a repeating group: its repetitions joined by ';', a repetition's fields
                     # by '|', each as its own cell
-                    want = [group_cell(m[k]) if k in GROUPS
+                    want = [group_cell(m[k]) if k in GROUPS and isinstance(m[k], list)
                             else (";".join(m[k]) or "none") if isinstance(m.get(k), list)
                             else text_cell(m[k]) if isinstance(m.get(k), str) and k in STRINGS
                             else cell(m.get(k)) for k in keys]
@@ -217,7 +219,7 @@ def case_csv():
     # Sentences no message describes are counted, not silently lost.
     with tempfile.TemporaryDirectory() as tmp:
         p = run(["--format", "csv", "--output-dir", tmp], seal("GPGSV,1,1,01,01,40,083,46").encode(), 0)
-        check(b"1 GPGSV sentence left out" in p.stderr, f"unknown types: {p.stderr!r}")
+        check(b"1 GPGSV message left out" in p.stderr, f"unknown types: {p.stderr!r}")
         check(os.listdir(tmp) == [], f"no table for unknown types: {os.listdir(tmp)}")
     run(["--format", "csv", "--type", "GPGSV"], b"", 2)
     # --type filters the other formats too.

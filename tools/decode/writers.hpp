@@ -80,13 +80,40 @@ void csv_row(tools::output& out, const M& msg, const nmea2000::message_header* h
   }
 }
 
-// Writes the CSV header of the type JSON calls `type` (GPRMC, CPNVG, AB00); false when no
-// message of the set, nor the frame, has that type.
+// The CSV table of a message M of type `type`: the type's, and for a PGN whose layout a field
+// picks (126208's function code), the layout's: "PGN126208_request".
+template <class M>
+std::string table_name(std::string_view type) {
+  std::string out(type);
+  if constexpr (nmea2000::pgn_like<M>) {
+    M::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+      using F = std::remove_cvref_t<decltype(f)>;
+      if constexpr (requires { F::is_match; }) {
+        out += '_';
+        out += F::value_type::from_raw(F::match_raw).name();
+      }
+    });
+  }
+  return out;
+}
+template <class M>
+inline constexpr bool has_layouts = [] {
+  if constexpr (nmea2000::pgn_like<M>) {
+    return nmea2000::description_of<M>::has_match;
+  } else {
+    return false;
+  }
+}();
+
+// Writes the CSV header of the type JSON calls `type` (GPRMC, CPNVG, AB00; of a PGN with several
+// layouts, the first's, whose table name goes to `layout`); false when no message of the set,
+// nor the frame, has that type.
 template <class Set>
 struct csv_headers;
 template <class... Ms>
 struct csv_headers<nmea::message_set<Ms...>> {
-  static bool write(std::string_view type, tools::output& out) {
+  static bool write(std::string_view type, tools::output& out, std::string& layout) {
+    layout = type;
     if (type == anello::frame_json_type) {
       csv_header<anello::sensor_frame_raw>(out);
       return true;
@@ -95,8 +122,9 @@ struct csv_headers<nmea::message_set<Ms...>> {
       bool found = false;
       n2k_pgns::for_each_type([&](const auto& tag) {
         using P = std::remove_cvref_t<decltype(tag)>;
-        if (P::n2k.info.pgn != *pgn) return;
+        if (P::n2k.info.pgn != *pgn || found) return;
         csv_header<P>(out);
+        layout = table_name<P>(type);
         found = true;
       });
       return found;
@@ -116,6 +144,7 @@ struct csv_table {
   std::FILE* file = nullptr;
   std::unique_ptr<tools::output> out;  // while the table is open
   bool header = false;
+  std::string layout;           // whose header it has: table_name of the first row's message
   bool created = false;         // the file was created (later opened to append)
   std::uint64_t last_used = 0;  // when a row last went to it, for closing the least recent
   csv_table() = default;
@@ -441,18 +470,30 @@ class csv_writer : public stdio_writer {
     // The one table on stdout has its header even when no message of its type comes.
     if (o.output_dir.empty() && o.types.size() == 1) {
       if (csv_table* t = table(o.types.front()))
-        t->header = all_headers::write(o.types.front(), *t->out);
+        t->header = all_headers::write(o.types.front(), *t->out, t->layout);
     }
   }
 
   template <class M>
   std::optional<refusal> message(std::string_view type, const M& msg, const origin& from) {
     if constexpr (walkable<M>) {
-      if (csv_table* t = table(type)) {
-        if (!t->header) csv_header<M>(*t->out);
+      // A table per layout of a PGN with several (a file each); on stdout, the first layout's
+      // rows, the others counted and left out.
+      std::string layout;
+      if constexpr (has_layouts<M>) layout = table_name<M>(type);
+      const std::string_view name = layout.empty() ? type : std::string_view(layout);
+      if (csv_table* t = table(dir_.empty() ? type : name)) {
+        if (!t->header) {
+          csv_header<M>(*t->out);
+          t->layout = name;
+        }
         t->header = true;
-        csv_row(*t->out, msg, from.head);
-        if (line_buffered_) t->out->flush();
+        if (t->layout == name) {
+          csv_row(*t->out, msg, from.head);
+          if (line_buffered_) t->out->flush();
+        } else {
+          count_type(other_layout_, other_not_tabled_, name);
+        }
       }
     } else {
       count_type(not_tabled_, other_not_tabled_, type);
@@ -487,14 +528,22 @@ class csv_writer : public stdio_writer {
     for (const auto& [type, n] : not_tabled_) {
       if (!log_.allow()) continue;
       std::fprintf(stderr,
-                   "seawire-decode: %llu %s sentence%s left out of the CSV output: no "
-                   "message describes their fields\n",
+                   "seawire-decode: %llu %s message%s left out of the CSV output: no "
+                   "description says their fields\n",
                    static_cast<unsigned long long>(n), type.c_str(), n == 1 ? "" : "s");
+    }
+    for (const auto& [layout, n] : other_layout_) {
+      if (!log_.allow() || stdout_table_ == nullptr) continue;
+      std::fprintf(stderr,
+                   "seawire-decode: %llu %s message%s left out of the CSV output: the table on "
+                   "stdout is %s's (--output-dir writes a table per layout)\n",
+                   static_cast<unsigned long long>(n), layout.c_str(), n == 1 ? "" : "s",
+                   stdout_table_->layout.c_str());
     }
     if (other_not_tabled_ > 0 && log_.allow()) {
       std::fprintf(stderr,
-                   "seawire-decode: %llu more sentences of other types left out of the CSV "
-                   "output: no message describes their fields\n",
+                   "seawire-decode: %llu more messages of other types left out of the CSV "
+                   "output\n",
                    static_cast<unsigned long long>(other_not_tabled_));
     }
     stdio_writer::finish();
@@ -596,6 +645,7 @@ class csv_writer : public stdio_writer {
   std::size_t open_tables_ = 0;                                   // tables whose file is open
   std::uint64_t table_clock_ = 0;                                 // counts the rows, for last_used
   std::map<std::string, std::uint64_t, std::less<>> not_tabled_;  // unknown sentences, by address
+  std::map<std::string, std::uint64_t, std::less<>> other_layout_;  // not the stdout table's
   std::uint64_t other_not_tabled_ = 0;  // those of addresses past max_counted_types
   std::uint64_t table_failures_ = 0;
   csv_table* stdout_table_ = nullptr;  // the one table written to stdout, once it exists
@@ -664,9 +714,9 @@ class canboat_writer : public stdio_writer {
     } else if (log_.allow()) {
       out_.flush();
       std::fprintf(stderr,
-                   "seawire-decode: PGN %u from %u: a field cut short where canboat's analyzer "
-                   "cannot read it (a date of one byte); not written, as analyzer writes "
-                   "nothing of such a message\n",
+                   "seawire-decode: PGN %u from %u: a field canboat's analyzer cannot read (a "
+                   "date cut to one byte, a group function's parameter that is no field of the "
+                   "PGN it names); not written, as analyzer writes nothing of such a message\n",
                    static_cast<unsigned>(from.head->id.pgn),
                    static_cast<unsigned>(from.head->id.source));
     }

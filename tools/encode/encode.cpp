@@ -473,19 +473,67 @@ class encoder {
     out_.put(std::string_view(buf.data(), r.value));
   }
 
+  // Whether the object is a message of P: of a PGN with several layouts, whether it names P's
+  // in P's match row (126208's "function_code"); `names` collects the layouts' names.
+  template <class P>
+  bool names_layout(std::string& names) const {
+    if constexpr (!nmea2000::description_of<P>::has_match) {
+      return true;
+    } else {
+      bool named = false;
+      P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if constexpr (requires { F::is_match; }) {
+          typename F::value_type v;
+          const json_value j = obj_({}, f.name);
+          named = j.kind != json_kind::absent &&
+                  nmea2000::read_json_value(j, v, f.name, obj_) == errc::ok &&
+                  v.raw() == F::match_raw;
+          names += names.empty() ? "\"" : ", \"";
+          names += F::value_type::from_raw(F::match_raw).name();
+          names += '"';
+        }
+      });
+      return named;
+    }
+  }
+
   // An NMEA 2000 message: its CAN frames (a fast packet's several), as lines of the log format.
   void can(std::uint32_t pgn, std::string_view type) {
     const std::optional<nmea2000::pgn_info> info = n2k_pgns::info(pgn);
     constexpr std::string_view header_keys[] = {"time_s", "interface", "direction",
                                                 "prio",   "src",       "dst"};
+    // The struct that describes the object (its index in the list): the PGN's, or of a PGN
+    // with several layouts the one the object names; none: its payload is given in "data".
+    std::optional<std::size_t> chosen;
+    std::string layouts;
+    if (info) {
+      std::size_t index = 0;
+      n2k_pgns::for_each_type([&](const auto& tag) {
+        using P = std::remove_cvref_t<decltype(tag)>;
+        const std::size_t i = index++;
+        if (P::n2k.info.pgn == pgn && !chosen && names_layout<P>(layouts)) chosen = i;
+      });
+      if (!chosen && obj_({}, "data").kind == json_kind::absent) {
+        reject(std::string(type) + ": \"function_code\" must name one of its layouts seawire " +
+               "describes (" + layouts + "), or \"data\" give the payload in hex");
+        return;
+      }
+    }
+    // fn(tag) for the chosen struct.
+    const auto with_chosen = [&](auto&& fn) {
+      std::size_t index = 0;
+      n2k_pgns::for_each_type([&](const auto& tag) {
+        if (chosen && index++ == *chosen) fn(tag);
+      });
+    };
     const auto known = [&](std::string_view k) {
       for (const std::string_view h : header_keys)
         if (k == h) return true;
-      if (!info) return k == "data";
+      if (!chosen) return k == "data";
       bool found = false;
-      n2k_pgns::for_each_type([&](const auto& tag) {
-        using P = std::remove_cvref_t<decltype(tag)>;
-        if (P::n2k.info.pgn == pgn) found = nmea2000::has_field<P>(k);
+      with_chosen([&](const auto& tag) {
+        found = nmea2000::has_field<std::remove_cvref_t<decltype(tag)>>(k);
       });
       return found;
     };
@@ -503,11 +551,10 @@ class encoder {
     rec.interface = h.value.interface;
     rec.direction = h.value.direction == 0 ? 'R' : h.value.direction;
     std::vector<std::uint8_t> payload;
-    if (info) {
+    if (chosen) {
       bool ok = true;
-      n2k_pgns::for_each_type([&](const auto& tag) {
+      with_chosen([&](const auto& tag) {
         using P = std::remove_cvref_t<decltype(tag)>;
-        if (P::n2k.info.pgn != pgn) return;
         const result<P> m = nmea2000::read_json<P>(obj_);
         if (!m) {
           field_error(type, m.ec, m.field, nmea2000::field_name<P>(m.field));

@@ -1073,8 +1073,10 @@ struct item_description {
   std::tuple<F...> fields;
 
   static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
-  static_assert(bit_length > 0 && bit_length % 8 == 0,
-                "a group's repetition must fill whole bytes");
+  static_assert(bit_length > 0 && (bit_length % 8 == 0 || 8 % bit_length == 0),
+                "a group's repetition must fill whole bytes, or a byte hold a whole number of "
+                "them (1, 2 or 4 bits)");
+  /// Bytes of one repetition; 0 for one of less than a byte.
   static constexpr std::size_t length = bit_length / 8;
   static constexpr std::size_t field_count = sizeof...(F);
 
@@ -1101,7 +1103,8 @@ concept group_item = requires {
 /// capacity must be (the table checks it).
 template <group_item Item>
 [[nodiscard]] consteval std::size_t group_capacity(std::size_t header_bytes) noexcept {
-  return (max_payload_bytes - header_bytes) / std::remove_cvref_t<decltype(Item::n2k_item)>::length;
+  return (max_payload_bytes - header_bytes) * 8 /
+         std::remove_cvref_t<decltype(Item::n2k_item)>::bit_length;
 }
 
 /// A repeating field group: up to `Capacity` repetitions of Item, in fixed storage, and how many
@@ -1178,6 +1181,9 @@ struct group_entry {
   static constexpr unsigned bits = 0;
   static constexpr unsigned item_bits =
       std::remove_cvref_t<decltype(item_type::n2k_item)>::bit_length;
+  static_assert(counted || item_bits % 8 == 0,
+                "a group to the end of the payload has repetitions of whole bytes (a count "
+                "says how many of those packed in a byte were sent)");
   static constexpr bool is_reserved = false;
   static constexpr bool is_group = true;
   std::string_view name;
@@ -1206,6 +1212,153 @@ namespace detail {
 template <class F>
 concept group_row = requires {
   F::is_group;
+};
+}  // namespace detail
+
+/// Bytes at the end of a payload that its table cannot lay out, kept as they came (up to
+/// MaxBytes) and shown as hex: a group function's parameter pairs are such, each value as wide as
+/// the field of the PGN it names. Declared with the row bytes_to_end<&P::member>, the last row.
+template <std::size_t MaxBytes>
+class opaque_bytes {
+  static_assert(MaxBytes >= 1 && MaxBytes <= max_fast_packet_length);
+
+ public:
+  static constexpr std::size_t capacity = MaxBytes;
+
+  constexpr opaque_bytes() noexcept = default;
+
+  /// The bytes of `b`; text_too_long (none kept) past the capacity.
+  [[nodiscard]] static constexpr result<opaque_bytes> from_bytes(
+      std::span<const std::uint8_t> b) noexcept {
+    opaque_bytes o;
+    if (b.size() > MaxBytes) return {o, errc::text_too_long};
+    for (std::size_t i = 0; i < b.size(); ++i) o.bytes_[i] = b[i];
+    o.size_ = b.size();
+    return {o, errc::ok};
+  }
+  /// From hex digits, two a byte, either case ("" is no bytes): bad_text for another character
+  /// or an odd count of digits, text_too_long past the capacity.
+  [[nodiscard]] static constexpr result<opaque_bytes> from_hex(std::string_view hex) noexcept {
+    opaque_bytes o;
+    if (hex.size() % 2 != 0) return {o, errc::bad_text};
+    if (hex.size() / 2 > MaxBytes) return {o, errc::text_too_long};
+    const auto digit = [](char c) -> int {
+      if (c >= '0' && c <= '9') return c - '0';
+      if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+      if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+      return -1;
+    };
+    for (std::size_t i = 0; i < hex.size(); i += 2) {
+      const int hi = digit(hex[i]);
+      const int lo = digit(hex[i + 1]);
+      if (hi < 0 || lo < 0) return {opaque_bytes{}, errc::bad_text};
+      o.bytes_[i / 2] = static_cast<std::uint8_t>(hi * 16 + lo);
+    }
+    o.size_ = hex.size() / 2;
+    return {o, errc::ok};
+  }
+
+  [[nodiscard]] constexpr std::span<const std::uint8_t> bytes() const noexcept {
+    return {bytes_.data(), size_};
+  }
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return size_ == 0; }
+  /// Always a value (no bytes is sent as none).
+  [[nodiscard]] constexpr field_state state() const noexcept { return field_state::value; }
+  [[nodiscard]] constexpr bool has_value() const noexcept { return true; }
+  [[nodiscard]] constexpr bool fits() const noexcept { return true; }
+
+  [[nodiscard]] constexpr bool operator==(const opaque_bytes& o) const noexcept {
+    if (size_ != o.size_) return false;
+    for (std::size_t i = 0; i < size_; ++i)
+      if (bytes_[i] != o.bytes_[i]) return false;
+    return true;
+  }
+
+ private:
+  std::array<std::uint8_t, MaxBytes> bytes_{};
+  std::size_t size_ = 0;
+};
+
+namespace detail {
+template <class T>
+inline constexpr bool is_opaque_bytes = false;
+template <std::size_t N>
+inline constexpr bool is_opaque_bytes<opaque_bytes<N>> = true;
+}  // namespace detail
+
+/// The row of opaque bytes, the last of its table: the payload's bytes after the fixed rows.
+/// Takes no bits of the fixed layout (`bits` is 0).
+template <auto Member>
+struct bytes_entry {
+  using value_type = seawire::detail::member_type_t<Member>;
+  static_assert(detail::is_opaque_bytes<value_type>,
+                "a bytes_to_end row's member must be an opaque_bytes<>");
+  static constexpr auto member = Member;
+  static constexpr unsigned bits = 0;
+  static constexpr bool is_reserved = false;
+  static constexpr bool is_bytes = true;
+  std::string_view name;
+  std::string_view title;
+};
+
+/// The bytes from the end of the fixed rows to the end of the payload.
+template <auto Member>
+[[nodiscard]] constexpr bytes_entry<Member> bytes_to_end(std::string_view name,
+                                                         std::string_view title) noexcept {
+  return {name, title};
+}
+
+/// Opaque bytes that hold a group function's parameter pairs: each a field's number (8 bits,
+/// counted from 1 as the named PGN's table counts its rows) in the PGN that the member `Pgn`
+/// holds, then that field's value, as wide as the field; `Count` holds how many pairs. The bytes
+/// are kept as sent; a reader that knows the named PGN's table can split them
+/// (`--format canboat` does).
+template <auto Member, auto Pgn, auto Count>
+struct pairs_entry : bytes_entry<Member> {
+  static constexpr auto pgn_member = Pgn;
+  static constexpr auto count_member = Count;
+  static constexpr bool is_pairs = true;
+};
+
+/// The bytes to the end of the payload as parameter pairs of the PGN `Pgn` holds (pairs_entry).
+template <auto Member, auto Pgn, auto Count>
+[[nodiscard]] constexpr pairs_entry<Member, Pgn, Count> parameter_pairs(
+    std::string_view name, std::string_view title) noexcept {
+  return {{name, title}};
+}
+
+namespace detail {
+/// Whether row type F is opaque bytes to the end of the payload.
+template <class F>
+concept bytes_row = requires {
+  F::is_bytes;
+};
+/// Whether row type F ends its table by taking the rest of the payload (a group, or bytes).
+template <class F>
+concept tail_row = group_row<F> || bytes_row<F>;
+}  // namespace detail
+
+/// The row that says which of a PGN's layouts a payload has (126208's function code says a
+/// request, a command, an acknowledgement...): the struct is the layout for `Value`. A set of
+/// PGNs gives a payload to the struct whose match row it holds; encode refuses another value
+/// there (wrong_address), so a struct cannot send another layout's function.
+template <auto Member, auto Value>
+struct match_entry : field_entry<Member> {
+  static constexpr std::int64_t match_raw = static_cast<std::int64_t>(Value);
+  static constexpr bool is_match = true;
+};
+
+template <auto Member, auto Value>
+[[nodiscard]] constexpr match_entry<Member, Value> match(std::string_view name,
+                                                         std::string_view title) noexcept {
+  return {{name, title}};
+}
+
+namespace detail {
+template <class F>
+concept match_row = requires {
+  F::is_match;
 };
 }  // namespace detail
 
@@ -1300,9 +1453,10 @@ struct pgn_description {
   static_assert(detail::text_rows_aligned<F...>(), "a string starts on a byte boundary");
   static_assert(fixed_layout || !(detail::row_is_flag_word<F>() || ...),
                 "a flag set cannot end a payload of varying length");
-  static_assert(fixed_layout || !(detail::group_row<F> || ...),
-                "a table with a counted string has no repeating group (the group starts at a "
-                "fixed offset)");
+  static_assert(fixed_layout || !(detail::tail_row<F> || ...),
+                "a table with a counted string has no repeating group or opaque bytes (they "
+                "start at a fixed offset)");
+  static_assert(((detail::match_row<F> ? 1 : 0) + ... + 0) <= 1, "a table has one match row");
   /// The payload's least length in bytes: every fixed row, every counted string empty, no
   /// repetition of a group.
   static constexpr std::size_t min_length =
@@ -1311,15 +1465,20 @@ struct pgn_description {
 
  private:
   using last_row = std::tuple_element_t<sizeof...(F) - 1, std::tuple<F...>>;
-  static_assert(((detail::group_row<F> ? 1 : 0) + ... + 0) <= (detail::group_row<last_row> ? 1 : 0),
-                "a repeating group must be the last row of its table");
+  static_assert(((detail::tail_row<F> ? 1 : 0) + ... + 0) <= (detail::tail_row<last_row> ? 1 : 0),
+                "a repeating group or opaque bytes must be the last row of its table");
   static constexpr std::size_t group_bytes = [] {
     if constexpr (detail::group_row<last_row>) {
       using G = typename last_row::value_type;
       static_assert(G::capacity == group_capacity<typename G::item_type>(bit_length / 8),
                     "a group's capacity is what a 223-byte payload holds after the fixed rows "
                     "(group_capacity<Item>(header bytes))");
-      return G::capacity * (last_row::item_bits / 8);
+      return (G::capacity * last_row::item_bits + 7) / 8;
+    } else if constexpr (detail::bytes_row<last_row>) {
+      using B = typename last_row::value_type;
+      static_assert(B::capacity == max_payload_bytes - bit_length / 8,
+                    "opaque bytes hold what a 223-byte payload holds after the fixed rows");
+      return B::capacity;
     } else {
       return std::size_t{0};
     }
@@ -1328,6 +1487,8 @@ struct pgn_description {
  public:
   /// Whether the table ends in a repeating group.
   static constexpr bool has_group = detail::group_row<last_row>;
+  /// Whether a match row says which of its PGN's layouts the table is (match<>).
+  static constexpr bool has_match = (detail::match_row<F> || ...);
   /// The payload's length in bytes: the largest, with a group at its capacity; with a counted
   /// string, the most it may be (a fast packet's 223 bytes at most).
   static constexpr std::size_t length =
@@ -1355,6 +1516,26 @@ concept pgn_like = requires {
 
 template <pgn_like P>
 using description_of = std::remove_cvref_t<decltype(P::n2k)>;
+
+/// Whether `payload` has P's layout: true unless P's table has a match row (match<>) and the
+/// payload holds another value there (or does not hold that row).
+template <pgn_like P>
+[[nodiscard]] constexpr bool layout_matches(std::span<const std::uint8_t> payload) noexcept {
+  if constexpr (!description_of<P>::has_match) {
+    return true;
+  } else {
+    bool ok = false;
+    P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
+      using F = std::remove_cvref_t<decltype(f)>;
+      if constexpr (detail::match_row<F>) {
+        ok = offset + F::bits <= payload.size() * 8 &&
+             seawire::detail::get_bits<payload_order>(payload, offset, F::bits) ==
+                 static_cast<std::uint64_t>(F::match_raw);
+      }
+    });
+    return ok;
+  }
+}
 
 /// The payload of P as bytes.
 template <pgn_like P>
@@ -1478,6 +1659,11 @@ template <pgn_like P>
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (detail::group_row<F>) {
       detail::decode_group<F>(payload, offset, out);
+    } else if constexpr (detail::bytes_row<F>) {
+      using B = typename F::value_type;
+      const std::size_t at = std::min<std::size_t>(offset / 8, payload.size());
+      const std::size_t n = std::min(B::capacity, payload.size() - at);
+      out.*F::member = B::from_bytes(payload.subspan(at, n)).value;
     } else if constexpr (detail::row_is_text<F>()) {
       if constexpr (!detail::row_is_variable<F>())  // a counted string: decode_varying
         out.*F::member = detail::read_fixed_text<typename F::value_type>(payload, offset / 8);
@@ -1588,6 +1774,9 @@ template <pgn_like P>
     if constexpr (!F::is_reserved) {
       const auto& v = msg.*F::member;
       if (!v.fits()) return fail(errc::value_too_large);
+      if constexpr (detail::match_row<F>) {
+        if (v.raw() != F::match_raw) return fail(errc::wrong_address);
+      }
       if constexpr (row_is_text<F>()) {
         put_text(r.value.bytes, at / 8, v);
       } else {
@@ -1617,6 +1806,11 @@ template <pgn_like P>
 ///                     count's row);
 ///   too_many_fields   a group holds more repetitions than its count field says (a count that
 ///                     is not a value says nothing: not available, out of range, reserved).
+///   wrong_address     the match row (match<>) holds another value than the one that makes the
+///                     struct this layout of its PGN;
+///   bad_length        a group of repetitions of less than a byte holds ones that do not
+///                     fill the last byte, and its count does not say exactly how many (the
+///                     group's row).
 template <pgn_like P>
 [[nodiscard]] constexpr result<encoded_payload<P>> encode(const P& msg) noexcept {
   if constexpr (!description_of<P>::fixed_layout) return detail::encode_varying<P>(msg);
@@ -1671,12 +1865,35 @@ template <pgn_like P>
         });
         at += F::item_bits;
       }
-      cut = at / 8;
+      // Repetitions of less than a byte that the count does not say exactly: a receiver
+      // counts them by the payload's length, so they must fill its last byte (else it reads
+      // the padding as one more).
+      if constexpr (F::counted && F::item_bits % 8 != 0) {
+        const auto& count = msg.*F::count;
+        const bool exact = count.has_value() && static_cast<std::size_t>(count.raw()) == g.size();
+        if (!exact && (g.size() * F::item_bits) % 8 != 0) fail(errc::bad_length, n, offset);
+      }
+      cut = (at + 7) / 8;  // repetitions of less than a byte: the last byte's rest as ones
+    } else if constexpr (detail::bytes_row<F>) {
+      const auto& b = msg.*F::member;
+      if (cut_row != 0) {
+        if (!b.empty()) fail(errc::missing_field, cut_row, cut_offset);
+        return;
+      }
+      std::size_t at = offset / 8;
+      for (const std::uint8_t byte : b.bytes()) r.value.bytes[at++] = byte;
+      cut = at;
     } else if constexpr (!F::is_reserved) {
       const auto& v = msg.*F::member;
       if (!v.fits()) {
         fail(errc::value_too_large, n, offset);
         return;
+      }
+      if constexpr (detail::match_row<F>) {
+        if (v.raw() != F::match_raw) {
+          fail(errc::wrong_address, n, offset);
+          return;
+        }
       }
       if (cut_row != 0) {
         if (v.state() != field_state::not_available) fail(errc::missing_field, cut_row, cut_offset);

@@ -287,6 +287,15 @@ constexpr void write_json_value(Sink& s, const G& g) noexcept {
   s.put(']');
 }
 
+/// Opaque bytes as JSON: a string of hex digits, two a byte, upper case ("" for none).
+template <nmea::json_style Style = nmea::json_style::json, json_sink Sink, class B>
+requires detail::is_opaque_bytes<B>
+constexpr void write_json_value(Sink& s, const B& b) noexcept {
+  s.put('"');
+  for (const std::uint8_t byte : b.bytes()) detail::put_hex_byte(s, byte, true);
+  s.put('"');
+}
+
 /// `{"type":"PGN<n>"` and the header members, without the closing brace.
 template <json_sink Sink>
 constexpr void write_json_header(Sink& s, const message_header& h) noexcept {
@@ -341,6 +350,8 @@ requires(Info::kind ==
       detail::csv_text(q, f.value);
       s.put('"');
     }
+  } else if constexpr (detail::is_opaque_bytes<V>) {
+    for (const std::uint8_t byte : f.value.bytes()) detail::put_hex_byte(s, byte, true);
   } else if constexpr (detail::is_group_value<V>) {
     // One cell: the repetitions separated by ';', a repetition's fields by '|' in wire order,
     // each as its own cell would be (empty when not available).
@@ -657,9 +668,23 @@ template <pgn_like P, class Lookup>
         r.field = n;
         r.column = column;
       }
+    } else if constexpr (detail::bytes_row<F>) {
+      if (r.ec != errc::ok) return;
+      const json_value v = lookup(std::string_view{}, f.name);
+      if (v.kind == json_kind::absent) return;  // no bytes
+      if (v.kind != json_kind::string) {
+        fail(errc::bad_text, n, offset);
+        return;
+      }
+      const auto b = F::value_type::from_hex(v.text);
+      if (b) r.value.*F::member = b.value;
+      fail(b.ec, n, offset);
     } else if constexpr (!F::is_reserved && !keyed_row<F>) {
       if (r.ec != errc::ok) return;
       const json_value v = lookup(std::string_view{}, f.name);
+      // A match row left out is the struct's own layout (its member's initial value).
+      if constexpr (detail::match_row<F>)
+        if (v.kind == json_kind::absent) return;
       fail(read_json_value(v, r.value.*F::member, f.name, lookup), n, offset);
     }
   });

@@ -8,6 +8,7 @@
 // direction, 130311's source lookups, 127489's reserved byte), these follow the wire:
 // docs/nmea2000.md.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -2287,6 +2288,205 @@ struct ais_class_b_static_data_b {
 };
 
 // ---------------------------------------------------------------------------------------------
+// ---- group function: one PGN, a layout per function code ----
+
+/// What a group function message (126208) does; its first byte, which picks the layout.
+enum class group_function : std::uint8_t {
+  request = 0,
+  command = 1,
+  acknowledge = 2,
+  read_fields = 3,
+  read_fields_reply = 4,
+  write_fields = 5,
+  write_fields_reply = 6,
+};
+constexpr std::array<std::string_view, 7> lookup_names(group_function) noexcept {
+  return {"request",           "command",      "acknowledge",       "read_fields",
+          "read_fields_reply", "write_fields", "write_fields_reply"};
+}
+constexpr std::array<std::string_view, 7> lookup_titles(group_function) noexcept {
+  return {"Request",           "Command",      "Acknowledge",       "Read Fields",
+          "Read Fields Reply", "Write Fields", "Write Fields Reply"};
+}
+
+/// The priority a command sets for the PGN it names (126208): 0 (highest) to 7, or leave it.
+enum class priority_setting : std::uint8_t {
+  priority_0 = 0,
+  priority_1 = 1,
+  priority_2 = 2,
+  priority_3 = 3,
+  priority_4 = 4,
+  priority_5 = 5,
+  priority_6 = 6,
+  priority_7 = 7,
+  leave_unchanged = 8,
+  reset_to_default = 9,
+};
+constexpr std::array<std::string_view, 10> lookup_names(priority_setting) noexcept {
+  return {"priority_0", "priority_1", "priority_2", "priority_3",      "priority_4",
+          "priority_5", "priority_6", "priority_7", "leave_unchanged", "reset_to_default"};
+}
+constexpr std::array<std::string_view, 10> lookup_titles(priority_setting) noexcept {
+  return {"0", "1", "2", "3", "4", "5", "6", "7", "Leave unchanged", "Reset to default"};
+}
+
+/// How a device answers for the PGN a request or command named (126208's acknowledgement).
+enum class pgn_error_code : std::uint8_t {
+  acknowledge = 0,
+  pgn_not_supported = 1,
+  pgn_not_available = 2,
+  access_denied = 3,
+  not_supported = 4,
+  tag_not_supported = 5,
+  read_or_write_not_supported = 6,
+};
+constexpr std::array<std::string_view, 7> lookup_names(pgn_error_code) noexcept {
+  return {"acknowledge",   "pgn_not_supported", "pgn_not_available",          "access_denied",
+          "not_supported", "tag_not_supported", "read_or_write_not_supported"};
+}
+constexpr std::array<std::string_view, 7> lookup_titles(pgn_error_code) noexcept {
+  return {"Acknowledge",   "PGN not supported", "PGN not available",          "Access denied",
+          "Not supported", "Tag not supported", "Read or Write not supported"};
+}
+
+/// How a device answers for the transmission interval or priority asked of it (126208).
+enum class interval_error_code : std::uint8_t {
+  acknowledge = 0,
+  not_supported_here = 1,
+  interval_too_low = 2,
+  access_denied = 3,
+  not_supported = 4,
+};
+constexpr std::array<std::string_view, 5> lookup_names(interval_error_code) noexcept {
+  return {"acknowledge", "not_supported_here", "interval_too_low", "access_denied",
+          "not_supported"};
+}
+constexpr std::array<std::string_view, 5> lookup_titles(interval_error_code) noexcept {
+  return {"Acknowledge", "Transmit Interval/Priority not supported", "Transmit Interval too low",
+          "Access denied", "Not supported"};
+}
+
+/// How a device answers for one parameter of a command (126208's acknowledgement).
+enum class parameter_error_code : std::uint8_t {
+  acknowledge = 0,
+  invalid_parameter_field = 1,
+  temporary_error = 2,
+  parameter_out_of_range = 3,
+  access_denied = 4,
+  not_supported = 5,
+  read_or_write_not_supported = 6,
+};
+constexpr std::array<std::string_view, 7> lookup_names(parameter_error_code) noexcept {
+  return {"acknowledge",
+          "invalid_parameter_field",
+          "temporary_error",
+          "parameter_out_of_range",
+          "access_denied",
+          "not_supported",
+          "read_or_write_not_supported"};
+}
+constexpr std::array<std::string_view, 7> lookup_titles(parameter_error_code) noexcept {
+  return {"Acknowledge",
+          "Invalid parameter field",
+          "Temporary error",
+          "Parameter out of range",
+          "Access denied",
+          "Not supported",
+          "Read or Write not supported"};
+}
+
+/// PGN 126208 Group Function, function code 0 (Request): fast packet, priority 3, addressed. Asks
+/// a device to send PGN `pgn` (now, or at an interval), optionally only messages whose fields
+/// hold the given values. The parameter pairs (a field's number in the requested PGN, then its
+/// value, as wide as that field) are kept as bytes: their layout is the requested PGN's. The
+/// interval 4294967.295 s (all ones) with offset 655.35 s means "send now, change nothing";
+/// seawire reads them as not available, as for any field.
+struct group_function_request {
+  lookup<nmea2000::group_function, 8> function_code = nmea2000::group_function::request;
+  unsigned_number<24> pgn;
+  unsigned_number<32, res::thousandth> transmission_interval_s;
+  unsigned_number<16, res::hundredth> transmission_interval_offset_s;
+  unsigned_number<8> number_of_parameters;
+  opaque_bytes<212> parameters;
+
+  using self = group_function_request;
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{126208, "group_function_request", "NMEA - Request group function", 3,
+               framing::fast_packet, 0},
+      match<&self::function_code, nmea2000::group_function::request>("function_code",
+                                                                     "Function Code"),
+      field<&self::pgn>("pgn", "PGN"),
+      field<&self::transmission_interval_s>("transmission_interval_s", "Transmission interval"),
+      field<&self::transmission_interval_offset_s>("transmission_interval_offset_s",
+                                                   "Transmission interval offset"),
+      field<&self::number_of_parameters>("number_of_parameters", "Number of Parameters"),
+      parameter_pairs<&self::parameters, &self::pgn, &self::number_of_parameters>("parameters",
+                                                                                  "Parameters"));
+  [[nodiscard]] constexpr bool operator==(const group_function_request&) const noexcept = default;
+};
+
+/// PGN 126208 Group Function, function code 1 (Command): fast packet, priority 3, addressed.
+/// Tells a device to change PGN `pgn`: its priority, and the fields the parameter pairs name (a
+/// field's number in that PGN, then its new value, as wide as that field; kept as bytes, as in a
+/// request). The device answers with an acknowledgement.
+struct group_function_command {
+  lookup<nmea2000::group_function, 8> function_code = nmea2000::group_function::command;
+  unsigned_number<24> pgn;
+  lookup<nmea2000::priority_setting, 4> priority;
+  unsigned_number<8> number_of_parameters;
+  opaque_bytes<217> parameters;
+
+  using self = group_function_command;
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{126208, "group_function_command", "NMEA - Command group function", 3,
+               framing::fast_packet, 0},
+      match<&self::function_code, nmea2000::group_function::command>("function_code",
+                                                                     "Function Code"),
+      field<&self::pgn>("pgn", "PGN"), field<&self::priority>("priority", "Priority"), reserved<4>,
+      field<&self::number_of_parameters>("number_of_parameters", "Number of Parameters"),
+      parameter_pairs<&self::parameters, &self::pgn, &self::number_of_parameters>("parameters",
+                                                                                  "Parameters"));
+  [[nodiscard]] constexpr bool operator==(const group_function_command&) const noexcept = default;
+};
+
+/// PGN 126208 Group Function, function code 2 (Acknowledge): fast packet, priority 3, addressed.
+/// A device's answer to a request or command for PGN `pgn`: a code for the PGN, one for the
+/// interval or priority, and one per parameter of the command, in its order: 4 bits each, two to
+/// a byte, the last byte's rest ones when the count is odd.
+struct group_function_acknowledge {
+  /// The answer for one parameter.
+  struct parameter_answer {
+    lookup<nmea2000::parameter_error_code, 4> parameter;
+
+    static constexpr auto n2k_item =
+        describe_item(field<&parameter_answer::parameter>("parameter", "Parameter"));
+    [[nodiscard]] constexpr bool operator==(const parameter_answer&) const noexcept = default;
+  };
+
+  lookup<nmea2000::group_function, 8> function_code = nmea2000::group_function::acknowledge;
+  unsigned_number<24> pgn;
+  lookup<nmea2000::pgn_error_code, 4> pgn_error_code;
+  lookup<nmea2000::interval_error_code, 4> transmission_interval_priority_error_code;
+  unsigned_number<8> number_of_parameters;
+  group<parameter_answer, group_capacity<parameter_answer>(6)> parameters;
+
+  using self = group_function_acknowledge;
+  static constexpr auto n2k = describe_pgn(
+      pgn_info{126208, "group_function_acknowledge", "NMEA - Acknowledge group function", 3,
+               framing::fast_packet, 0},
+      match<&self::function_code, nmea2000::group_function::acknowledge>("function_code",
+                                                                         "Function Code"),
+      field<&self::pgn>("pgn", "PGN"),
+      field<&self::pgn_error_code>("pgn_error_code", "PGN error code"),
+      field<&self::transmission_interval_priority_error_code>(
+          "transmission_interval_priority_error_code", "Transmission interval/Priority error code"),
+      field<&self::number_of_parameters>("number_of_parameters", "Number of Parameters"),
+      repeating<&self::parameters, &self::number_of_parameters>("parameters", "Parameter"));
+  [[nodiscard]] constexpr bool operator==(const group_function_acknowledge&) const noexcept =
+      default;
+};
+
+// ---------------------------------------------------------------------------------------------
 // sets of PGNs
 
 /// A set of PGN structs: what a receiver knows, looked up by PGN number.
@@ -2297,23 +2497,32 @@ struct pgn_list {
   [[nodiscard]] static constexpr bool knows(std::uint32_t pgn) noexcept {
     return ((P::n2k.info.pgn == pgn) || ...);
   }
-  /// The description's facts for `pgn`, or nullopt for a PGN of no struct here.
+  /// How many structs here have PGN `pgn`: more than one for a PGN whose layout a field picks
+  /// (match<>, as 126208's function code does).
+  [[nodiscard]] static constexpr std::size_t layouts(std::uint32_t pgn) noexcept {
+    return (std::size_t{0} + ... + (P::n2k.info.pgn == pgn ? 1U : 0U));
+  }
+  /// The description's facts for `pgn` (of the first of its layouts), or nullopt for a PGN of
+  /// no struct here.
   [[nodiscard]] static constexpr std::optional<pgn_info> info(std::uint32_t pgn) noexcept {
     std::optional<pgn_info> out;
     (void)((P::n2k.info.pgn == pgn ? (out = P::n2k.info, true) : false) || ...);
     return out;
   }
-  /// The payload length of `pgn` in bytes; 0 when unknown.
+  /// The payload length of `pgn` in bytes (of its longest layout); 0 when unknown.
   [[nodiscard]] static constexpr std::size_t length(std::uint32_t pgn) noexcept {
     std::size_t out = 0;
-    (void)((P::n2k.info.pgn == pgn ? (out = description_of<P>::length, true) : false) || ...);
+    ((out = P::n2k.info.pgn == pgn ? std::max(out, description_of<P>::length) : out), ...);
     return out;
   }
-  /// Decodes `payload` as the struct for `pgn` and calls fn with it; false (fn not called) when
-  /// no struct here has that PGN.
+  /// Decodes `payload` as the struct for `pgn` (of a PGN with several layouts, the one the
+  /// payload matches: layout_matches) and calls fn with it; false (fn not called) when no struct
+  /// here has that PGN and layout.
   template <class Fn>
   static constexpr bool visit(std::uint32_t pgn, std::span<const std::uint8_t> payload, Fn&& fn) {
-    return ((P::n2k.info.pgn == pgn ? (fn(decode<P>(payload)), true) : false) || ...);
+    return ((P::n2k.info.pgn == pgn && layout_matches<P>(payload) ? (fn(decode<P>(payload)), true)
+                                                                  : false) ||
+            ...);
   }
   /// fn(tag) for every struct, tag being a default-constructed P.
   template <class Fn>
