@@ -10,12 +10,12 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "n2k_json_support.hpp"
 #include "seawire/nmea/json.hpp"
 #include "seawire/nmea2000/field.hpp"
 #include "seawire/nmea2000/json.hpp"
@@ -26,6 +26,9 @@ namespace n2k = seawire::nmea2000;
 using seawire::errc;
 
 namespace {
+
+using support::fake_json;
+using support::json_of;
 
 std::vector<std::uint8_t> bytes_of(std::string_view hex) {
   std::vector<std::uint8_t> out;
@@ -44,35 +47,6 @@ std::uint64_t le(const std::vector<std::uint8_t>& p, std::size_t at, std::size_t
   return v;
 }
 
-template <class Msg>
-std::string json_of(const Msg& m) {
-  seawire::nmea::json_buffer<2048> j;
-  n2k::write_json(j, m);
-  REQUIRE(!j.overflow());
-  return std::string(j.view());
-}
-
-// A JSON object as seawire-encode's reader gives it to read_json (members by key; a group's
-// element's members by "i.member").
-struct fake_json {
-  struct entry {
-    std::string object;
-    std::string key;
-    seawire::nmea::json_value value;
-  };
-  std::vector<entry> entries;
-  std::deque<std::string> texts;
-  void add(std::string_view object, std::string_view key, seawire::nmea::json_kind kind,
-           std::string_view text) {
-    texts.emplace_back(text);
-    entries.push_back({std::string(object), std::string(key), {kind, texts.back()}});
-  }
-  seawire::nmea::json_value operator()(std::string_view object, std::string_view key) const {
-    for (const entry& e : entries)
-      if (e.object == object && e.key == key) return e.value;
-    return {};
-  }
-};
 using seawire::nmea::json_kind;
 
 using request = n2k::group_function_request;

@@ -11,7 +11,6 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <span>
 #include <string>
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "hex_of.hpp"
+#include "n2k_json_support.hpp"
 #include "seawire/nmea/csv.hpp"
 #include "seawire/nmea/decimal.hpp"
 #include "seawire/nmea/json.hpp"
@@ -34,6 +34,9 @@ using support::hex_bytes;
 
 namespace {
 
+using support::fake_json;
+using support::json_of;
+
 // The hand decode: `n` bytes at byte `at`, least significant first.
 std::uint64_t le(const std::vector<std::uint8_t>& p, std::size_t at, std::size_t n) {
   std::uint64_t v = 0;
@@ -48,14 +51,6 @@ std::int64_t le_signed(const std::vector<std::uint8_t>& p, std::size_t at, std::
                          : static_cast<std::int64_t>(v);
 }
 
-template <class Msg>
-std::string json_of(const Msg& m) {
-  seawire::nmea::json_buffer<8192> j;
-  n2k::write_json(j, m);
-  REQUIRE(!j.overflow());
-  return std::string(j.view());
-}
-
 template <class V>
 std::string text_of(const V& v) {
   seawire::nmea::json_buffer<64> j;
@@ -63,27 +58,6 @@ std::string text_of(const V& v) {
   return std::string(j.view());
 }
 
-// A JSON object as seawire-encode's reader gives it to read_json: members by key, array elements
-// by "i", a group element's members by "i.member" (written out here by hand).
-struct fake_json {
-  struct entry {
-    std::string object;
-    std::string key;
-    seawire::nmea::json_value value;
-  };
-  std::vector<entry> entries;
-  std::deque<std::string> texts;  // views into them stay valid as more are added
-  void add(std::string_view object, std::string_view key, seawire::nmea::json_kind kind,
-           std::string_view text) {
-    texts.emplace_back(text);
-    entries.push_back({std::string(object), std::string(key), {kind, texts.back()}});
-  }
-  seawire::nmea::json_value operator()(std::string_view object, std::string_view key) const {
-    for (const entry& e : entries)
-      if (e.object == object && e.key == key) return e.value;
-    return {};
-  }
-};
 using seawire::nmea::json_kind;
 
 // 129540 from canboat's samples/129540.raw (216 bytes): 18 satellites in view, the 18th cut short
