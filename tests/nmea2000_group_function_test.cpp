@@ -113,10 +113,10 @@ TEST_CASE("group function: the function code picks the layout", "[group_function
   CHECK(layout_of(bytes_of(acknowledge_hex)) == "group_function_acknowledge");
   // Read Fields (3) to Write Fields Reply (6), and codes the standard has not named: no layout
   // here, so the payload comes out raw.
-  for (const std::uint8_t code : {3, 4, 5, 6, 7, 0x20, 0xFF}) {
+  for (const int code : {3, 4, 5, 6, 7, 0x20, 0xFF}) {
     std::vector<std::uint8_t> p = bytes_of(command_hex);
-    p[0] = code;
-    INFO(int{code});
+    p[0] = static_cast<std::uint8_t>(code);
+    INFO(code);
     CHECK(layout_of(p).empty());
   }
   // An empty payload holds no function code.

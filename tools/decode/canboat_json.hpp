@@ -716,9 +716,9 @@ inline pair_value put_pair_value(fields_text& item, std::uint32_t pgn, std::int6
         for (unsigned i = 0; i < have; ++i) {
           const unsigned from = at + i;
           const unsigned to = L::bit_offset + i;
-          const auto bit = static_cast<std::uint8_t>((payload[from / 8] >> (from % 8)) & 1U);
-          q[to / 8] =
-              static_cast<std::uint8_t>((q[to / 8] & ~(1U << (to % 8))) | (bit << (to % 8)));
+          const unsigned bit = (static_cast<unsigned>(payload[from / 8]) >> (from % 8)) & 1U;
+          q[to / 8] = static_cast<std::uint8_t>(
+              (static_cast<unsigned>(q[to / 8]) & ~(1U << (to % 8))) | (bit << (to % 8)));
         }
         const std::span<const std::uint8_t> qs(q.data(), (L::bit_offset + have + 7) / 8);
         const Q decoded = nmea2000::decode<Q>(qs);

@@ -235,9 +235,10 @@ class decoder {
       // The struct's name; of a PGN with several layouts, what their names share
       // ("group_function").
       std::optional<std::string_view> named;
+      const std::uint32_t number = pgn;  // (a lambda cannot capture a structured binding)
       n2k_pgns::for_each_type([&](const auto& tag) {
         using P = std::remove_cvref_t<decltype(tag)>;
-        if (P::n2k.info.pgn != pgn) return;
+        if (P::n2k.info.pgn != number) return;
         const std::string_view name = P::n2k.info.name;
         if (!named) {
           named = name;

@@ -1708,7 +1708,8 @@ namespace detail {
 template <class F, class V, std::size_t N>
 constexpr void encode_field(std::array<std::uint8_t, N>& bytes, unsigned offset,
                             const V& v) noexcept {
-  const std::uint64_t mask = F::bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << F::bits) - 1;
+  std::uint64_t mask = ~std::uint64_t{0};
+  if constexpr (F::bits < 64) mask = (std::uint64_t{1} << F::bits) - 1;
   seawire::detail::put_bits<payload_order>(bytes, offset, F::bits,
                                            static_cast<std::uint64_t>(v.raw()) & mask);
 }
