@@ -24,6 +24,11 @@
 //                                     of every satellite read
 //   n2k/mechanism/groups/repeating_to_end  decode of PGN 126464 PGN List with 30 PGNs (91 bytes:
 //                                     24-bit PGNs to the end of the payload), every PGN read
+//   n2k/mechanism/layouts/126208      registry::pgns::visit of PGN 126208 Group Function
+//                                     payloads, a third each a request, a command (0..16 bytes of
+//                                     parameter pairs, kept as bytes) and an acknowledgement
+//                                     (0..8 4-bit codes): the layout picked by the function code
+//                                     among the set's structs, decoded, every field read
 //   n2k/mechanism/is_fast_packet_pgn  the standard's fast-packet list looked up (binary search)
 //                                     for 1,000 PGNs of a bus
 //   n2k/mechanism/fast_packet/undescribed  log_reader::read_line of `candump -L` lines of a
@@ -122,10 +127,12 @@ V random_value(sb::rng& r) noexcept {
   return r.chance(0.1) ? V{} : V::from_raw(raw);
 }
 
-/// Whether row type F of a table holds a raw value (not reserved bits, a string or a group).
+/// Whether row type F of a table holds a raw value (not reserved bits, a string, a group or
+/// bytes).
 template <class F>
 constexpr bool is_raw_row() noexcept {
-  if constexpr (F::is_reserved || requires { F::is_group; }) {
+  if constexpr (
+      F::is_reserved || requires { F::is_group; } || requires { F::is_bytes; }) {
     return false;
   } else {
     return !n2k::text_value<typename F::value_type>;
@@ -259,6 +266,8 @@ template <class V>
     s.bits += t.size() + (t.empty() ? 0U : static_cast<unsigned char>(t[0]));
   } else if constexpr (requires { v.items(); }) {
     for (const auto& item : v) read_fields(s, item, item.n2k_item);  // a group: every repetition
+  } else if constexpr (requires { v.bytes(); }) {
+    for (const std::uint8_t b : v.bytes()) s.bits += b;  // bytes kept as sent
   } else {
     s.sum += v.value().value_or(0.0);  // a number in its unit
   }
@@ -348,6 +357,57 @@ void repeating_to_end(benchmark::State& state) {
                                     30);
 }
 
+/// The fields a group function's layout does not draw as raw values: its own function code,
+/// 0..16 bytes of parameter pairs or 0..8 acknowledgement codes.
+struct group_function_fill {
+  template <class P>
+  void operator()(sb::rng& r, P& m) const {
+    m.function_code = P{}.function_code;
+    const auto n = static_cast<std::size_t>(r.between(0, 8));
+    m.number_of_parameters =
+        decltype(m.number_of_parameters)::from_raw(static_cast<std::int64_t>(n));
+    if constexpr (requires { m.parameters.bytes(); }) {
+      std::array<std::uint8_t, 16> b{};
+      for (std::size_t i = 0; i < 2 * n; ++i) b[i] = static_cast<std::uint8_t>(r.next());
+      m.parameters = decltype(m.parameters)::from_bytes(std::span(b).first(2 * n)).value;
+    } else {
+      m.parameters.clear();
+      for (std::size_t i = 0; i < n; ++i) {
+        typename decltype(m.parameters)::item_type item;
+        item.parameter = decltype(item.parameter)::from_raw(r.between(0, 6));
+        (void)m.parameters.push_back(item);
+      }
+    }
+  }
+};
+
+void layouts(benchmark::State& state) {
+  const auto requests = corpus_of<n2k::group_function_request>(126208, group_function_fill{});
+  const auto commands = corpus_of<n2k::group_function_command>(126209, group_function_fill{});
+  const auto acks = corpus_of<n2k::group_function_acknowledge>(126210, group_function_fill{});
+  std::vector<std::vector<std::uint8_t>> corpus;
+  for (std::size_t i = 0; i < frame_count; ++i)
+    corpus.push_back(i % 3 == 0 ? requests[i] : i % 3 == 1 ? commands[i] : acks[i]);
+  sb::sink s;
+  std::size_t unmatched = 0;
+  const std::uint64_t before = sb::allocation_count();
+  for (auto _ : state) {
+    for (const std::vector<std::uint8_t>& payload : corpus) {
+      const bool known = registry::pgns::visit(126208, payload, [&](const auto& m) {
+        if constexpr (requires { m.function_code; }) read_fields(s, m, m.n2k);  // 126208's
+      });
+      unmatched += known ? 0 : 1;
+      benchmark::DoNotOptimize(s);
+    }
+  }
+  const std::uint64_t allocations = sb::allocation_count() - before;
+  std::size_t bytes = 0;
+  for (const std::vector<std::uint8_t>& payload : corpus) bytes += payload.size();
+  sb::report(state, corpus.size(), bytes, allocations);
+  if (unmatched != 0) state.SkipWithError("a payload matched no layout");
+  if (allocations != 0) state.SkipWithError("decode allocated");
+}
+
 // ---------------------------------------------------------------------------------------------
 // framing
 
@@ -431,6 +491,7 @@ BENCHMARK(counted_ascii)->Name("n2k/mechanism/strings/counted_ascii");
 BENCHMARK(counted_utf16)->Name("n2k/mechanism/strings/counted_utf16");
 BENCHMARK(repeating)->Name("n2k/mechanism/groups/repeating");
 BENCHMARK(repeating_to_end)->Name("n2k/mechanism/groups/repeating_to_end");
+BENCHMARK(layouts)->Name("n2k/mechanism/layouts/126208");
 BENCHMARK(is_fast)->Name("n2k/mechanism/is_fast_packet_pgn");
 BENCHMARK(undescribed_fast)->Name("n2k/mechanism/fast_packet/undescribed");
 
