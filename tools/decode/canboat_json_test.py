@@ -98,7 +98,11 @@ def same_value(key, ours, theirs, where):
 HEX_BYTES = re.compile(r"^[0-9A-F]{2}( [0-9A-F]{2})*$")
 
 
-def same_pairs(ours, theirs, where):
+def proprietary(pgn):
+    return 65280 <= pgn <= 65535 or 126720 <= pgn <= 126975 or 130816 <= pgn <= 131071
+
+
+def same_pairs(ours, theirs, where, pgn):
     """A group function's parameter pairs: pair for pair the same up to the first value of a
     field seawire has no description of (a PGN it does not describe, past a proprietary PGN's
     manufacturer and industry codes), which ours gives as bytes with the rest of the payload and
@@ -109,8 +113,10 @@ def same_pairs(ours, theirs, where):
         t = theirs[i] if i < len(theirs) else None
         if o == t:
             continue
+        # a proprietary PGN's manufacturer, reserved bits and industry (fields 1-3) are known
+        known = proprietary(pgn) and isinstance(o.get("Parameter"), int) and o["Parameter"] <= 3
         check(i == len(ours) - 1 and t is not None and o.get("Parameter") == t.get("Parameter")
-              and HEX_BYTES.match(str(o.get("Value", ""))) is not None,
+              and HEX_BYTES.match(str(o.get("Value", ""))) is not None and not known,
               f"{where}: pair {i + 1} {o!r} != {t!r}")
         return
     check(len(ours) == len(theirs), f"{where}: {len(ours)} pairs, analyzer {len(theirs)}")
@@ -127,7 +133,7 @@ def same_message(ours, theirs, text, where):
     pairs = ours.get("pgn") == 126208 and a.get("Function Code") in ("Request", "Command")
     for key in b:
         if key in a and key == "list" and pairs:
-            same_pairs(a[key], b[key], where)
+            same_pairs(a[key], b[key], where, a.get("PGN", -1))
         elif key in a:
             same_value(key, a[key], b[key], where)
 
