@@ -8,6 +8,7 @@
 
 #include <array>
 #include <chrono>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -65,9 +66,15 @@ struct sensor_values {
   [[nodiscard]] constexpr bool operator==(const sensor_values&) const noexcept = default;
 };
 
+struct sensor_frame_raw;
+
 namespace detail {
 template <class T>
 inline constexpr T not_available = std::numeric_limits<T>::max();
+
+template <auto ValueMember>
+[[nodiscard]] constexpr seawire::detail::member_type_t<ValueMember> physical_of(
+    const sensor_frame_raw& frame) noexcept;
 }  // namespace detail
 
 /// The payload as the wire carries it, in wire order. Each member: field number, spec name,
@@ -93,28 +100,86 @@ struct sensor_frame_raw {
   std::int16_t air_temp = detail::not_available<std::int16_t>;          // 18 0.1 degC
   std::uint16_t pressure = detail::not_available<std::uint16_t>;        // 19 1 hPa
 
-  // Physical values; nullopt when the field says "not available".
-  [[nodiscard]] constexpr std::optional<double> heading_deg() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> latitude_deg() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> longitude_deg() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> sog_mps() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> cog_deg() const noexcept;
+  // Physical values, each read through its row of sensor_fields; nullopt when the field says
+  // "not available". (Templates only so that they are compiled where called, after the table.)
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> heading_deg() const noexcept {
+    return detail::physical_of<&sensor_values::heading_deg>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> latitude_deg() const noexcept {
+    return detail::physical_of<&sensor_values::latitude_deg>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> longitude_deg() const noexcept {
+    return detail::physical_of<&sensor_values::longitude_deg>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> sog_mps() const noexcept {
+    return detail::physical_of<&sensor_values::sog_mps>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> cog_deg() const noexcept {
+    return detail::physical_of<&sensor_values::cog_deg>(static_cast<const F&>(*this));
+  }
   /// Also nullopt for a time past the year 292 million, which time_ms cannot hold.
-  [[nodiscard]] constexpr std::optional<time_ms> gps_time() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> alt_msl_m() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> geoid_sep_m() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> hdop() const noexcept;
-  [[nodiscard]] constexpr std::optional<int> fix_quality() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> motor_pct() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> rudder_pct() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> stw_mps() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> wind_speed_abs_mps() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> wind_dir_abs_deg() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> wind_speed_rel_mps() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> wind_dir_rel_deg() const noexcept;
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<time_ms> gps_time() const noexcept {
+    return detail::physical_of<&sensor_values::gps_time>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> alt_msl_m() const noexcept {
+    return detail::physical_of<&sensor_values::alt_msl_m>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> geoid_sep_m() const noexcept {
+    return detail::physical_of<&sensor_values::geoid_sep_m>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> hdop() const noexcept {
+    return detail::physical_of<&sensor_values::hdop>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<int> fix_quality() const noexcept {
+    return detail::physical_of<&sensor_values::fix_quality>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> motor_pct() const noexcept {
+    return detail::physical_of<&sensor_values::motor_pct>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> rudder_pct() const noexcept {
+    return detail::physical_of<&sensor_values::rudder_pct>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> stw_mps() const noexcept {
+    return detail::physical_of<&sensor_values::stw_mps>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> wind_speed_abs_mps() const noexcept {
+    return detail::physical_of<&sensor_values::wind_speed_abs_mps>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> wind_dir_abs_deg() const noexcept {
+    return detail::physical_of<&sensor_values::wind_dir_abs_deg>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> wind_speed_rel_mps() const noexcept {
+    return detail::physical_of<&sensor_values::wind_speed_rel_mps>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> wind_dir_rel_deg() const noexcept {
+    return detail::physical_of<&sensor_values::wind_dir_rel_deg>(static_cast<const F&>(*this));
+  }
   /// Both 0x7FFF and 0xFFFF are "not available": see the air_temp_c row of sensor_fields.
-  [[nodiscard]] constexpr std::optional<double> air_temp_c() const noexcept;
-  [[nodiscard]] constexpr std::optional<double> pressure_hpa() const noexcept;
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> air_temp_c() const noexcept {
+    return detail::physical_of<&sensor_values::air_temp_c>(static_cast<const F&>(*this));
+  }
+  template <class F = sensor_frame_raw>
+  [[nodiscard]] constexpr std::optional<double> pressure_hpa() const noexcept {
+    return detail::physical_of<&sensor_values::pressure_hpa>(static_cast<const F&>(*this));
+  }
 
   [[nodiscard]] constexpr bool operator==(const sensor_frame_raw&) const noexcept = default;
 };
@@ -234,53 +299,72 @@ struct sensor_field {
   }
 };
 
-namespace detail {
+/// What a row of the frame's table can say besides its name: `field<&raw, &value>("name",
+/// facts...)`.
+namespace fact {
+struct range {
+  value_range r;
+  template <class F>
+  constexpr void apply(F& f) const noexcept {
+    f.allowed = r;
+  }
+};
+struct json_key {
+  std::string_view key;
+  template <class F>
+  constexpr void apply(F& f) const noexcept {
+    f.json_key = key;
+  }
+};
+struct divisor {
+  std::int64_t n;
+  template <class F>
+  constexpr void apply(F& f) const noexcept {
+    f.divisor = n;
+  }
+};
+template <class Raw>
+struct also_not_available {
+  Raw raw;
+  template <class F>
+  constexpr void apply(F& f) const noexcept {
+    static_assert(std::is_same_v<Raw, typename F::raw_type>,
+                  "a raw value of the field's wire type");
+    f.also_not_available = raw;
+  }
+};
+}  // namespace fact
 
-inline constexpr value_range degrees{0, 360};  // "Degrees: 0-360" in the spec, both ends allowed
+/// What a sender may put in the field, in whole physical units, both ends allowed.
+[[nodiscard]] constexpr fact::range in_range(std::int64_t lo, std::int64_t hi) noexcept {
+  return {{lo, hi}};
+}
+/// The key in JSON, where it is not the field's name.
+[[nodiscard]] constexpr fact::json_key json_key(std::string_view key) noexcept { return {key}; }
+/// Wire counts per physical unit, a power of ten (10: tenths): physical = raw / n.
+[[nodiscard]] constexpr fact::divisor divisor(std::int64_t n) noexcept { return {n}; }
+/// A raw value read as "not available" besides the wire type's maximum.
+template <std::integral Raw>
+[[nodiscard]] constexpr fact::also_not_available<Raw> also_not_available(Raw raw) noexcept {
+  return {raw};
+}
 
-consteval auto make_sensor_fields() {
-  using r = sensor_frame_raw;
-  using v = sensor_values;
-  constexpr std::int64_t tenths = 10;
-  constexpr std::int64_t millionths = 1'000'000;
-  // Rows follow the spec's table; a row's position (1-based) is the field number in errors.
-  auto fields = std::tuple{
-      sensor_field<&r::heading, &v::heading_deg>{.name = "heading_deg", .allowed = degrees},
-      // JSON "latitude" and "longitude", as every message.
-      sensor_field<&r::lat, &v::latitude_deg>{.name = "latitude_deg",
-                                              .json_key = "latitude",
-                                              .divisor = millionths,
-                                              .allowed = {{-90, 90}}},
-      sensor_field<&r::lon, &v::longitude_deg>{.name = "longitude_deg",
-                                               .json_key = "longitude",
-                                               .divisor = millionths,
-                                               .allowed = {{-180, 180}}},
-      sensor_field<&r::sog, &v::sog_mps>{.name = "sog_mps", .divisor = tenths},
-      sensor_field<&r::cog, &v::cog_deg>{.name = "cog_deg", .allowed = degrees},
-      sensor_field<&r::gps_time_ms, &v::gps_time>{.name = "gps_time"},
-      sensor_field<&r::alt_msl, &v::alt_msl_m>{.name = "alt_msl_m", .divisor = tenths},
-      sensor_field<&r::geoid_sep, &v::geoid_sep_m>{.name = "geoid_sep_m", .divisor = tenths},
-      // The spec's HDOP range 0-1 is not enforced: real fixes have more.
-      sensor_field<&r::hdop_tenths, &v::hdop>{.name = "hdop", .divisor = tenths},
-      // "as defined by GPGGA": NMEA 0183 defines qualities 0 (invalid) to 8 (simulation).
-      sensor_field<&r::gga_quality, &v::fix_quality>{.name = "fix_quality", .allowed = {{0, 8}}},
-      sensor_field<&r::motor, &v::motor_pct>{.name = "motor_pct", .allowed = {{-100, 100}}},
-      sensor_field<&r::rudder, &v::rudder_pct>{.name = "rudder_pct", .allowed = {{-100, 100}}},
-      sensor_field<&r::stw, &v::stw_mps>{.name = "stw_mps", .divisor = tenths},
-      sensor_field<&r::wind_speed_abs, &v::wind_speed_abs_mps>{.name = "wind_speed_abs_mps",
-                                                               .divisor = tenths},
-      sensor_field<&r::wind_dir_abs, &v::wind_dir_abs_deg>{.name = "wind_dir_abs_deg",
-                                                           .allowed = degrees},
-      sensor_field<&r::wind_speed_rel, &v::wind_speed_rel_mps>{.name = "wind_speed_rel_mps",
-                                                               .divisor = tenths},
-      sensor_field<&r::wind_dir_rel, &v::wind_dir_rel_deg>{.name = "wind_dir_rel_deg",
-                                                           .allowed = degrees},
-      // 0xFFFF, the spec example's "not reported", is not available too; nullopt sent as 0x7FFF.
-      sensor_field<&r::air_temp, &v::air_temp_c>{
-          .name = "air_temp_c", .divisor = tenths, .also_not_available = std::int16_t{-1}},
-      sensor_field<&r::pressure, &v::pressure_hpa>{.name = "pressure_hpa"},
-  };
-  // Each field starts where the one before ends; the JSON key is the name unless a row says.
+/// A row of the frame's table: the raw member, the sensor_values member, the name, the facts.
+template <auto RawMember, auto ValueMember, class... Facts>
+[[nodiscard]] consteval sensor_field<RawMember, ValueMember> field(std::string_view name,
+                                                                   Facts... facts) noexcept {
+  static_assert((requires(sensor_field<RawMember, ValueMember> & f) { facts.apply(f); } && ...),
+                "a frame row's facts are in_range, divisor, json_key and also_not_available");
+  sensor_field<RawMember, ValueMember> f{.name = name};
+  (facts.apply(f), ...);
+  return f;
+}
+
+/// The frame's table from its rows in wire order: each field starts where the one before ends,
+/// after the 8-byte header; the JSON key is the name unless a row says.
+template <class... Fields>
+[[nodiscard]] consteval std::tuple<Fields...> describe_frame(Fields... rows) noexcept {
+  std::tuple<Fields...> fields{rows...};
   seawire::detail::for_each_row(fields, 8 * header_size, [](auto& field, unsigned bit, auto) {
     field.offset = bit / 8;
     if (field.json_key.empty()) field.json_key = field.name;
@@ -288,10 +372,41 @@ consteval auto make_sensor_fields() {
   return fields;
 }
 
-}  // namespace detail
-
-/// The payload layout, one sensor_field per field in the spec's order (a std::tuple).
-inline constexpr auto sensor_fields = detail::make_sensor_fields();
+/// The payload layout, one sensor_field per field in the spec's order (a std::tuple); a row's
+/// position (1-based) is the field number in errors.
+inline constexpr auto sensor_fields = [] {
+  using r = sensor_frame_raw;
+  using v = sensor_values;
+  constexpr auto degrees = in_range(0, 360);  // "Degrees: 0-360" in the spec, both ends
+  constexpr auto tenths = divisor(10);
+  return describe_frame(
+      field<&r::heading, &v::heading_deg>("heading_deg", degrees),
+      // JSON "latitude" and "longitude", as every message.
+      field<&r::lat, &v::latitude_deg>("latitude_deg", json_key("latitude"), divisor(1'000'000),
+                                       in_range(-90, 90)),
+      field<&r::lon, &v::longitude_deg>("longitude_deg", json_key("longitude"), divisor(1'000'000),
+                                        in_range(-180, 180)),
+      field<&r::sog, &v::sog_mps>("sog_mps", tenths),
+      field<&r::cog, &v::cog_deg>("cog_deg", degrees),
+      field<&r::gps_time_ms, &v::gps_time>("gps_time"),
+      field<&r::alt_msl, &v::alt_msl_m>("alt_msl_m", tenths),
+      field<&r::geoid_sep, &v::geoid_sep_m>("geoid_sep_m", tenths),
+      // The spec's HDOP range 0-1 is not enforced: real fixes have more.
+      field<&r::hdop_tenths, &v::hdop>("hdop", tenths),
+      // "as defined by GPGGA": NMEA 0183 defines qualities 0 (invalid) to 8 (simulation).
+      field<&r::gga_quality, &v::fix_quality>("fix_quality", in_range(0, 8)),
+      field<&r::motor, &v::motor_pct>("motor_pct", in_range(-100, 100)),
+      field<&r::rudder, &v::rudder_pct>("rudder_pct", in_range(-100, 100)),
+      field<&r::stw, &v::stw_mps>("stw_mps", tenths),
+      field<&r::wind_speed_abs, &v::wind_speed_abs_mps>("wind_speed_abs_mps", tenths),
+      field<&r::wind_dir_abs, &v::wind_dir_abs_deg>("wind_dir_abs_deg", degrees),
+      field<&r::wind_speed_rel, &v::wind_speed_rel_mps>("wind_speed_rel_mps", tenths),
+      field<&r::wind_dir_rel, &v::wind_dir_rel_deg>("wind_dir_rel_deg", degrees),
+      // 0xFFFF, the spec example's "not reported", is not available too; nullopt sent as 0x7FFF.
+      field<&r::air_temp, &v::air_temp_c>("air_temp_c", tenths,
+                                          also_not_available(std::int16_t{-1})),
+      field<&r::pressure, &v::pressure_hpa>("pressure_hpa"));
+}();
 
 namespace detail {
 
@@ -468,65 +583,6 @@ constexpr void for_each_field(const sensor_frame_raw& frame, Fn&& fn) {
     fn(field.name, field.to_physical(frame.*field_type::raw_member));
     return true;
   });
-}
-
-// The accessors: each is its table row read through detail::physical_of.
-constexpr std::optional<double> sensor_frame_raw::heading_deg() const noexcept {
-  return detail::physical_of<&sensor_values::heading_deg>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::latitude_deg() const noexcept {
-  return detail::physical_of<&sensor_values::latitude_deg>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::longitude_deg() const noexcept {
-  return detail::physical_of<&sensor_values::longitude_deg>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::sog_mps() const noexcept {
-  return detail::physical_of<&sensor_values::sog_mps>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::cog_deg() const noexcept {
-  return detail::physical_of<&sensor_values::cog_deg>(*this);
-}
-constexpr std::optional<time_ms> sensor_frame_raw::gps_time() const noexcept {
-  return detail::physical_of<&sensor_values::gps_time>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::alt_msl_m() const noexcept {
-  return detail::physical_of<&sensor_values::alt_msl_m>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::geoid_sep_m() const noexcept {
-  return detail::physical_of<&sensor_values::geoid_sep_m>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::hdop() const noexcept {
-  return detail::physical_of<&sensor_values::hdop>(*this);
-}
-constexpr std::optional<int> sensor_frame_raw::fix_quality() const noexcept {
-  return detail::physical_of<&sensor_values::fix_quality>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::motor_pct() const noexcept {
-  return detail::physical_of<&sensor_values::motor_pct>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::rudder_pct() const noexcept {
-  return detail::physical_of<&sensor_values::rudder_pct>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::stw_mps() const noexcept {
-  return detail::physical_of<&sensor_values::stw_mps>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::wind_speed_abs_mps() const noexcept {
-  return detail::physical_of<&sensor_values::wind_speed_abs_mps>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::wind_dir_abs_deg() const noexcept {
-  return detail::physical_of<&sensor_values::wind_dir_abs_deg>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::wind_speed_rel_mps() const noexcept {
-  return detail::physical_of<&sensor_values::wind_speed_rel_mps>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::wind_dir_rel_deg() const noexcept {
-  return detail::physical_of<&sensor_values::wind_dir_rel_deg>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::air_temp_c() const noexcept {
-  return detail::physical_of<&sensor_values::air_temp_c>(*this);
-}
-constexpr std::optional<double> sensor_frame_raw::pressure_hpa() const noexcept {
-  return detail::physical_of<&sensor_values::pressure_hpa>(*this);
 }
 
 }  // namespace seawire::anello
