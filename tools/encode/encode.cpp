@@ -575,19 +575,18 @@ class encoder {
       });
       if (!ok) return;
     } else {
+      using payload_bytes = nmea2000::opaque_bytes<nmea2000::max_fast_packet_length>;
       const json_value d = obj_({}, "data");
-      const bool hex = d.kind == json_kind::string && d.text.size() % 2 == 0 &&
-                       d.text.size() <= 2 * nmea2000::max_fast_packet_length &&
-                       d.text.find_first_not_of("0123456789abcdefABCDEF") == std::string_view::npos;
-      if (!hex) {
+      const result<payload_bytes> bytes = d.kind == json_kind::string
+                                              ? payload_bytes::from_hex(d.text)
+                                              : result<payload_bytes>{{}, errc::bad_text};
+      if (!bytes) {
         reject(std::string(type) + ": \"data\" must be the payload's bytes in hex, at most " +
                std::to_string(nmea2000::max_fast_packet_length) +
                " bytes (a PGN seawire does not describe is sent as given)");
         return;
       }
-      for (std::size_t i = 0; i < d.text.size(); i += 2)
-        payload.push_back(
-            static_cast<std::uint8_t>(std::stoi(std::string(d.text.substr(i, 2)), nullptr, 16)));
+      payload.assign(bytes.value.bytes().begin(), bytes.value.bytes().end());
     }
     // A PGN seawire does not describe travels as the standard's list says, as seawire-decode
     // reads it back. A single-frame PGN longer than a frame would need ISO transport (a

@@ -2,9 +2,10 @@
 """seawire-encode's bounds: a line longer than 64 KiB is refused (its line number, its length) and
 not kept, the lines after it are read; a refused value is quoted by a prefix, not whole; a flood
 of bad lines is told in part with the count of the rest; a write error is reported with its
-errno's text.
+errno's text; a PGN seawire does not describe is sent from its "data" only when that is whole
+bytes in hex, at most 223 of them.
 
-    encode_limits_test.py ENCODE CASE      CASE: line, quote, flood, full
+    encode_limits_test.py ENCODE CASE      CASE: line, quote, flood, full, data
 """
 
 import os
@@ -82,6 +83,31 @@ def case_quote():
         check(re.search(r"[q5]{60,64}\.\.\.", line) and max(runs) <= 64,
               "line %d quotes a prefix of at most 64 bytes, then ...: %r" % (i + 1, line[:300]))
         check(line.startswith("seawire-encode: line %d: " % (i + 1)), "numbered: %r" % line[:80])
+
+
+def case_data():
+    # 65280 is proprietary single-frame: up to 8 bytes go out as one CAN frame; 130816 is a
+    # proprietary fast packet, which takes up to 223 bytes.
+    good = b'{"type":"PGN65280","src":3,"data":"0102fF"}\n'
+    bad = [b'"0g"', b'"012"', b"5", b'"' + b"ab" * 224 + b'"', b'"01 02"', b"null"]
+    lines = [good] + [b'{"type":"PGN130816","src":3,"data":%s}\n' % d for d in bad] + \
+        [b'{"type":"PGN130816","src":3,"data":"' + b"cd" * 223 + b'"}\n', good]
+    p = subprocess.run([ENCODE, "--output", "canboat"], input=b"".join(lines),
+                       capture_output=True, timeout=60)
+    err = p.stderr.decode().splitlines()
+    out = p.stdout.decode().splitlines()
+    check(out[:1] == ["# format=FAST"], "canboat's header: %r" % out[:1])
+    out = out[1:]
+    check(p.returncode == 1, "exit 1: %d" % p.returncode)
+    check(len(err) == len(bad), "one refusal a bad line: %r" % err)
+    for i, line in enumerate(err):
+        check(line.startswith("seawire-encode: line %d: PGN130816: \"data\" must be the payload's "
+                              "bytes in hex, at most 223 bytes" % (i + 2)), "refusal: %r" % line)
+    check(len(out) == 3, "the good lines sent: %r" % [l[:80] for l in out])
+    check(out[0].endswith(",65280,3,255,3,01,02,ff") and out[2] == out[0],
+          "the bytes as given, either case: %r" % out[0])
+    check(out[1].endswith(",130816,3,255,223," + ",".join(["cd"] * 223)),
+          "223 bytes in one line: %r" % out[1][:80])
 
 
 def case_flood():

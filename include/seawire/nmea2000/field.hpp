@@ -1242,15 +1242,9 @@ class opaque_bytes {
     opaque_bytes o;
     if (hex.size() % 2 != 0) return {o, errc::bad_text};
     if (hex.size() / 2 > MaxBytes) return {o, errc::text_too_long};
-    const auto digit = [](char c) -> int {
-      if (c >= '0' && c <= '9') return c - '0';
-      if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-      if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-      return -1;
-    };
     for (std::size_t i = 0; i < hex.size(); i += 2) {
-      const int hi = digit(hex[i]);
-      const int lo = digit(hex[i + 1]);
+      const int hi = seawire::detail::hex_value(hex[i]);
+      const int lo = seawire::detail::hex_value(hex[i + 1]);
       if (hi < 0 || lo < 0) return {opaque_bytes{}, errc::bad_text};
       o.bytes_[i / 2] = static_cast<std::uint8_t>(hi * 16 + lo);
     }
