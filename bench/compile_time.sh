@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSL-1.0
 # How long does seawire take to compile? Times each translation unit of bench/compile/ (-O2,
 # C++20, the compiler given), best of N runs, and prints each against baseline.cpp (the standard
-# headers any such file includes anyway), in one run on one machine:
+# headers any such file includes anyway), in one run on one machine; then the role decoders'
+# files again with SEAWIRE_SEPARATE_COMPILATION (declared only) and the one file defining them:
 #   bench/compile_time.sh [compiler] [runs]      e.g. bench/compile_time.sh clang++ 5
 set -euo pipefail
 root=$(cd -- "$(dirname -- "${BASH_SOURCE[0]}")/.." && pwd)
@@ -11,13 +12,15 @@ runs=${2:-3}
 out=$(mktemp -d)
 trap 'rm -rf -- "$out"' EXIT
 
-# best_of <file>: the shortest wall time of `runs` compiles, in seconds.
+# best_of <file> [flags...]: the shortest wall time of `runs` compiles, in seconds.
 best_of() {
+  local file=$1
+  shift
   local best="" t i
   for ((i = 0; i < runs; i++)); do
     local start end
     start=$(date +%s.%N)
-    "$cxx" -std=c++20 -O2 -I"$root/include" -c "$1" -o "$out/o.o"
+    "$cxx" -std=c++20 -O2 -I"$root/include" "$@" -c "$file" -o "$out/o.o"
     end=$(date +%s.%N)
     t=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }')
     if [[ -z $best ]] || awk -v t="$t" -v b="$best" 'BEGIN { exit !(t < b) }'; then best=$t; fi
@@ -27,8 +30,17 @@ best_of() {
 
 echo "$("$cxx" --version | head -n 1); best of $runs"
 base=$(best_of "$root/bench/compile/baseline.cpp")
-printf '%-18s %6.2f s  %5s\n' baseline "$base" "1.0x"
+printf '%-26s %6.2f s  %5s\n' baseline "$base" "1.0x"
+row() {  # row <name> <file> [flags...]
+  local name=$1 t
+  shift
+  t=$(best_of "$@")
+  printf '%-26s %6.2f s  %4.1fx\n' "$name" "$t" "$(awk -v t="$t" -v b="$base" 'BEGIN { print t / b }')"
+}
 for tu in include_all decode_one encode_one role_decoder every_family; do
-  t=$(best_of "$root/bench/compile/$tu.cpp")
-  printf '%-18s %6.2f s  %4.1fx\n' "$tu" "$t" "$(awk -v t="$t" -v b="$base" 'BEGIN { print t / b }')"
+  row "$tu" "$root/bench/compile/$tu.cpp"
 done
+separate=-DSEAWIRE_SEPARATE_COMPILATION
+row "role_decoder (separate)" "$root/bench/compile/role_decoder.cpp" "$separate"
+row "every_family (separate)" "$root/bench/compile/every_family.cpp" "$separate"
+row "seawire_compiled.cpp" "$root/src/seawire_compiled.cpp" "$separate"

@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
   ok += seawire::kingfisher::decode_to_vehicle(line).ok();
   ok += seawire::sandshark::decode_from_vehicle(line).ok();
   ok += seawire::sandshark::decode_to_vehicle(line).ok();
-  ok += seawire::robotx::reports::decode(line).ok();
+  ok += seawire::robotx::decode_report(line).ok();
   ok += seawire::anello::decode_input(line).ok();
   std::printf("%d\n", ok);
   return 0;

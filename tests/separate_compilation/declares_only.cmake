@@ -1,0 +1,36 @@
+# SPDX-License-Identifier: BSL-1.0
+# cmake -DNM=<nm> -DOBJECTS=<objects of separate_compilation_test> -P declares_only.cmake
+# With SEAWIRE_SEPARATE_COMPILATION, a translation unit that calls the role decoders holds none of
+# their code (only references to them), and the one including <seawire/impl/src.hpp> defines all
+# nine: fails otherwise.
+set(role_decoder "decode_(from_vehicle|to_vehicle|input|output|report)<0>")
+set(checked 0)
+foreach(object IN LISTS OBJECTS)
+  execute_process(COMMAND "${NM}" -C "${object}" OUTPUT_VARIABLE symbols COMMAND_ERROR_IS_FATAL ANY)
+  string(REGEX MATCHALL "[^\n]*${role_decoder}[^\n]*" lines "${symbols}")
+  set(defined 0)
+  set(referenced 0)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^ +U ")
+      math(EXPR referenced "${referenced} + 1")
+    else()
+      math(EXPR defined "${defined} + 1")
+    endif()
+  endforeach()
+  if(object MATCHES "roles_test\\.cpp\\.o$")
+    if(NOT defined EQUAL 0 OR NOT referenced EQUAL 9)
+      message(FATAL_ERROR "${object}: ${defined} role decoders defined (want 0), ${referenced} "
+                          "referenced (want 9):\n${lines}")
+    endif()
+    math(EXPR checked "${checked} + 1")
+  elseif(object MATCHES "seawire_compiled\\.cpp\\.o$")
+    if(NOT defined EQUAL 9)
+      message(FATAL_ERROR "${object}: ${defined} role decoders defined (want 9):\n${lines}")
+    endif()
+    math(EXPR checked "${checked} + 1")
+  endif()
+endforeach()
+if(NOT checked EQUAL 2)
+  message(FATAL_ERROR "expected the test's object and seawire_compiled's among: ${OBJECTS}")
+endif()
+message(STATUS "the test's translation unit references the 9 role decoders; seawire_compiled defines them")
