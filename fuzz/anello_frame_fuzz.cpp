@@ -127,24 +127,22 @@ double make_double(byte_source& src, std::int64_t divisor) {
 // Fills sensor_values from the bytes, field by field over the frame's own table.
 anello::sensor_values make_values(byte_source& src) {
   anello::sensor_values v;
-  std::apply(
-      [&](const auto&... field) {
-        const auto one = [&](const auto& f) {
-          using field_type = std::remove_cvref_t<decltype(f)>;
-          using value_type = typename field_type::value_type;
-          auto& member = v.*field_type::value_member;
-          if (src.coin()) return;  // not available
-          if constexpr (std::is_same_v<value_type, double>) {
-            member = make_double(src, f.divisor);
-          } else if constexpr (std::is_same_v<value_type, anello::time_ms>) {
-            member = anello::time_ms{anello::time_ms::duration{src.integer<std::int64_t>()}};
-          } else {
-            member = static_cast<value_type>(src.integer<std::int16_t>());
-          }
-        };
-        (one(field), ...);
-      },
-      anello::sensor_fields);
+  anello::sensor_fields.apply([&](const auto&... field) {
+    const auto one = [&](const auto& f) {
+      using field_type = std::remove_cvref_t<decltype(f)>;
+      using value_type = typename field_type::value_type;
+      auto& member = v.*field_type::value_member;
+      if (src.coin()) return;  // not available
+      if constexpr (std::is_same_v<value_type, double>) {
+        member = make_double(src, f.divisor);
+      } else if constexpr (std::is_same_v<value_type, anello::time_ms>) {
+        member = anello::time_ms{anello::time_ms::duration{src.integer<std::int64_t>()}};
+      } else {
+        member = static_cast<value_type>(src.integer<std::int16_t>());
+      }
+    };
+    (one(field), ...);
+  });
   return v;
 }
 
@@ -157,15 +155,13 @@ void check_build(byte_source& src) {
     // The first refusal in table order: without that field the rest goes further.
     anello::sensor_values without = values;
     std::uint16_t number_of_field = 0;
-    std::apply(
-        [&](const auto&... field) {
-          const auto one = [&](const auto& f) {
-            using field_type = std::remove_cvref_t<decltype(f)>;
-            if (++number_of_field == built.field) (without.*field_type::value_member).reset();
-          };
-          (one(field), ...);
-        },
-        anello::sensor_fields);
+    anello::sensor_fields.apply([&](const auto&... field) {
+      const auto one = [&](const auto& f) {
+        using field_type = std::remove_cvref_t<decltype(f)>;
+        if (++number_of_field == built.field) (without.*field_type::value_member).reset();
+      };
+      (one(field), ...);
+    });
     const seawire::result<anello::sensor_frame_raw> further = anello::build_frame(without);
     SEAWIRE_FUZZ_CHECK(further.ok() || further.field > built.field,
                        "build_frame did not refuse the first bad field", number(built.field),
@@ -178,27 +174,24 @@ void check_build(byte_source& src) {
   const seawire::result<anello::sensor_frame_raw> back = anello::decode_frame(bytes);
   SEAWIRE_FUZZ_CHECK(back.ok() && back.value == frame, "encode -> decode changed a built frame");
   const anello::sensor_values read = anello::to_values(frame);
-  std::apply(
-      [&](const auto&... field) {
-        const auto one = [&](const auto& f) {
-          using field_type = std::remove_cvref_t<decltype(f)>;
-          using value_type = typename field_type::value_type;
-          const auto& in = values.*field_type::value_member;
-          const auto& out = read.*field_type::value_member;
-          SEAWIRE_FUZZ_CHECK(in.has_value() == out.has_value(), "availability changed", f.name);
-          if (!in) return;
-          if constexpr (std::is_same_v<value_type, double>) {
-            const double step = 1.0 / static_cast<double>(f.divisor);
-            SEAWIRE_FUZZ_CHECK(
-                std::fabs(*in - *out) <= step / 2 * (1 + 1e-9) + 1e-9 * std::fabs(*in),
-                "a value moved more than half a wire step", f.name);
-          } else {
-            SEAWIRE_FUZZ_CHECK(*in == *out, "a value changed", f.name);
-          }
-        };
-        (one(field), ...);
-      },
-      anello::sensor_fields);
+  anello::sensor_fields.apply([&](const auto&... field) {
+    const auto one = [&](const auto& f) {
+      using field_type = std::remove_cvref_t<decltype(f)>;
+      using value_type = typename field_type::value_type;
+      const auto& in = values.*field_type::value_member;
+      const auto& out = read.*field_type::value_member;
+      SEAWIRE_FUZZ_CHECK(in.has_value() == out.has_value(), "availability changed", f.name);
+      if (!in) return;
+      if constexpr (std::is_same_v<value_type, double>) {
+        const double step = 1.0 / static_cast<double>(f.divisor);
+        SEAWIRE_FUZZ_CHECK(std::fabs(*in - *out) <= step / 2 * (1 + 1e-9) + 1e-9 * std::fabs(*in),
+                           "a value moved more than half a wire step", f.name);
+      } else {
+        SEAWIRE_FUZZ_CHECK(*in == *out, "a value changed", f.name);
+      }
+    };
+    (one(field), ...);
+  });
 }
 
 }  // namespace

@@ -476,12 +476,10 @@ TEST_CASE("build_frame refuses what a field cannot carry", "[anello][builder]") 
   };
   // Field numbers follow the table; offsets come from it too.
   std::array<std::size_t, sensor_field_count + 1> offset_of{};
-  std::apply(
-      [&](const auto&... field) {
-        std::size_t i = 1;
-        ((offset_of[i++] = field.offset), ...);
-      },
-      sensor_fields);
+  sensor_fields.apply([&](const auto&... field) {
+    std::size_t i = 1;
+    ((offset_of[i++] = field.offset), ...);
+  });
   int i = 0;
   for (const auto& bad : refusals) {
     sensor_values v;
@@ -537,21 +535,19 @@ TEST_CASE("build_frame(to_values(f)) == f for every valid frame", "[anello][buil
   prng rng{42};
   for (int round = 0; round < 5000; ++round) {
     sensor_frame_raw f;
-    std::apply(
-        [&](const auto&... field) {
-          (
-              [&](const auto& fd) {
-                using field_type = std::remove_cvref_t<decltype(fd)>;
-                using raw_type = typename field_type::raw_type;
-                raw_type& raw = f.*field_type::raw_member;
-                if (rng.next() % 8 == 0) return;  // leave "not available"
-                const auto [lo, hi] = fd.wire_limits();
-                raw = static_cast<raw_type>(rng.between(lo, hi));
-                if (fd.not_available(raw)) raw = static_cast<raw_type>(lo);
-              }(field),
-              ...);
-        },
-        sensor_fields);
+    sensor_fields.apply([&](const auto&... field) {
+      (
+          [&](const auto& fd) {
+            using field_type = std::remove_cvref_t<decltype(fd)>;
+            using raw_type = typename field_type::raw_type;
+            raw_type& raw = f.*field_type::raw_member;
+            if (rng.next() % 8 == 0) return;  // leave "not available"
+            const auto [lo, hi] = fd.wire_limits();
+            raw = static_cast<raw_type>(rng.between(lo, hi));
+            if (fd.not_available(raw)) raw = static_cast<raw_type>(lo);
+          }(field),
+          ...);
+    });
     REQUIRE(validate(f).ok());
     const auto r = build_frame(to_values(f));
     INFO("round " << round);
@@ -566,12 +562,10 @@ TEST_CASE("the table's offsets, computed from the wire types, are the spec's", "
                                                             40, 41, 42, 44, 46, 48, 50, 52, 54};
   std::vector<std::size_t> offsets;
   std::vector<std::string> keys;
-  std::apply(
-      [&](const auto&... field) {
-        (offsets.push_back(field.offset), ...);
-        (keys.emplace_back(field.json_key), ...);
-      },
-      sensor_fields);
+  sensor_fields.apply([&](const auto&... field) {
+    (offsets.push_back(field.offset), ...);
+    (keys.emplace_back(field.json_key), ...);
+  });
   CHECK(offsets == std::vector<std::size_t>(spec.begin(), spec.end()));
   // JSON keys are the names, but the position's, which are those of every other message.
   CHECK(keys[0] == "heading_deg");

@@ -7,7 +7,6 @@
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <string_view>
-#include <tuple>
 #include <vector>
 
 #include "seawire/anello/frame.hpp"
@@ -135,7 +134,9 @@ TEST_CASE("whole-byte fields are little-endian (lsb_first) or big-endian (msb_fi
 }
 
 TEST_CASE("a table's rows follow each other from its first bit", "[layout]") {
-  const std::tuple<row3, row16, row3> rows{{"a"}, {"b"}, {"c"}};
+  const auto rows = seawire::detail::make_rows(row3{"a"}, row16{"b"}, row3{"c"});
+  static_assert(decltype(rows)::size == 3);
+  CHECK(seawire::detail::row_at<1>(rows).name == "b");
   static_assert(seawire::detail::layout_bits<decltype(rows)> == 22);
   std::vector<std::pair<unsigned, unsigned>> seen;  // (offset, number)
   CHECK(seawire::detail::for_each_row(

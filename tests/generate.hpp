@@ -404,21 +404,19 @@ P generate(prng& g) {
 template <class T>
 requires std::is_same_v<T, seawire::anello::sensor_frame_raw> T generate(prng& g) {
   T frame{};
-  std::apply(
-      [&](const auto&... field) {
-        const auto one = [&](const auto& f) {
-          using F = std::remove_cvref_t<decltype(f)>;
-          using raw = typename F::raw_type;
-          if (g.below(8) == 0) return;  // left at "not available"
-          auto [lo, hi] = f.wire_limits();
-          // A time: up to the year 2100 in milliseconds, what a GPS clock gives.
-          if constexpr (std::is_same_v<typename F::value_type, seawire::anello::time_ms>)
-            hi = std::min<std::int64_t>(hi, std::int64_t{4102444800000});
-          frame.*F::raw_member = static_cast<raw>(g.between(lo, hi));
-        };
-        (one(field), ...);
-      },
-      seawire::anello::sensor_fields);
+  seawire::anello::sensor_fields.apply([&](const auto&... field) {
+    const auto one = [&](const auto& f) {
+      using F = std::remove_cvref_t<decltype(f)>;
+      using raw = typename F::raw_type;
+      if (g.below(8) == 0) return;  // left at "not available"
+      auto [lo, hi] = f.wire_limits();
+      // A time: up to the year 2100 in milliseconds, what a GPS clock gives.
+      if constexpr (std::is_same_v<typename F::value_type, seawire::anello::time_ms>)
+        hi = std::min<std::int64_t>(hi, std::int64_t{4102444800000});
+      frame.*F::raw_member = static_cast<raw>(g.between(lo, hi));
+    };
+    (one(field), ...);
+  });
   return frame;
 }
 

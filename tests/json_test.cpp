@@ -662,17 +662,15 @@ TEST_CASE("ANELLO frame JSON: every field at its widest fits, and it is written 
   }());
   for (const bool high : {true, false}) {
     anello::sensor_frame_raw f;
-    std::apply(
-        [&](const auto&... field) {
-          const auto set = [&](const auto& row) {
-            using row_type = std::remove_cvref_t<decltype(row)>;
-            using raw = typename row_type::raw_type;
-            f.*row_type::raw_member = high ? static_cast<raw>(std::numeric_limits<raw>::max() - 1)
-                                           : std::numeric_limits<raw>::min();
-          };
-          (set(field), ...);
-        },
-        anello::sensor_fields);
+    anello::sensor_fields.apply([&](const auto&... field) {
+      const auto set = [&](const auto& row) {
+        using row_type = std::remove_cvref_t<decltype(row)>;
+        using raw = typename row_type::raw_type;
+        f.*row_type::raw_member = high ? static_cast<raw>(std::numeric_limits<raw>::max() - 1)
+                                       : std::numeric_limits<raw>::min();
+      };
+      (set(field), ...);
+    });
     string_sink k;
     anello::write_json(k, f);
     INFO(k.s);

@@ -86,7 +86,8 @@ TEST_CASE("lookup_title: canboat's texts by raw value") {
 }
 
 TEST_CASE("a number field with titles: a number to seawire, titled for canboat") {
-  using row = std::remove_cvref_t<decltype(std::get<0>(n2k::engine_parameters_rapid::n2k.fields))>;
+  using row = std::remove_cvref_t<decltype(seawire::detail::row_at<0>(
+      n2k::engine_parameters_rapid::n2k.fields))>;
   STATIC_REQUIRE(std::is_same_v<row::titles, n2k::engine_instance>);
   STATIC_REQUIRE(std::is_same_v<row::value_type, n2k::unsigned_number<8>>);
   STATIC_REQUIRE(row::bits == 8 && !row::is_reserved);
@@ -169,8 +170,9 @@ TEST_CASE("every described field's unit has its canboat display") {
 
 TEST_CASE("PGN and field titles are canboat's names") {
   CHECK(n2k::speed_water_referenced::n2k.info.title == "Speed");
-  CHECK(std::get<0>(n2k::speed_water_referenced::n2k.fields).title == "SID");
-  CHECK(std::get<6>(n2k::engine_parameters_dynamic::n2k.fields).title == "Total Engine hours");
-  CHECK(std::get<0>(n2k::distance_log::n2k.fields).title == "Date");
+  CHECK(seawire::detail::row_at<0>(n2k::speed_water_referenced::n2k.fields).title == "SID");
+  CHECK(seawire::detail::row_at<6>(n2k::engine_parameters_dynamic::n2k.fields).title ==
+        "Total Engine hours");
+  CHECK(seawire::detail::row_at<0>(n2k::distance_log::n2k.fields).title == "Date");
   CHECK(n2k::field_name<n2k::cross_track_error>(2) == "xte_mode");  // json names unchanged
 }

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -176,7 +175,7 @@ namespace detail {
 template <class Rows, std::size_t I>
 [[nodiscard]] consteval unsigned row_offset() noexcept {
   return [&]<std::size_t... J>(std::index_sequence<J...>) {
-    return (0U + ... + static_cast<unsigned>(std::tuple_element_t<J, Rows>::bits));
+    return (0U + ... + static_cast<unsigned>(seawire::detail::row_type_t<J, Rows>::bits));
   }
   (std::make_index_sequence<I>{});
 }
@@ -213,9 +212,9 @@ template <class P, std::size_t I>
 struct walk_field
     : seawire::detail::binary_field<wire_kind::nmea2000, byte_order::little_endian, I,
                                     detail::row_offset<detail::rows_type<P>, I>(),
-                                    std::tuple_element_t<I, detail::rows_type<P>>::bits> {
-  using row_type = std::tuple_element_t<I, detail::rows_type<P>>;
-  static constexpr const auto& desc = std::get<I>(detail::rows_of<P>());
+                                    seawire::detail::row_type_t<I, detail::rows_type<P>>::bits> {
+  using row_type = seawire::detail::row_type_t<I, detail::rows_type<P>>;
+  static constexpr const auto& desc = seawire::detail::row_at<I>(detail::rows_of<P>());
   using value_type = typename detail::row_value<row_type>::type;
   static constexpr bool by_value = keyed_row<row_type>;
   static constexpr std::string_view name = desc.name;
@@ -264,11 +263,12 @@ struct frame_value {
 
 /// Field I of the frame's table (anello::sensor_fields), for the walk (walk.hpp).
 template <std::size_t I>
-struct walk_field : seawire::detail::binary_field<
-                        wire_kind::anello_frame, byte_order::big_endian, I,
-                        8 * static_cast<unsigned>(std::get<I>(sensor_fields).offset),
-                        std::remove_cvref_t<decltype(std::get<I>(sensor_fields))>::bits> {
-  static constexpr const auto& desc = std::get<I>(sensor_fields);
+struct walk_field
+    : seawire::detail::binary_field<wire_kind::anello_frame, byte_order::big_endian, I,
+                                    8 * static_cast<unsigned>(
+                                            seawire::detail::row_at<I>(sensor_fields).offset),
+                                    seawire::detail::row_type_t<I, decltype(sensor_fields)>::bits> {
+  static constexpr const auto& desc = seawire::detail::row_at<I>(sensor_fields);
   using desc_type = std::remove_cvref_t<decltype(desc)>;
   using value_type = frame_value<typename desc_type::raw_type, detail::divisor_places(desc.divisor),
                                  std::is_same_v<typename desc_type::value_type, time_ms>>;

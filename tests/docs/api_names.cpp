@@ -160,7 +160,7 @@ std::string code_of(const std::string& text) {
 }
 
 struct token {
-  std::string qualifier;  // the name before `::`, if any
+  std::string qualifier;  // the names before `::`, if any ("anello::frame_table")
   std::string name;
   bool code_like;  // qualified, a member (.name), called (name(...)) or snake_case
 };
@@ -181,7 +181,10 @@ std::vector<token> tokens_of(const std::string& code) {
                              (i < code.size() && code[i] == '(') ||
                              name.find('_') != std::string::npos;
       out.push_back({previous, name, code_like});
-      previous = code.compare(i, 2, "::") == 0 ? name : std::string();
+      // A chain (anello::frame_table::field) keeps every namespace before the name.
+      previous = code.compare(i, 2, "::") != 0 ? std::string()
+                 : previous.empty()            ? name
+                                               : previous + "::" + name;
       if (!previous.empty()) i += 2;
     } else if (code.compare(i, 2, "::") == 0 && !out.empty()) {
       i += 2;  // `Type<...>::member`: the qualifier was a template's name, not checked
@@ -210,7 +213,9 @@ int main(int argc, char** argv) {
   for (const auto& entry : fs::recursive_directory_iterator(include / "seawire")) {
     if (entry.path().extension() != ".hpp") continue;
     const std::string relative = fs::relative(entry.path(), include).generic_string();
-    if (relative != "seawire/fmt.hpp") headers.push_back(relative);  // fmt.hpp needs {fmt}
+    // fmt.hpp needs {fmt}; impl/src.hpp defines, for SEAWIRE_SEPARATE_COMPILATION only.
+    if (relative != "seawire/fmt.hpp" && relative != "seawire/impl/src.hpp")
+      headers.push_back(relative);
     std::ifstream in(entry.path());
     std::stringstream buffer;
     buffer << in.rdbuf();
@@ -288,13 +293,16 @@ int main(int argc, char** argv) {
     for (const token& t : tokens_of(code_of(comment)))
       if (t.code_like) found.push_back(t);
     for (const token& t : found) {
-      if (t.qualifier == "std" || t.qualifier == "chrono" || t.qualifier == "fmt") continue;
+      const std::string outer = t.qualifier.substr(0, t.qualifier.find("::"));
+      const std::string inner = t.qualifier.substr(
+          t.qualifier.rfind("::") == std::string::npos ? 0 : t.qualifier.rfind("::") + 2);
+      if (outer == "std" || outer == "chrono" || outer == "fmt") continue;
       if (!declared.count(t.name) && !language.count(t.name) && !placeholders.count(t.name)) {
         std::fprintf(stderr, "docs/api.md:%d: `%s` is declared by no header\n", number,
                      t.name.c_str());
         ++errors;
       }
-      if (namespaces.count(t.qualifier)) usings.insert(t.qualifier + "::" + t.name);
+      if (namespaces.count(inner)) usings.insert(t.qualifier + "::" + t.name);
     }
   }
 

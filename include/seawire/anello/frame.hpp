@@ -15,7 +15,6 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -24,6 +23,7 @@
 #include "seawire/detail/crc32.hpp"
 #include "seawire/detail/member.hpp"
 #include "seawire/detail/rounding.hpp"
+#include "seawire/detail/row_list.hpp"
 #include "seawire/error.hpp"
 
 namespace seawire::anello {
@@ -299,8 +299,12 @@ struct sensor_field {
   }
 };
 
-/// What a row of the frame's table can say besides its name: `field<&raw, &value>("name",
-/// facts...)`.
+/// The vocabulary of the frame's table: rows `field<&raw, &value>("name", facts...)` given to
+/// describe_frame. (A namespace of its own, so that `using namespace seawire::anello` does not
+/// bring in names as common as `field`.)
+namespace frame_table {
+
+/// What a row can say besides its name.
 namespace fact {
 struct range {
   value_range r;
@@ -363,8 +367,9 @@ template <auto RawMember, auto ValueMember, class... Facts>
 /// The frame's table from its rows in wire order: each field starts where the one before ends,
 /// after the 8-byte header; the JSON key is the name unless a row says.
 template <class... Fields>
-[[nodiscard]] consteval std::tuple<Fields...> describe_frame(Fields... rows) noexcept {
-  std::tuple<Fields...> fields{rows...};
+[[nodiscard]] consteval seawire::detail::row_list<Fields...> describe_frame(
+    Fields... rows) noexcept {
+  seawire::detail::row_list<Fields...> fields = seawire::detail::make_rows(rows...);
   seawire::detail::for_each_row(fields, 8 * header_size, [](auto& field, unsigned bit, auto) {
     field.offset = bit / 8;
     if (field.json_key.empty()) field.json_key = field.name;
@@ -372,9 +377,14 @@ template <class... Fields>
   return fields;
 }
 
-/// The payload layout, one sensor_field per field in the spec's order (a std::tuple); a row's
+}  // namespace frame_table
+
+/// The payload layout, one sensor_field per field in the spec's order (a row_list: `apply(f)`
+/// calls f(fields...), `seawire::detail::row_at<I>` gives one); a row's
 /// position (1-based) is the field number in errors.
 inline constexpr auto sensor_fields = [] {
+  using frame_table::also_not_available, frame_table::describe_frame, frame_table::divisor,
+      frame_table::field, frame_table::in_range, frame_table::json_key;
   using r = sensor_frame_raw;
   using v = sensor_values;
   constexpr auto degrees = in_range(0, 360);  // "Degrees: 0-360" in the spec, both ends
@@ -436,7 +446,7 @@ consteval bool sensor_fields_match_spec() {
   });
   return ok && end == frame_size &&
          seawire::detail::layout_bits<decltype(sensor_fields)> == 8 * payload_size &&
-         std::tuple_size_v<std::remove_cv_t<decltype(sensor_fields)>> == sensor_field_count;
+         std::remove_cv_t<decltype(sensor_fields)>::size == sensor_field_count;
 }
 static_assert(sensor_fields_match_spec(), "sensor_fields disagrees with the spec's layout");
 
@@ -446,11 +456,12 @@ consteval std::size_t row_of() noexcept {
   using table = std::remove_cv_t<decltype(sensor_fields)>;
   return []<std::size_t... I>(std::index_sequence<I...>) {
     std::size_t row = sensor_field_count;
-    ((row = row == sensor_field_count &&
-                    seawire::detail::same_member<std::tuple_element_t<I, table>::value_member,
-                                                 ValueMember>
-                ? I
-                : row),
+    ((row =
+          row == sensor_field_count &&
+                  seawire::detail::same_member<seawire::detail::row_type_t<I, table>::value_member,
+                                               ValueMember>
+              ? I
+              : row),
      ...);
     return row;
   }
@@ -462,7 +473,7 @@ consteval std::size_t row_of() noexcept {
 template <auto ValueMember>
 [[nodiscard]] constexpr seawire::detail::member_type_t<ValueMember> physical_of(
     const sensor_frame_raw& frame) noexcept {
-  constexpr const auto& field = std::get<row_of<ValueMember>()>(sensor_fields);
+  constexpr const auto& field = seawire::detail::row_at<row_of<ValueMember>()>(sensor_fields);
   using field_type = std::remove_cvref_t<decltype(field)>;
   return field.to_physical(frame.*field_type::raw_member);
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Binary payloads described by tables. A table is a std::tuple of rows, one per field (or run of
+// Binary payloads described by tables. A table is a row_list of rows, one per field (or run of
 // reserved bits) in wire order; each row type states its width in bits (`static constexpr
 // unsigned bits`) and nothing says where it is: the rows follow each other with no gaps, so a
 // field's bit offset is the sum of the widths before it. The two binary formats seawire reads
@@ -14,11 +14,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
 #include "seawire/detail/inline.hpp"
+#include "seawire/detail/row_list.hpp"
 
 namespace seawire::detail {
 
@@ -94,12 +94,12 @@ concept layout_row = requires {
 template <class Rows>
 struct layout_width;
 template <class... R>
-struct layout_width<std::tuple<R...>> {
+struct layout_width<row_list<R...>> {
   static_assert((layout_row<R> && ...), "every row of a table states its width (bits)");
   static constexpr unsigned value = (0U + ... + static_cast<unsigned>(R::bits));
 };
 
-/// The bits the rows of a table (a std::tuple) take together.
+/// The bits the rows of a table (a row_list) take together.
 template <class Rows>
 inline constexpr unsigned layout_bits = layout_width<std::remove_cvref_t<Rows>>::value;
 
@@ -108,25 +108,23 @@ inline constexpr unsigned layout_bits = layout_width<std::remove_cvref_t<Rows>>:
 /// fn returns bool, false stops the walk. Returns whether the walk went to the end.
 template <class Rows, class Fn>
 constexpr bool for_each_row(Rows&& rows, unsigned first_bit, Fn&& fn) {
-  return std::apply(
-      [&](auto&&... row) {
-        unsigned offset = first_bit;
-        std::uint16_t number = 0;
-        const auto visit = [&](auto&& r) {
-          using R = std::remove_cvref_t<decltype(r)>;
-          const unsigned at = offset;
-          offset += R::bits;
-          ++number;
-          if constexpr (std::is_same_v<decltype(fn(r, at, number)), bool>) {
-            return fn(r, at, number);
-          } else {
-            fn(r, at, number);
-            return true;
-          }
-        };
-        return (visit(row) && ...);
-      },
-      std::forward<Rows>(rows));
+  return rows.apply([&](auto&&... row) {
+    unsigned offset = first_bit;
+    std::uint16_t number = 0;
+    const auto visit = [&](auto&& r) {
+      using R = std::remove_cvref_t<decltype(r)>;
+      const unsigned at = offset;
+      offset += R::bits;
+      ++number;
+      if constexpr (std::is_same_v<decltype(fn(r, at, number)), bool>) {
+        return fn(r, at, number);
+      } else {
+        fn(r, at, number);
+        return true;
+      }
+    };
+    return (visit(row) && ...);
+  });
 }
 
 }  // namespace seawire::detail

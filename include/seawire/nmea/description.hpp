@@ -21,6 +21,7 @@
 #include "seawire/detail/fixed_string.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/detail/member.hpp"
+#include "seawire/detail/row_list.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/sentence.hpp"
@@ -250,36 +251,14 @@ template <auto Member, class... Options>
   return f;
 }
 
-namespace detail {
-template <std::size_t I, class T>
-struct field_slot {
-  T value;
-};
-template <class Indices, class... Fields>
-struct field_slots;
-template <std::size_t... I, class... Fields>
-struct field_slots<std::index_sequence<I...>, Fields...> : field_slot<I, Fields>... {};
-}  // namespace detail
-
-/// The field descriptors of a message in wire order: a flat aggregate with one base per field
-/// (std::tuple's recursive bases cost much compile time).
+/// The field descriptors of a message in wire order (a row_list: `field_at<I>(list)`,
+/// `apply(f)`).
 template <class... Fields>
-struct field_list : detail::field_slots<std::index_sequence_for<Fields...>, Fields...> {
-  static constexpr std::size_t size = sizeof...(Fields);
-
-  /// f(descriptor...), all of them in wire order.
-  template <class F>
-  constexpr decltype(auto) apply(F&& f) const {
-    return [&]<std::size_t... I>(std::index_sequence<I...>)->decltype(auto) {
-      return f(static_cast<const detail::field_slot<I, Fields>&>(*this).value...);
-    }
-    (std::index_sequence_for<Fields...>{});
-  }
-};
+using field_list = seawire::detail::row_list<Fields...>;
 
 /// The I-th descriptor (0-based) of a field_list.
 template <std::size_t I, class T>
-[[nodiscard]] constexpr const T& field_at(const detail::field_slot<I, T>& slot) noexcept {
+[[nodiscard]] constexpr const T& field_at(const seawire::detail::row_slot<I, T>& slot) noexcept {
   return slot.value;
 }
 

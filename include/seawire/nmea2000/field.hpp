@@ -20,7 +20,6 @@
 #include <span>
 #include <string_view>
 #include <system_error>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -1049,7 +1048,7 @@ template <unsigned Bits>
 inline constexpr spare_bits<Bits> spare{};
 
 namespace detail {
-/// fn(entry, bit_offset, number) for every row of a table (a tuple of rows) from bit 0; what fn
+/// fn(entry, bit_offset, number) for every row of a table (a row_list) from bit 0; what fn
 /// returns is ignored.
 template <class Rows, class Fn>
 constexpr void each_row(const Rows& rows, Fn& fn) {
@@ -1070,9 +1069,10 @@ inline constexpr std::size_t max_payload_bytes = 223;
 /// out as a PGN's, from the repetition's first bit. Whole bytes; no flag sets, no nested groups.
 template <class... F>
 struct item_description {
-  std::tuple<F...> fields;
+  seawire::detail::row_list<F...> fields;
 
-  static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
+  static constexpr unsigned bit_length =
+      seawire::detail::layout_bits<seawire::detail::row_list<F...>>;
   static_assert(bit_length > 0 && (bit_length % 8 == 0 || 8 % bit_length == 0),
                 "a group's repetition must fill whole bytes, or a byte hold a whole number of "
                 "them (1, 2 or 4 bits)");
@@ -1089,7 +1089,7 @@ struct item_description {
 
 template <class... F>
 [[nodiscard]] constexpr item_description<F...> describe_item(F... fields) noexcept {
-  return {{fields...}};
+  return {seawire::detail::make_rows(fields...)};
 }
 
 /// One repetition of a group: a struct with `static constexpr auto n2k_item = describe_item(...)`.
@@ -1436,13 +1436,14 @@ template <class... F>
 template <class... F>
 struct pgn_description {
   pgn_info info;
-  std::tuple<F...> fields;
+  seawire::detail::row_list<F...> fields;
 
   /// Whether every row is at a fixed offset (no counted string).
   static constexpr bool fixed_layout = !(detail::row_is_variable<F>() || ...);
   /// The bits of the fixed rows (a repeating group, always last, starts where they end); with a
   /// counted string, every counted string at its longest.
-  static constexpr unsigned bit_length = seawire::detail::layout_bits<std::tuple<F...>>;
+  static constexpr unsigned bit_length =
+      seawire::detail::layout_bits<seawire::detail::row_list<F...>>;
   static_assert(bit_length % 8 == 0, "a PGN's fields must fill whole bytes");
   static_assert(detail::text_rows_aligned<F...>(), "a string starts on a byte boundary");
   static_assert(fixed_layout || !(detail::row_is_flag_word<F>() || ...),
@@ -1458,7 +1459,7 @@ struct pgn_description {
   static constexpr std::size_t field_count = sizeof...(F);
 
  private:
-  using last_row = std::tuple_element_t<sizeof...(F) - 1, std::tuple<F...>>;
+  using last_row = seawire::detail::row_type_t<sizeof...(F) - 1, seawire::detail::row_list<F...>>;
   static_assert(((detail::tail_row<F> ? 1 : 0) + ... + 0) <= (detail::tail_row<last_row> ? 1 : 0),
                 "a repeating group or opaque bytes must be the last row of its table");
   static constexpr std::size_t group_bytes = [] {
@@ -1499,7 +1500,7 @@ struct pgn_description {
 
 template <class... F>
 [[nodiscard]] constexpr pgn_description<F...> describe_pgn(pgn_info info, F... fields) noexcept {
-  return {info, {fields...}};
+  return {info, seawire::detail::make_rows(fields...)};
 }
 
 /// A PGN struct: has `static constexpr auto n2k = describe_pgn(...)`.
