@@ -2,7 +2,10 @@
 // The sentence layer: checksum, parse() under each policy, the field reader, the writer.
 
 #include <catch2/catch.hpp>
+#include <cstddef>
 #include <cstdint>
+#include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -26,6 +29,19 @@ constexpr parse_policy with_checksum(checksum_policy c) {
   parse_policy p;
   p.checksum = c;
   return p;
+}
+
+// A writer's whole sentence of whole numbers: begin(), next_field() and put_uint() for each
+// number, seal(). What seal() says: the sentence's length in `out`, or why not.
+seawire::result<std::size_t> seal_numbers(std::span<char> out, std::string_view address, char start,
+                                          std::initializer_list<std::uint64_t> numbers) {
+  writer w(out);
+  w.begin(address, start);
+  for (const std::uint64_t n : numbers) {
+    w.next_field();
+    w.put_uint(n);
+  }
+  return w.seal();
 }
 }  // namespace
 
@@ -364,29 +380,15 @@ TEST_CASE("field_reader on a sentence without fields never points past the line"
 
 TEST_CASE("writer seals with upper-case checksum and CR LF, and reports overflow") {
   char buf[64];
-  writer w(buf);
-  w.begin("PYDIR");
-  w.next_field();
-  w.put_uint(45);
-  w.next_field();
-  w.put_uint(55);
-  const auto r = w.seal();
+  const auto r = seal_numbers(buf, "PYDIR", '$', {45, 55});
   REQUIRE(r);
   CHECK(std::string_view(buf, r.value) == "$PYDIR,45,55*57\r\n");
 
   char small[10];
-  writer s(small);
-  s.begin("PYDIR");
-  s.next_field();
-  s.put_uint(45);
-  CHECK(s.seal().ec == errc::buffer_too_small);
+  CHECK(seal_numbers(small, "PYDIR", '$', {45}).ec == errc::buffer_too_small);
 
   char bang[32];
-  writer e(bang);
-  e.begin("AIVDO", '!');
-  e.next_field();
-  e.put_uint(1);
-  const auto sealed = e.seal();
+  const auto sealed = seal_numbers(bang, "AIVDO", '!', {1});
   REQUIRE(sealed);
   CHECK(std::string_view(bang, sealed.value) == "!AIVDO,1*48\r\n");
 
