@@ -65,22 +65,19 @@ bool is_pad(std::uint32_t c) {
          c == '\f' || c == '\r';
 }
 
+/// `c` in UTF-8 by the encoding's rule: below 0x80 the byte itself; else a lead byte whose top
+/// bits count the bytes (110, 1110, 11110) over the highest bits of `c`, then 10xxxxxx for each
+/// following 6 bits, most significant first.
 void utf8(std::string& out, std::uint32_t c) {
   if (c < 0x80) {
     out += static_cast<char>(c);
-  } else if (c < 0x800) {
-    out += static_cast<char>(0xC0 | (c >> 6));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else if (c < 0x10000) {
-    out += static_cast<char>(0xE0 | (c >> 12));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (c >> 18));
-    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
+    return;
   }
+  const unsigned following = c < 0x800 ? 1U : c < 0x10000 ? 2U : 3U;
+  const std::uint32_t lead = (0xFFU << (7U - following)) & 0xFFU;
+  out += static_cast<char>(lead | (c >> (6U * following)));
+  for (unsigned k = following; k-- > 0;)
+    out += static_cast<char>(0x80U | ((c >> (6U * k)) & 0x3FU));
 }
 
 std::optional<std::string> ref_single(std::span<const std::uint8_t> b) {

@@ -78,6 +78,16 @@ std::vector<std::string> rules_of(const rx::finding_list& l) {
   return out;
 }
 
+// `line` checked by `v` at `at`: CHECKs that its findings are exactly `rules` (rules_of, in
+// order), and returns the verdict for what else a test asks of it.
+rx::verdict checked(rx::validator& v, std::string_view line, rx::instant at,
+                    const std::vector<std::string>& rules) {
+  INFO("line: " << line);
+  rx::verdict verdict = v.check(line, at);
+  CHECK(rules_of(verdict.findings) == rules);
+  return verdict;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -423,109 +433,97 @@ TEST_CASE("validator: each field error reported on its own, not only the first")
 TEST_CASE("validator: checksum findings") {
   rx::validator v;
   // Lower case only: accepted, flagged.
-  const auto lower =
-      v.check("$RXHRB,101218,161229,21.31198,N,157.88972,W,ROBO1,2,1*7f\r\n", seed_utc);
-  CHECK(lower.accepted);
-  CHECK(rules_of(lower.findings) == std::vector<std::string>{"checksum_lowercase RXHRB 0 ok"});
+  CHECK(checked(v, "$RXHRB,101218,161229,21.31198,N,157.88972,W,ROBO1,2,1*7f\r\n", seed_utc,
+                {"checksum_lowercase RXHRB 0 ok"})
+            .accepted);
 
   // 0x28 written as decimal 40: two digits, so it reads as a wrong hex checksum.
-  const auto dec2 = v.check("$RXDOK,101218,161229,AUVSI,R,TRIAN*40\r\n", seed_utc);
-  CHECK_FALSE(dec2.accepted);
-  CHECK(rules_of(dec2.findings) ==
-        std::vector<std::string>{"checksum_decimal RXDOK 0 checksum_mismatch"});
+  CHECK_FALSE(checked(v, "$RXDOK,101218,161229,AUVSI,R,TRIAN*40\r\n", seed_utc,
+                      {"checksum_decimal RXDOK 0 checksum_mismatch"})
+                  .accepted);
 
   // 0x74 written as decimal 116: three digits, not a checksum at all; the fields still checked.
-  const auto dec3 =
-      v.check("$RXHRB,101218,161229,21.31198,N,157.88972,W,TEAM7,2,7*116\r\n", seed_utc + 2s);
-  CHECK_FALSE(dec3.accepted);
-  CHECK(rules_of(dec3.findings) == std::vector<std::string>{
-                                       "checksum RXHRB 0 bad_checksum_format",
-                                       "field RXHRB 9 bad_enum",
-                                   });
+  CHECK_FALSE(checked(v, "$RXHRB,101218,161229,21.31198,N,157.88972,W,TEAM7,2,7*116\r\n",
+                      seed_utc + 2s,
+                      {
+                          "checksum RXHRB 0 bad_checksum_format",
+                          "field RXHRB 9 bad_enum",
+                      })
+                  .accepted);
   // A whole checksum then other characters: the checksum rule names them; fields still read.
   rx::validator fresh;  // no RXHRB before it: no rate finding
-  const auto trailing =
-      fresh.check("$RXHRB,101218,161229,21.31198,N,157.88972,W,ROBO1,2,7*7F \r\n", seed_utc + 2s);
-  CHECK_FALSE(trailing.accepted);
-  CHECK(rules_of(trailing.findings) == std::vector<std::string>{
-                                           "checksum RXHRB 0 trailing_characters",
-                                           "field RXHRB 9 bad_enum",
-                                       });
+  CHECK_FALSE(checked(fresh, "$RXHRB,101218,161229,21.31198,N,157.88972,W,ROBO1,2,7*7F \r\n",
+                      seed_utc + 2s,
+                      {
+                          "checksum RXHRB 0 trailing_characters",
+                          "field RXHRB 9 bad_enum",
+                      })
+                  .accepted);
   // A second '*' makes the checksum text malformed; the fields before it are still read.
-  const auto two_stars = v.check("$RXDEL,101218,161229,AUVSI,R,CIRCL*3*2\r\n", seed_utc + 2s);
-  CHECK(rules_of(two_stars.findings) ==
-        std::vector<std::string>{"checksum RXDEL 0 bad_checksum_format"});
-  const auto dec3_ok =
-      v.check("$RXHRB,101218,161229,21.31198,N,157.88972,W,TEAM7,2,1*116\r\n", seed_utc + 4s);
-  CHECK(rules_of(dec3_ok.findings) ==
-        std::vector<std::string>{"checksum_decimal RXHRB 0 bad_checksum_format"});
+  checked(v, "$RXDEL,101218,161229,AUVSI,R,CIRCL*3*2\r\n", seed_utc + 2s,
+          {"checksum RXDEL 0 bad_checksum_format"});
+  checked(v, "$RXHRB,101218,161229,21.31198,N,157.88972,W,TEAM7,2,1*116\r\n", seed_utc + 4s,
+          {"checksum_decimal RXHRB 0 bad_checksum_format"});
 
-  const auto missing = v.check("$RXCOD,101218,161229,AUVSI,RGB\r\n", seed_utc);
-  CHECK_FALSE(missing.accepted);
-  CHECK(rules_of(missing.findings) ==
-        std::vector<std::string>{"checksum RXCOD 0 missing_checksum"});
+  CHECK_FALSE(checked(v, "$RXCOD,101218,161229,AUVSI,RGB\r\n", seed_utc,
+                      {"checksum RXCOD 0 missing_checksum"})
+                  .accepted);
 
-  const auto wrong = v.check("$RXDEL,101218,161229,AUVSI,R,CIRCL*33\r\n", seed_utc + 5s);
-  CHECK_FALSE(wrong.accepted);
-  CHECK(rules_of(wrong.findings) == std::vector<std::string>{"checksum RXDEL 0 checksum_mismatch"});
+  CHECK_FALSE(checked(v, "$RXDEL,101218,161229,AUVSI,R,CIRCL*33\r\n", seed_utc + 5s,
+                      {"checksum RXDEL 0 checksum_mismatch"})
+                  .accepted);
 }
 
 TEST_CASE("validator: line endings are judged only when the line has one") {
   rx::validator v;
-  const auto lf = v.check("$RXCOD,101218,161229,AUVSI,RGB*49\n", seed_utc);
-  CHECK(lf.accepted);
-  CHECK(rules_of(lf.findings) == std::vector<std::string>{"line_ending RXCOD 0 bad_line_ending"});
-  const auto cr = v.check("$RXDOK,101218,161229,AUVSI,R,TRIAN*28\r", seed_utc);
-  CHECK(rules_of(cr.findings) == std::vector<std::string>{"line_ending RXDOK 0 bad_line_ending"});
+  CHECK(checked(v, "$RXCOD,101218,161229,AUVSI,RGB*49\n", seed_utc,
+                {"line_ending RXCOD 0 bad_line_ending"})
+            .accepted);
+  checked(v, "$RXDOK,101218,161229,AUVSI,R,TRIAN*28\r", seed_utc,
+          {"line_ending RXDOK 0 bad_line_ending"});
   const auto none = v.check("$RXDEL,101218,161229,AUVSI,R,CIRCL*32", seed_utc);
   CHECK(none.clean());
 }
 
 TEST_CASE("validator: framing, unknown addresses, field counts") {
   rx::validator v({.heartbeat_gap_limit = 1h});
-  const auto no_dollar = v.check("RXCOD,101218,161229,AUVSI,RGB*49\r\n", seed_utc);
-  CHECK_FALSE(no_dollar.accepted);
-  CHECK(rules_of(no_dollar.findings) == std::vector<std::string>{"framing  0 missing_start"});
+  CHECK_FALSE(
+      checked(v, "RXCOD,101218,161229,AUVSI,RGB*49\r\n", seed_utc, {"framing  0 missing_start"})
+          .accepted);
   // '!' starts encapsulation sentences (!AIVDM), not RobotX reports.
-  const auto bang = v.check("!RXCOD,101218,161229,AUVSI,RGB*49\r\n", seed_utc);
-  CHECK_FALSE(bang.accepted);
-  CHECK(rules_of(bang.findings) == std::vector<std::string>{"framing  0 missing_start"});
+  CHECK_FALSE(
+      checked(v, "!RXCOD,101218,161229,AUVSI,RGB*49\r\n", seed_utc, {"framing  0 missing_start"})
+          .accepted);
 
-  const auto other = v.check("$GPRMC,,V,,,,,,,,,,N*53\r\n", seed_utc);
+  const auto other = checked(v, "$GPRMC,,V,,,,,,,,,,N*53\r\n", seed_utc,
+                             {"unknown_address GPRMC 0 unknown_address"});
   CHECK_FALSE(other.accepted);
-  CHECK(rules_of(other.findings) ==
-        std::vector<std::string>{"unknown_address GPRMC 0 unknown_address"});
   REQUIRE(std::holds_alternative<nmea::unknown_sentence>(other.message));
   CHECK(std::get<nmea::unknown_sentence>(other.message).sentence.address == "GPRMC");
 
   // An extra field: the judges' decoder ignores it, the validator says so.
-  const auto extra = v.check(sealed("RXCOD,101218,161229,AUVSI,RGB,"), seed_utc + 1s);
-  CHECK(extra.accepted);
-  CHECK(rules_of(extra.findings) ==
-        std::vector<std::string>{"field_count RXCOD 5 too_many_fields"});
+  CHECK(checked(v, sealed("RXCOD,101218,161229,AUVSI,RGB,"), seed_utc + 1s,
+                {"field_count RXCOD 5 too_many_fields"})
+            .accepted);
 
   // A trailing optional field left out: decoded, but the sentence is short.
-  const auto short_hb =
-      v.check(sealed("RXHRB,101218,161229,21.31198,N,157.88972,W,AUVSI,2"), seed_utc + 2s);
-  CHECK(short_hb.accepted);
-  CHECK(rules_of(short_hb.findings) ==
-        std::vector<std::string>{"field_count RXHRB 9 too_few_fields"});
+  CHECK(checked(v, sealed("RXHRB,101218,161229,21.31198,N,157.88972,W,AUVSI,2"), seed_utc + 2s,
+                {"field_count RXHRB 9 too_few_fields"})
+            .accepted);
 
   // A required field missing: reported once, where the sentence ends.
-  const auto cut = v.check(sealed("RXDOK,101218"), seed_utc + 3s);
-  CHECK_FALSE(cut.accepted);
-  CHECK(rules_of(cut.findings) == std::vector<std::string>{"field_count RXDOK 2 too_few_fields"});
+  CHECK_FALSE(
+      checked(v, sealed("RXDOK,101218"), seed_utc + 3s, {"field_count RXDOK 2 too_few_fields"})
+          .accepted);
 }
 
 TEST_CASE("validator: team ids") {
   rx::validator v({.expected_team = rx::team("AUVSI")});
-  const auto other = v.check(sealed("RXCOD,101218,161229,ROBOT,RGB"), seed_utc);
-  CHECK(other.accepted);
-  CHECK(rules_of(other.findings) == std::vector<std::string>{"team_mismatch RXCOD 3 ok"});
-  const auto blank = v.check(sealed("RXHRB,101218,161229,,,,,,2,1"), seed_utc);
-  CHECK(rules_of(blank.findings) == std::vector<std::string>{"team_id RXHRB 7 missing_field"});
-  const auto six = v.check(sealed("RXDOK,101218,161229,AUVSI1,R,TRIAN"), seed_utc);
-  CHECK(rules_of(six.findings) == std::vector<std::string>{"team_id RXDOK 3 bad_length"});
+  CHECK(checked(v, sealed("RXCOD,101218,161229,ROBOT,RGB"), seed_utc, {"team_mismatch RXCOD 3 ok"})
+            .accepted);
+  checked(v, sealed("RXHRB,101218,161229,,,,,,2,1"), seed_utc, {"team_id RXHRB 7 missing_field"});
+  checked(v, sealed("RXDOK,101218,161229,AUVSI1,R,TRIAN"), seed_utc,
+          {"team_id RXDOK 3 bad_length"});
 }
 
 TEST_CASE("validator: rate per message type, 1 Hz exactly at the boundary") {
