@@ -37,10 +37,11 @@ row() {  # row <name> <file> [flags...]
   t=$(best_of "$@")
   printf '%-26s %6.2f s  %4.1fx\n' "$name" "$t" "$(awk -v t="$t" -v b="$base" 'BEGIN { print t / b }')"
 }
-for tu in include_all decode_one encode_one role_decoder every_family; do
+for tu in include_all decode_one encode_one role_decoder kingfisher_payload every_family; do
   row "$tu" "$root/bench/compile/$tu.cpp"
 done
 separate=-DSEAWIRE_SEPARATE_COMPILATION
 row "role_decoder (separate)" "$root/bench/compile/role_decoder.cpp" "$separate"
+row "kingfisher_payload (separate)" "$root/bench/compile/kingfisher_payload.cpp" "$separate"
 row "every_family (separate)" "$root/bench/compile/every_family.cpp" "$separate"
 row "seawire_compiled.cpp" "$root/src/seawire_compiled.cpp" "$separate"

@@ -191,3 +191,5 @@ using frames = type_list<anello::sensor_frame_raw>;
 }
 
 }  // namespace seawire::registry
+
+SEAWIRE_COMPILED_SET(seawire::registry::standard_sentences)

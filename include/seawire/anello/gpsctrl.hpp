@@ -29,3 +29,5 @@ struct papgpsctrl {
 };
 
 }  // namespace seawire::anello
+
+SEAWIRE_COMPILED_ENCODER(seawire::anello::papgpsctrl)

@@ -193,3 +193,6 @@ template <class T>
 }
 
 }  // namespace seawire::anello
+
+SEAWIRE_COMPILED_SET(seawire::anello::nmea_inputs)
+SEAWIRE_COMPILED_SET(seawire::anello::nmea_outputs)

@@ -336,3 +336,16 @@ extern template result<to_vehicle::variant> decode_to_vehicle<0>(
 #endif
 
 }  // namespace seawire::kingfisher
+
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::cpnvg)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::cpnvr)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::cprcm)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::cprbs)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::cpimu)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::cpalt)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::pydep)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::pydev)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::pydir)
+SEAWIRE_COMPILED_ENCODER(seawire::kingfisher::pyclt)
+SEAWIRE_COMPILED_SET(seawire::kingfisher::from_vehicle)
+SEAWIRE_COMPILED_SET(seawire::kingfisher::to_vehicle)

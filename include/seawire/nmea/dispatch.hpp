@@ -78,6 +78,17 @@ struct unknown_sentence {
   sentence_view sentence;
 };
 
+namespace detail {
+/// Whether Set's decoder is compiled once, by <seawire/impl/src.hpp> (SEAWIRE_SEPARATE_COMPILATION;
+/// a family header says so for its sets with SEAWIRE_COMPILED_SET).
+template <class Set>
+inline constexpr bool compiled_set = false;
+/// Set::decode, not inline: where it is declared `extern template`, callers only reference it.
+template <class Set>
+[[nodiscard]] result<typename Set::variant> compiled_set_decode(const sentence_view& s,
+                                                                const parse_policy& p) noexcept;
+}  // namespace detail
+
 template <message_like... Ms>
 struct message_set {
   using variant = std::variant<unknown_sentence, Ms...>;
@@ -113,12 +124,11 @@ struct message_set {
   /// messages).
   [[nodiscard]] static constexpr result<variant> decode(const sentence_view& s,
                                                         const parse_policy& p = {}) noexcept {
-    // Built holding unknown_sentence, not value-initialized: that would first zero the storage
-    // of the largest message in the set.
-    result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
-    const detail::address_key k = detail::key_of(s);
-    (void)((detail::key_matches<Ms>(k, s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
-    return out;
+    if constexpr (detail::compiled_set<message_set>) {
+      return detail::compiled_set_decode<message_set>(s, p);
+    } else {
+      return decode_here(s, p);
+    }
   }
   [[nodiscard]] static constexpr result<variant> decode(std::string_view line,
                                                         const parse_policy& p = {}) noexcept {
@@ -127,12 +137,30 @@ struct message_set {
     return decode(s.value, p);
   }
 
+  /// decode(s, p) compiled where it is called (what a set compiled once runs in that one place).
+  [[nodiscard]] static constexpr result<variant> decode_here(const sentence_view& s,
+                                                             const parse_policy& p) noexcept {
+    // Built holding unknown_sentence, not value-initialized: that would first zero the storage
+    // of the largest message in the set.
+    result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
+    const detail::address_key k = detail::key_of(s);
+    (void)((detail::key_matches<Ms>(k, s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
+    return out;
+  }
+
   /// Decode and call `on_message(const M&)` for the matching message, or
   /// `on_message(const unknown_sentence&)`. Returns the decode error (visitor not called) or
   /// success.
   template <class F>
   static constexpr result<bool> visit(const sentence_view& s, const parse_policy& p,
                                       F&& on_message) {
+    if constexpr (detail::compiled_set<message_set>) {
+      // The set's decoder is compiled once: decode through it, then call on_message here.
+      const result<variant> r = detail::compiled_set_decode<message_set>(s, p);
+      const result<bool> told{r.value.index() != 0 || !r, r.ec, r.field, r.column};
+      if (r) std::visit([&](const auto& m) { on_message(m); }, r.value);
+      return told;
+    }
     result<bool> out;
     const detail::address_key k = detail::key_of(s);
     const bool found =
@@ -178,6 +206,12 @@ struct message_set {
 };
 
 namespace detail {
+template <class Set>
+result<typename Set::variant> compiled_set_decode(const sentence_view& s,
+                                                  const parse_policy& p) noexcept {
+  return Set::decode_here(s, p);
+}
+
 // Appends each of Ms to Set unless it is already there.
 template <class Set, class... Ms>
 struct append_unique {
@@ -219,3 +253,15 @@ struct merge_sets<message_set<A...>, message_set<B...>, Rest...> {
 };
 
 }  // namespace seawire::nmea
+
+// In a family header, at global scope: the set's decoder is compiled once, by
+// <seawire/impl/src.hpp>, when SEAWIRE_SEPARATE_COMPILATION is defined; otherwise nothing.
+#if defined(SEAWIRE_SEPARATE_COMPILATION)
+#define SEAWIRE_COMPILED_SET(Set)                                                                \
+  template <>                                                                                    \
+  inline constexpr bool seawire::nmea::detail::compiled_set<Set> = true;                         \
+  extern template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode<Set>( \
+      const seawire::nmea::sentence_view&, const seawire::nmea::parse_policy&) noexcept;
+#else
+#define SEAWIRE_COMPILED_SET(Set)
+#endif

@@ -430,10 +430,11 @@ template <class F, class T>
 
 }  // namespace detail
 
-/// Write a message as a sealed sentence into `out`. Values outside their field's domain are
-/// refused with the field number; nothing partial is reported as success.
+namespace detail {
+/// encode_to's work (below).
 template <message_like T>
-[[nodiscard]] constexpr result<std::size_t> encode_to(const T& msg, std::span<char> out) noexcept {
+[[nodiscard]] constexpr result<std::size_t> encode_sentence(const T& msg,
+                                                            std::span<char> out) noexcept {
   writer w(out);
   constexpr auto& desc = T::nmea;
   if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
@@ -483,6 +484,29 @@ template <message_like T>
     return r;
   }
   return w.seal();
+}
+
+/// Whether T's encoder is compiled once, by <seawire/impl/src.hpp> (SEAWIRE_SEPARATE_COMPILATION;
+/// a family header says so for each of its messages with SEAWIRE_COMPILED_ENCODER).
+template <class T>
+inline constexpr bool compiled_encoder = false;
+
+/// encode_sentence, not inline: where it is declared `extern template`, callers only reference it.
+template <message_like T>
+[[nodiscard]] result<std::size_t> compiled_encode_to(const T& msg, std::span<char> out) noexcept {
+  return encode_sentence(msg, out);
+}
+}  // namespace detail
+
+/// Write a message as a sealed sentence into `out`. Values outside their field's domain are
+/// refused with the field number; nothing partial is reported as success.
+template <message_like T>
+[[nodiscard]] constexpr result<std::size_t> encode_to(const T& msg, std::span<char> out) noexcept {
+  if constexpr (detail::compiled_encoder<T>) {
+    return detail::compiled_encode_to(msg, out);
+  } else {
+    return detail::encode_sentence(msg, out);
+  }
 }
 
 namespace detail {
@@ -538,3 +562,15 @@ template <message_like T>
 }
 
 }  // namespace seawire::nmea
+
+// In a family header, at global scope: the message's encoder is compiled once, by
+// <seawire/impl/src.hpp>, when SEAWIRE_SEPARATE_COMPILATION is defined; otherwise nothing.
+#if defined(SEAWIRE_SEPARATE_COMPILATION)
+#define SEAWIRE_COMPILED_ENCODER(M)                                                          \
+  template <>                                                                                \
+  inline constexpr bool seawire::nmea::detail::compiled_encoder<M> = true;                   \
+  extern template seawire::result<std::size_t> seawire::nmea::detail::compiled_encode_to<M>( \
+      const M&, std::span<char>) noexcept;
+#else
+#define SEAWIRE_COMPILED_ENCODER(M)
+#endif

@@ -303,3 +303,10 @@ constexpr result<bool> visit_report(std::string_view line, F&& on_report,
 }
 
 }  // namespace seawire::robotx
+
+SEAWIRE_COMPILED_ENCODER(seawire::robotx::rxhrb)
+SEAWIRE_COMPILED_ENCODER(seawire::robotx::rxgat)
+SEAWIRE_COMPILED_ENCODER(seawire::robotx::rxcod)
+SEAWIRE_COMPILED_ENCODER(seawire::robotx::rxdok)
+SEAWIRE_COMPILED_ENCODER(seawire::robotx::rxdel)
+SEAWIRE_COMPILED_SET(seawire::robotx::reports)

@@ -386,3 +386,18 @@ extern template result<to_vehicle::variant> decode_to_vehicle<0>(
 }
 
 }  // namespace seawire::sandshark
+
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bfsht)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bfver)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bfnvg)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bfnvr)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bfmis)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bfack)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bfctl)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bplog)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bpsts)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bprmb)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bpabt)
+SEAWIRE_COMPILED_ENCODER(seawire::sandshark::bpver)
+SEAWIRE_COMPILED_SET(seawire::sandshark::from_vehicle)
+SEAWIRE_COMPILED_SET(seawire::sandshark::to_vehicle)

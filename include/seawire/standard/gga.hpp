@@ -64,3 +64,5 @@ struct gga {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::gga)

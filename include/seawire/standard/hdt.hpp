@@ -35,3 +35,5 @@ struct hdt {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::hdt)

@@ -73,3 +73,5 @@ struct rmc {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::rmc)

@@ -48,3 +48,5 @@ struct rpm {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::rpm)

@@ -41,3 +41,5 @@ struct rsa {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::rsa)

@@ -71,3 +71,5 @@ struct vbw {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::vbw)

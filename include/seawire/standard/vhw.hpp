@@ -45,3 +45,5 @@ struct vhw {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::vhw)

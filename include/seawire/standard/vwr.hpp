@@ -58,3 +58,5 @@ struct vwr {
 };
 
 }  // namespace seawire::standard
+
+SEAWIRE_COMPILED_ENCODER(seawire::standard::vwr)
