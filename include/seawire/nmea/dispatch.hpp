@@ -160,18 +160,19 @@ struct message_set {
       const result<bool> told{r.value.index() != 0 || !r, r.ec, r.field, r.column};
       if (r) std::visit([&](const auto& m) { on_message(m); }, r.value);
       return told;
+    } else {
+      result<bool> out;
+      const detail::address_key k = detail::key_of(s);
+      const bool found =
+          ((detail::key_matches<Ms>(k, s.address) ? (visit_one<Ms>(out, s, p, on_message), true)
+                                                  : false) ||
+           ...);
+      if (!found) {
+        on_message(unknown_sentence{s});
+        out.value = false;
+      }
+      return out;
     }
-    result<bool> out;
-    const detail::address_key k = detail::key_of(s);
-    const bool found =
-        ((detail::key_matches<Ms>(k, s.address) ? (visit_one<Ms>(out, s, p, on_message), true)
-                                                : false) ||
-         ...);
-    if (!found) {
-      on_message(unknown_sentence{s});
-      out.value = false;
-    }
-    return out;
   }
 
  private:
