@@ -57,6 +57,13 @@ struct outcome {
 };
 
 owned_item own(const anello::stream_item& i) {
+  // An item holds only its own kind's members, whatever kind of item came before it.
+  SEAWIRE_FUZZ_CHECK(i.is_drop() || i.drop == anello::stream_drop{}, "a drop's members set");
+  SEAWIRE_FUZZ_CHECK(
+      i.is_frame() || (i.bytes == anello::frame_bytes{} && i.frame == anello::sensor_frame_raw{}),
+      "a frame's members set");
+  SEAWIRE_FUZZ_CHECK(i.is_sentence() || i.sentence == seawire::nmea::framed_line{},
+                     "a sentence's members set");
   if (i.is_drop()) {
     return {i.kind,        i.offset,   std::string(i.drop.bytes), {}, i.line, {}, {},
             i.drop.reason, i.drop.size};
@@ -88,8 +95,11 @@ std::vector<std::uint64_t> lines_of(std::string_view stream, const std::vector<o
   return line;
 }
 
+// Read through the callbacks (the reader's own item), or with pull = true through next()
+// (copies): the same items either way.
 template <std::size_t Capacity, class NextSize>
-outcome run(std::string_view stream, NextSize&& next_size, bool drops = false, bool flush = false) {
+outcome run(std::string_view stream, NextSize&& next_size, bool drops = false, bool flush = false,
+            bool pull = false) {
   anello::stream_reader<Capacity> reader;
   reader.report_drops(drops);
   outcome out;
@@ -97,8 +107,16 @@ outcome run(std::string_view stream, NextSize&& next_size, bool drops = false, b
   std::size_t at = 0;
   while (at < stream.size()) {
     const std::size_t n = std::min(next_size(), stream.size() - at);
-    reader.feed(stream.substr(at, n), take);
-    if (flush) {
+    if (pull) {
+      reader.feed(stream.substr(at, n));
+      while (const std::optional<anello::stream_item> i = reader.next()) take(*i);
+    } else {
+      reader.feed(stream.substr(at, n), take);
+    }
+    if (flush && pull) {
+      reader.flush(take);
+      SEAWIRE_FUZZ_CHECK(!reader.flush().has_value(), "flush() yielded twice");
+    } else if (flush) {
       if (const std::optional<anello::stream_item> i = reader.flush()) take(*i);
       SEAWIRE_FUZZ_CHECK(!reader.flush().has_value(), "flush() yielded twice");
     }
@@ -121,7 +139,8 @@ void check_stream(std::string_view stream, std::uint8_t seed, bool bytewise_too)
     SEAWIRE_FUZZ_CHECK(bytewise == whole, "byte-by-byte feed differs from the whole stream",
                        stream);
   }
-  const outcome chunked = run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed));
+  const outcome chunked =
+      run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed), false, false, true);
   SEAWIRE_FUZZ_CHECK(chunked == whole, "chunked feed differs from the whole stream", stream);
 
   std::uint64_t next_free = 0;
@@ -173,7 +192,7 @@ void check_drops(std::string_view stream, std::uint8_t seed) {
   const outcome whole = run<Capacity>(
       stream, [&] { return stream.size(); }, true);
   const outcome chunked =
-      run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed ^ 0x5AU), true);
+      run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed ^ 0x5AU), true, false, true);
   SEAWIRE_FUZZ_CHECK(chunked == whole, "drop reports depend on the chunking", stream);
   outcome filtered = whole;
   std::erase_if(filtered.items,
@@ -226,7 +245,8 @@ void check_flush(std::string_view stream, std::uint8_t seed) {
   const outcome whole = run<Capacity>(
       stream, [&] { return stream.size(); }, true);
   const outcome flushed =
-      run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed ^ 0x33U), true, true);
+      run<Capacity>(stream, seawire::fuzz::chunk_sizes(Capacity, seed ^ 0x33U), true, true,
+                    (seed & 1U) != 0);  // flush() and flush(on_item) both
   SEAWIRE_FUZZ_CHECK(flushed.stats == whole.stats, "flush() changed the stats", stream);
   SEAWIRE_FUZZ_CHECK(flushed.items.size() == whole.items.size(), "flush() changed the items",
                      stream);

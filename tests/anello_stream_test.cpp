@@ -89,9 +89,15 @@ rec own(const stream_item& item) {
   if (item.is_drop()) {
     CHECK(item.sentence.text.empty());
     CHECK(item.drop.bytes.size() <= stream_drop::max_shown);
+    CHECK(item.bytes == frame_bytes{});
+    CHECK(item.frame == sensor_frame_raw{});
     return drop(item.drop.reason, item.offset, item.drop.size, item.drop.bytes, item.line);
   }
   CHECK(item.drop == stream_drop{});
+  if (item.is_sentence()) {  // an item holds only its own kind's members
+    CHECK(item.bytes == frame_bytes{});
+    CHECK(item.frame == sensor_frame_raw{});
+  }
   if (item.is_frame()) {
     const auto decoded = decode_frame(item.bytes);
     CHECK(decoded.ok());
@@ -131,6 +137,16 @@ outcome read(const std::vector<std::string_view>& chunks, bool drops = false) {
   }
   finish(r, o.items);
   o.stats = r.stats();
+  // The callbacks hand out the reader's own item, not a copy: the same items, and each holding
+  // only its own kind's members after items of other kinds.
+  stream_reader<N> by_callback;
+  by_callback.report_drops(drops);
+  outcome c;
+  const auto take = [&c](const stream_item& item) { c.items.push_back(own(item)); };
+  for (const auto chunk : chunks) by_callback.feed(chunk, take);
+  by_callback.finish(take);
+  c.stats = by_callback.stats();
+  CHECK(c == o);
   return o;
 }
 
@@ -494,9 +510,10 @@ constexpr bool reports_drops_at_compile_time() {
 }
 static_assert(reports_drops_at_compile_time());
 
-// Fixed memory: the line buffer, a frame, the bytes to read again, and a few counters.
-static_assert(sizeof(stream_reader<82>) <=
-              82 + frame_size + (frame_size - 1) + stream_drop::max_shown + 256);
+// Fixed memory: the line buffer, a frame, the bytes to read again, the item handed out, and a
+// few counters.
+static_assert(sizeof(stream_reader<82>) <= 82 + frame_size + (frame_size - 1) +
+                                               stream_drop::max_shown + sizeof(stream_item) + 256);
 static_assert(sizeof(stream_reader<1024>) <= sizeof(stream_reader<82>) + (1024 - 82) + 8);
 
 }  // namespace
@@ -987,6 +1004,26 @@ TEST_CASE("flush(): a sentence held on its CR comes out when the link goes quiet
     CHECK_FALSE(r.flush().has_value());
     CHECK(r.stats().truncated_frames == 0);
   }
+}
+
+TEST_CASE("flush(on_item): the held sentence handed over once, as flush() gives it",
+          "[anello][stream]") {
+  stream_reader<> r;
+  r.report_drops(true);
+  std::vector<rec> got;
+  const auto take = [&got](const stream_item& item) { got.push_back(own(item)); };
+  r.feed(str(seed) + "$A\r", take);  // a frame, then a sentence held on its CR
+  REQUIRE(got.size() == 1);
+  CHECK(got[0] == frame(seed, 0));
+  r.flush(take);
+  r.flush(take);  // nothing held any more
+  REQUIRE(got.size() == 2);
+  CHECK(got[1] == sentence("$A", frame_size, line_ending::cr, 1));
+  r.feed("x\n", take);  // the LF completes the CR's break; the x is noise, reported at the LF
+  r.finish(take);
+  REQUIRE(got.size() == 3);
+  CHECK(got[2] == drop(drop_reason::noise, frame_size + 3, 1, "x", 2));
+  CHECK(r.stats().noise_bytes == 1);
 }
 
 TEST_CASE("small capacity: overlong lines, also inside bytes read again", "[anello][stream]") {

@@ -671,10 +671,12 @@ TEST_CASE("reset() starts a new stream", "[framer]") {
 }
 
 TEST_CASE("memory is the buffer and a few counters", "[framer]") {
-  // The counters, the stream position, and the 256 bytes a drop report shows (the framer is a
-  // stream_reader, which can report its drops): fixed, whatever the capacity.
+  // The counters, the stream position, the 256 bytes a drop report shows and the item it hands
+  // out (the framer is a stream_reader, which can report its drops): fixed, whatever the
+  // capacity.
   constexpr std::size_t overhead = sizeof(framer<8>) - 8;
-  STATIC_REQUIRE(overhead <= seawire::nmea::stream_drop::max_shown + 256);
+  STATIC_REQUIRE(overhead <= seawire::nmea::stream_drop::max_shown +
+                                 sizeof(seawire::nmea::stream_item<>) + 256);
   STATIC_REQUIRE(sizeof(framer<1024>) <= 1024 + overhead + 8);
   STATIC_REQUIRE(sizeof(framer<65536>) <= 65536 + overhead + 8);
   STATIC_REQUIRE(framer<82>::capacity == 82);

@@ -193,7 +193,7 @@ class stream_source {
       const std::string_view chunk = in_.next();
       if (chunk.empty()) {
         ended_ = true;
-        while (const auto item = reader_.finish()) take(*item);
+        reader_.finish([this](const auto& item) { take(item); });
         if (!current_.items.empty()) ready_.push_back(std::exchange(current_, period{}));
         break;
       }

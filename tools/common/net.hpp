@@ -301,7 +301,7 @@ inline void client::read() {
                               }
                               // The peer is done sending: what it sent last without a line ending
                               // still counts.
-                              while (const auto item = self->reader_.finish()) self->deliver(*item);
+                              self->reader_.finish([&](const auto& item) { self->deliver(item); });
                               if (self->closed_) return;
                               self->read_ended_ = true;
                               if (self->queue_.empty()) {
@@ -321,7 +321,7 @@ inline void client::read() {
                                                [&](const auto& item) { self->deliver(item); });
                             // A sentence ended by a lone CR is held back to tell CR from CR LF: the
                             // read is over, so it is complete.
-                            while (const auto item = self->reader_.flush()) self->deliver(*item);
+                            self->reader_.flush([&](const auto& item) { self->deliver(item); });
                             if (!self->closed_) self->read();
                           });
 }

@@ -111,8 +111,8 @@ class decoder {
       can_log(chunk);
       return;
     }
-    reader_.feed(chunk);
-    while (const std::optional<anello::stream_item> item = reader_.next()) handle(*item);
+    // Each item is the reader's own, handed over without a copy.
+    reader_.feed(chunk, [this](const anello::stream_item& item) { handle(item); });
   }
 
   void finish() {
@@ -122,7 +122,7 @@ class decoder {
       carry_.clear();
       n2k_.flush();
     }
-    while (const std::optional<anello::stream_item> item = reader_.finish()) handle(*item);
+    reader_.finish([this](const anello::stream_item& item) { handle(item); });
     out_.finish();
   }
 
@@ -133,7 +133,7 @@ class decoder {
   // now rather than when the next byte comes. Not when CR LF is required: there the LF decides.
   void quiet() {
     if (opt_.strict) return;
-    if (const std::optional<anello::stream_item> item = reader_.flush()) handle(*item);
+    reader_.flush([this](const anello::stream_item& item) { handle(item); });
   }
 
   // The input cannot be written in the format asked for (a CAN log with --format nmea).

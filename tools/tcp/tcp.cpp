@@ -168,13 +168,13 @@ class client {
       if (done_ || !connected_) return;
       if (ec) {
         // What the server sent last without a line ending is still a sentence.
-        while (const auto item = from_server_.finish()) emit(*item);
+        from_server_.finish([this](const auto& item) { emit(item); });
         flush_stdout();
         lost(ec == asio::error::eof ? "closed by the server" : ec.message());
         return;
       }
       from_server_.feed(std::string_view(in_.data(), n), [this](const auto& item) { emit(item); });
-      while (const auto item = from_server_.flush()) emit(*item);
+      from_server_.flush([this](const auto& item) { emit(item); });
       flush_stdout();
       read_socket();
     });
@@ -238,14 +238,14 @@ class client {
       // A last line without its line ending was cut off (the writer died, a truncated file):
       // not sent as if whole.
       bool cut = false;
-      while (from_stdin_.finish()) cut = true;
+      from_stdin_.finish([&cut](const auto&) { cut = true; });
       if (cut)
         std::fprintf(stderr,
                      "seawire-tcp: stdin ended in the middle of a line (no line ending after "
                      "it): that line is not sent\n");
     } else {
       from_stdin_.feed(std::string_view(stdin_buf_.data(), n), take);
-      while (const auto item = from_stdin_.flush()) take(*item);
+      from_stdin_.flush(take);
     }
     if (connected_) send_pending();
   }

@@ -234,40 +234,28 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     feed(std::string_view(reinterpret_cast<const char*>(chunk.data()), chunk.size()));
   }
 
-  /// Feeds `chunk` and drains it, calling on_item(const item&) for each item.
+  /// Feeds `chunk` and drains it, calling on_item(const item&) for each item. The item is the
+  /// reader's own, not a copy: valid during the call only. The cheapest way to read a stream.
   template <class Fn>
   constexpr void feed(std::string_view chunk,
                       Fn&& on_item) noexcept(std::is_nothrow_invocable_v<Fn&, const item&>) {
     feed(chunk);
-    while (const std::optional<item> it = next()) on_item(*it);
+    while (advance()) on_item(std::as_const(cur_));
   }
 
   template <class Fn>
   void feed(std::span<const std::uint8_t> chunk,
             Fn&& on_item) noexcept(std::is_nothrow_invocable_v<Fn&, const item&>) {
     feed(chunk);
-    while (const std::optional<item> it = next()) on_item(*it);
+    while (advance()) on_item(std::as_const(cur_));
   }
 
   /// The next item of the current chunk, or nullopt once the chunk is used up (or, after
-  /// finish(), once the end of the stream is fully resolved).
+  /// finish(), once the end of the stream is fully resolved). A copy of the reader's item: the
+  /// callback overloads of feed() and finish() hand out the item itself, without the copy.
   [[nodiscard]] constexpr std::optional<item> next() noexcept {
-    for (;;) {
-      if (rpos_ < rlen_) {
-        if (auto it = step(replay_.data(), rpos_, rlen_)) return it;
-      } else if (pos_ < chunk_.size()) {
-        if (auto it = step(chunk_.data(), pos_, chunk_.size())) return it;
-      } else if (ending_) {
-        if (auto it = end_of_stream()) return it;
-        // A truncated candidate's bytes to read again, or a drop report to close.
-        if (rpos_ < rlen_ || drop_open_) continue;
-        ending_ = false;
-        prev_cr_ = false;
-        return std::nullopt;
-      } else {
-        return std::nullopt;
-      }
-    }
+    if (advance()) return cur_;
+    return std::nullopt;
   }
 
   /// End of stream: call until it returns nullopt. Yields the sentence still waiting for its
@@ -284,17 +272,24 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
   /// CR from CR LF) as ended by CR; an LF arriving next completes that line break. Nothing else
   /// is released. Precondition: the current chunk is drained.
   [[nodiscard]] constexpr std::optional<item> flush() noexcept {
-    assert(drained() && "stream_reader::flush: current chunk not drained by next()");
-    if (state_ != state::held) return std::nullopt;
-    state_ = state::idle;
-    prev_cr_ = true;
-    return yield_sentence(std::string_view(lbuf_, llen_), line_ending::cr);
+    if (flush_held()) return cur_;
+    return std::nullopt;
   }
 
-  /// Finishes, calling on_item(const item&) for each item the end of stream releases.
+  /// The same, calling on_item(const item&) with the sentence if there is one (the reader's own
+  /// item, valid during the call only).
+  template <class Fn>
+  constexpr void flush(Fn&& on_item) noexcept(std::is_nothrow_invocable_v<Fn&, const item&>) {
+    if (flush_held()) on_item(std::as_const(cur_));
+  }
+
+  /// Finishes, calling on_item(const item&) for each item the end of stream releases (the
+  /// reader's own item, valid during the call only).
   template <class Fn>
   constexpr void finish(Fn&& on_item) noexcept(std::is_nothrow_invocable_v<Fn&, const item&>) {
-    while (const std::optional<item> it = finish()) on_item(*it);
+    assert(pos_ == chunk_.size() && "stream_reader::finish: current chunk not drained by next()");
+    ending_ = true;
+    while (advance()) on_item(std::as_const(cur_));
   }
 
   [[nodiscard]] constexpr const stream_stats& stats() const noexcept { return stats_; }
@@ -356,6 +351,35 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
   [[nodiscard]] constexpr bool drained() const noexcept {
     return pos_ == chunk_.size() && rpos_ == rlen_;
   }
+  // Reads on until an item is in cur_ (true), or the chunk is used up (or, after finish(), the
+  // end of the stream is resolved: false).
+  [[nodiscard]] constexpr bool advance() noexcept {
+    for (;;) {
+      if (rpos_ < rlen_) {
+        if (step(replay_.data(), rpos_, rlen_)) return true;
+      } else if (pos_ < chunk_.size()) {
+        if (step(chunk_.data(), pos_, chunk_.size())) return true;
+      } else if (ending_) {
+        if (end_of_stream()) return true;
+        // A truncated candidate's bytes to read again, or a drop report to close.
+        if (rpos_ < rlen_ || drop_open_) continue;
+        ending_ = false;
+        prev_cr_ = false;
+        return false;
+      } else {
+        return false;
+      }
+    }
+  }
+
+  // flush(): the held sentence, if there is one, into cur_.
+  [[nodiscard]] constexpr bool flush_held() noexcept {
+    assert(drained() && "stream_reader::flush: current chunk not drained by next()");
+    if (state_ != state::held) return false;
+    state_ = state::idle;
+    prev_cr_ = true;
+    return yield_sentence(std::string_view(lbuf_, llen_), line_ending::cr);
+  }
 
   // Stream offset of byte i of source s. Re-read bytes are always the ones just before the
   // unread part of the chunk, since they come from the candidate that ended there.
@@ -366,7 +390,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
 
   // Reads source s from i (a reference to rpos_ or pos_) until an item, a change of state or
   // the end of s.
-  constexpr std::optional<item> step(const char* s, std::size_t& i, std::size_t end) noexcept {
+  constexpr bool step(const char* s, std::size_t& i, std::size_t end) noexcept {
     switch (state_) {
       case state::held: {
         line_ending e = line_ending::cr;
@@ -391,16 +415,16 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
           ++stats_.dropped_bytes;
           add_drop(s + i, 1);
         }
-        return std::nullopt;
+        return false;
       case state::frame:
         if constexpr (has_frames) return scan_frame(s, i, end);
         break;
     }
-    return std::nullopt;
+    return false;
   }
 
   // Between items. Real links send items back to back, so this loop mostly sees one byte.
-  constexpr std::optional<item> idle(const char* s, std::size_t& i, std::size_t end) noexcept {
+  constexpr bool idle(const char* s, std::size_t& i, std::size_t end) noexcept {
     for (; i < end; ++i) {
       const char c = s[i];
       if (c == '$' || c == '!') {
@@ -431,13 +455,13 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
         add_drop(s + i, 1);
       }
     }
-    return std::nullopt;
+    return false;
   }
 
   // The sentence going on at i; `have` of its bytes are already in lbuf_ (0: it starts with the
   // '$' or '!' at i). Yields the line if it ends in this source, else stashes or drops it.
-  constexpr std::optional<item> scan_sentence(const char* s, std::size_t& i, std::size_t end,
-                                              std::size_t have) noexcept {
+  constexpr bool scan_sentence(const char* s, std::size_t& i, std::size_t end,
+                               std::size_t have) noexcept {
     using scan = detail::framer_scan;
     const std::size_t start = i;
     if (have == 0) sentence_start_ = offset_of(s, start);
@@ -459,7 +483,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
         i = end;
         state_ = state::sentence;
       }
-      return std::nullopt;
+      return false;
     }
     const char c = s[q];
     if (c == '\r') {
@@ -468,7 +492,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
         stash(s, start, q, have);
         i = end;
         state_ = state::held;
-        return std::nullopt;
+        return false;
       }
       state_ = state::idle;
       if (s[q + 1] == '\n') {
@@ -503,12 +527,11 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     sentence_drop(drop_reason::invalid_byte, s, start, q + 1, have);
     i = q + 1;
     state_ = state::discard;
-    return std::nullopt;
+    return false;
   }
 
   // The candidate in fbuf_[0, flen_) takes bytes from i.
-  constexpr std::optional<item> scan_frame(const char* s, std::size_t& i,
-                                           std::size_t end) noexcept {
+  constexpr bool scan_frame(const char* s, std::size_t& i, std::size_t end) noexcept {
     // The header is checked byte by byte, so a false sync is given up at the first byte that
     // betrays it, without waiting for what a length field promises.
     constexpr auto header = F::header;
@@ -529,19 +552,19 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     }
     i += n;
     flen_ += n;
-    if (flen_ < frame_size) return std::nullopt;
+    if (flen_ < frame_size) return false;
 
     state_ = state::idle;
     const result<typename F::value_type> r = F::decode(fbuf_);
     if (r) {
       ++stats_.frames;
-      std::optional<item> out = make_item(stream_item_kind::frame, frame_start_, line_);
-      out->bytes = fbuf_;
-      out->frame = r.value;
-      return out;
+      item& out = make_item(stream_item_kind::frame, frame_start_, line_);
+      out.bytes = fbuf_;
+      out.frame = r.value;
+      return true;
     }
     ++stats_.bad_crc_frames;
-    std::optional<item> drop = candidate_drop(drop_reason::bad_crc, 1, flen_);
+    const bool drop = candidate_drop(drop_reason::bad_crc, 1, flen_);
     read_again();
     return drop;
   }
@@ -552,8 +575,8 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
   // breaks a line). A lone sync joins the noise run before it (or starts one); a bad length is a
   // report of its own, showing the header so far and the byte that broke it (`broke`, which is
   // read again).
-  constexpr std::optional<item> reject_header(std::uint8_t broke) noexcept {
-    std::optional<item> drop;
+  constexpr bool reject_header(std::uint8_t broke) noexcept {
+    bool drop = false;
     if (flen_ == 1) {
       lone_sync();
     } else {
@@ -607,21 +630,20 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
     add_drop(s + from, to - from);
   }
 
-  // The open report as an item (nullopt when none is open).
-  constexpr std::optional<item> close_drop() noexcept {
-    if (!drop_open_) return std::nullopt;
+  // The open report as the item (false when none is open).
+  constexpr bool close_drop() noexcept {
+    if (!drop_open_) return false;
     drop_open_ = false;
-    if (!report_drops_) return std::nullopt;  // turned off while the report was open
-    std::optional<item> out = make_item(stream_item_kind::dropped, doffset_, dline_);
-    out->drop = stream_drop{dreason_, dsize_, std::string_view(dbuf_, dlen_)};
-    return out;
+    if (!report_drops_) return false;  // turned off while the report was open
+    item& out = make_item(stream_item_kind::dropped, doffset_, dline_);
+    out.drop = stream_drop{dreason_, dsize_, std::string_view(dbuf_, dlen_)};
+    return true;
   }
 
   // The candidate fbuf_[0, shown) as a report of `size` dropped bytes.
-  constexpr std::optional<item> candidate_drop(drop_reason why, std::size_t size,
-                                               std::size_t shown) noexcept {
+  constexpr bool candidate_drop(drop_reason why, std::size_t size, std::size_t shown) noexcept {
     open_drop(why, frame_start_);
-    if (!drop_open_) return std::nullopt;
+    if (!drop_open_) return false;
     for (std::size_t k = 0; k < shown; ++k) dbuf_[k] = static_cast<char>(fbuf_[k]);
     dlen_ = shown;
     dsize_ = size;
@@ -642,7 +664,7 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
   }
 
   // Both sources are used up and finish() was called: resolve what is pending.
-  constexpr std::optional<item> end_of_stream() noexcept {
+  constexpr bool end_of_stream() noexcept {
     const state was = state_;
     state_ = state::idle;
     switch (was) {
@@ -654,36 +676,45 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
           break;
         } else if (flen_ == 1) {  // a lone sync: not even a frame id
           lone_sync();
-          return std::nullopt;  // the noise report closes on the next call
+          return false;  // the noise report closes on the next call
         } else {
           ++stats_.truncated_frames;
-          std::optional<item> drop = candidate_drop(drop_reason::truncated_frame, 1, flen_);
+          const bool drop = candidate_drop(drop_reason::truncated_frame, 1, flen_);
           read_again();
           return drop;
         }
       case state::idle:
       case state::discard: return close_drop();
     }
-    return std::nullopt;
+    return false;
   }
 
-  // An item built in the optional that next() returns, not copied into it (an item with a
-  // frame's bytes and value is a few hundred bytes).
-  static constexpr std::optional<item> make_item(stream_item_kind kind, std::uint64_t offset,
-                                                 std::uint64_t line) noexcept {
-    std::optional<item> out(std::in_place);
-    out->kind = kind;
-    out->offset = offset;
-    out->line = line;
-    return out;
+  // The item cur_ as one of `kind`: its members of the other kinds back to their defaults (only
+  // where an item of another kind has set them, so a run of sentences rewrites just what a
+  // sentence holds); the caller sets those of `kind`.
+  constexpr item& make_item(stream_item_kind kind, std::uint64_t offset,
+                            std::uint64_t line) noexcept {
+    if (kind != stream_item_kind::sentence && cur_holds_sentence_) cur_.sentence = {};
+    if (kind != stream_item_kind::frame && cur_holds_frame_) {
+      cur_.bytes = {};
+      cur_.frame = {};
+    }
+    if (kind != stream_item_kind::dropped && cur_holds_drop_) cur_.drop = {};
+    cur_holds_sentence_ = kind == stream_item_kind::sentence;
+    cur_holds_frame_ = kind == stream_item_kind::frame;
+    cur_holds_drop_ = kind == stream_item_kind::dropped;
+    cur_.kind = kind;
+    cur_.offset = offset;
+    cur_.line = line;
+    return cur_;
   }
 
-  constexpr std::optional<item> yield_sentence(std::string_view line_text, line_ending e) noexcept {
+  constexpr bool yield_sentence(std::string_view line_text, line_ending e) noexcept {
     ++stats_.sentences;
-    std::optional<item> out = make_item(stream_item_kind::sentence, sentence_start_, line_);
-    out->sentence = framed_line{line_text, e, line_};
+    make_item(stream_item_kind::sentence, sentence_start_, line_).sentence =
+        framed_line{line_text, e, line_};
     if (e != line_ending::none) ++line_;
-    return out;
+    return true;
   }
 
   constexpr void stash(const char* s, std::size_t from, std::size_t to, std::size_t have) noexcept {
@@ -736,6 +767,11 @@ requires(std::same_as<F, no_frames> || frame_recognizer<F>) class stream_reader 
   std::array<std::uint8_t, frame_size> fbuf_{};  // the candidate (state frame)
   std::array<char, replay_capacity> replay_{};   // its bytes after the sync, to read again
   char lbuf_[Capacity]{};
+  // The item handed out last: the callbacks get it, next() a copy of it.
+  item cur_{};
+  bool cur_holds_sentence_ = false;  // cur_.sentence is not the default
+  bool cur_holds_frame_ = false;     // cur_.bytes and cur_.frame are not the defaults
+  bool cur_holds_drop_ = false;      // cur_.drop is not the default
 };
 
 }  // namespace seawire::nmea
