@@ -452,29 +452,45 @@ class decoder {
   }
 
   // The policy of the role that receives the sentence's address (tools::receiving_policy), or
-  // the sending rules with --strict, with --checksum's rule. The last address's is kept: logs
-  // repeat a few addresses.
+  // the sending rules with --strict, with --checksum's rule. Kept per address in a small table:
+  // a log repeats a few dozen addresses, and finding an address's role walks every role's set.
   const nmea::parse_policy& policy_for(std::string_view text) {
-    std::string_view address = text.substr(1);
-    address = address.substr(0, address.find_first_of(",*"));
-    if (address.size() == policy_address_size_ &&
-        address == std::string_view(policy_address_.data(), policy_address_size_))
-      return policy_;
-    policy_ = opt_.strict ? nmea::parse_policy::strict() : tools::receiving_policy(address);
-    if (opt_.checksum) policy_.checksum = *opt_.checksum;
+    // The address: up to the first ',' or '*' after the start character. One longer than a
+    // table entry holds (no sentence has one) is looked up every time.
+    const std::size_t most = policy_entry::address_capacity;
+    std::size_t n = 0;
+    std::uint32_t hash = 0;
+    while (n <= most && n + 1 < text.size() && text[n + 1] != ',' && text[n + 1] != '*') {
+      hash = hash * 31U + static_cast<unsigned char>(text[n + 1]);
+      ++n;
+    }
+    const std::string_view address = text.substr(1, n);
+    if (n > most) {
+      std::string_view whole = text.substr(1);
+      whole = whole.substr(0, whole.find_first_of(",*"));
+      policy_slow_ = policy_of(whole);
+      return policy_slow_;
+    }
+    policy_entry& e = policies_[hash % policies_.size()];
+    if (e.size != n || address != std::string_view(e.address.data(), e.size)) {
+      e.policy = policy_of(address);
+      std::copy(address.begin(), address.end(), e.address.begin());
+      e.size = n;
+    }
+    return e.policy;
+  }
+
+  [[nodiscard]] nmea::parse_policy policy_of(std::string_view address) const {
+    nmea::parse_policy p =
+        opt_.strict ? nmea::parse_policy::strict() : tools::receiving_policy(address);
+    if (opt_.checksum) p.checksum = *opt_.checksum;
     // A checksum that is not checked has no case to check either (--strict asks for uppercase
     // hex only of a checksum it verifies). What is after '*' must still be two hex digits: the
     // library reads it as the sentence's end, and anything else there is no sentence.
-    if (policy_.checksum == nmea::checksum_policy::ignore) policy_.lowercase_hex = true;
+    if (p.checksum == nmea::checksum_policy::ignore) p.lowercase_hex = true;
     // The reader has taken the line ending off: it is checked from what the reader saw.
-    policy_.require_crlf = false;
-    if (address.size() <= policy_address_.size()) {
-      std::copy(address.begin(), address.end(), policy_address_.begin());
-      policy_address_size_ = address.size();
-    } else {
-      policy_address_size_ = policy_address_.size() + 1;  // no address matches
-    }
-    return policy_;
+    p.require_crlf = false;
+    return p;
   }
 
   // The JSON "type" of a message: its address, or talker + type for talker-agnostic ones.
@@ -600,9 +616,15 @@ class decoder {
   }
 
   const options& opt_;
-  nmea::parse_policy policy_;  // policy_for's, for the address below
-  std::array<char, 16> policy_address_{};
-  std::size_t policy_address_size_ = policy_address_.size() + 1;  // none yet
+  // policy_for's table: an address's policy, in the slot of the address's hash.
+  struct policy_entry {
+    static constexpr std::size_t address_capacity = 16;
+    std::array<char, address_capacity> address{};
+    std::size_t size = address_capacity + 1;  // none yet
+    nmea::parse_policy policy;
+  };
+  std::array<policy_entry, 64> policies_{};
+  nmea::parse_policy policy_slow_;  // policy_for's, for an address too long for the table
   sink& out_;
   anello::stream_reader<1024> reader_;
   std::uint64_t candidate_end_ = 0;  // stream offset just past the last rejected frame candidate
