@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
-// Built with SEAWIRE_SEPARATE_COMPILATION (seawire::compiled): the role decoders, the library
-// sets' decoders and its messages' encoders are declared here and defined once, in
-// src/seawire_compiled.cpp. Each gives what it gives header-only.
+// Built with SEAWIRE_SEPARATE_COMPILATION (seawire::compiled): the library sets' decoders and its
+// messages' encoders are declared here and defined once, in src/seawire_compiled.cpp; the role
+// decoders, compiled here, decode through their set's. Each gives what it gives header-only.
 // (The ctest test separate_compilation_declares_only checks with nm that this translation unit
-// holds no definition of them.)
+// holds no definition of the sets' decoders and encoders, and references every set decoder
+// seawire_compiled defines.)
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <span>
@@ -26,7 +27,7 @@
 
 using namespace seawire;
 
-TEST_CASE("separate compilation: every role decoder, declared here, defined once") {
+TEST_CASE("separate compilation: every role decoder, through its set's decoder compiled once") {
   const auto cp = kingfisher::decode_from_vehicle("$CPALT,164959.100,1*62\r\n");
   REQUIRE(cp);
   CHECK(std::get<kingfisher::cpalt>(cp.value).lights_on);
