@@ -4,10 +4,11 @@
 # role decoders call them) and encodes its messages holds none of their code, only references
 # to them; seawire_compiled's, including <seawire/impl/src.hpp>, defines them. Fails otherwise:
 # a test object built header-only defines its decoders and encoders and references none, and
-# every set decoder seawire_compiled defines must be one the test calls.
+# every set decoder seawire_compiled defines (of a sentence, of a line) must be one the test calls.
 cmake_minimum_required(VERSION 3.25)
-set(kinds set_decoder encoder)
+set(kinds set_decoder line_decoder encoder)
 set(set_decoder "compiled_set_decode<")
+set(line_decoder "compiled_set_decode_line<")
 set(encoder "compiled_encode_to<")
 set(checked 0)
 foreach(object IN LISTS OBJECTS)
@@ -53,16 +54,20 @@ endforeach()
 if(NOT checked EQUAL 2)
   message(FATAL_ERROR "expected the test's object and seawire_compiled's among: ${OBJECTS}")
 endif()
-# The test calls every set seawire_compiled compiles (through a role decoder or directly).
-list(SORT test_set_decoder)
-list(REMOVE_DUPLICATES test_set_decoder)
-list(SORT compiled_set_decoder)
-if(NOT test_set_decoder STREQUAL compiled_set_decoder)
-  string(REPLACE ";" "\n" wanted "${compiled_set_decoder}")
-  string(REPLACE ";" "\n" got "${test_set_decoder}")
-  message(FATAL_ERROR "the test references these set decoders:\n${got}\n"
-                      "seawire_compiled defines these:\n${wanted}")
-endif()
-list(LENGTH test_set_decoder sets)
-message(STATUS "the test's translation unit references the ${sets} set decoders and the encoders, "
-               "and defines none")
+# The test calls every set decoder seawire_compiled compiles, of a sentence and of a line (through
+# a role decoder or directly).
+foreach(kind IN ITEMS set_decoder line_decoder)
+  list(SORT test_${kind})
+  list(REMOVE_DUPLICATES test_${kind})
+  list(SORT compiled_${kind})
+  if(NOT test_${kind} STREQUAL compiled_${kind})
+    string(REPLACE ";" "\n" wanted "${compiled_${kind}}")
+    string(REPLACE ";" "\n" got "${test_${kind}}")
+    message(FATAL_ERROR "the test references these ${kind}s:\n${got}\n"
+                        "seawire_compiled defines these:\n${wanted}")
+  endif()
+  list(LENGTH test_${kind} count)
+  message(STATUS "the test references each of the ${count} ${kind}s")
+endforeach()
+message(STATUS "the test's translation unit references the set decoders and the encoders, and "
+               "defines none")

@@ -37,9 +37,11 @@
 #define SEAWIRE_DEFINE_ENCODER(M)                                                     \
   template seawire::result<std::size_t> seawire::nmea::detail::compiled_encode_to<M>( \
       const M&, std::span<char>) noexcept;
-#define SEAWIRE_DEFINE_SET(Set)                                                           \
-  template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode<Set>( \
-      const seawire::nmea::sentence_view&, const seawire::nmea::parse_policy&) noexcept;
+#define SEAWIRE_DEFINE_SET(Set)                                                                \
+  template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode<Set>(      \
+      const seawire::nmea::sentence_view&, const seawire::nmea::parse_policy&) noexcept;       \
+  template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode_line<Set>( \
+      std::string_view, const seawire::nmea::parse_policy&) noexcept;
 SEAWIRE_DEFINE_ENCODER(seawire::standard::rmc)
 SEAWIRE_DEFINE_ENCODER(seawire::standard::gga)
 SEAWIRE_DEFINE_ENCODER(seawire::standard::rpm)
