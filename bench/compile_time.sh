@@ -28,20 +28,30 @@ best_of() {
   echo "$best"
 }
 
+compiled=seawire_compiled.cpp
+tus=(include_all decode_one encode_one role_decoder kingfisher_payload every_family)
+separate=-DSEAWIRE_SEPARATE_COMPILATION
+separate_tus=(role_decoder kingfisher_payload every_family)
+# The name column is as wide as the longest name, so that the figures line up.
+width=0
+for name in baseline "${tus[@]}" "${separate_tus[@]/%/ (separate)}" "$compiled"; do
+  if ((${#name} > width)); then width=${#name}; fi
+done
+
 echo "$("$cxx" --version | head -n 1); best of $runs"
 base=$(best_of "$root/bench/compile/baseline.cpp")
-printf '%-26s %6.2f s  %5s\n' baseline "$base" "1.0x"
+printf '%-*s %6.2f s  %5s\n' "$width" baseline "$base" "1.0x"
 row() {  # row <name> <file> [flags...]
   local name=$1 t
   shift
   t=$(best_of "$@")
-  printf '%-26s %6.2f s  %4.1fx\n' "$name" "$t" "$(awk -v t="$t" -v b="$base" 'BEGIN { print t / b }')"
+  printf '%-*s %6.2f s  %4.1fx\n' "$width" "$name" "$t" \
+    "$(awk -v t="$t" -v b="$base" 'BEGIN { print t / b }')"
 }
-for tu in include_all decode_one encode_one role_decoder kingfisher_payload every_family; do
+for tu in "${tus[@]}"; do
   row "$tu" "$root/bench/compile/$tu.cpp"
 done
-separate=-DSEAWIRE_SEPARATE_COMPILATION
-row "role_decoder (separate)" "$root/bench/compile/role_decoder.cpp" "$separate"
-row "kingfisher_payload (separate)" "$root/bench/compile/kingfisher_payload.cpp" "$separate"
-row "every_family (separate)" "$root/bench/compile/every_family.cpp" "$separate"
-row "seawire_compiled.cpp" "$root/src/seawire_compiled.cpp" "$separate"
+for tu in "${separate_tus[@]}"; do
+  row "$tu (separate)" "$root/bench/compile/$tu.cpp" "$separate"
+done
+row "$compiled" "$root/src/$compiled" "$separate"

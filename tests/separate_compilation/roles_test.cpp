@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
-// Built with SEAWIRE_SEPARATE_COMPILATION (seawire::compiled): the role decoders, the library
-// sets' decoders and its messages' encoders are declared here and defined once, in
-// src/seawire_compiled.cpp. Each gives what it gives header-only.
+// Built with SEAWIRE_SEPARATE_COMPILATION (seawire::compiled): the library sets' decoders and its
+// messages' encoders are declared here and defined once, in src/seawire_compiled.cpp; the role
+// decoders, compiled here, decode through their set's. Each gives what it gives header-only.
 // (The ctest test separate_compilation_declares_only checks with nm that this translation unit
-// holds no definition of them.)
+// holds no definition of the sets' decoders and encoders, and references every set decoder
+// seawire_compiled defines.)
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <span>
@@ -26,7 +27,7 @@
 
 using namespace seawire;
 
-TEST_CASE("separate compilation: every role decoder, declared here, defined once") {
+TEST_CASE("separate compilation: every role decoder, through its set's decoder compiled once") {
   const auto cp = kingfisher::decode_from_vehicle("$CPALT,164959.100,1*62\r\n");
   REQUIRE(cp);
   CHECK(std::get<kingfisher::cpalt>(cp.value).lights_on);
@@ -87,6 +88,16 @@ static_assert(encoders_compiled(static_cast<const registry::sentences*>(nullptr)
 static_assert(
     sets_compiled(static_cast<const std::remove_cvref_t<decltype(registry::roles)>*>(nullptr)));
 
+// Set::decode of a sentence already parsed (the role decoders and Set::decode of a line go
+// through the set's decoder of a line).
+template <class Set, class M>
+bool decodes_parsed_as(std::string_view line, const nmea::parse_policy& policy) {
+  const auto s = nmea::parse(line, policy);
+  if (!s) return false;
+  const auto r = Set::decode(s.value, policy);
+  return r && std::holds_alternative<M>(r.value);
+}
+
 template <class M>
 std::string_view encoded(const M& m, std::span<char> buffer) {
   const result<std::size_t> r = nmea::encode_to(m, buffer);
@@ -130,6 +141,20 @@ TEST_CASE("separate compilation: the sets' decoders and the messages' encoders, 
   CHECK(encoded(std::get<standard::vhw>(vhw.value), buffer) ==
         "$VWVHW,87.3,T,,M,4.67,N,8.64,K*49\r\n");
   CHECK(anello::nmea_outputs::decode(rmc_line));
+
+  CHECK(decodes_parsed_as<kingfisher::from_vehicle, kingfisher::cpalt>(
+      "$CPALT,164959.100,1*62\r\n", kingfisher::payload_policy()));
+  CHECK(decodes_parsed_as<kingfisher::to_vehicle, kingfisher::pydir>(pydir_line,
+                                                                     kingfisher::vehicle_policy()));
+  CHECK(decodes_parsed_as<sandshark::from_vehicle, sandshark::bfver>(
+      "$BFVER,081025.987,1.0*7C\r\n", sandshark::from_vehicle_policy));
+  CHECK(decodes_parsed_as<sandshark::to_vehicle, sandshark::bplog>("$BPLOG,NVG,ON*08\r\n",
+                                                                   sandshark::to_vehicle_policy));
+  CHECK(decodes_parsed_as<robotx::reports, robotx::rxgat>(gat_line, robotx::judge_policy));
+  CHECK(decodes_parsed_as<anello::nmea_inputs, standard::vhw>(
+      "$VWVHW,87.3,T,,M,4.67,N,8.64,K*49\r\n", anello::input_policy));
+  CHECK(decodes_parsed_as<anello::nmea_outputs, standard::rmc>(rmc_line, anello::output_policy));
+  CHECK(decodes_parsed_as<registry::standard_sentences, standard::rmc>(rmc_line, {}));
 
   // visit: the message, unknown_sentence, or a known message's error without a call.
   const auto view = nmea::parse(pydir_line, kingfisher::vehicle_policy());

@@ -299,6 +299,53 @@ struct sensor_field {
   }
 };
 
+/// What describe_frame refuses in a row. Each is declared and never defined: describe_frame
+/// calls one only for a row that makes no sense, and a call to a function that is not constexpr
+/// stops the compile there, the function's name saying what is wrong.
+namespace frame_table::bad_row {
+void name_is_empty();
+void in_range_has_lo_above_hi();
+void divisor_is_not_a_positive_power_of_ten();
+void divisor_on_a_field_whose_value_is_not_a_double();
+void in_range_times_divisor_does_not_fit_the_wire_type_below_its_maximum();
+void also_not_available_is_the_wire_type_maximum_already_not_available();
+}  // namespace frame_table::bad_row
+
+namespace detail {
+// Whether lo * divisor and hi * divisor, both computed without overflow, are values of Raw
+// other than its maximum (the maximum reads "not available", so a sender could not write it).
+template <class Raw>
+[[nodiscard]] consteval bool fits_wire_type(value_range r, std::int64_t divisor) {
+  constexpr std::int64_t int64_max = std::numeric_limits<std::int64_t>::max();
+  constexpr std::int64_t int64_min = std::numeric_limits<std::int64_t>::min();
+  const auto fits = [&](std::int64_t v) {
+    if (v > int64_max / divisor || v < int64_min / divisor) return false;
+    const std::int64_t wire = v * divisor;
+    return std::in_range<Raw>(wire) && std::cmp_less(wire, detail::not_available<Raw>);
+  };
+  return fits(r.lo) && fits(r.hi);
+}
+
+// Stops the compile at the first fact of the row that makes no sense (bad_row).
+template <class F>
+consteval void check_row(const F& f) {
+  using raw_type = typename F::raw_type;
+  if (f.name.empty()) frame_table::bad_row::name_is_empty();
+  std::int64_t d = f.divisor;
+  while (d >= 10 && d % 10 == 0) d /= 10;
+  if (d != 1) frame_table::bad_row::divisor_is_not_a_positive_power_of_ten();
+  if (!std::is_same_v<typename F::value_type, double> && f.divisor != 1)
+    frame_table::bad_row::divisor_on_a_field_whose_value_is_not_a_double();
+  if (f.allowed) {
+    if (f.allowed->lo > f.allowed->hi) frame_table::bad_row::in_range_has_lo_above_hi();
+    if (!fits_wire_type<raw_type>(*f.allowed, f.divisor))
+      frame_table::bad_row::in_range_times_divisor_does_not_fit_the_wire_type_below_its_maximum();
+  }
+  if (f.also_not_available && *f.also_not_available == detail::not_available<raw_type>)
+    frame_table::bad_row::also_not_available_is_the_wire_type_maximum_already_not_available();
+}
+}  // namespace detail
+
 /// The vocabulary of the frame's table: rows `field<&raw, &value>("name", facts...)` given to
 /// describe_frame. (A namespace of its own, so that `using namespace seawire::anello` does not
 /// bring in names as common as `field`.)
@@ -365,10 +412,15 @@ template <auto RawMember, auto ValueMember, class... Facts>
 }
 
 /// The frame's table from its rows in wire order: each field starts where the one before ends,
-/// after the 8-byte header; the JSON key is the name unless a row says.
+/// after the 8-byte header; the JSON key is the name unless a row says. A row that makes no
+/// sense does not compile (bad_row names why): an empty name, a divisor that is not a positive
+/// power of ten or is not 1 on a field whose value is not a double, an in_range whose lo is
+/// above its hi or which, times the divisor, does not fit the wire type below its maximum (the
+/// maximum is "not available"), an also_not_available that is that maximum.
 template <class... Fields>
 [[nodiscard]] consteval seawire::detail::row_list<Fields...> describe_frame(
     Fields... rows) noexcept {
+  (detail::check_row(rows), ...);
   seawire::detail::row_list<Fields...> fields = seawire::detail::make_rows(rows...);
   seawire::detail::for_each_row(fields, 8 * header_size, [](auto& field, unsigned bit, auto) {
     field.offset = bit / 8;
@@ -431,20 +483,15 @@ constexpr bool visit_sensor_fields(Fn&& fn) {
 
 inline constexpr auto frame_order = seawire::detail::bit_order::msb_first;
 
-// The table against the spec: 19 fields filling bytes 8 to 56, named, and no sender range
-// reaching past its wire type.
+// The table against the spec: 19 fields filling bytes 8 to 56. (describe_frame checked each
+// row's facts.)
 consteval bool sensor_fields_match_spec() {
   std::size_t end = header_size;
-  bool ok = true;
   visit_sensor_fields([&](std::uint16_t, const auto& field) {
-    using raw_type = typename std::remove_cvref_t<decltype(field)>::raw_type;
-    const auto [lo, hi] = field.wire_limits();
-    ok = ok && lo <= hi && std::in_range<raw_type>(lo) && std::in_range<raw_type>(hi) &&
-         !field.name.empty() && !field.json_key.empty();
-    end = field.offset + sizeof(raw_type);
+    end = field.offset + sizeof(typename std::remove_cvref_t<decltype(field)>::raw_type);
     return true;
   });
-  return ok && end == frame_size &&
+  return end == frame_size &&
          seawire::detail::layout_bits<decltype(sensor_fields)> == 8 * payload_size &&
          std::remove_cv_t<decltype(sensor_fields)>::size == sensor_field_count;
 }

@@ -11,7 +11,6 @@
 #include <string_view>
 
 #include "seawire/anello/gpsctrl.hpp"
-#include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -54,23 +53,16 @@ inline constexpr nmea::parse_policy output_policy = input_policy;
 /// Decode one line as the INS would. Sentences it does not take come back as unknown_sentence,
 /// not as an error.
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<nmea_inputs::variant> decode_input(
+[[nodiscard]] constexpr result<nmea_inputs::variant> decode_input(
     std::string_view line, const nmea::parse_policy& policy = input_policy) noexcept {
   return nmea::lazy<nmea_inputs, N>::decode(line, policy);
 }
 /// Decode one line of the INS's output.
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<nmea_outputs::variant> decode_output(
+[[nodiscard]] constexpr result<nmea_outputs::variant> decode_output(
     std::string_view line, const nmea::parse_policy& policy = output_policy) noexcept {
   return nmea::lazy<nmea_outputs, N>::decode(line, policy);
 }
-
-#if defined(SEAWIRE_SEPARATE_COMPILATION)
-extern template result<nmea_inputs::variant> decode_input<0>(std::string_view,
-                                                             const nmea::parse_policy&) noexcept;
-extern template result<nmea_outputs::variant> decode_output<0>(std::string_view,
-                                                               const nmea::parse_policy&) noexcept;
-#endif
 
 // ---------------------------------------------------------------------------------------------
 // SI values to the NMEA speed sentences

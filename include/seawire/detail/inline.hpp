@@ -4,15 +4,6 @@
 // must be inlined where a field table is walked, so options are constants, absent checks compile
 // away and the reader stays in registers (GCC -O2 keeps them out of line otherwise).
 // SEAWIRE_NOINLINE keeps rare paths out; SEAWIRE_FLATTEN inlines the framer's next() whole.
-// SEAWIRE_COMPILED marks the role decoders: constexpr header-only; with
-// SEAWIRE_SEPARATE_COMPILATION defined (in every translation unit of a program), plain
-// declarations whose one definition is in the translation unit including <seawire/impl/src.hpp>.
-
-#if defined(SEAWIRE_SEPARATE_COMPILATION)
-#define SEAWIRE_COMPILED
-#else
-#define SEAWIRE_COMPILED constexpr
-#endif
 
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE__)
 // Unoptimized builds (debug, sanitizers): forced inlining there only makes huge functions that

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The one definition of what SEAWIRE_SEPARATE_COMPILATION leaves declared in the headers: the
-// role decoders, the decoders of the library's message sets and the encoders of its messages.
+// decoders of the library's message sets (which the role decoders call) and the encoders of its
+// messages.
 // Include this header in exactly one translation unit of a program built with
 // SEAWIRE_SEPARATE_COMPILATION defined everywhere, or link the CMake target seawire::compiled,
 // which does both.
@@ -31,40 +32,16 @@
 #include "seawire/standard/vhw.hpp"
 #include "seawire/standard/vwr.hpp"
 
-namespace seawire {
-
-template result<kingfisher::from_vehicle::variant> kingfisher::decode_from_vehicle<0>(
-    std::string_view, const nmea::parse_policy&) noexcept;
-template result<kingfisher::to_vehicle::variant> kingfisher::decode_to_vehicle<0>(
-    std::string_view, const nmea::parse_policy&) noexcept;
-
-template result<sandshark::from_vehicle::variant> sandshark::decode_from_vehicle<0>(
-    std::string_view) noexcept;
-template result<sandshark::from_vehicle::variant> sandshark::decode_from_vehicle<0>(
-    const nmea::sentence_view&) noexcept;
-template result<sandshark::to_vehicle::variant> sandshark::decode_to_vehicle<0>(
-    std::string_view) noexcept;
-template result<sandshark::to_vehicle::variant> sandshark::decode_to_vehicle<0>(
-    const nmea::sentence_view&) noexcept;
-
-template result<anello::nmea_inputs::variant> anello::decode_input<0>(
-    std::string_view, const nmea::parse_policy&) noexcept;
-template result<anello::nmea_outputs::variant> anello::decode_output<0>(
-    std::string_view, const nmea::parse_policy&) noexcept;
-
-template result<robotx::reports::variant> robotx::decode_report<0>(
-    std::string_view, const nmea::parse_policy&) noexcept;
-
-}  // namespace seawire
-
 // Each library message's encoder and each library set's decoder, as SEAWIRE_COMPILED_ENCODER and
 // SEAWIRE_COMPILED_SET declared them.
 #define SEAWIRE_DEFINE_ENCODER(M)                                                     \
   template seawire::result<std::size_t> seawire::nmea::detail::compiled_encode_to<M>( \
       const M&, std::span<char>) noexcept;
-#define SEAWIRE_DEFINE_SET(Set)                                                           \
-  template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode<Set>( \
-      const seawire::nmea::sentence_view&, const seawire::nmea::parse_policy&) noexcept;
+#define SEAWIRE_DEFINE_SET(Set)                                                                \
+  template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode<Set>(      \
+      const seawire::nmea::sentence_view&, const seawire::nmea::parse_policy&) noexcept;       \
+  template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode_line<Set>( \
+      std::string_view, const seawire::nmea::parse_policy&) noexcept;
 SEAWIRE_DEFINE_ENCODER(seawire::standard::rmc)
 SEAWIRE_DEFINE_ENCODER(seawire::standard::gga)
 SEAWIRE_DEFINE_ENCODER(seawire::standard::rpm)

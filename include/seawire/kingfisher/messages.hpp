@@ -13,7 +13,6 @@
 #include <variant>
 
 #include "seawire/bluefin/navigation.hpp"
-#include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -315,7 +314,7 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
 /// Payload side: one line from the vehicle. Addresses outside `from_vehicle` (PY*, other
 /// GPS sentences) give unknown_sentence, which views into `line`.
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<from_vehicle::variant> decode_from_vehicle(
+[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
     std::string_view line, const nmea::parse_policy& policy = payload_policy()) noexcept {
   return nmea::lazy<from_vehicle, N>::decode(line, policy);
 }
@@ -323,17 +322,10 @@ template <int N = 0>
 /// Vehicle side: one command line from a payload. Addresses outside `to_vehicle` give
 /// unknown_sentence, which views into `line`.
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<to_vehicle::variant> decode_to_vehicle(
+[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
     std::string_view line, const nmea::parse_policy& policy = vehicle_policy()) noexcept {
   return nmea::lazy<to_vehicle, N>::decode(line, policy);
 }
-
-#if defined(SEAWIRE_SEPARATE_COMPILATION)
-extern template result<from_vehicle::variant> decode_from_vehicle<0>(
-    std::string_view, const nmea::parse_policy&) noexcept;
-extern template result<to_vehicle::variant> decode_to_vehicle<0>(
-    std::string_view, const nmea::parse_policy&) noexcept;
-#endif
 
 }  // namespace seawire::kingfisher
 

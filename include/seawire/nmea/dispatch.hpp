@@ -87,6 +87,11 @@ inline constexpr bool compiled_set = false;
 template <class Set>
 [[nodiscard]] result<typename Set::variant> compiled_set_decode(const sentence_view& s,
                                                                 const parse_policy& p) noexcept;
+/// Set::decode of a line (the parse, then compiled_set_decode), likewise: a role decoder's
+/// caller compiles neither.
+template <class Set>
+[[nodiscard]] result<typename Set::variant> compiled_set_decode_line(
+    std::string_view line, const parse_policy& p) noexcept;
 }  // namespace detail
 
 template <message_like... Ms>
@@ -132,9 +137,13 @@ struct message_set {
   }
   [[nodiscard]] static constexpr result<variant> decode(std::string_view line,
                                                         const parse_policy& p = {}) noexcept {
-    const result<sentence_view> s = parse(line, p);
-    if (!s) return detail::parse_failure<variant>(s);
-    return decode(s.value, p);
+    if constexpr (detail::compiled_set<message_set>) {
+      return detail::compiled_set_decode_line<message_set>(line, p);
+    } else {
+      const result<sentence_view> s = parse(line, p);
+      if (!s) return detail::parse_failure<variant>(s);
+      return decode_here(s.value, p);
+    }
   }
 
   /// decode(s, p) compiled where it is called (what a set compiled once runs in that one place).
@@ -212,6 +221,13 @@ result<typename Set::variant> compiled_set_decode(const sentence_view& s,
                                                   const parse_policy& p) noexcept {
   return Set::decode_here(s, p);
 }
+template <class Set>
+result<typename Set::variant> compiled_set_decode_line(std::string_view line,
+                                                       const parse_policy& p) noexcept {
+  const result<sentence_view> s = parse(line, p);
+  if (!s) return parse_failure<typename Set::variant>(s);
+  return compiled_set_decode<Set>(s.value, p);
+}
 
 // Appends each of Ms to Set unless it is already there.
 template <class Set, class... Ms>
@@ -262,7 +278,10 @@ struct merge_sets<message_set<A...>, message_set<B...>, Rest...> {
   template <>                                                                                    \
   inline constexpr bool seawire::nmea::detail::compiled_set<Set> = true;                         \
   extern template seawire::result<Set::variant> seawire::nmea::detail::compiled_set_decode<Set>( \
-      const seawire::nmea::sentence_view&, const seawire::nmea::parse_policy&) noexcept;
+      const seawire::nmea::sentence_view&, const seawire::nmea::parse_policy&) noexcept;         \
+  extern template seawire::result<Set::variant>                                                  \
+  seawire::nmea::detail::compiled_set_decode_line<Set>(                                          \
+      std::string_view, const seawire::nmea::parse_policy&) noexcept;
 #else
 #define SEAWIRE_COMPILED_SET(Set)
 #endif

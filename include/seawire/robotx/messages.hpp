@@ -14,7 +14,6 @@
 #include <utility>
 
 #include "seawire/detail/fixed_string.hpp"
-#include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -282,15 +281,10 @@ inline constexpr report_type report_type_of = report_traits<M>::type;
 /// Decode one line into whichever report it is, under the judges' policy by default. A
 /// well-formed sentence with another address gives unknown_sentence (not an error).
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<reports::variant> decode_report(
+[[nodiscard]] constexpr result<reports::variant> decode_report(
     std::string_view line, const nmea::parse_policy& policy = judge_policy) noexcept {
   return nmea::lazy<reports, N>::decode(line, policy);
 }
-
-#if defined(SEAWIRE_SEPARATE_COMPILATION)
-extern template result<reports::variant> decode_report<0>(std::string_view,
-                                                          const nmea::parse_policy&) noexcept;
-#endif
 
 /// Decode one line and call `on_report(const M&)` for it (or `(const unknown_sentence&)`).
 /// Returns the error, without calling the visitor, when the line does not decode.

@@ -20,7 +20,6 @@
 #include "seawire/bluefin/navigation.hpp"
 #include "seawire/detail/enum_names.hpp"
 #include "seawire/detail/fixed_string.hpp"
-#include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -347,35 +346,26 @@ inline constexpr nmea::parse_policy to_vehicle_policy{
 // The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode a line the vehicle sent; an address the set does not know is unknown_sentence.
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<from_vehicle::variant> decode_from_vehicle(
+[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
     std::string_view line) noexcept {
   return nmea::lazy<from_vehicle, N>::decode(line, from_vehicle_policy);
 }
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<from_vehicle::variant> decode_from_vehicle(
+[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
     const nmea::sentence_view& s) noexcept {
   return nmea::lazy<from_vehicle, N>::decode(s, from_vehicle_policy);
 }
 /// Decode a line the payload sent.
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<to_vehicle::variant> decode_to_vehicle(
+[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
     std::string_view line) noexcept {
   return nmea::lazy<to_vehicle, N>::decode(line, to_vehicle_policy);
 }
 template <int N = 0>
-[[nodiscard]] SEAWIRE_COMPILED result<to_vehicle::variant> decode_to_vehicle(
+[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
     const nmea::sentence_view& s) noexcept {
   return nmea::lazy<to_vehicle, N>::decode(s, to_vehicle_policy);
 }
-
-#if defined(SEAWIRE_SEPARATE_COMPILATION)
-extern template result<from_vehicle::variant> decode_from_vehicle<0>(std::string_view) noexcept;
-extern template result<from_vehicle::variant> decode_from_vehicle<0>(
-    const nmea::sentence_view&) noexcept;
-extern template result<to_vehicle::variant> decode_to_vehicle<0>(std::string_view) noexcept;
-extern template result<to_vehicle::variant> decode_to_vehicle<0>(
-    const nmea::sentence_view&) noexcept;
-#endif
 
 /// The 3-letter id the SPI uses for a message in BPLOG and BFACK: "BFNVG" -> "NVG". Other
 /// addresses are returned unchanged.

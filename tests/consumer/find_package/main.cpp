@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // A program using seawire as a downstream project would. ctest builds it against an installed
 // seawire (find_package) and against the source tree (add_subdirectory), each time twice:
-// header-only (seawire::seawire) and with the role decoders compiled once (seawire::compiled).
+// header-only (seawire::seawire) and with the library's decoders and encoders compiled once
+// (seawire::compiled).
 #include <cstdio>
 #include <string_view>
 #include <variant>
@@ -28,7 +29,8 @@ int main() {
 #endif
   expect(seawire::name(seawire::errc::checksum_mismatch) == "checksum_mismatch",
          "name(errc::checksum_mismatch)");
-  // A role decoder: declared only when SEAWIRE_SEPARATE_COMPILATION is defined.
+  // A role decoder: its set's decoder is declared only when SEAWIRE_SEPARATE_COMPILATION is
+  // defined.
   const auto alt = seawire::kingfisher::decode_from_vehicle("$CPALT,164959.100,1*62\r\n");
   expect(alt && std::holds_alternative<seawire::kingfisher::cpalt>(alt.value) &&
              std::get<seawire::kingfisher::cpalt>(alt.value).lights_on,
@@ -37,7 +39,7 @@ int main() {
              seawire::errc::checksum_mismatch,
          "decode_from_vehicle refuses a wrong checksum");
 #ifdef SEAWIRE_SEPARATE_COMPILATION
-  std::printf("role decoders compiled once\n");
+  std::printf("decoders and encoders compiled once\n");
 #endif
   return failures == 0 ? 0 : 1;
 }
