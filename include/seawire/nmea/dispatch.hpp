@@ -7,6 +7,7 @@
 //   auto r = from_vehicle::decode(line, policy);   // result<from_vehicle::variant>
 //   from_vehicle::visit(sentence, policy, [](const auto& msg) { ... });
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <new>
@@ -66,6 +67,136 @@ template <class M>
   } else {
     constexpr std::uint64_t head = key_of(want).head;
     return k.head == head;
+  }
+}
+
+/// Finding a sentence's message in a set without trying the set's messages in turn: the
+/// addresses' keys hashed at compile time into two tables (exact addresses, and any-talker
+/// addresses by the bytes after the talker), each with a multiplier that gives every key of the
+/// table a slot of its own. A sentence's key then names at most one candidate in each table,
+/// which key_matches confirms; of two, the one first in the set wins, as in the set's order.
+struct dispatch_entry {
+  std::uint64_t head = 0;  ///< key_of(address).head, the talker's bytes zero for any-talker
+  std::size_t size = 0;
+  bool any_talker = false;
+  std::string_view address;  ///< as declared ("--RMC")
+
+  /// key_matches of the message with this entry, given k == key_of(a).
+  [[nodiscard]] constexpr bool matches(const address_key& k, std::string_view a) const noexcept {
+    if (k.size != size) return false;
+    if (any_talker && a[0] == 'P') return false;  // proprietary, not a talker
+    if (size <= 8) return (any_talker ? k.head & ~std::uint64_t{0xFFFF} : k.head) == head;
+    for (std::size_t i = any_talker ? 2 : 0; i < size; ++i)
+      if (a[i] != address[i]) return false;
+    return true;
+  }
+};
+
+template <class M>
+[[nodiscard]] consteval dispatch_entry dispatch_entry_of() noexcept {
+  using desc = std::remove_cvref_t<decltype(M::nmea)>;
+  dispatch_entry e{key_of(desc::address).head, desc::address.size(), desc::any_talker,
+                   desc::address};
+  if (e.any_talker) e.head &= ~std::uint64_t{0xFFFF};
+  return e;
+}
+
+/// The slot of key (head, size) in a table of 2^bits slots hashed with `mult`.
+[[nodiscard]] constexpr std::size_t dispatch_slot(std::uint64_t head, std::size_t size,
+                                                  std::uint64_t mult, unsigned bits) noexcept {
+  const std::uint64_t x = (head + std::uint64_t{size} * 0x9E3779B97F4A7C15U) * mult;
+  return static_cast<std::size_t>(x >> (64U - bits));
+}
+
+template <std::size_t N>
+struct dispatch_table {
+  static constexpr std::uint8_t empty = 0xFF;
+  static constexpr unsigned max_bits = 9;
+  std::array<dispatch_entry, N> entries{};
+  bool usable = false;  ///< false: some keys could not be separated (the set is tried in turn)
+  unsigned bits = 1;
+  std::uint64_t mult[2] = {0, 0};  ///< [0] exact addresses, [1] any-talker addresses
+  std::uint8_t slots[2][std::size_t{1} << max_bits] = {};
+
+  /// The index in the set of the first message whose address is `a` (k == key_of(a)), or N.
+  [[nodiscard]] constexpr std::size_t find(const address_key& k,
+                                           std::string_view a) const noexcept {
+    std::size_t best = N;
+    const std::uint8_t exact = slots[0][dispatch_slot(k.head, k.size, mult[0], bits)];
+    if (exact != empty && entries[exact].matches(k, a)) best = exact;
+    const std::uint64_t masked = k.head & ~std::uint64_t{0xFFFF};
+    const std::uint8_t any = slots[1][dispatch_slot(masked, k.size, mult[1], bits)];
+    if (any != empty && any < best && entries[any].matches(k, a)) best = any;
+    return best;
+  }
+};
+
+/// Tries multipliers (a fixed sequence) and table sizes until every key of each table has a slot
+/// of its own. Keys that are equal (two long addresses alike in their first eight bytes and
+/// their length) can never be told apart: the table is then not usable.
+template <std::size_t N>
+[[nodiscard]] consteval dispatch_table<N> make_dispatch_table(
+    const std::array<dispatch_entry, N>& entries) noexcept {
+  static_assert(N < dispatch_table<N>::empty, "a set of at most 254 messages");
+  using table_type = dispatch_table<N>;
+  table_type t;
+  t.entries = entries;
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = i + 1; j < N; ++j)
+      if (entries[i].any_talker == entries[j].any_talker && entries[i].head == entries[j].head &&
+          entries[i].size == entries[j].size)
+        return t;
+  unsigned bits = 1;
+  while ((std::size_t{1} << bits) < 2 * N) ++bits;
+  for (; bits <= table_type::max_bits; ++bits) {
+    const std::size_t slot_count = std::size_t{1} << bits;
+    bool both = true;
+    for (unsigned table = 0; table < 2 && both; ++table) {
+      bool found = false;
+      std::uint64_t state = 0x243F6A8885A308D3U + table;
+      for (int attempt = 0; attempt < 64 && !found; ++attempt) {
+        // splitmix64: the candidate multiplier, made odd.
+        state += 0x9E3779B97F4A7C15U;
+        std::uint64_t z = state;
+        z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9U;
+        z = (z ^ (z >> 27U)) * 0x94D049BB133111EBU;
+        const std::uint64_t mult = (z ^ (z >> 31U)) | 1U;
+        for (std::size_t k = 0; k < slot_count; ++k) t.slots[table][k] = table_type::empty;
+        found = true;
+        for (std::size_t i = 0; i < N && found; ++i) {
+          if (entries[i].any_talker != (table == 1)) continue;
+          auto& slot = t.slots[table][dispatch_slot(entries[i].head, entries[i].size, mult, bits)];
+          if (slot != table_type::empty) found = false;
+          slot = static_cast<std::uint8_t>(i);
+        }
+        if (found) t.mult[table] = mult;
+      }
+      both = found;
+    }
+    if (both) {
+      t.bits = bits;
+      t.usable = true;
+      return t;
+    }
+  }
+  return table_type{};
+}
+
+/// Sets this large or larger find a message by the tables; smaller ones try each in turn, which
+/// costs no more there.
+inline constexpr std::size_t dispatch_by_table_from = 8;
+
+template <class... Ms>
+inline constexpr dispatch_table<sizeof...(Ms)> dispatch_table_of =
+    make_dispatch_table<sizeof...(Ms)>({dispatch_entry_of<Ms>()...});
+
+/// Whether message_set<Ms...> finds a sentence's message by its table rather than in turn.
+template <class... Ms>
+[[nodiscard]] consteval bool use_dispatch_table() noexcept {
+  if constexpr (sizeof...(Ms) >= dispatch_by_table_from) {
+    return dispatch_table_of<Ms...>.usable;
+  } else {
+    return false;
   }
 }
 
@@ -153,8 +284,27 @@ struct message_set {
     // of the largest message in the set.
     result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
     const detail::address_key k = detail::key_of(s);
-    (void)((detail::key_matches<Ms>(k, s.address) ? (assign<Ms>(out, s, p), true) : false) || ...);
+    if constexpr (detail::use_dispatch_table<Ms...>()) {
+      const std::size_t i = detail::dispatch_table_of<Ms...>.find(k, s.address);
+      if (i < size) assign_thunks<>::fn[i](out, s, p);
+    } else {
+      (void)((detail::key_matches<Ms>(k, s.address) ? (assign<Ms>(out, s, p), true) : false) ||
+             ...);
+    }
     return out;
+  }
+
+  /// The index in the set of the message a sentence with this address decodes as (the first
+  /// whose address it is), or size: what decode and visit dispatch on.
+  [[nodiscard]] static constexpr std::size_t index_of(std::string_view address) noexcept {
+    const detail::address_key k = detail::key_of(address);
+    if constexpr (detail::use_dispatch_table<Ms...>()) {
+      return detail::dispatch_table_of<Ms...>.find(k, address);
+    } else {
+      std::size_t i = 0;
+      (void)((detail::key_matches<Ms>(k, address) || (++i, false)) || ...);
+      return i;
+    }
   }
 
   /// Decode and call `on_message(const M&)` for the matching message, or
@@ -172,10 +322,17 @@ struct message_set {
     } else {
       result<bool> out;
       const detail::address_key k = detail::key_of(s);
-      const bool found =
-          ((detail::key_matches<Ms>(k, s.address) ? (visit_one<Ms>(out, s, p, on_message), true)
-                                                  : false) ||
-           ...);
+      bool found = false;
+      if constexpr (detail::use_dispatch_table<Ms...>()) {
+        const std::size_t i = detail::dispatch_table_of<Ms...>.find(k, s.address);
+        found = i < size;
+        if (found) visit_thunks<std::remove_reference_t<F>>::fn[i](out, s, p, on_message);
+      } else {
+        found =
+            ((detail::key_matches<Ms>(k, s.address) ? (visit_one<Ms>(out, s, p, on_message), true)
+                                                    : false) ||
+             ...);
+      }
       if (!found) {
         on_message(unknown_sentence{s});
         out.value = false;
@@ -213,6 +370,18 @@ struct message_set {
     M m;
     decode_and_call(m);
   }
+
+  // The decoders by index in the set, for the table's dispatch (defined once the set is).
+  template <int = 0>
+  struct assign_thunks {
+    using fn_type = void (*)(result<variant>&, const sentence_view&, const parse_policy&);
+    static constexpr fn_type fn[] = {&message_set::template assign<Ms>...};
+  };
+  template <class F>
+  struct visit_thunks {
+    using fn_type = void (*)(result<bool>&, const sentence_view&, const parse_policy&, F&);
+    static constexpr fn_type fn[] = {&message_set::template visit_one<Ms, F>...};
+  };
 };
 
 namespace detail {
