@@ -89,6 +89,7 @@ void check_set(std::string_view name, support::prng& g) {
     INFO(a);
     const std::size_t want = first_match(static_cast<Set*>(nullptr), a);
     CHECK(Set::index_of(a) == want);
+    CHECK(Set::knows(a) == (want < Set::size));
     // Through decode: the sentence as a line, its message (or unknown_sentence) by the same
     // index. Only the address is looked at first: a wrong body is that message's error.
     const std::string line = "$" + a + ",";

@@ -458,25 +458,32 @@ class decoder {
     // The address: up to the first ',' or '*' after the start character. One longer than a
     // table entry holds (no sentence has one) is looked up every time.
     const std::size_t most = policy_entry::address_capacity;
+    const char* const a = text.data() + 1;
+    const std::size_t limit = text.empty() ? 0 : std::min(text.size() - 1, most + 1);
     std::size_t n = 0;
     std::uint32_t hash = 0;
-    while (n <= most && n + 1 < text.size() && text[n + 1] != ',' && text[n + 1] != '*') {
-      hash = hash * 31U + static_cast<unsigned char>(text[n + 1]);
-      ++n;
-    }
-    const std::string_view address = text.substr(1, n);
+    for (; n < limit && a[n] != ',' && a[n] != '*'; ++n)
+      hash = hash * 31U + static_cast<unsigned char>(a[n]);
+    const std::string_view address(a, n);
     if (n > most) {
       std::string_view whole = text.substr(1);
       whole = whole.substr(0, whole.find_first_of(",*"));
       policy_slow_ = policy_of(whole);
       return policy_slow_;
     }
-    policy_entry& e = policies_[hash % policies_.size()];
-    if (e.size != n || address != std::string_view(e.address.data(), e.size)) {
-      e.policy = policy_of(address);
-      std::copy(address.begin(), address.end(), e.address.begin());
-      e.size = n;
+    // The hash's top bits (Fibonacci hashing) pick the first slot to look in; the next few are
+    // tried after it. An address in none of them takes the first free one, or the first.
+    const std::size_t first = (hash * 0x9E3779B1U) >> (32U - policy_slot_bits);
+    policy_entry* free = nullptr;
+    for (std::size_t k = 0; k < policy_probes; ++k) {
+      policy_entry& e = policies_[(first + k) % policies_.size()];
+      if (e.size == n && address == std::string_view(e.address.data(), e.size)) return e.policy;
+      if (free == nullptr && e.size > most) free = &e;
     }
+    policy_entry& e = free != nullptr ? *free : policies_[first];
+    e.policy = policy_of(address);
+    std::copy(address.begin(), address.end(), e.address.begin());
+    e.size = n;
     return e.policy;
   }
 
@@ -616,14 +623,16 @@ class decoder {
   }
 
   const options& opt_;
-  // policy_for's table: an address's policy, in the slot of the address's hash.
+  // policy_for's table: an address's policy, in a slot near the address's hash.
   struct policy_entry {
     static constexpr std::size_t address_capacity = 16;
     std::array<char, address_capacity> address{};
     std::size_t size = address_capacity + 1;  // none yet
     nmea::parse_policy policy;
   };
-  std::array<policy_entry, 64> policies_{};
+  static constexpr unsigned policy_slot_bits = 7;
+  static constexpr std::size_t policy_probes = 8;
+  std::array<policy_entry, std::size_t{1} << policy_slot_bits> policies_{};
   nmea::parse_policy policy_slow_;  // policy_for's, for an address too long for the table
   sink& out_;
   anello::stream_reader<1024> reader_;

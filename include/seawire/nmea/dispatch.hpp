@@ -232,8 +232,12 @@ struct message_set {
 
   /// Whether some message of the set has this address.
   [[nodiscard]] static constexpr bool knows(std::string_view address) noexcept {
-    const detail::address_key k = detail::key_of(address);
-    return (detail::key_matches<Ms>(k, address) || ...);
+    if constexpr (detail::use_dispatch_table<Ms...>()) {
+      return index_of(address) < size;
+    } else {
+      const detail::address_key k = detail::key_of(address);
+      return (detail::key_matches<Ms>(k, address) || ...);
+    }
   }
 
   /// The declared name of wire field `n` of the message with this address ("" if unknown);
