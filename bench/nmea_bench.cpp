@@ -9,6 +9,9 @@
 //   decode_visit/X   the same through message_set::visit (no variant)
 //   decode_typed/X   nmea::decode<T> for one type, no dispatch
 //   encode/X         nmea::encode_to into a stack buffer, checksum and CR LF included
+//   reference_decode/rmc_gga, reference_encode/rmc_gga
+//                    the hand-written one-pass RMC/GGA decoder and writer (bench/reference/):
+//                    the floor a decoder generated from the descriptions is held to
 
 #include <benchmark/benchmark.h>
 
@@ -21,6 +24,7 @@
 #include <variant>
 
 #include "corpus.hpp"
+#include "reference/one_pass_encode.hpp"
 #include "support.hpp"
 
 namespace {
@@ -95,6 +99,46 @@ void run_decode_visit(benchmark::State& state, const sb::corpus& c,
     benchmark::DoNotOptimize(s);
     return r && r.value;
   });
+}
+
+/// The hand-written one-pass decoder of RMC and GGA, and the same reading of every field.
+void run_reference_decode(benchmark::State& state, const sb::corpus& c) {
+  sb::sink s;
+  hw::out o;
+  run_over_lines(state, c, "reference: a corpus line did not decode", [&](std::string_view line) {
+    const bool ok = hw::decode(line, o);
+    if (ok && o.k == hw::out::rmc) sb::read_all(s, o.r);
+    if (ok && o.k == hw::out::gga) sb::read_all(s, o.g);
+    benchmark::DoNotOptimize(s);
+    return ok;
+  });
+}
+
+/// The hand-written writer of RMC and GGA.
+template <class Messages>
+void run_reference_encode(benchmark::State& state, const sb::corpus& c, const Messages& messages) {
+  std::array<char, 256> buffer{};
+  std::size_t written = 0;
+  for (auto _ : state) {
+    for (const auto& m : messages) {
+      written += std::visit(
+          [&](const auto& one) -> std::size_t {
+            using M = std::remove_cvref_t<decltype(one)>;
+            if constexpr (std::is_same_v<M, standard::rmc>) {
+              return hw::encode_rmc(one, buffer.data());
+            } else if constexpr (std::is_same_v<M, standard::gga>) {
+              return hw::encode_gga(one, buffer.data());
+            } else {
+              return 0;
+            }
+          },
+          m);
+      benchmark::DoNotOptimize(buffer);
+    }
+  }
+  if (written != c.bytes.size() * static_cast<std::size_t>(state.iterations()))
+    state.SkipWithError("reference encode: a message was refused or written differently");
+  sb::report(state, messages.size(), c.bytes.size(), 0);
 }
 
 template <class T>
@@ -195,6 +239,12 @@ const bool registered = [] {
   // The same sentences through a set that knows every message of every family.
   benchmark::RegisterBenchmark("decode_all_sets/rmc_gga", [rmc_gga](benchmark::State& s) {
     run_decode_set<sb::every_message>(s, cached(rmc_gga), nmea::parse_policy{});
+  });
+  benchmark::RegisterBenchmark("reference_decode/rmc_gga", [rmc_gga](benchmark::State& s) {
+    run_reference_decode(s, cached(rmc_gga));
+  });
+  benchmark::RegisterBenchmark("reference_encode/rmc_gga", [rmc_gga](benchmark::State& s) {
+    run_reference_encode(s, cached(rmc_gga), cached(rmc_gga).messages);
   });
 
   // Each family, read by its role's set under its role's policy.

@@ -106,6 +106,18 @@ def main():
             r = ratio(ns_per_msg(b), ns_per_msg(base)) if base else "-"
             print(f"\n`{n}` (every family's messages in one set): {fmt_ns(ns_per_msg(b))} ns,"
                   f" {r} the baseline")
+    # The hand-written one-pass decoder and writer: the floor for decode and encode.
+    for kind, ours in (("decode", "decode"), ("encode", "encode")):
+        for n, b in runs.items():
+            if not n.startswith(f"reference_{kind}/"):
+                continue
+            corpus = n.split("/", 1)[1]
+            base = runs.get("baseline/" + corpus)
+            mine = runs.get(f"{ours}/" + corpus)
+            r = ratio(ns_per_msg(b), ns_per_msg(base)) if base else "-"
+            m = ratio(ns_per_msg(mine), ns_per_msg(b)) if mine else "-"
+            print(f"\n`{n}` (the hand-written one-pass {kind}r): {fmt_ns(ns_per_msg(b))} ns,"
+                  f" {r} the baseline; seawire's {ours}/{corpus} is {m} it")
     print()
 
     print("Each message type (1,000 sentences of the type): ns per sentence")

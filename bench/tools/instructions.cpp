@@ -7,7 +7,9 @@
 //   callgrind_annotate cg.out | grep 'PROGRAM TOTALS'     # divide by 10,000 sentences
 //
 // Modes: baseline (frame + checksum + split), decode (message_set -> variant, every field read),
-// visit (message_set::visit, every field read), encode (encode_to into a stack buffer).
+// visit (message_set::visit, every field read), encode (encode_to into a stack buffer),
+// reference and reference_encode (the hand-written one-pass RMC/GGA decoder and writer of
+// bench/reference/, every field read).
 
 #include <valgrind/callgrind.h>
 
@@ -19,6 +21,7 @@
 #include <variant>
 
 #include "../corpus.hpp"
+#include "../reference/one_pass_encode.hpp"
 #include "../support.hpp"
 
 namespace {
@@ -58,6 +61,36 @@ void visit(const sb::corpus& c, sb::sink& s) {
   }
 }
 
+void reference(const sb::corpus& c, sb::sink& s) {
+  hw::out o;
+  for (int r = 0; r < rounds; ++r) {
+    sb::for_each_line(c.bytes, [&](std::string_view line) {
+      if (hw::decode(line, o)) {
+        if (o.k == hw::out::rmc) sb::read_all(s, o.r);
+        if (o.k == hw::out::gga) sb::read_all(s, o.g);
+      }
+      benchmark::DoNotOptimize(s);
+    });
+  }
+}
+
+template <class Messages>
+void reference_encode(const Messages& messages) {
+  char buffer[256];
+  for (int r = 0; r < rounds; ++r) {
+    for (const auto& m : messages) {
+      std::visit(
+          [&](const auto& one) {
+            using M = std::remove_cvref_t<decltype(one)>;
+            if constexpr (std::is_same_v<M, standard::rmc>) (void)hw::encode_rmc(one, buffer);
+            if constexpr (std::is_same_v<M, standard::gga>) (void)hw::encode_gga(one, buffer);
+          },
+          m);
+      benchmark::DoNotOptimize(buffer);
+    }
+  }
+}
+
 template <class Messages>
 void encode(const Messages& messages) {
   char buffer[256];
@@ -89,9 +122,14 @@ int main(int argc, char** argv) {
     visit(c, s);
   } else if (mode == "encode") {
     encode(c.messages);
+  } else if (mode == "reference") {
+    reference(c, s);
+  } else if (mode == "reference_encode") {
+    reference_encode(c.messages);
   } else {
     CALLGRIND_TOGGLE_COLLECT;
-    std::fprintf(stderr, "usage: %s baseline|decode|visit|encode\n", argv[0]);
+    std::fprintf(stderr, "usage: %s baseline|decode|visit|encode|reference|reference_encode\n",
+                 argv[0]);
     return 2;
   }
   CALLGRIND_TOGGLE_COLLECT;
