@@ -8,8 +8,15 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <optional>
+// std::construct_at and std::destroy_at: <memory> declares them, and costs a translation unit
+// about a third of what <variant>, <optional>, <string_view> and <chrono> cost together;
+// libstdc++ declares them in a header of their own.
+#if __has_include(<bits/stl_construct.h>)
+#include <bits/stl_construct.h>
+#else
+#include <memory>
+#endif
 #include <span>
 #include <string_view>
 #include <type_traits>
