@@ -9,11 +9,13 @@
 // found by walking every field of every message of seawire/registry.hpp, which also gives the
 // fields each is in: a message added to the registry brings its enums here.
 
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -47,11 +49,10 @@ std::string_view argument(std::string_view signature, std::string_view parameter
   return rest.substr(0, rest.find_first_of(";]"));
 }
 
-// The enumerator whose value is V, by name ("red"); empty when V is no enumerator (the library's
-// reading of the compiler's signature, detail/enum_names.hpp).
-template <auto V>
-std::string enumerator() {
-  return std::string(seawire::detail::enumerator_name<V>());
+// E's name as the compiler writes it, for an error message.
+template <class E>
+std::string_view typeid_name() {
+  return __PRETTY_FUNCTION__;
 }
 
 struct row {
@@ -60,15 +61,32 @@ struct row {
   std::string meaning;  ///< when the header has no enumerator to take it from
 };
 
+// The names of the values V... of E, in order, empty for a value that is no enumerator: one
+// listing of them all (the library's reading of the compiler's signature,
+// detail/enum_names.hpp), not one instantiation per value. nullopt when the listing cannot be
+// read.
+template <class E, auto... V>
+constexpr std::optional<std::array<std::string_view, sizeof...(V)>> names_of() {
+  std::array<std::string_view, sizeof...(V)> names{};
+  std::size_t i = 0;
+  const std::size_t listed = seawire::detail::for_each_listed(
+      seawire::detail::enum_listing<static_cast<E>(V)...>(), [&](std::string_view e) {
+        if (i < names.size()) names[i] = seawire::detail::listed_name(e);
+        ++i;
+      });
+  if (listed != sizeof...(V) || i != sizeof...(V)) return std::nullopt;
+  return names;
+}
+
 template <class E, auto... V>
 std::vector<row> rows_of(std::integer_sequence<std::underlying_type_t<E>, V...>) {
+  static constexpr auto names = names_of<E, V...>();
+  if (!names) fail("cannot read the compiler's listing of", typeid_name<E>());
+  const std::underlying_type_t<E> values[] = {V...};
   std::vector<row> out;
-  (
-      [&] {
-        std::string n = enumerator<static_cast<E>(V)>();
-        if (!n.empty()) out.push_back({std::move(n), static_cast<unsigned>(V), {}});
-      }(),
-      ...);
+  for (std::size_t i = 0; i < names->size(); ++i)
+    if (!(*names)[i].empty())
+      out.push_back({std::string((*names)[i]), static_cast<unsigned>(values[i]), {}});
   return out;
 }
 
