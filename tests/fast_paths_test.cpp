@@ -286,6 +286,39 @@ TEST_CASE("writer::put_uint and put_fixed write what std::to_string would") {
   }
 }
 
+// Times, dates and positions write small numbers padded to two digits by a shorter way: every
+// such number, with the widths around it, as std::to_string would, and out of room at the margin.
+TEST_CASE("small padded numbers: writer::put_uint and append_uint against std::to_string") {
+  for (std::uint64_t v = 0; v < 1100; ++v) {
+    for (unsigned min = 0; min <= 4; ++min) {
+      std::string want = std::to_string(v);
+      while (want.size() < min) want.insert(want.begin(), '0');
+      INFO(v << " min " << min);
+      char buf[32];
+      writer w(buf);
+      w.put_uint(v, min);
+      REQUIRE(w.view() == want);
+      REQUIRE_FALSE(w.failed());
+      writer tight(std::span<char>(buf, want.size() - 1));
+      tight.put_uint(v, min);
+      REQUIRE(tight.failed());
+      REQUIRE(tight.size() == 0);
+      writer exact(std::span<char>(buf, want.size()));
+      exact.put_uint(v, min);
+      REQUIRE_FALSE(exact.failed());
+      REQUIRE(exact.view() == want);
+      char out[32] = {'x'};
+      const std::size_t end = seawire::detail::append_uint(out, 1, v, min);
+      REQUIRE(std::string_view(out + 1, end - 1) == want);
+      REQUIRE(out[0] == 'x');
+    }
+  }
+  static_assert([] {
+    char out[4]{};
+    return seawire::detail::append_uint(out, 0, 7, 2) == 2 && out[0] == '0' && out[1] == '7';
+  }());
+}
+
 #if SEAWIRE_SIMD
 // The sixteen-lane operations the scans are written in, each against what it means for one
 // byte: every byte value in every lane, with other lanes around it.

@@ -110,6 +110,16 @@ inline constexpr std::uint64_t scale_limit[20] = {
   return t + (w >= pow10_table[t] ? 1U : 0U);
 }
 
+/// The two characters of digit_pairs at `pair` (twice a number below 100) to out[0] and out[1].
+constexpr void copy_pair(char* out, std::size_t pair) noexcept {
+  if (std::is_constant_evaluated()) {
+    out[0] = digit_pairs[pair];
+    out[1] = digit_pairs[pair + 1];
+  } else {
+    std::memcpy(out, digit_pairs + pair, 2);  // one 16-bit load and store
+  }
+}
+
 /// Writes the last `count` decimal digits of `v` (zero-padded) ending just before `end`, two at a
 /// time, dividing only by constants; returns what is left of v (v / 10^count).
 constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count) noexcept {
@@ -117,12 +127,7 @@ constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count)
     const auto pair = static_cast<std::size_t>(v % 100) * 2;
     v /= 100;
     end -= 2;
-    if (std::is_constant_evaluated()) {
-      end[0] = digit_pairs[pair];
-      end[1] = digit_pairs[pair + 1];
-    } else {
-      std::memcpy(end, digit_pairs + pair, 2);  // one 16-bit load and store
-    }
+    copy_pair(end, pair);
   }
   if (count == 1) {
     *--end = static_cast<char>('0' + v % 10);
@@ -168,6 +173,10 @@ inline constexpr unsigned max_padded_digits = 24;
 /// left; at most max_padded_digits); returns where they end.
 constexpr std::size_t append_uint(char* out, std::size_t at, std::uint64_t v,
                                   unsigned min_digits = 1) noexcept {
+  if (min_digits == 2 && v < 100) {  // the parts of times and dates: one pair, no division
+    copy_pair(out + at, static_cast<std::size_t>(v) * 2);
+    return at + 2;
+  }
   return append_fixed(out, at, v, 0, integer_digits(v, 0, min_digits, max_padded_digits));
 }
 

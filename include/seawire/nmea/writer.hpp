@@ -65,6 +65,15 @@ class writer {
   }
   /// Unsigned integer, zero-padded to at least `min_digits` digits (at most 20 are written).
   constexpr void put_uint(std::uint64_t v, unsigned min_digits = 1) noexcept {
+    if (min_digits == 2 && v < 100) {  // the parts of times and dates: one pair, no division
+      if (out_.size() - size_ < 2) {
+        failed_ = true;
+        return;
+      }
+      seawire::detail::copy_pair(out_.data() + size_, static_cast<std::size_t>(v) * 2);
+      size_ += 2;
+      return;
+    }
     put_fixed(v, 0, min_digits);
   }
   /// The fixed-point number scaled / 10^places, e.g. "4.50" from 450 and 2: all `places` fraction
