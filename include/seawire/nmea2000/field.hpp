@@ -278,6 +278,10 @@ template <named_enum E>
   if (!i) return std::nullopt;
   return *i;
 }
+/// Whether no name of E is a field state's.
+template <named_enum E>
+inline constexpr bool names_clear_of_states =
+    !enum_value<E>("not_available") && !enum_value<E>("out_of_range") && !enum_value<E>("reserved");
 }  // namespace detail
 
 /// An enum with display titles, canboat's texts ("Paddle wheel", "Pitot tube"): declared as
@@ -332,17 +336,12 @@ class lookup {
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
   /// The largest raw value that is a value whether named or not.
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
-  static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(top_raw) + 1,
-                "more names than the field has raw values");
-  static_assert(!detail::enum_value<E>("not_available") && !detail::enum_value<E>("out_of_range") &&
-                    !detail::enum_value<E>("reserved"),
-                "a lookup's name cannot be a state's: JSON could not tell them apart");
 
   /// Whether raw value `raw` is a value: below the sentinels, or one the lookup names.
   [[nodiscard]] static constexpr bool is_value(std::int64_t raw) noexcept {
     return (raw >= 0 && raw <= max_valid_raw) ||
            (raw > max_valid_raw && raw <= top_raw &&
-            !detail::enum_name<E>(static_cast<std::uint64_t>(raw)).empty());
+            !seawire::detail::name_at(names(), static_cast<std::uint64_t>(raw)).empty());
   }
 
   constexpr lookup() noexcept = default;
@@ -361,9 +360,9 @@ class lookup {
   }
   /// The value called `name` (a name of lookup_names); bad_enum for any other.
   [[nodiscard]] static constexpr result<lookup> from_name(std::string_view name) noexcept {
-    const auto v = detail::enum_value<E>(name);
-    if (!v) return {lookup{}, errc::bad_enum};
-    return {from_raw(static_cast<std::int64_t>(*v)), errc::ok};
+    const auto i = seawire::detail::index_of_name(names(), name);
+    if (!i) return {lookup{}, errc::bad_enum};
+    return {from_raw(static_cast<std::int64_t>(*i)), errc::ok};
   }
 
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
@@ -379,7 +378,7 @@ class lookup {
   }
   /// The value's name; empty for a sentinel or a value the standard has not named.
   [[nodiscard]] constexpr std::string_view name() const noexcept {
-    return has_value() ? detail::enum_name<E>(static_cast<std::uint64_t>(raw_))
+    return has_value() ? seawire::detail::name_at(names(), static_cast<std::uint64_t>(raw_))
                        : std::string_view{};
   }
   [[nodiscard]] constexpr bool operator==(const lookup& o) const noexcept { return raw_ == o.raw_; }
@@ -388,6 +387,17 @@ class lookup {
   }
 
  private:
+  // E's names, checked where the lookup first reads them (its state, name, from_name): a header
+  // that only declares lookup members evaluates no table (a manufacturer code names 2048 values).
+  [[nodiscard]] static constexpr const auto& names() noexcept {
+    static_assert(std::tuple_size_v<std::remove_cvref_t<decltype(lookup_names(E{}))>> <=
+                      static_cast<std::size_t>(top_raw) + 1,
+                  "more names than the field has raw values");
+    static_assert(detail::names_clear_of_states<E>,
+                  "a lookup's name cannot be a state's: JSON could not tell them apart");
+    return detail::names_of<E>;
+  }
+
   std::int64_t raw_ = top_raw;
 };
 
