@@ -36,6 +36,16 @@ struct with_bytes {
                         n2k::bytes_to_end<&with_bytes::rest>("rest", "Rest"));
 };
 const auto ok_bytes_length = n2k::description_of<with_bytes>::length;
+// A table as a function template of its struct: built where used.
+struct lazy_msg {
+  n2k::unsigned_number<8> first;
+  template <class P>
+  static constexpr auto n2k() {
+    return n2k::describe_pgn(n2k::pgn_info{3, "lazy_msg", "Lazy"},
+                             n2k::field<&P::first>("first", "First"));
+  }
+};
+static_assert(n2k::description_of<lazy_msg>::length == 1);
 enum class two : std::uint8_t { a = 0, b = 1 };
 constexpr std::array<std::string_view, 2> lookup_names(two) noexcept { return {"a", "b"}; }
 constexpr bool ok_named = n2k::lookup<two, 1>{two::b}.has_value();
@@ -90,6 +100,16 @@ struct msg {
   static constexpr auto n2k = n2k::describe_pgn(
       n2k::pgn_info{1, "msg", "Msg"}, n2k::match<&msg::first, code::a>("first", "First"),
       n2k::match<&msg::second, code::b>("second", "Second"));
+};
+const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_lazy_table_bits)
+// A table built where the PGN is used is checked there.
+struct msg {
+  n2k::unsigned_number<4> half;
+  template <class P>
+  static constexpr auto n2k() {
+    return n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&P::half>("half", "Half"));
+  }
 };
 const auto bad_length = n2k::description_of<msg>::length;
 #elif defined(CASE_lookup_too_many_names)

@@ -1513,14 +1513,46 @@ template <class... F>
   return {info, seawire::detail::make_rows(fields...)};
 }
 
-/// A PGN struct: has `static constexpr auto n2k = describe_pgn(...)`.
+namespace detail {
+/// Whether P declares its table as a constant, `static constexpr auto n2k = describe_pgn(...)`
+/// (built where P is declared), or as a function template of P itself, `template <class P>
+/// static constexpr auto n2k() { return describe_pgn(...); }` (built where the PGN is first
+/// used). Asked in this order: GCC takes `P::template n2k<P>` of a constant for an error, not
+/// for a requirement not met.
 template <class P>
-concept pgn_like = requires {
+concept table_constant = requires {
   P::n2k.info.pgn;
 };
+template <class P>
+concept table_function = requires {
+  P::template n2k<P>();
+};
+
+template <class P>
+[[nodiscard]] consteval auto table_of() noexcept {
+  if constexpr (table_constant<P>) {
+    return P::n2k;
+  } else {
+    return P::template n2k<P>();
+  }
+}
+}  // namespace detail
+
+/// A PGN struct: has a table, `template <class P> static constexpr auto n2k()` returning
+/// describe_pgn(...) of P's members (or the constant `static constexpr auto n2k =
+/// describe_pgn(...)`).
+template <class P>
+concept pgn_like = (detail::table_constant<P> || detail::table_function<P>)&&requires {
+  detail::table_of<P>().info.pgn;
+};
+
+/// P's table (a pgn_description): built once in a translation unit, where first used, so that a
+/// header declaring many PGNs costs only their structs.
+template <pgn_like P>
+inline constexpr auto pgn_table = detail::table_of<P>();
 
 template <pgn_like P>
-using description_of = std::remove_cvref_t<decltype(P::n2k)>;
+using description_of = std::remove_cvref_t<decltype(pgn_table<P>)>;
 
 /// Whether `payload` has P's layout: true unless P's table has a match row (match<>) and the
 /// payload holds another value there (or does not hold that row).
@@ -1530,7 +1562,7 @@ template <pgn_like P>
     return true;
   } else {
     bool ok = false;
-    P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
+    pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (detail::match_row<F>) {
         ok = offset + F::bits <= payload.size() * 8 &&
@@ -1618,36 +1650,37 @@ template <pgn_like P>
   P out{};
   std::size_t at = 0;  // bits
   bool stop = false;
-  seawire::detail::for_each_row(P::n2k.fields, 0, [&](const auto& f, unsigned, std::uint16_t) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    if (stop) return false;
-    if constexpr (F::is_reserved) {
-      at += F::bits;
-    } else {
-      using V = typename F::value_type;
-      auto& member = out.*F::member;
-      if constexpr (row_is_variable<F>()) {
-        const std::size_t byte = at / 8;
-        if (byte >= payload.size()) return false;  // not sent: this and the rest not available
-        const std::size_t left = payload.size() - byte;
-        const std::size_t count = payload[byte];
-        if (count < 2 || left < 2) {
-          stop = true;
-          return false;
+  seawire::detail::for_each_row(
+      pgn_table<P>.fields, 0, [&](const auto& f, unsigned, std::uint16_t) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if (stop) return false;
+        if constexpr (F::is_reserved) {
+          at += F::bits;
+        } else {
+          using V = typename F::value_type;
+          auto& member = out.*F::member;
+          if constexpr (row_is_variable<F>()) {
+            const std::size_t byte = at / 8;
+            if (byte >= payload.size()) return false;  // not sent: this and the rest not available
+            const std::size_t left = payload.size() - byte;
+            const std::size_t count = payload[byte];
+            if (count < 2 || left < 2) {
+              stop = true;
+              return false;
+            }
+            const std::size_t taken = std::min(count, left);
+            member = V::from_bytes(payload[byte + 1], payload.subspan(byte + 2, taken - 2)).value;
+            at += 8 * taken;
+          } else if constexpr (row_is_text<F>()) {
+            member = read_fixed_text<V>(payload, at / 8);
+            at += F::bits;
+          } else {
+            decode_field<F>(payload, static_cast<unsigned>(at), out);
+            at += F::bits;
+          }
         }
-        const std::size_t taken = std::min(count, left);
-        member = V::from_bytes(payload[byte + 1], payload.subspan(byte + 2, taken - 2)).value;
-        at += 8 * taken;
-      } else if constexpr (row_is_text<F>()) {
-        member = read_fixed_text<V>(payload, at / 8);
-        at += F::bits;
-      } else {
-        decode_field<F>(payload, static_cast<unsigned>(at), out);
-        at += F::bits;
-      }
-    }
-    return true;
-  });
+        return true;
+      });
   return out;
 }
 
@@ -1660,7 +1693,7 @@ template <pgn_like P>
 [[nodiscard]] constexpr P decode(std::span<const std::uint8_t> payload) noexcept {
   if constexpr (!description_of<P>::fixed_layout) return detail::decode_varying<P>(payload);
   P out{};
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (detail::group_row<F>) {
       detail::decode_group<F>(payload, offset, out);
@@ -1723,7 +1756,7 @@ constexpr void encode_field(std::array<std::uint8_t, N>& bytes, unsigned offset,
 template <pgn_like P, auto Member>
 [[nodiscard]] constexpr std::pair<std::uint16_t, unsigned> row_of() noexcept {
   std::pair<std::uint16_t, unsigned> out{0, 0};
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (!F::is_reserved) {
       if (seawire::detail::same_member<F::member, Member>) out = {n, offset};
@@ -1756,42 +1789,43 @@ template <pgn_like P>
   std::size_t at = 0;         // bits
   std::uint16_t cut_row = 0;  // the row the payload ended before, 0 while it goes on
   std::size_t cut_at = 0;
-  seawire::detail::for_each_row(P::n2k.fields, 0, [&](const auto& f, unsigned, std::uint16_t n) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    const auto fail = [&](errc e) {
-      r.ec = e;
-      r.field = n;
-      r.column = static_cast<std::uint16_t>(at / 8);
-      return false;
-    };
-    bool available = false;
-    if constexpr (!F::is_reserved)
-      available = (msg.*F::member).state() != field_state::not_available;
-    std::size_t bits = F::bits;
-    if constexpr (row_is_variable<F>()) bits = 8 * (msg.*F::member).wire_size();
-    if (cut_row == 0 && at + bits > 8 * room) {
-      cut_row = n;
-      cut_at = at;
-    }
-    if (cut_row != 0) return available ? fail(errc::text_too_long) : true;
-    if constexpr (requires { F::is_spare; })
-      seawire::detail::put_bits<payload_order>(r.value.bytes, static_cast<unsigned>(at), F::bits,
-                                               0);
-    if constexpr (!F::is_reserved) {
-      const auto& v = msg.*F::member;
-      if (!v.fits()) return fail(errc::value_too_large);
-      if constexpr (detail::match_row<F>) {
-        if (v.raw() != F::match_raw) return fail(errc::wrong_address);
-      }
-      if constexpr (row_is_text<F>()) {
-        put_text(r.value.bytes, at / 8, v);
-      } else {
-        encode_field<F>(r.value.bytes, static_cast<unsigned>(at), v);
-      }
-    }
-    at += bits;
-    return true;
-  });
+  seawire::detail::for_each_row(
+      pgn_table<P>.fields, 0, [&](const auto& f, unsigned, std::uint16_t n) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        const auto fail = [&](errc e) {
+          r.ec = e;
+          r.field = n;
+          r.column = static_cast<std::uint16_t>(at / 8);
+          return false;
+        };
+        bool available = false;
+        if constexpr (!F::is_reserved)
+          available = (msg.*F::member).state() != field_state::not_available;
+        std::size_t bits = F::bits;
+        if constexpr (row_is_variable<F>()) bits = 8 * (msg.*F::member).wire_size();
+        if (cut_row == 0 && at + bits > 8 * room) {
+          cut_row = n;
+          cut_at = at;
+        }
+        if (cut_row != 0) return available ? fail(errc::text_too_long) : true;
+        if constexpr (requires { F::is_spare; })
+          seawire::detail::put_bits<payload_order>(r.value.bytes, static_cast<unsigned>(at),
+                                                   F::bits, 0);
+        if constexpr (!F::is_reserved) {
+          const auto& v = msg.*F::member;
+          if (!v.fits()) return fail(errc::value_too_large);
+          if constexpr (detail::match_row<F>) {
+            if (v.raw() != F::match_raw) return fail(errc::wrong_address);
+          }
+          if constexpr (row_is_text<F>()) {
+            put_text(r.value.bytes, at / 8, v);
+          } else {
+            encode_field<F>(r.value.bytes, static_cast<unsigned>(at), v);
+          }
+        }
+        at += bits;
+        return true;
+      });
   r.value.length = ((cut_row != 0 ? cut_at : at) + 7) / 8;
   return r;
 }
@@ -1831,7 +1865,7 @@ template <pgn_like P>
     r.field = row;
     r.column = static_cast<std::uint16_t>(at / 8);
   };
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (requires { F::is_spare; })
       seawire::detail::put_bits<payload_order>(r.value.bytes, offset, F::bits, 0);
@@ -1928,7 +1962,7 @@ template <pgn_like P>
 template <pgn_like P>
 [[nodiscard]] constexpr std::string_view field_name(std::uint16_t n) noexcept {
   std::string_view out;
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t k) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t k) {
     if (k == n) out = f.name;
   });
   return out;
