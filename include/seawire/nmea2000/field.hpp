@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <chrono>
 #include <concepts>
 #include <cstddef>
@@ -19,7 +18,6 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <system_error>
 #include <type_traits>
 #include <utility>
 
@@ -42,6 +40,8 @@ enum class field_state : std::uint8_t {
   reserved,       ///< a raw value the standard keeps for future use
 };
 
+// A template of nothing, so that only a caller reads the enumerators' names (at compile time).
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(field_state s) noexcept {
   return seawire::detail::enumerator_name_of<4>(s);
 }
@@ -881,8 +881,6 @@ concept keyed_table = requires {
 template <keyed_table T, unsigned Bits>
 class keyed_lookup {
   static_assert(Bits >= 1 && Bits <= 16);
-  static_assert(detail::keyed_table_valid(T::entries),
-                "a keyed table must be sorted by (key, value), each pair and name once");
 
  public:
   using table = T;
@@ -891,9 +889,6 @@ class keyed_lookup {
   static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
-  static_assert(std::ranges::all_of(T::entries,
-                                    [](const keyed_name& e) { return e.value <= max_valid_raw; }),
-                "a keyed table names a sentinel");
 
   constexpr keyed_lookup() noexcept = default;
   [[nodiscard]] static constexpr keyed_lookup from_raw(std::int64_t raw) noexcept {
@@ -905,7 +900,7 @@ class keyed_lookup {
   /// The value called `name` when the key is `key`; bad_enum when no value of that key is.
   [[nodiscard]] static constexpr result<keyed_lookup> from_name(std::int64_t key,
                                                                 std::string_view name) noexcept {
-    for (const keyed_name& e : T::entries)
+    for (const keyed_name& e : entries())
       if (e.key == key && e.name == name) return {from_raw(e.value), errc::ok};
     return {keyed_lookup{}, errc::bad_enum};
   }
@@ -920,18 +915,29 @@ class keyed_lookup {
   /// does not name.
   [[nodiscard]] constexpr std::string_view name(std::int64_t key) const noexcept {
     const std::size_t i = at(key);
-    return i < T::entries.size() ? T::entries[i].name : std::string_view{};
+    return i < entries().size() ? entries()[i].name : std::string_view{};
   }
   /// The standard's text for the value when the key is `key`; empty as for name().
   [[nodiscard]] constexpr std::string_view title(std::int64_t key) const noexcept {
     const std::size_t i = at(key);
-    return i < T::entries.size() ? T::entries[i].title : std::string_view{};
+    return i < entries().size() ? entries()[i].title : std::string_view{};
   }
   [[nodiscard]] constexpr bool operator==(const keyed_lookup&) const noexcept = default;
 
  private:
+  // T's names, checked where the field first reads them (name, title, from_name): a header that
+  // only declares keyed members evaluates no table (60928's device functions are 106 pairs).
+  [[nodiscard]] static constexpr const auto& entries() noexcept {
+    static_assert(detail::keyed_table_valid(T::entries),
+                  "a keyed table must be sorted by (key, value), each pair and name once");
+    static_assert(std::ranges::all_of(T::entries,
+                                      [](const keyed_name& e) { return e.value <= max_valid_raw; }),
+                  "a keyed table names a sentinel");
+    return T::entries;
+  }
+
   [[nodiscard]] constexpr std::size_t at(std::int64_t key) const noexcept {
-    return has_value() ? detail::keyed_find(T::entries, key, raw_) : T::entries.size();
+    return has_value() ? detail::keyed_find(entries(), key, raw_) : entries().size();
   }
 
   std::int64_t raw_ = top_raw;
