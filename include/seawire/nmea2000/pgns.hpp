@@ -1578,6 +1578,28 @@ struct transmission_parameters_dynamic {
       default;
 };
 
+namespace detail {
+/// The table of an AIS position report (129038, 129039) of struct P: the rows both start with
+/// (AIS's message id, repeat indicator, MMSI, position, accuracy, RAIM, time stamp, course,
+/// speed, communication state, transceiver, heading), then `rest`.
+template <class P, class... Rest>
+[[nodiscard]] constexpr auto ais_position_table(pgn_info info, Rest... rest) noexcept {
+  return describe_pgn(
+      info, field<&P::message_id>("message_id", "Message ID"),
+      field<&P::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+      field<&P::user_id, raw_display::identifier>("user_id", "User ID"),
+      field<&P::longitude_deg>("longitude_deg", "Longitude"),
+      field<&P::latitude_deg>("latitude_deg", "Latitude"),
+      field<&P::position_accuracy>("position_accuracy", "Position Accuracy"),
+      field<&P::raim>("raim", "RAIM"), field<&P::time_stamp>("time_stamp", "Time Stamp"),
+      field<&P::cog_rad>("cog_rad", "COG"), field<&P::sog_mps>("sog_mps", "SOG"),
+      field<&P::communication_state, raw_display::bits>("communication_state",
+                                                        "Communication State"),
+      field<&P::transceiver_information>("transceiver_information", "AIS Transceiver information"),
+      field<&P::heading_rad>("heading_rad", "Heading"), rest...);
+}
+}  // namespace detail
+
 /// PGN 129038 AIS Class A Position Report: 28 bytes, fast packet, priority 4, as received. A
 /// class A vessel's AIS message 1, 2 or 3: its MMSI, position (1e-7 degree), course (rad) and
 /// speed (m/s), heading, rate of turn (rad/s) and navigational status. The communication state
@@ -1603,22 +1625,9 @@ struct ais_class_a_position {
 
   template <class P>
   static constexpr auto n2k() {
-    return describe_pgn(
+    return detail::ais_position_table<P>(
         pgn_info{129038, "ais_class_a_position", "AIS Class A Position Report", 4,
                  framing::fast_packet, 0},
-        field<&P::message_id>("message_id", "Message ID"),
-        field<&P::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-        field<&P::user_id, raw_display::identifier>("user_id", "User ID"),
-        field<&P::longitude_deg>("longitude_deg", "Longitude"),
-        field<&P::latitude_deg>("latitude_deg", "Latitude"),
-        field<&P::position_accuracy>("position_accuracy", "Position Accuracy"),
-        field<&P::raim>("raim", "RAIM"), field<&P::time_stamp>("time_stamp", "Time Stamp"),
-        field<&P::cog_rad>("cog_rad", "COG"), field<&P::sog_mps>("sog_mps", "SOG"),
-        field<&P::communication_state, raw_display::bits>("communication_state",
-                                                          "Communication State"),
-        field<&P::transceiver_information>("transceiver_information",
-                                           "AIS Transceiver information"),
-        field<&P::heading_rad>("heading_rad", "Heading"),
         field<&P::rate_of_turn_radps>("rate_of_turn_radps", "Rate of Turn"),
         field<&P::nav_status>("nav_status", "Nav Status"),
         field<&P::special_maneuver>("special_maneuver", "Special Maneuver Indicator"), reserved<2>,
@@ -1655,22 +1664,9 @@ struct ais_class_b_position {
 
   template <class P>
   static constexpr auto n2k() {
-    return describe_pgn(
+    return detail::ais_position_table<P>(
         pgn_info{129039, "ais_class_b_position", "AIS Class B Position Report", 4,
                  framing::fast_packet, 0},
-        field<&P::message_id>("message_id", "Message ID"),
-        field<&P::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-        field<&P::user_id, raw_display::identifier>("user_id", "User ID"),
-        field<&P::longitude_deg>("longitude_deg", "Longitude"),
-        field<&P::latitude_deg>("latitude_deg", "Latitude"),
-        field<&P::position_accuracy>("position_accuracy", "Position Accuracy"),
-        field<&P::raim>("raim", "RAIM"), field<&P::time_stamp>("time_stamp", "Time Stamp"),
-        field<&P::cog_rad>("cog_rad", "COG"), field<&P::sog_mps>("sog_mps", "SOG"),
-        field<&P::communication_state, raw_display::bits>("communication_state",
-                                                          "Communication State"),
-        field<&P::transceiver_information>("transceiver_information",
-                                           "AIS Transceiver information"),
-        field<&P::heading_rad>("heading_rad", "Heading"),
         spare_bits<8>{"regional_application", "Regional Application"},
         spare_bits<2>{"regional_application_b", "Regional Application B"},
         field<&P::unit_type>("unit_type", "Unit type"),
