@@ -169,7 +169,7 @@ void read_field(sb::sink& s, const V& v) noexcept {
 
 template <n2k::pgn_like P>
 void read_all(sb::sink& s, const P& m) noexcept {
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+  n2k::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (!F::is_reserved) read_field(s, m.*F::member);
   });

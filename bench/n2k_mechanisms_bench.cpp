@@ -162,7 +162,7 @@ std::vector<std::vector<std::uint8_t>> corpus_of(std::uint64_t seed, Fill fill =
   std::vector<std::vector<std::uint8_t>> out;
   while (out.size() < frame_count) {
     P m{};
-    randomize(r, m, P::n2k);
+    randomize(r, m, n2k::pgn_table<P>);
     fill(r, m);
     const auto e = n2k::encode(m);
     if (!e) continue;  // a value the encoder refuses (a sentinel of a signed number): draw again
@@ -292,7 +292,7 @@ void decode_row(benchmark::State& state, const std::vector<std::vector<std::uint
   for (auto _ : state) {
     for (const std::vector<std::uint8_t>& payload : corpus) {
       const P m = n2k::decode<P>(payload);
-      read_fields(s, m, P::n2k);
+      read_fields(s, m, n2k::pgn_table<P>);
       benchmark::DoNotOptimize(s);
     }
   }
@@ -394,7 +394,8 @@ void layouts(benchmark::State& state) {
   for (auto _ : state) {
     for (const std::vector<std::uint8_t>& payload : corpus) {
       const bool known = registry::pgns::visit(126208, payload, [&](const auto& m) {
-        if constexpr (requires { m.function_code; }) read_fields(s, m, m.n2k);  // 126208's
+        if constexpr (requires { m.function_code; })
+          read_fields(s, m, n2k::pgn_table<std::remove_cvref_t<decltype(m)>>);  // 126208's
       });
       unmatched += known ? 0 : 1;
       benchmark::DoNotOptimize(s);

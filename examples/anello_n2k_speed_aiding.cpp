@@ -57,11 +57,12 @@ bool send(const P& msg, std::uint8_t source, std::int64_t time_us,
   const auto payload = n2k::encode(msg);
   if (!payload) return fail("encode", payload.ec);
   n2k::log_record rec;
-  rec.id = {P::n2k.info.priority, P::n2k.info.pgn, source, n2k::broadcast_address};
+  rec.id = {n2k::pgn_table<P>.info.priority, n2k::pgn_table<P>.info.pgn, source,
+            n2k::broadcast_address};
   rec.time_us = time_us;
   (void)rec.interface.assign("can0");
   std::vector<n2k::frame_data> frames;
-  if (P::n2k.info.transport == n2k::framing::fast_packet) {
+  if (n2k::pgn_table<P>.info.transport == n2k::framing::fast_packet) {
     const auto split = n2k::split_fast_packet(payload.value, sequence.next(rec.id.pgn, source));
     if (!split) return fail("split", split.ec);
     frames.assign(split.value.view().begin(), split.value.view().end());

@@ -43,7 +43,7 @@ namespace n2k = nmea2000;
 template <n2k::pgn_like P>
 bool count_over_capacity(const P& m) {
   bool over = false;
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+  seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (n2k::detail::group_row<F>) {
       if constexpr (F::counted) {
@@ -85,7 +85,7 @@ void check_group_bits(const std::string& pgn, std::span<const std::uint8_t> payl
 
 template <n2k::pgn_like P>
 void check_payload(std::span<const std::uint8_t> payload) {
-  const std::string pgn = number(P::n2k.info.pgn);
+  const std::string pgn = number(seawire::nmea2000::pgn_table<P>.info.pgn);
   const P m = n2k::decode<P>(payload);
   const auto e = n2k::encode(m);
   if (!n2k::layout_matches<P>(payload)) {
@@ -108,7 +108,7 @@ void check_payload(std::span<const std::uint8_t> payload) {
                      pgn, hex_of(payload), hex_of(out));
 
   if constexpr (!n2k::description_of<P>::fixed_layout) return;  // offsets vary: the identity above
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t row) {
+  seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t row) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (n2k::detail::group_row<F>) {
       check_group_bits<F>(pgn, payload, out, offset, (m.*F::member).size());
@@ -181,7 +181,7 @@ std::int64_t make_raw(byte_source& src, std::int64_t top, bool is_signed) {
 
 template <n2k::pgn_like P>
 void check_built(byte_source& src) {
-  const std::string pgn = number(P::n2k.info.pgn);
+  const std::string pgn = number(seawire::nmea2000::pgn_table<P>.info.pgn);
   P m{};
   std::uint16_t first_bad = 0;  // a fixed row's field that does not fit
   std::uint16_t group_bad = 0;  // a repetition's field that does not fit: the group's row
@@ -189,7 +189,7 @@ void check_built(byte_source& src) {
   std::uint16_t odd_group = 0;  // a group of sub-byte repetitions that does not fill its byte
   P left_out{};                 // m as a receiver reads it back: filled in below
   std::size_t length = 0;       // bits, counted strings as they are
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
+  seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t row) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (n2k::detail::row_is_text<F>()) {
       using V = typename F::value_type;
@@ -258,7 +258,7 @@ void check_built(byte_source& src) {
   if constexpr (!n2k::description_of<P>::fixed_layout) {
     // Copy the strings that fit; those past the cut stay default.
     std::size_t bits = 0;
-    P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (F::is_reserved) {
         bits += F::bits;

@@ -168,7 +168,7 @@ TEST_CASE("the 0xAB00 frame and the PGN tables are laid out by the same rows", "
   CHECK(expected == anello::frame_size);
   // PGN 127488: instance (8 bits), speed (16), boost pressure (16), tilt/trim (8), reserved (16).
   std::vector<unsigned> offsets;
-  n2k::engine_parameters_rapid::n2k.for_each(
+  seawire::nmea2000::pgn_table<n2k::engine_parameters_rapid>.for_each(
       [&](const auto&, unsigned at, std::uint16_t) { offsets.push_back(at); });
   CHECK(offsets == std::vector<unsigned>{0, 8, 24, 40, 48});
   // A frame's field is where the table puts it: heading (u16) at byte 8, big-endian.

@@ -343,7 +343,7 @@ void generate_field(prng& g, T& out) {
 template <seawire::nmea2000::pgn_like P>
 P generate(prng& g) {
   P m{};
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+  seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (seawire::nmea2000::detail::row_is_text<F>()) {
       m.*F::member = generate_text<typename F::value_type>(g);

@@ -56,7 +56,7 @@ TEST_CASE("every lookup and flag enum of a described PGN has canboat's titles") 
   std::size_t enums = 0;
   registry::for_each_type<registry::pgns>([&](auto tag) {
     using P = typename decltype(tag)::type;
-    P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    n2k::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (!F::is_reserved) {
         using E = n2k::value_enum_t<typename F::value_type>;
@@ -87,7 +87,7 @@ TEST_CASE("lookup_title: canboat's texts by raw value") {
 
 TEST_CASE("a number field with titles: a number to seawire, titled for canboat") {
   using row = std::remove_cvref_t<decltype(seawire::detail::row_at<0>(
-      n2k::engine_parameters_rapid::n2k.fields))>;
+      n2k::pgn_table<n2k::engine_parameters_rapid>.fields))>;
   STATIC_REQUIRE(std::is_same_v<row::titles, n2k::engine_instance>);
   STATIC_REQUIRE(std::is_same_v<row::value_type, n2k::unsigned_number<8>>);
   STATIC_REQUIRE(row::bits == 8 && !row::is_reserved);
@@ -169,10 +169,11 @@ TEST_CASE("every described field's unit has its canboat display") {
 }
 
 TEST_CASE("PGN and field titles are canboat's names") {
-  CHECK(n2k::speed_water_referenced::n2k.info.title == "Speed");
-  CHECK(seawire::detail::row_at<0>(n2k::speed_water_referenced::n2k.fields).title == "SID");
-  CHECK(seawire::detail::row_at<6>(n2k::engine_parameters_dynamic::n2k.fields).title ==
+  CHECK(n2k::pgn_table<n2k::speed_water_referenced>.info.title == "Speed");
+  CHECK(seawire::detail::row_at<0>(n2k::pgn_table<n2k::speed_water_referenced>.fields).title ==
+        "SID");
+  CHECK(seawire::detail::row_at<6>(n2k::pgn_table<n2k::engine_parameters_dynamic>.fields).title ==
         "Total Engine hours");
-  CHECK(seawire::detail::row_at<0>(n2k::distance_log::n2k.fields).title == "Date");
+  CHECK(seawire::detail::row_at<0>(n2k::pgn_table<n2k::distance_log>.fields).title == "Date");
   CHECK(n2k::field_name<n2k::cross_track_error>(2) == "xte_mode");  // json names unchanged
 }

@@ -106,10 +106,11 @@ TEST_CASE("fast-packet list: every PGN as canboat's database and the standard's 
 TEST_CASE("fast-packet list: every PGN seawire declares has the framing the list gives it") {
   seawire::registry::pgns::for_each_type([](const auto& tag) {
     using P = std::remove_cvref_t<decltype(tag)>;
-    INFO(P::n2k.info.pgn);
-    CHECK((P::n2k.info.transport == n2k::framing::fast_packet) ==
-          n2k::is_fast_packet_pgn(P::n2k.info.pgn));
-    CHECK(bus_reader::is_fast(P::n2k.info.pgn) == n2k::is_fast_packet_pgn(P::n2k.info.pgn));
+    INFO(n2k::pgn_table<P>.info.pgn);
+    CHECK((n2k::pgn_table<P>.info.transport == n2k::framing::fast_packet) ==
+          n2k::is_fast_packet_pgn(n2k::pgn_table<P>.info.pgn));
+    CHECK(bus_reader::is_fast(n2k::pgn_table<P>.info.pgn) ==
+          n2k::is_fast_packet_pgn(n2k::pgn_table<P>.info.pgn));
   });
   // a PGN no list declares: the standard's framing
   CHECK(n2k::log_reader<n2k::ins_input_pgns>::is_fast(129029));

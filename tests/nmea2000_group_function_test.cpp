@@ -58,7 +58,7 @@ using pgns = seawire::registry::pgns;
 std::string layout_of(std::span<const std::uint8_t> payload) {
   std::string name;
   const bool known = pgns::visit(126208, payload, [&](const auto& m) {
-    name = std::remove_cvref_t<decltype(m)>::n2k.info.name;
+    name = n2k::pgn_table<std::remove_cvref_t<decltype(m)>>.info.name;
   });
   CHECK(known == !name.empty());
   return name;
@@ -85,9 +85,9 @@ constexpr std::string_view long_command_hex =
 }  // namespace
 
 TEST_CASE("group function: the layouts' facts", "[group_function]") {
-  STATIC_REQUIRE(request::n2k.info.pgn == 126208);
-  STATIC_REQUIRE(command::n2k.info.pgn == 126208);
-  STATIC_REQUIRE(acknowledge::n2k.info.pgn == 126208);
+  STATIC_REQUIRE(n2k::pgn_table<request>.info.pgn == 126208);
+  STATIC_REQUIRE(n2k::pgn_table<command>.info.pgn == 126208);
+  STATIC_REQUIRE(n2k::pgn_table<acknowledge>.info.pgn == 126208);
   STATIC_REQUIRE(n2k::description_of<request>::has_match);
   STATIC_REQUIRE(!n2k::description_of<n2k::pgn_list_message>::has_match);
   // The fixed rows, then what a fast packet's 223 bytes hold.

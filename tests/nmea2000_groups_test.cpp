@@ -90,11 +90,11 @@ TEST_CASE("groups: the PGNs' facts, capacities from the 223-byte payload", "[gro
   using S = n2k::gnss_sats_in_view;
   using G = n2k::gnss_position_data;
   using L = n2k::pgn_list_message;
-  CHECK(S::n2k.info.pgn == 129540);
-  CHECK(G::n2k.info.pgn == 129029);
-  CHECK(L::n2k.info.pgn == 126464);
-  CHECK(S::n2k.info.transport == n2k::framing::fast_packet);
-  CHECK(G::n2k.info.priority == 3);
+  CHECK(n2k::pgn_table<S>.info.pgn == 129540);
+  CHECK(n2k::pgn_table<G>.info.pgn == 129029);
+  CHECK(n2k::pgn_table<L>.info.pgn == 126464);
+  CHECK(n2k::pgn_table<S>.info.transport == n2k::framing::fast_packet);
+  CHECK(n2k::pgn_table<G>.info.priority == 3);
   // capacity = (223 - fixed bytes) / bytes of one repetition
   CHECK(decltype(S::satellites)::capacity == (223 - 3) / 12);
   CHECK(decltype(G::stations)::capacity == (223 - 43) / 4);

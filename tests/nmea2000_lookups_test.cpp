@@ -411,7 +411,7 @@ void check_titles() {
 }  // namespace
 
 TEST_CASE("60928 ISO Address Claim: the NAME's fields, the function named by the class") {
-  STATIC_REQUIRE(n2k::iso_address_claim::n2k.info.pgn == 60928);
+  STATIC_REQUIRE(n2k::pgn_table<n2k::iso_address_claim>.info.pgn == 60928);
   STATIC_REQUIRE(n2k::description_of<n2k::iso_address_claim>::length == 8);
   // dirona-actisense-serial.raw, src 41: unique 1620519, Maretron, instances 0, PC Gateway,
   // Internetwork device, system 0, Marine Industry, arbitrary address capable Yes

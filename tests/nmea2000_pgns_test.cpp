@@ -34,7 +34,7 @@ std::chrono::sys_days days(int y, unsigned m, unsigned d) {
 template <n2k::pgn_like P>
 void check_info(std::uint32_t pgn, unsigned priority, n2k::framing transport, unsigned interval_ms,
                 std::size_t length) {
-  constexpr n2k::pgn_info info = P::n2k.info;
+  constexpr n2k::pgn_info info = n2k::pgn_table<P>.info;
   CHECK(info.pgn == pgn);
   CHECK(info.priority == priority);
   CHECK(info.transport == transport);

@@ -390,7 +390,7 @@ TEST_CASE("126996 Product Information: captures decoded by the byte rules, encod
           "[strings][126996]") {
   using P = n2k::product_information;
   CHECK(n2k::description_of<P>::length == 134);
-  constexpr auto info = P::n2k.info;
+  constexpr auto info = n2k::pgn_table<P>.info;
   CHECK(info.pgn == 126996);
   CHECK(info.transport == n2k::framing::fast_packet);
   // 2026-06-08T01:52:35.124, source 178 (ac42-commissioning.raw), padded with 0xFF; canboat:

@@ -323,7 +323,7 @@ TEST_CASE("tables: lengths, framing and offsets as the standard lays them out") 
   CHECK(n2k::description_of<n2k::environmental_parameters>::length == 8);
   CHECK(n2k::description_of<n2k::vessel_speed_components>::length == 12);
   std::map<std::string_view, unsigned> offsets;
-  n2k::engine_parameters_dynamic::n2k.for_each(
+  n2k::pgn_table<n2k::engine_parameters_dynamic>.for_each(
       [&](const auto& f, unsigned offset, std::uint16_t) { offsets[f.name] = offset; });
   CHECK(offsets["total_engine_hours_s"] == 88);
   CHECK(offsets["discrete_status_1"] == 160);
@@ -796,7 +796,7 @@ TEST_CASE("every captured and synthetic vector reads, and encodes back to its pa
           if (payload.size() != n2k::description_of<P>::length) return;
           // bit-identical but for reserved bits, which are sent as ones whatever was received
           std::vector<std::uint8_t> expected(payload.begin(), payload.end());
-          P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
+          n2k::pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
             if (std::remove_cvref_t<decltype(f)>::is_reserved)
               seawire::detail::put_bits<n2k::payload_order>(expected, offset, f.bits,
                                                             ~std::uint64_t{0});
@@ -1174,7 +1174,7 @@ TEST_CASE("random messages of every PGN: decode, encode, JSON and back give the 
         const std::uint64_t r = next();
         b = static_cast<std::uint8_t>(r % 4 == 0 ? 0xFF - (r >> 8) % 4 : (r >> 8) & 0xFF);
       }
-      INFO(P::n2k.info.pgn << " " << hex_of(payload));
+      INFO(n2k::pgn_table<P>.info.pgn << " " << hex_of(payload));
       const P m = n2k::decode<P>(payload);
       const auto e = n2k::encode(m);
       REQUIRE(e);

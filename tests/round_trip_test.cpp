@@ -140,7 +140,7 @@ TEST_CASE("round trip over the declared domains: every PGN of the registry", "[r
   support::prng g{9};
   registry::for_each_type<registry::pgns>([&](auto tag) {
     using P = typename decltype(tag)::type;
-    INFO("PGN " << P::n2k.info.pgn);
+    INFO("PGN " << seawire::nmea2000::pgn_table<P>.info.pgn);
     int failures = 0;
     for (int i = 0; i < iterations && failures < 5; ++i) {
       const P m = support::generate<P>(g);

@@ -31,7 +31,7 @@ vessel_heading decoded(const payload& p) { return n2k::decode<vessel_heading>(p)
 }  // namespace
 
 TEST_CASE("127250: the table is canboat's", "[127250]") {
-  constexpr n2k::pgn_info info = vessel_heading::n2k.info;
+  constexpr n2k::pgn_info info = n2k::pgn_table<vessel_heading>.info;
   CHECK(info.pgn == 127250);
   CHECK(info.priority == 2);
   CHECK(info.transport == n2k::framing::single_frame);

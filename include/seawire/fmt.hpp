@@ -62,7 +62,7 @@ constexpr void write_plain(Sink& s, const T& msg) {
 template <class Sink, nmea2000::pgn_like P>
 constexpr void write_plain(Sink& s, const P& msg) {
   s.put("PGN");
-  nmea::detail::json_uint(s, P::n2k.info.pgn);
+  nmea::detail::json_uint(s, nmea2000::pgn_table<P>.info.pgn);
   write_plain_fields(s, msg);
 }
 

@@ -197,7 +197,7 @@ struct row_value<Row, false> {
 template <class P>
 [[nodiscard]] consteval const auto& rows_of() noexcept {
   if constexpr (pgn_like<P>) {
-    return P::n2k.fields;
+    return nmea2000::pgn_table<P>.fields;
   } else {
     return P::n2k_item.fields;
   }

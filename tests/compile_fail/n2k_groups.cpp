@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// NMEA 2000 declarations a number or a repeating group cannot hold exactly must not compile.
+// NMEA 2000 declarations a number, a lookup or a table cannot hold exactly must not compile.
 // Each ctest case compiles this file with one CASE defined and expects the declaration's message;
 // CASE ok must compile (so a failure is the declaration's, not a broken file).
 #include <array>
@@ -36,6 +36,19 @@ struct with_bytes {
                         n2k::bytes_to_end<&with_bytes::rest>("rest", "Rest"));
 };
 const auto ok_bytes_length = n2k::description_of<with_bytes>::length;
+// A table as a function template of its struct: built where used.
+struct lazy_msg {
+  n2k::unsigned_number<8> first;
+  template <class P>
+  static constexpr auto n2k() {
+    return n2k::describe_pgn(n2k::pgn_info{3, "lazy_msg", "Lazy"},
+                             n2k::field<&P::first>("first", "First"));
+  }
+};
+static_assert(n2k::description_of<lazy_msg>::length == 1);
+enum class two : std::uint8_t { a = 0, b = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(two) noexcept { return {"a", "b"}; }
+constexpr bool ok_named = n2k::lookup<two, 1>{two::b}.has_value();
 #elif defined(CASE_unsigned_64)
 n2k::unsigned_number<64> too_wide;
 #elif defined(CASE_scale_overflow)
@@ -89,6 +102,27 @@ struct msg {
       n2k::match<&msg::second, code::b>("second", "Second"));
 };
 const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_lazy_table_bits)
+// A table built where the PGN is used is checked there.
+struct msg {
+  n2k::unsigned_number<4> half;
+  template <class P>
+  static constexpr auto n2k() {
+    return n2k::describe_pgn(n2k::pgn_info{1, "msg", "Msg"}, n2k::field<&P::half>("half", "Half"));
+  }
+};
+const auto bad_length = n2k::description_of<msg>::length;
+#elif defined(CASE_lookup_too_many_names)
+// A lookup's names are checked where the lookup first reads them.
+enum class three : std::uint8_t { a = 0, b = 1, c = 2 };
+constexpr std::array<std::string_view, 3> lookup_names(three) noexcept { return {"a", "b", "c"}; }
+constexpr bool named = n2k::lookup<three, 1>{three::a}.has_value();
+#elif defined(CASE_lookup_state_name)
+enum class state_named : std::uint8_t { a = 0, b = 1 };
+constexpr std::array<std::string_view, 2> lookup_names(state_named) noexcept {
+  return {"a", "reserved"};
+}
+constexpr bool named = n2k::lookup<state_named, 8>{state_named::a}.has_value();
 #elif defined(CASE_signed_count)
 struct msg {
   n2k::signed_number<8> count;

@@ -316,7 +316,7 @@ std::vector<wire_enum> wire_enums() {
   });
   registry::for_each_type<registry::pgns>([&](auto tag) {
     using P = typename decltype(tag)::type;
-    P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t row) {
+    seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t row) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (nmea2000::detail::group_row<F>) {
         // a repeating group's fields: numbered "row.k" as the messages' tables do
@@ -327,7 +327,7 @@ std::vector<wire_enum> wire_enums() {
             using E = nmea2000::value_enum_t<typename R::value_type>;
             if constexpr (!std::is_void_v<E>) {
               add_use<E>(
-                  out, "PGN " + std::to_string(P::n2k.info.pgn),
+                  out, "PGN " + std::to_string(seawire::nmea2000::pgn_table<P>.info.pgn),
                   std::to_string(row) + "." + std::to_string(k) + " (" + std::string(e.title) + ")",
                   kind::lookup);
             }
@@ -336,14 +336,14 @@ std::vector<wire_enum> wire_enums() {
       } else if constexpr (!F::is_reserved) {
         using E = nmea2000::value_enum_t<typename F::value_type>;
         if constexpr (!std::is_void_v<E>) {
-          add_use<E>(out, "PGN " + std::to_string(P::n2k.info.pgn),
+          add_use<E>(out, "PGN " + std::to_string(seawire::nmea2000::pgn_table<P>.info.pgn),
                      std::to_string(row) + " (" + std::string(f.title) + ")", kind::lookup);
         }
         // A number field whose values have titles (field<&P::m, E>).
         if constexpr (requires { typename F::titles; }) {
-          add_use<typename F::titles>(out, "PGN " + std::to_string(P::n2k.info.pgn),
-                                      std::to_string(row) + " (" + std::string(f.title) + ")",
-                                      kind::lookup);
+          add_use<typename F::titles>(
+              out, "PGN " + std::to_string(seawire::nmea2000::pgn_table<P>.info.pgn),
+              std::to_string(row) + " (" + std::string(f.title) + ")", kind::lookup);
         }
       }
     });

@@ -197,7 +197,7 @@ template <auto Member>
 std::string json_name() {
   using P = seawire::detail::member_class_t<Member>;
   std::string out;
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+  seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using E = std::remove_cvref_t<decltype(f)>;
     if constexpr (!E::is_reserved) {
       if (seawire::detail::same_member<E::member, Member>) out = std::string(f.name);
@@ -464,7 +464,7 @@ std::string n2k_form(std::string& step, std::string& range) {
 
 template <class P>
 void pgn() {
-  constexpr auto& d = P::n2k;
+  constexpr auto& d = seawire::nmea2000::pgn_table<P>;
   const auto& info = d.info;
   std::printf("### PGN %u %s\n\n", unsigned{info.pgn}, std::string(info.title).c_str());
   std::printf("`%s`: ", std::string(info.name).c_str());

@@ -16,8 +16,8 @@ int main() {
   });
   registry::for_each_type<registry::pgns>([](auto tag) {
     using P = typename decltype(tag)::type;
-    std::printf("PGN %u %s\n", static_cast<unsigned>(P::n2k.info.pgn),
-                std::string(P::n2k.info.name).c_str());
+    std::printf("PGN %u %s\n", static_cast<unsigned>(seawire::nmea2000::pgn_table<P>.info.pgn),
+                std::string(seawire::nmea2000::pgn_table<P>.info.name).c_str());
   });
   registry::for_each_type<registry::frames>([](auto) { std::printf("frame\n"); });
   return 0;

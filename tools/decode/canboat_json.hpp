@@ -636,7 +636,7 @@ inline void put_header(std::string& out, const nmea2000::message_header& h,
 template <nmea2000::pgn_like P>
 bool put_message(std::string& out, const nmea2000::message_header& h, const P& msg,
                  std::span<const std::uint8_t> payload, std::string_view timestamp) {
-  put_header(out, h, P::n2k.info.title, timestamp);
+  put_header(out, h, seawire::nmea2000::pgn_table<P>.info.title, timestamp);
   fields_text f(out);
   if (!put_rows(f, msg, payload, 0)) return false;
   f.close();
@@ -687,7 +687,7 @@ inline pair_value put_pair_value(fields_text& item, std::uint32_t pgn, std::int6
   pair_value written = pair_value::none;
   registry::for_each_type<registry::pgns>([&](auto tag) {
     using Q = typename decltype(tag)::type;
-    if (described || Q::n2k.info.pgn != pgn) return;
+    if (described || seawire::nmea2000::pgn_table<Q>.info.pgn != pgn) return;
     described = true;
     visit_rows<Q>([&](auto layout) {
       using L = decltype(layout);

@@ -238,8 +238,8 @@ class decoder {
       const std::uint32_t number = pgn;  // (a lambda cannot capture a structured binding)
       n2k_pgns::for_each_type([&](const auto& tag) {
         using P = std::remove_cvref_t<decltype(tag)>;
-        if (P::n2k.info.pgn != number) return;
-        const std::string_view name = P::n2k.info.name;
+        if (seawire::nmea2000::pgn_table<P>.info.pgn != number) return;
+        const std::string_view name = seawire::nmea2000::pgn_table<P>.info.name;
         if (!named) {
           named = name;
           return;

@@ -86,7 +86,7 @@ template <class M>
 std::string table_name(std::string_view type) {
   std::string out(type);
   if constexpr (nmea2000::pgn_like<M>) {
-    M::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+    seawire::nmea2000::pgn_table<M>.for_each([&](const auto& f, unsigned, std::uint16_t) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (requires { F::is_match; }) {
         out += '_';
@@ -122,7 +122,7 @@ struct csv_headers<nmea::message_set<Ms...>> {
       bool found = false;
       n2k_pgns::for_each_type([&](const auto& tag) {
         using P = std::remove_cvref_t<decltype(tag)>;
-        if (P::n2k.info.pgn != *pgn || found) return;
+        if (seawire::nmea2000::pgn_table<P>.info.pgn != *pgn || found) return;
         csv_header<P>(out);
         layout = table_name<P>(type);
         found = true;

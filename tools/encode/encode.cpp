@@ -481,7 +481,7 @@ class encoder {
       return true;
     } else {
       bool named = false;
-      P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+      seawire::nmea2000::pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
         using F = std::remove_cvref_t<decltype(f)>;
         if constexpr (requires { F::is_match; }) {
           typename F::value_type v;
@@ -512,7 +512,8 @@ class encoder {
       n2k_pgns::for_each_type([&](const auto& tag) {
         using P = std::remove_cvref_t<decltype(tag)>;
         const std::size_t i = index++;
-        if (P::n2k.info.pgn == pgn && !chosen && names_layout<P>(layouts)) chosen = i;
+        if (seawire::nmea2000::pgn_table<P>.info.pgn == pgn && !chosen && names_layout<P>(layouts))
+          chosen = i;
       });
       if (!chosen && obj_({}, "data").kind == json_kind::absent) {
         reject(std::string(type) + ": \"function_code\" must name one of its layouts seawire " +

@@ -527,10 +527,15 @@ template <auto ValueMember>
 
 }  // namespace detail
 
+// decode_frame, encode_frame, build_frame, validate and to_values are templates of nothing, so
+// that only a translation unit calling one compiles its walk over the 19 fields (as the role
+// decoders: nmea::lazy); they are called as any function, decode_frame(bytes).
+
 /// Decodes the frame at the start of `bytes`. Checks, in order: frame id (bad_frame_id, column
 /// 0), length 48 (bad_length, column 2), 56 bytes (truncated, column = bytes.size(): every byte
 /// so far is right), CRC (crc_mismatch, column 4). No range checks (validate()). On error `value`
 /// is an all-n/a frame.
+template <int = 0>
 [[nodiscard]] constexpr result<sensor_frame_raw> decode_frame(
     std::span<const std::uint8_t> bytes) noexcept {
   result<sensor_frame_raw> out;
@@ -565,6 +570,7 @@ template <auto ValueMember>
 
 /// Writes `frame`'s raw integers as 56 bytes, header and CRC included, and returns 56;
 /// buffer_too_small (nothing written) if `out` is shorter.
+template <int = 0>
 [[nodiscard]] constexpr result<std::size_t> encode_frame(const sensor_frame_raw& frame,
                                                          std::span<std::uint8_t> out) noexcept {
   if (out.size() < frame_size) return {0, errc::buffer_too_small};
@@ -583,6 +589,7 @@ template <auto ValueMember>
 }
 
 /// The 56 bytes of `frame`.
+template <int = 0>
 [[nodiscard]] constexpr frame_bytes encode_frame(const sensor_frame_raw& frame) noexcept {
   frame_bytes bytes{};
   (void)encode_frame(frame, bytes);  // cannot fail: the array is exactly a frame long
@@ -593,6 +600,7 @@ template <auto ValueMember>
 /// (decimal::from_double's rule), nullopt as not available. Refuses the first field that is
 /// NaN or infinite (not_finite), outside the spec's range after rounding (out_of_range), or not
 /// carried by the wire type (value_too_large); `field` 1-19, `column` its byte offset.
+template <int = 0>
 [[nodiscard]] constexpr result<sensor_frame_raw> build_frame(const sensor_values& values) noexcept {
   result<sensor_frame_raw> out;
   detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
@@ -608,6 +616,7 @@ template <auto ValueMember>
 
 /// Whether every field of `frame` is not available or within what build_frame would send; the
 /// first that is not gives build_frame's error.
+template <int = 0>
 [[nodiscard]] constexpr result<sensor_frame_raw> validate(const sensor_frame_raw& frame) noexcept {
   result<sensor_frame_raw> out{frame};
   detail::visit_sensor_fields([&](std::uint16_t number, const auto& field) {
@@ -622,6 +631,7 @@ template <auto ValueMember>
 }
 
 /// Every field in physical units. build_frame(to_values(f)) == f for every f that validates.
+template <int = 0>
 [[nodiscard]] constexpr sensor_values to_values(const sensor_frame_raw& frame) noexcept {
   sensor_values values;
   detail::visit_sensor_fields([&](std::uint16_t, const auto& field) {

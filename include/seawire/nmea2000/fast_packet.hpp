@@ -131,6 +131,8 @@ enum class fast_packet_drop : std::uint8_t {
 };
 inline constexpr std::size_t fast_packet_drop_count = 7;
 
+// A template of nothing, so that only a caller reads the enumerators' names (at compile time).
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(fast_packet_drop d) noexcept {
   return seawire::detail::enumerator_name_of<fast_packet_drop_count>(d);
 }

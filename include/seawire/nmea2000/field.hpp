@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <chrono>
 #include <concepts>
 #include <cstddef>
@@ -19,7 +18,6 @@
 #include <optional>
 #include <span>
 #include <string_view>
-#include <system_error>
 #include <type_traits>
 #include <utility>
 
@@ -42,6 +40,8 @@ enum class field_state : std::uint8_t {
   reserved,       ///< a raw value the standard keeps for future use
 };
 
+// A template of nothing, so that only a caller reads the enumerators' names (at compile time).
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(field_state s) noexcept {
   return seawire::detail::enumerator_name_of<4>(s);
 }
@@ -278,6 +278,10 @@ template <named_enum E>
   if (!i) return std::nullopt;
   return *i;
 }
+/// Whether no name of E is a field state's.
+template <named_enum E>
+inline constexpr bool names_clear_of_states =
+    !enum_value<E>("not_available") && !enum_value<E>("out_of_range") && !enum_value<E>("reserved");
 }  // namespace detail
 
 /// An enum with display titles, canboat's texts ("Paddle wheel", "Pitot tube"): declared as
@@ -332,17 +336,12 @@ class lookup {
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
   /// The largest raw value that is a value whether named or not.
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
-  static_assert(detail::names_of<E>.size() <= static_cast<std::size_t>(top_raw) + 1,
-                "more names than the field has raw values");
-  static_assert(!detail::enum_value<E>("not_available") && !detail::enum_value<E>("out_of_range") &&
-                    !detail::enum_value<E>("reserved"),
-                "a lookup's name cannot be a state's: JSON could not tell them apart");
 
   /// Whether raw value `raw` is a value: below the sentinels, or one the lookup names.
   [[nodiscard]] static constexpr bool is_value(std::int64_t raw) noexcept {
     return (raw >= 0 && raw <= max_valid_raw) ||
            (raw > max_valid_raw && raw <= top_raw &&
-            !detail::enum_name<E>(static_cast<std::uint64_t>(raw)).empty());
+            !seawire::detail::name_at(names(), static_cast<std::uint64_t>(raw)).empty());
   }
 
   constexpr lookup() noexcept = default;
@@ -361,9 +360,9 @@ class lookup {
   }
   /// The value called `name` (a name of lookup_names); bad_enum for any other.
   [[nodiscard]] static constexpr result<lookup> from_name(std::string_view name) noexcept {
-    const auto v = detail::enum_value<E>(name);
-    if (!v) return {lookup{}, errc::bad_enum};
-    return {from_raw(static_cast<std::int64_t>(*v)), errc::ok};
+    const auto i = seawire::detail::index_of_name(names(), name);
+    if (!i) return {lookup{}, errc::bad_enum};
+    return {from_raw(static_cast<std::int64_t>(*i)), errc::ok};
   }
 
   [[nodiscard]] constexpr std::int64_t raw() const noexcept { return raw_; }
@@ -379,7 +378,7 @@ class lookup {
   }
   /// The value's name; empty for a sentinel or a value the standard has not named.
   [[nodiscard]] constexpr std::string_view name() const noexcept {
-    return has_value() ? detail::enum_name<E>(static_cast<std::uint64_t>(raw_))
+    return has_value() ? seawire::detail::name_at(names(), static_cast<std::uint64_t>(raw_))
                        : std::string_view{};
   }
   [[nodiscard]] constexpr bool operator==(const lookup& o) const noexcept { return raw_ == o.raw_; }
@@ -388,6 +387,17 @@ class lookup {
   }
 
  private:
+  // E's names, checked where the lookup first reads them (its state, name, from_name): a header
+  // that only declares lookup members evaluates no table (a manufacturer code names 2048 values).
+  [[nodiscard]] static constexpr const auto& names() noexcept {
+    static_assert(std::tuple_size_v<std::remove_cvref_t<decltype(lookup_names(E{}))>> <=
+                      static_cast<std::size_t>(top_raw) + 1,
+                  "more names than the field has raw values");
+    static_assert(detail::names_clear_of_states<E>,
+                  "a lookup's name cannot be a state's: JSON could not tell them apart");
+    return detail::names_of<E>;
+  }
+
   std::int64_t raw_ = top_raw;
 };
 
@@ -871,8 +881,6 @@ concept keyed_table = requires {
 template <keyed_table T, unsigned Bits>
 class keyed_lookup {
   static_assert(Bits >= 1 && Bits <= 16);
-  static_assert(detail::keyed_table_valid(T::entries),
-                "a keyed table must be sorted by (key, value), each pair and name once");
 
  public:
   using table = T;
@@ -881,9 +889,6 @@ class keyed_lookup {
   static constexpr unsigned sentinels = detail::lookup_sentinel_count(Bits);
   static constexpr std::int64_t top_raw = (std::int64_t{1} << Bits) - 1;
   static constexpr std::int64_t max_valid_raw = top_raw - sentinels;
-  static_assert(std::ranges::all_of(T::entries,
-                                    [](const keyed_name& e) { return e.value <= max_valid_raw; }),
-                "a keyed table names a sentinel");
 
   constexpr keyed_lookup() noexcept = default;
   [[nodiscard]] static constexpr keyed_lookup from_raw(std::int64_t raw) noexcept {
@@ -895,7 +900,7 @@ class keyed_lookup {
   /// The value called `name` when the key is `key`; bad_enum when no value of that key is.
   [[nodiscard]] static constexpr result<keyed_lookup> from_name(std::int64_t key,
                                                                 std::string_view name) noexcept {
-    for (const keyed_name& e : T::entries)
+    for (const keyed_name& e : entries())
       if (e.key == key && e.name == name) return {from_raw(e.value), errc::ok};
     return {keyed_lookup{}, errc::bad_enum};
   }
@@ -910,18 +915,29 @@ class keyed_lookup {
   /// does not name.
   [[nodiscard]] constexpr std::string_view name(std::int64_t key) const noexcept {
     const std::size_t i = at(key);
-    return i < T::entries.size() ? T::entries[i].name : std::string_view{};
+    return i < entries().size() ? entries()[i].name : std::string_view{};
   }
   /// The standard's text for the value when the key is `key`; empty as for name().
   [[nodiscard]] constexpr std::string_view title(std::int64_t key) const noexcept {
     const std::size_t i = at(key);
-    return i < T::entries.size() ? T::entries[i].title : std::string_view{};
+    return i < entries().size() ? entries()[i].title : std::string_view{};
   }
   [[nodiscard]] constexpr bool operator==(const keyed_lookup&) const noexcept = default;
 
  private:
+  // T's names, checked where the field first reads them (name, title, from_name): a header that
+  // only declares keyed members evaluates no table (60928's device functions are 106 pairs).
+  [[nodiscard]] static constexpr const auto& entries() noexcept {
+    static_assert(detail::keyed_table_valid(T::entries),
+                  "a keyed table must be sorted by (key, value), each pair and name once");
+    static_assert(std::ranges::all_of(T::entries,
+                                      [](const keyed_name& e) { return e.value <= max_valid_raw; }),
+                  "a keyed table names a sentinel");
+    return T::entries;
+  }
+
   [[nodiscard]] constexpr std::size_t at(std::int64_t key) const noexcept {
-    return has_value() ? detail::keyed_find(T::entries, key, raw_) : T::entries.size();
+    return has_value() ? detail::keyed_find(entries(), key, raw_) : entries().size();
   }
 
   std::int64_t raw_ = top_raw;
@@ -1503,14 +1519,46 @@ template <class... F>
   return {info, seawire::detail::make_rows(fields...)};
 }
 
-/// A PGN struct: has `static constexpr auto n2k = describe_pgn(...)`.
+namespace detail {
+/// Whether P declares its table as a constant, `static constexpr auto n2k = describe_pgn(...)`
+/// (built where P is declared), or as a function template of P itself, `template <class P>
+/// static constexpr auto n2k() { return describe_pgn(...); }` (built where the PGN is first
+/// used). Asked in this order: GCC takes `P::template n2k<P>` of a constant for an error, not
+/// for a requirement not met.
 template <class P>
-concept pgn_like = requires {
+concept table_constant = requires {
   P::n2k.info.pgn;
 };
+template <class P>
+concept table_function = requires {
+  P::template n2k<P>();
+};
+
+template <class P>
+[[nodiscard]] consteval auto table_of() noexcept {
+  if constexpr (table_constant<P>) {
+    return P::n2k;
+  } else {
+    return P::template n2k<P>();
+  }
+}
+}  // namespace detail
+
+/// A PGN struct: has a table, `template <class P> static constexpr auto n2k()` returning
+/// describe_pgn(...) of P's members (or the constant `static constexpr auto n2k =
+/// describe_pgn(...)`).
+template <class P>
+concept pgn_like = (detail::table_constant<P> || detail::table_function<P>)&&requires {
+  detail::table_of<P>().info.pgn;
+};
+
+/// P's table (a pgn_description): built once in a translation unit, where first used, so that a
+/// header declaring many PGNs costs only their structs.
+template <pgn_like P>
+inline constexpr auto pgn_table = detail::table_of<P>();
 
 template <pgn_like P>
-using description_of = std::remove_cvref_t<decltype(P::n2k)>;
+using description_of = std::remove_cvref_t<decltype(pgn_table<P>)>;
 
 /// Whether `payload` has P's layout: true unless P's table has a match row (match<>) and the
 /// payload holds another value there (or does not hold that row).
@@ -1520,7 +1568,7 @@ template <pgn_like P>
     return true;
   } else {
     bool ok = false;
-    P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
+    pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
       using F = std::remove_cvref_t<decltype(f)>;
       if constexpr (detail::match_row<F>) {
         ok = offset + F::bits <= payload.size() * 8 &&
@@ -1608,36 +1656,37 @@ template <pgn_like P>
   P out{};
   std::size_t at = 0;  // bits
   bool stop = false;
-  seawire::detail::for_each_row(P::n2k.fields, 0, [&](const auto& f, unsigned, std::uint16_t) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    if (stop) return false;
-    if constexpr (F::is_reserved) {
-      at += F::bits;
-    } else {
-      using V = typename F::value_type;
-      auto& member = out.*F::member;
-      if constexpr (row_is_variable<F>()) {
-        const std::size_t byte = at / 8;
-        if (byte >= payload.size()) return false;  // not sent: this and the rest not available
-        const std::size_t left = payload.size() - byte;
-        const std::size_t count = payload[byte];
-        if (count < 2 || left < 2) {
-          stop = true;
-          return false;
+  seawire::detail::for_each_row(
+      pgn_table<P>.fields, 0, [&](const auto& f, unsigned, std::uint16_t) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        if (stop) return false;
+        if constexpr (F::is_reserved) {
+          at += F::bits;
+        } else {
+          using V = typename F::value_type;
+          auto& member = out.*F::member;
+          if constexpr (row_is_variable<F>()) {
+            const std::size_t byte = at / 8;
+            if (byte >= payload.size()) return false;  // not sent: this and the rest not available
+            const std::size_t left = payload.size() - byte;
+            const std::size_t count = payload[byte];
+            if (count < 2 || left < 2) {
+              stop = true;
+              return false;
+            }
+            const std::size_t taken = std::min(count, left);
+            member = V::from_bytes(payload[byte + 1], payload.subspan(byte + 2, taken - 2)).value;
+            at += 8 * taken;
+          } else if constexpr (row_is_text<F>()) {
+            member = read_fixed_text<V>(payload, at / 8);
+            at += F::bits;
+          } else {
+            decode_field<F>(payload, static_cast<unsigned>(at), out);
+            at += F::bits;
+          }
         }
-        const std::size_t taken = std::min(count, left);
-        member = V::from_bytes(payload[byte + 1], payload.subspan(byte + 2, taken - 2)).value;
-        at += 8 * taken;
-      } else if constexpr (row_is_text<F>()) {
-        member = read_fixed_text<V>(payload, at / 8);
-        at += F::bits;
-      } else {
-        decode_field<F>(payload, static_cast<unsigned>(at), out);
-        at += F::bits;
-      }
-    }
-    return true;
-  });
+        return true;
+      });
   return out;
 }
 
@@ -1650,7 +1699,7 @@ template <pgn_like P>
 [[nodiscard]] constexpr P decode(std::span<const std::uint8_t> payload) noexcept {
   if constexpr (!description_of<P>::fixed_layout) return detail::decode_varying<P>(payload);
   P out{};
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (detail::group_row<F>) {
       detail::decode_group<F>(payload, offset, out);
@@ -1713,7 +1762,7 @@ constexpr void encode_field(std::array<std::uint8_t, N>& bytes, unsigned offset,
 template <pgn_like P, auto Member>
 [[nodiscard]] constexpr std::pair<std::uint16_t, unsigned> row_of() noexcept {
   std::pair<std::uint16_t, unsigned> out{0, 0};
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (!F::is_reserved) {
       if (seawire::detail::same_member<F::member, Member>) out = {n, offset};
@@ -1746,42 +1795,43 @@ template <pgn_like P>
   std::size_t at = 0;         // bits
   std::uint16_t cut_row = 0;  // the row the payload ended before, 0 while it goes on
   std::size_t cut_at = 0;
-  seawire::detail::for_each_row(P::n2k.fields, 0, [&](const auto& f, unsigned, std::uint16_t n) {
-    using F = std::remove_cvref_t<decltype(f)>;
-    const auto fail = [&](errc e) {
-      r.ec = e;
-      r.field = n;
-      r.column = static_cast<std::uint16_t>(at / 8);
-      return false;
-    };
-    bool available = false;
-    if constexpr (!F::is_reserved)
-      available = (msg.*F::member).state() != field_state::not_available;
-    std::size_t bits = F::bits;
-    if constexpr (row_is_variable<F>()) bits = 8 * (msg.*F::member).wire_size();
-    if (cut_row == 0 && at + bits > 8 * room) {
-      cut_row = n;
-      cut_at = at;
-    }
-    if (cut_row != 0) return available ? fail(errc::text_too_long) : true;
-    if constexpr (requires { F::is_spare; })
-      seawire::detail::put_bits<payload_order>(r.value.bytes, static_cast<unsigned>(at), F::bits,
-                                               0);
-    if constexpr (!F::is_reserved) {
-      const auto& v = msg.*F::member;
-      if (!v.fits()) return fail(errc::value_too_large);
-      if constexpr (detail::match_row<F>) {
-        if (v.raw() != F::match_raw) return fail(errc::wrong_address);
-      }
-      if constexpr (row_is_text<F>()) {
-        put_text(r.value.bytes, at / 8, v);
-      } else {
-        encode_field<F>(r.value.bytes, static_cast<unsigned>(at), v);
-      }
-    }
-    at += bits;
-    return true;
-  });
+  seawire::detail::for_each_row(
+      pgn_table<P>.fields, 0, [&](const auto& f, unsigned, std::uint16_t n) {
+        using F = std::remove_cvref_t<decltype(f)>;
+        const auto fail = [&](errc e) {
+          r.ec = e;
+          r.field = n;
+          r.column = static_cast<std::uint16_t>(at / 8);
+          return false;
+        };
+        bool available = false;
+        if constexpr (!F::is_reserved)
+          available = (msg.*F::member).state() != field_state::not_available;
+        std::size_t bits = F::bits;
+        if constexpr (row_is_variable<F>()) bits = 8 * (msg.*F::member).wire_size();
+        if (cut_row == 0 && at + bits > 8 * room) {
+          cut_row = n;
+          cut_at = at;
+        }
+        if (cut_row != 0) return available ? fail(errc::text_too_long) : true;
+        if constexpr (requires { F::is_spare; })
+          seawire::detail::put_bits<payload_order>(r.value.bytes, static_cast<unsigned>(at),
+                                                   F::bits, 0);
+        if constexpr (!F::is_reserved) {
+          const auto& v = msg.*F::member;
+          if (!v.fits()) return fail(errc::value_too_large);
+          if constexpr (detail::match_row<F>) {
+            if (v.raw() != F::match_raw) return fail(errc::wrong_address);
+          }
+          if constexpr (row_is_text<F>()) {
+            put_text(r.value.bytes, at / 8, v);
+          } else {
+            encode_field<F>(r.value.bytes, static_cast<unsigned>(at), v);
+          }
+        }
+        at += bits;
+        return true;
+      });
   r.value.length = ((cut_row != 0 ? cut_at : at) + 7) / 8;
   return r;
 }
@@ -1821,7 +1871,7 @@ template <pgn_like P>
     r.field = row;
     r.column = static_cast<std::uint16_t>(at / 8);
   };
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (requires { F::is_spare; })
       seawire::detail::put_bits<payload_order>(r.value.bytes, offset, F::bits, 0);
@@ -1918,7 +1968,7 @@ template <pgn_like P>
 template <pgn_like P>
 [[nodiscard]] constexpr std::string_view field_name(std::uint16_t n) noexcept {
   std::string_view out;
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t k) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t k) {
     if (k == n) out = f.name;
   });
   return out;

@@ -391,7 +391,7 @@ template <json_sink Sink, pgn_like P>
 constexpr void write_json(Sink& s, const P& msg) noexcept {
   write_json_object(s, msg, [](Sink& out) {
     out.put("{\"type\":\"PGN");
-    nmea::detail::json_uint(out, P::n2k.info.pgn);
+    nmea::detail::json_uint(out, pgn_table<P>.info.pgn);
     out.put('"');
   });
 }
@@ -657,7 +657,7 @@ template <pgn_like P, class Lookup>
     r.field = n;
     r.column = static_cast<std::uint16_t>(offset / 8);
   };
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (detail::group_row<F>) {
       if (r.ec != errc::ok) return;
@@ -690,7 +690,7 @@ template <pgn_like P, class Lookup>
   });
   // Keyed fields once their keys are read: a name counts for the key the message has. The
   // error reported is the first row's either way.
-  P::n2k.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned offset, std::uint16_t n) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (keyed_row<F>) {
       if (r.ec != errc::ok && r.field < n) return;
@@ -718,7 +718,7 @@ template <pgn_like P, class Lookup>
 template <pgn_like P>
 [[nodiscard]] constexpr bool has_field(std::string_view name) noexcept {
   bool found = false;
-  P::n2k.for_each([&](const auto& f, unsigned, std::uint16_t) {
+  pgn_table<P>.for_each([&](const auto& f, unsigned, std::uint16_t) {
     using F = std::remove_cvref_t<decltype(f)>;
     if constexpr (!F::is_reserved) found = found || f.name == name;
   });

@@ -35,6 +35,8 @@ enum class log_format : std::uint8_t {
 };
 inline constexpr std::size_t log_format_count = 5;
 
+// A template of nothing, so that only a caller reads the enumerators' names (at compile time).
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(log_format f) noexcept {
   return seawire::detail::enumerator_name_of<log_format_count>(f);
 }

@@ -407,13 +407,15 @@ struct engine_parameters_rapid {
   unsigned_number<16, res::hundred> boost_pressure_pa;
   signed_number<8> tilt_trim_pct;  ///< negative = trimmed down
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127488, "engine_parameters_rapid", "Engine Parameters, Rapid Update", 2,
-               framing::single_frame, 100},
-      field<&engine_parameters_rapid::instance, engine_instance>("instance", "Instance"),
-      field<&engine_parameters_rapid::speed_rpm>("speed_rpm", "Speed"),
-      field<&engine_parameters_rapid::boost_pressure_pa>("boost_pressure_pa", "Boost Pressure"),
-      field<&engine_parameters_rapid::tilt_trim_pct>("tilt_trim_pct", "Tilt/Trim"), reserved<16>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{127488, "engine_parameters_rapid",
+                                 "Engine Parameters, Rapid Update", 2, framing::single_frame, 100},
+                        field<&P::instance, engine_instance>("instance", "Instance"),
+                        field<&P::speed_rpm>("speed_rpm", "Speed"),
+                        field<&P::boost_pressure_pa>("boost_pressure_pa", "Boost Pressure"),
+                        field<&P::tilt_trim_pct>("tilt_trim_pct", "Tilt/Trim"), reserved<16>);
+  }
   [[nodiscard]] constexpr bool operator==(const engine_parameters_rapid&) const noexcept = default;
 };
 
@@ -433,28 +435,25 @@ struct engine_parameters_dynamic {
   signed_number<8> engine_load_pct;
   signed_number<8> engine_torque_pct;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127489, "engine_parameters_dynamic", "Engine Parameters, Dynamic", 2,
-               framing::fast_packet, 500},
-      field<&engine_parameters_dynamic::instance, engine_instance>("instance", "Instance"),
-      field<&engine_parameters_dynamic::oil_pressure_pa>("oil_pressure_pa", "Oil pressure"),
-      field<&engine_parameters_dynamic::oil_temperature_k>("oil_temperature_k", "Oil temperature"),
-      field<&engine_parameters_dynamic::temperature_k>("temperature_k", "Temperature"),
-      field<&engine_parameters_dynamic::alternator_potential_v>("alternator_potential_v",
-                                                                "Alternator Potential"),
-      field<&engine_parameters_dynamic::fuel_rate_lph>("fuel_rate_lph", "Fuel Rate"),
-      field<&engine_parameters_dynamic::total_engine_hours_s>("total_engine_hours_s",
-                                                              "Total Engine hours"),
-      field<&engine_parameters_dynamic::coolant_pressure_pa>("coolant_pressure_pa",
-                                                             "Coolant Pressure"),
-      field<&engine_parameters_dynamic::fuel_pressure_pa>("fuel_pressure_pa", "Fuel Pressure"),
-      reserved<8>,
-      field<&engine_parameters_dynamic::discrete_status_1>("discrete_status_1",
-                                                           "Discrete Status 1"),
-      field<&engine_parameters_dynamic::discrete_status_2>("discrete_status_2",
-                                                           "Discrete Status 2"),
-      field<&engine_parameters_dynamic::engine_load_pct>("engine_load_pct", "Engine Load"),
-      field<&engine_parameters_dynamic::engine_torque_pct>("engine_torque_pct", "Engine Torque"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{127489, "engine_parameters_dynamic", "Engine Parameters, Dynamic", 2,
+                 framing::fast_packet, 500},
+        field<&P::instance, engine_instance>("instance", "Instance"),
+        field<&P::oil_pressure_pa>("oil_pressure_pa", "Oil pressure"),
+        field<&P::oil_temperature_k>("oil_temperature_k", "Oil temperature"),
+        field<&P::temperature_k>("temperature_k", "Temperature"),
+        field<&P::alternator_potential_v>("alternator_potential_v", "Alternator Potential"),
+        field<&P::fuel_rate_lph>("fuel_rate_lph", "Fuel Rate"),
+        field<&P::total_engine_hours_s>("total_engine_hours_s", "Total Engine hours"),
+        field<&P::coolant_pressure_pa>("coolant_pressure_pa", "Coolant Pressure"),
+        field<&P::fuel_pressure_pa>("fuel_pressure_pa", "Fuel Pressure"), reserved<8>,
+        field<&P::discrete_status_1>("discrete_status_1", "Discrete Status 1"),
+        field<&P::discrete_status_2>("discrete_status_2", "Discrete Status 2"),
+        field<&P::engine_load_pct>("engine_load_pct", "Engine Load"),
+        field<&P::engine_torque_pct>("engine_torque_pct", "Engine Torque"));
+  }
   [[nodiscard]] constexpr bool operator==(const engine_parameters_dynamic&) const noexcept =
       default;
 };
@@ -467,15 +466,16 @@ struct speed_water_referenced {
   lookup<water_reference, 8> speed_type;
   unsigned_number<4> speed_direction;  ///< meaning not published; senders leave it at 15
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{128259, "speed_water_referenced", "Speed", 2, framing::single_frame, 1000},
-      field<&speed_water_referenced::sid>("sid", "SID"),
-      field<&speed_water_referenced::speed_water_mps>("speed_water_mps", "Speed Water Referenced"),
-      field<&speed_water_referenced::speed_ground_mps>("speed_ground_mps",
-                                                       "Speed Ground Referenced"),
-      field<&speed_water_referenced::speed_type>("speed_type", "Speed Water Referenced Type"),
-      field<&speed_water_referenced::speed_direction>("speed_direction", "Speed Direction"),
-      reserved<12>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{128259, "speed_water_referenced", "Speed", 2, framing::single_frame, 1000},
+        field<&P::sid>("sid", "SID"),
+        field<&P::speed_water_mps>("speed_water_mps", "Speed Water Referenced"),
+        field<&P::speed_ground_mps>("speed_ground_mps", "Speed Ground Referenced"),
+        field<&P::speed_type>("speed_type", "Speed Water Referenced Type"),
+        field<&P::speed_direction>("speed_direction", "Speed Direction"), reserved<12>);
+  }
   [[nodiscard]] constexpr bool operator==(const speed_water_referenced&) const noexcept = default;
 };
 
@@ -487,11 +487,13 @@ struct distance_log {
   unsigned_number<32> log_m;       ///< total cumulative distance
   unsigned_number<32> trip_log_m;  ///< distance since last reset
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{128275, "distance_log", "Distance Log", 6, framing::fast_packet, 1000},
-      field<&distance_log::date>("date", "Date"), field<&distance_log::time>("time", "Time"),
-      field<&distance_log::log_m>("log_m", "Log"),
-      field<&distance_log::trip_log_m>("trip_log_m", "Trip Log"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{128275, "distance_log", "Distance Log", 6, framing::fast_packet, 1000},
+        field<&P::date>("date", "Date"), field<&P::time>("time", "Time"),
+        field<&P::log_m>("log_m", "Log"), field<&P::trip_log_m>("trip_log_m", "Trip Log"));
+  }
   [[nodiscard]] constexpr bool operator==(const distance_log&) const noexcept = default;
 };
 
@@ -504,17 +506,18 @@ struct environmental_parameters {
   signed_number<16, res::humidity> humidity_pct;  ///< relative humidity
   unsigned_number<16, res::hundred> atmospheric_pressure_pa;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{130311, "environmental_parameters", "Environmental Parameters", 5,
-               framing::single_frame, 500},
-      field<&environmental_parameters::sid>("sid", "SID"),
-      field<&environmental_parameters::temperature_source>("temperature_source",
-                                                           "Temperature Source"),
-      field<&environmental_parameters::humidity_source>("humidity_source", "Humidity Source"),
-      field<&environmental_parameters::temperature_k>("temperature_k", "Temperature"),
-      field<&environmental_parameters::humidity_pct>("humidity_pct", "Humidity"),
-      field<&environmental_parameters::atmospheric_pressure_pa>("atmospheric_pressure_pa",
-                                                                "Atmospheric Pressure"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{130311, "environmental_parameters", "Environmental Parameters", 5,
+                 framing::single_frame, 500},
+        field<&P::sid>("sid", "SID"),
+        field<&P::temperature_source>("temperature_source", "Temperature Source"),
+        field<&P::humidity_source>("humidity_source", "Humidity Source"),
+        field<&P::temperature_k>("temperature_k", "Temperature"),
+        field<&P::humidity_pct>("humidity_pct", "Humidity"),
+        field<&P::atmospheric_pressure_pa>("atmospheric_pressure_pa", "Atmospheric Pressure"));
+  }
   [[nodiscard]] constexpr bool operator==(const environmental_parameters&) const noexcept = default;
 };
 
@@ -528,21 +531,22 @@ struct vessel_speed_components {
   signed_number<16, res::thousandth> stern_water_mps;  ///< transverse speed at the stern
   signed_number<16, res::thousandth> stern_ground_mps;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{130578, "vessel_speed_components", "Vessel Speed Components", 2,
-                            framing::fast_packet, 250},
-                   field<&vessel_speed_components::longitudinal_water_mps>(
-                       "longitudinal_water_mps", "Longitudinal Speed, Water-referenced"),
-                   field<&vessel_speed_components::transverse_water_mps>(
-                       "transverse_water_mps", "Transverse Speed, Water-referenced"),
-                   field<&vessel_speed_components::longitudinal_ground_mps>(
-                       "longitudinal_ground_mps", "Longitudinal Speed, Ground-referenced"),
-                   field<&vessel_speed_components::transverse_ground_mps>(
-                       "transverse_ground_mps", "Transverse Speed, Ground-referenced"),
-                   field<&vessel_speed_components::stern_water_mps>(
-                       "stern_water_mps", "Stern Speed, Water-referenced"),
-                   field<&vessel_speed_components::stern_ground_mps>(
-                       "stern_ground_mps", "Stern Speed, Ground-referenced"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{130578, "vessel_speed_components", "Vessel Speed Components", 2,
+                 framing::fast_packet, 250},
+        field<&P::longitudinal_water_mps>("longitudinal_water_mps",
+                                          "Longitudinal Speed, Water-referenced"),
+        field<&P::transverse_water_mps>("transverse_water_mps",
+                                        "Transverse Speed, Water-referenced"),
+        field<&P::longitudinal_ground_mps>("longitudinal_ground_mps",
+                                           "Longitudinal Speed, Ground-referenced"),
+        field<&P::transverse_ground_mps>("transverse_ground_mps",
+                                         "Transverse Speed, Ground-referenced"),
+        field<&P::stern_water_mps>("stern_water_mps", "Stern Speed, Water-referenced"),
+        field<&P::stern_ground_mps>("stern_ground_mps", "Stern Speed, Ground-referenced"));
+  }
   [[nodiscard]] constexpr bool operator==(const vessel_speed_components&) const noexcept = default;
 };
 
@@ -556,13 +560,15 @@ struct vessel_heading {
   signed_number<16, res::radian> variation_rad;
   lookup<heading_reference, 2> reference;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127250, "vessel_heading", "Vessel Heading", 2, framing::single_frame, 100},
-      field<&vessel_heading::sid>("sid", "SID"),
-      field<&vessel_heading::heading_rad>("heading_rad", "Heading"),
-      field<&vessel_heading::deviation_rad>("deviation_rad", "Deviation"),
-      field<&vessel_heading::variation_rad>("variation_rad", "Variation"),
-      field<&vessel_heading::reference>("reference", "Reference"), reserved<6>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{127250, "vessel_heading", "Vessel Heading", 2, framing::single_frame, 100},
+        field<&P::sid>("sid", "SID"), field<&P::heading_rad>("heading_rad", "Heading"),
+        field<&P::deviation_rad>("deviation_rad", "Deviation"),
+        field<&P::variation_rad>("variation_rad", "Variation"),
+        field<&P::reference>("reference", "Reference"), reserved<6>);
+  }
   [[nodiscard]] constexpr bool operator==(const vessel_heading&) const noexcept = default;
 };
 
@@ -572,10 +578,12 @@ struct rate_of_turn {
   unsigned_number<8> sid;
   signed_number<32, res::turn_rate> rate_radps;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{127251, "rate_of_turn", "Rate of Turn", 2, framing::single_frame, 100},
-                   field<&rate_of_turn::sid>("sid", "SID"),
-                   field<&rate_of_turn::rate_radps>("rate_radps", "Rate"), reserved<24>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{127251, "rate_of_turn", "Rate of Turn", 2, framing::single_frame, 100},
+        field<&P::sid>("sid", "SID"), field<&P::rate_radps>("rate_radps", "Rate"), reserved<24>);
+  }
   [[nodiscard]] constexpr bool operator==(const rate_of_turn&) const noexcept = default;
 };
 
@@ -587,11 +595,13 @@ struct attitude {
   signed_number<16, res::radian> pitch_rad;
   signed_number<16, res::radian> roll_rad;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{127257, "attitude", "Attitude", 3, framing::single_frame, 1000},
-                   field<&attitude::sid>("sid", "SID"), field<&attitude::yaw_rad>("yaw_rad", "Yaw"),
-                   field<&attitude::pitch_rad>("pitch_rad", "Pitch"),
-                   field<&attitude::roll_rad>("roll_rad", "Roll"), reserved<8>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{127257, "attitude", "Attitude", 3, framing::single_frame, 1000},
+                        field<&P::sid>("sid", "SID"), field<&P::yaw_rad>("yaw_rad", "Yaw"),
+                        field<&P::pitch_rad>("pitch_rad", "Pitch"),
+                        field<&P::roll_rad>("roll_rad", "Roll"), reserved<8>);
+  }
   [[nodiscard]] constexpr bool operator==(const attitude&) const noexcept = default;
 };
 
@@ -603,12 +613,14 @@ struct magnetic_variation {
   nmea2000::day_count age_of_service;
   signed_number<16, res::radian> variation_rad;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127258, "magnetic_variation", "Magnetic Variation", 7, framing::single_frame, 1000},
-      field<&magnetic_variation::sid>("sid", "SID"),
-      field<&magnetic_variation::source>("source", "Source"), reserved<4>,
-      field<&magnetic_variation::age_of_service>("age_of_service", "Age of service"),
-      field<&magnetic_variation::variation_rad>("variation_rad", "Variation"), reserved<16>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{127258, "magnetic_variation", "Magnetic Variation", 7,
+                                 framing::single_frame, 1000},
+                        field<&P::sid>("sid", "SID"), field<&P::source>("source", "Source"),
+                        reserved<4>, field<&P::age_of_service>("age_of_service", "Age of service"),
+                        field<&P::variation_rad>("variation_rad", "Variation"), reserved<16>);
+  }
   [[nodiscard]] constexpr bool operator==(const magnetic_variation&) const noexcept = default;
 };
 
@@ -621,11 +633,13 @@ struct water_depth {
   signed_number<16, res::thousandth> offset_m;
   unsigned_number<8, res::ten> range_m;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{128267, "water_depth", "Water Depth", 3, framing::single_frame, 1000},
-      field<&water_depth::sid>("sid", "SID"), field<&water_depth::depth_m>("depth_m", "Depth"),
-      field<&water_depth::offset_m>("offset_m", "Offset"),
-      field<&water_depth::range_m>("range_m", "Range"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{128267, "water_depth", "Water Depth", 3, framing::single_frame, 1000},
+        field<&P::sid>("sid", "SID"), field<&P::depth_m>("depth_m", "Depth"),
+        field<&P::offset_m>("offset_m", "Offset"), field<&P::range_m>("range_m", "Range"));
+  }
   [[nodiscard]] constexpr bool operator==(const water_depth&) const noexcept = default;
 };
 
@@ -635,10 +649,13 @@ struct position_rapid {
   signed_number<32, res::degree_e7> latitude_deg;
   signed_number<32, res::degree_e7> longitude_deg;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129025, "position_rapid", "Position, Rapid Update", 2, framing::single_frame, 100},
-      field<&position_rapid::latitude_deg>("latitude_deg", "Latitude"),
-      field<&position_rapid::longitude_deg>("longitude_deg", "Longitude"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129025, "position_rapid", "Position, Rapid Update", 2, framing::single_frame, 100},
+        field<&P::latitude_deg>("latitude_deg", "Latitude"),
+        field<&P::longitude_deg>("longitude_deg", "Longitude"));
+  }
   [[nodiscard]] constexpr bool operator==(const position_rapid&) const noexcept = default;
 };
 
@@ -650,12 +667,14 @@ struct cog_sog_rapid {
   unsigned_number<16, res::radian> cog_rad;
   unsigned_number<16, res::hundredth> sog_mps;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129026, "cog_sog_rapid", "COG & SOG, Rapid Update", 2, framing::single_frame, 250},
-      field<&cog_sog_rapid::sid>("sid", "SID"),
-      field<&cog_sog_rapid::cog_reference>("cog_reference", "COG Reference"), reserved<6>,
-      field<&cog_sog_rapid::cog_rad>("cog_rad", "COG"),
-      field<&cog_sog_rapid::sog_mps>("sog_mps", "SOG"), reserved<16>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129026, "cog_sog_rapid", "COG & SOG, Rapid Update", 2, framing::single_frame, 250},
+        field<&P::sid>("sid", "SID"), field<&P::cog_reference>("cog_reference", "COG Reference"),
+        reserved<6>, field<&P::cog_rad>("cog_rad", "COG"), field<&P::sog_mps>("sog_mps", "SOG"),
+        reserved<16>);
+  }
   [[nodiscard]] constexpr bool operator==(const cog_sog_rapid&) const noexcept = default;
 };
 
@@ -667,12 +686,14 @@ struct rudder {
   signed_number<16, res::radian> angle_order_rad;
   signed_number<16, res::radian> position_rad;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{127245, "rudder", "Rudder", 2, framing::single_frame, 100},
-                   field<&rudder::instance>("instance", "Instance"),
-                   field<&rudder::direction_order>("direction_order", "Direction Order"),
-                   reserved<5>, field<&rudder::angle_order_rad>("angle_order_rad", "Angle Order"),
-                   field<&rudder::position_rad>("position_rad", "Position"), reserved<16>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{127245, "rudder", "Rudder", 2, framing::single_frame, 100},
+                        field<&P::instance>("instance", "Instance"),
+                        field<&P::direction_order>("direction_order", "Direction Order"),
+                        reserved<5>, field<&P::angle_order_rad>("angle_order_rad", "Angle Order"),
+                        field<&P::position_rad>("position_rad", "Position"), reserved<16>);
+  }
   [[nodiscard]] constexpr bool operator==(const rudder&) const noexcept = default;
 };
 
@@ -684,12 +705,14 @@ struct wind_data {
   unsigned_number<16, res::radian> wind_angle_rad;
   lookup<nmea2000::wind_reference, 3> reference;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{130306, "wind_data", "Wind Data", 2, framing::single_frame, 100},
-                   field<&wind_data::sid>("sid", "SID"),
-                   field<&wind_data::wind_speed_mps>("wind_speed_mps", "Wind Speed"),
-                   field<&wind_data::wind_angle_rad>("wind_angle_rad", "Wind Angle"),
-                   field<&wind_data::reference>("reference", "Reference"), reserved<21>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{130306, "wind_data", "Wind Data", 2, framing::single_frame, 100},
+                        field<&P::sid>("sid", "SID"),
+                        field<&P::wind_speed_mps>("wind_speed_mps", "Wind Speed"),
+                        field<&P::wind_angle_rad>("wind_angle_rad", "Wind Angle"),
+                        field<&P::reference>("reference", "Reference"), reserved<21>);
+  }
   [[nodiscard]] constexpr bool operator==(const wind_data&) const noexcept = default;
 };
 
@@ -702,12 +725,15 @@ struct temperature {
   unsigned_number<16, res::hundredth> actual_temperature_k;
   unsigned_number<16, res::hundredth> set_temperature_k;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{130312, "temperature", "Temperature", 5, framing::single_frame, 2000},
-      field<&temperature::sid>("sid", "SID"), field<&temperature::instance>("instance", "Instance"),
-      field<&temperature::source>("source", "Source"),
-      field<&temperature::actual_temperature_k>("actual_temperature_k", "Actual Temperature"),
-      field<&temperature::set_temperature_k>("set_temperature_k", "Set Temperature"), reserved<8>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{130312, "temperature", "Temperature", 5, framing::single_frame, 2000},
+        field<&P::sid>("sid", "SID"), field<&P::instance>("instance", "Instance"),
+        field<&P::source>("source", "Source"),
+        field<&P::actual_temperature_k>("actual_temperature_k", "Actual Temperature"),
+        field<&P::set_temperature_k>("set_temperature_k", "Set Temperature"), reserved<8>);
+  }
   [[nodiscard]] constexpr bool operator==(const temperature&) const noexcept = default;
 };
 
@@ -720,12 +746,15 @@ struct humidity {
   signed_number<16, res::humidity> actual_humidity_pct;
   signed_number<16, res::humidity> set_humidity_pct;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{130313, "humidity", "Humidity", 5, framing::single_frame, 2000},
-      field<&humidity::sid>("sid", "SID"), field<&humidity::instance>("instance", "Instance"),
-      field<&humidity::source>("source", "Source"),
-      field<&humidity::actual_humidity_pct>("actual_humidity_pct", "Actual Humidity"),
-      field<&humidity::set_humidity_pct>("set_humidity_pct", "Set Humidity"), reserved<8>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{130313, "humidity", "Humidity", 5, framing::single_frame, 2000},
+                        field<&P::sid>("sid", "SID"), field<&P::instance>("instance", "Instance"),
+                        field<&P::source>("source", "Source"),
+                        field<&P::actual_humidity_pct>("actual_humidity_pct", "Actual Humidity"),
+                        field<&P::set_humidity_pct>("set_humidity_pct", "Set Humidity"),
+                        reserved<8>);
+  }
   [[nodiscard]] constexpr bool operator==(const humidity&) const noexcept = default;
 };
 
@@ -737,12 +766,14 @@ struct actual_pressure {
   lookup<nmea2000::pressure_source, 8> source;
   signed_number<32, res::tenth> pressure_pa;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{130314, "actual_pressure", "Actual Pressure", 5, framing::single_frame, 2000},
-      field<&actual_pressure::sid>("sid", "SID"),
-      field<&actual_pressure::instance>("instance", "Instance"),
-      field<&actual_pressure::source>("source", "Source"),
-      field<&actual_pressure::pressure_pa>("pressure_pa", "Pressure"), reserved<8>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{130314, "actual_pressure", "Actual Pressure", 5, framing::single_frame, 2000},
+        field<&P::sid>("sid", "SID"), field<&P::instance>("instance", "Instance"),
+        field<&P::source>("source", "Source"), field<&P::pressure_pa>("pressure_pa", "Pressure"),
+        reserved<8>);
+  }
   [[nodiscard]] constexpr bool operator==(const actual_pressure&) const noexcept = default;
 };
 
@@ -755,14 +786,15 @@ struct temperature_extended {
   unsigned_number<24, res::thousandth> temperature_k;
   unsigned_number<16, res::tenth> set_temperature_k;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{130316, "temperature_extended", "Temperature Extended Range", 5,
-               framing::single_frame, 2000},
-      field<&temperature_extended::sid>("sid", "SID"),
-      field<&temperature_extended::instance>("instance", "Instance"),
-      field<&temperature_extended::source>("source", "Source"),
-      field<&temperature_extended::temperature_k>("temperature_k", "Temperature"),
-      field<&temperature_extended::set_temperature_k>("set_temperature_k", "Set Temperature"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{130316, "temperature_extended", "Temperature Extended Range", 5,
+                                 framing::single_frame, 2000},
+                        field<&P::sid>("sid", "SID"), field<&P::instance>("instance", "Instance"),
+                        field<&P::source>("source", "Source"),
+                        field<&P::temperature_k>("temperature_k", "Temperature"),
+                        field<&P::set_temperature_k>("set_temperature_k", "Set Temperature"));
+  }
   [[nodiscard]] constexpr bool operator==(const temperature_extended&) const noexcept = default;
 };
 
@@ -775,13 +807,14 @@ struct battery_status {
   unsigned_number<16, res::hundredth> temperature_k;
   unsigned_number<8> sid;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127508, "battery_status", "Battery Status", 6, framing::single_frame, 1500},
-      field<&battery_status::instance>("instance", "Instance"),
-      field<&battery_status::voltage_v>("voltage_v", "Voltage"),
-      field<&battery_status::current_a>("current_a", "Current"),
-      field<&battery_status::temperature_k>("temperature_k", "Temperature"),
-      field<&battery_status::sid>("sid", "SID"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{127508, "battery_status", "Battery Status", 6, framing::single_frame, 1500},
+        field<&P::instance>("instance", "Instance"), field<&P::voltage_v>("voltage_v", "Voltage"),
+        field<&P::current_a>("current_a", "Current"),
+        field<&P::temperature_k>("temperature_k", "Temperature"), field<&P::sid>("sid", "SID"));
+  }
   [[nodiscard]] constexpr bool operator==(const battery_status&) const noexcept = default;
 };
 
@@ -793,12 +826,14 @@ struct fluid_level {
   signed_number<16, res::humidity> level_pct;
   unsigned_number<32, res::tenth> capacity_l;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{127505, "fluid_level", "Fluid Level", 6, framing::single_frame, 2500},
-                   field<&fluid_level::instance>("instance", "Instance"),
-                   field<&fluid_level::fluid_type>("fluid_type", "Type"),
-                   field<&fluid_level::level_pct>("level_pct", "Level"),
-                   field<&fluid_level::capacity_l>("capacity_l", "Capacity"), reserved<8>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{127505, "fluid_level", "Fluid Level", 6, framing::single_frame, 2500},
+        field<&P::instance>("instance", "Instance"), field<&P::fluid_type>("fluid_type", "Type"),
+        field<&P::level_pct>("level_pct", "Level"), field<&P::capacity_l>("capacity_l", "Capacity"),
+        reserved<8>);
+  }
   [[nodiscard]] constexpr bool operator==(const fluid_level&) const noexcept = default;
 };
 
@@ -815,17 +850,18 @@ struct dc_detailed_status {
   unsigned_number<16, res::thousandth> ripple_voltage_v;
   unsigned_number<16> remaining_capacity_ah;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127506, "dc_detailed_status", "DC Detailed Status", 6, framing::fast_packet, 1500},
-      field<&dc_detailed_status::sid>("sid", "SID"),
-      field<&dc_detailed_status::instance>("instance", "Instance"),
-      field<&dc_detailed_status::dc_type>("dc_type", "DC Type"),
-      field<&dc_detailed_status::state_of_charge_pct>("state_of_charge_pct", "State of Charge"),
-      field<&dc_detailed_status::state_of_health_pct>("state_of_health_pct", "State of Health"),
-      field<&dc_detailed_status::time_remaining_s>("time_remaining_s", "Time Remaining"),
-      field<&dc_detailed_status::ripple_voltage_v>("ripple_voltage_v", "Ripple Voltage"),
-      field<&dc_detailed_status::remaining_capacity_ah>("remaining_capacity_ah",
-                                                        "Remaining capacity"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{127506, "dc_detailed_status", "DC Detailed Status", 6, framing::fast_packet, 1500},
+        field<&P::sid>("sid", "SID"), field<&P::instance>("instance", "Instance"),
+        field<&P::dc_type>("dc_type", "DC Type"),
+        field<&P::state_of_charge_pct>("state_of_charge_pct", "State of Charge"),
+        field<&P::state_of_health_pct>("state_of_health_pct", "State of Health"),
+        field<&P::time_remaining_s>("time_remaining_s", "Time Remaining"),
+        field<&P::ripple_voltage_v>("ripple_voltage_v", "Ripple Voltage"),
+        field<&P::remaining_capacity_ah>("remaining_capacity_ah", "Remaining capacity"));
+  }
   [[nodiscard]] constexpr bool operator==(const dc_detailed_status&) const noexcept = default;
 };
 
@@ -838,13 +874,14 @@ struct cross_track_error {
   lookup<nmea2000::yes_no, 2> navigation_terminated;
   signed_number<32, res::hundredth> xte_m;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129283, "cross_track_error", "Cross Track Error", 3, framing::single_frame, 1000},
-      field<&cross_track_error::sid>("sid", "SID"),
-      field<&cross_track_error::xte_mode>("xte_mode", "XTE mode"), reserved<2>,
-      field<&cross_track_error::navigation_terminated>("navigation_terminated",
-                                                       "Navigation Terminated"),
-      field<&cross_track_error::xte_m>("xte_m", "XTE"), reserved<16>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129283, "cross_track_error", "Cross Track Error", 3, framing::single_frame, 1000},
+        field<&P::sid>("sid", "SID"), field<&P::xte_mode>("xte_mode", "XTE mode"), reserved<2>,
+        field<&P::navigation_terminated>("navigation_terminated", "Navigation Terminated"),
+        field<&P::xte_m>("xte_m", "XTE"), reserved<16>);
+  }
   [[nodiscard]] constexpr bool operator==(const cross_track_error&) const noexcept = default;
 };
 
@@ -856,11 +893,13 @@ struct system_time {
   nmea2000::day_count date;
   nmea2000::time_since_midnight time;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{126992, "system_time", "System Time", 3, framing::single_frame, 1000},
-      field<&system_time::sid>("sid", "SID"), field<&system_time::source>("source", "Source"),
-      reserved<4>, field<&system_time::date>("date", "Date"),
-      field<&system_time::time>("time", "Time"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{126992, "system_time", "System Time", 3, framing::single_frame, 1000},
+        field<&P::sid>("sid", "SID"), field<&P::source>("source", "Source"), reserved<4>,
+        field<&P::date>("date", "Date"), field<&P::time>("time", "Time"));
+  }
   [[nodiscard]] constexpr bool operator==(const system_time&) const noexcept = default;
 };
 
@@ -871,10 +910,13 @@ struct time_date {
   nmea2000::time_since_midnight time;
   signed_number<16, res::minute> local_offset_s;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{129033, "time_date", "Time & Date", 3, framing::single_frame, 1000},
-                   field<&time_date::date>("date", "Date"), field<&time_date::time>("time", "Time"),
-                   field<&time_date::local_offset_s>("local_offset_s", "Local Offset"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129033, "time_date", "Time & Date", 3, framing::single_frame, 1000},
+        field<&P::date>("date", "Date"), field<&P::time>("time", "Time"),
+        field<&P::local_offset_s>("local_offset_s", "Local Offset"));
+  }
   [[nodiscard]] constexpr bool operator==(const time_date&) const noexcept = default;
 };
 
@@ -888,13 +930,15 @@ struct gnss_dops {
   signed_number<16, res::hundredth> vdop;
   signed_number<16, res::hundredth> tdop;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{129539, "gnss_dops", "GNSS DOPs", 6, framing::single_frame, 1000},
-                   field<&gnss_dops::sid>("sid", "SID"),
-                   field<&gnss_dops::desired_mode>("desired_mode", "Desired Mode"),
-                   field<&gnss_dops::actual_mode>("actual_mode", "Actual Mode"), reserved<2>,
-                   field<&gnss_dops::hdop>("hdop", "HDOP"), field<&gnss_dops::vdop>("vdop", "VDOP"),
-                   field<&gnss_dops::tdop>("tdop", "TDOP"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{129539, "gnss_dops", "GNSS DOPs", 6, framing::single_frame, 1000},
+                        field<&P::sid>("sid", "SID"),
+                        field<&P::desired_mode>("desired_mode", "Desired Mode"),
+                        field<&P::actual_mode>("actual_mode", "Actual Mode"), reserved<2>,
+                        field<&P::hdop>("hdop", "HDOP"), field<&P::vdop>("vdop", "VDOP"),
+                        field<&P::tdop>("tdop", "TDOP"));
+  }
   [[nodiscard]] constexpr bool operator==(const gnss_dops&) const noexcept = default;
 };
 
@@ -918,34 +962,29 @@ struct navigation_data {
   signed_number<32, res::degree_e7> destination_longitude_deg;
   signed_number<16, res::hundredth> waypoint_closing_velocity_mps;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129284, "navigation_data", "Navigation Data", 3, framing::fast_packet, 1000},
-      field<&navigation_data::sid>("sid", "SID"),
-      field<&navigation_data::distance_to_waypoint_m>("distance_to_waypoint_m",
-                                                      "Distance to Waypoint"),
-      field<&navigation_data::course_bearing_reference>("course_bearing_reference",
-                                                        "Course/Bearing reference"),
-      field<&navigation_data::perpendicular_crossed>("perpendicular_crossed",
-                                                     "Perpendicular Crossed"),
-      field<&navigation_data::arrival_circle_entered>("arrival_circle_entered",
-                                                      "Arrival Circle Entered"),
-      field<&navigation_data::calculation_type>("calculation_type", "Calculation Type"),
-      field<&navigation_data::eta_time>("eta_time", "ETA Time"),
-      field<&navigation_data::eta_date>("eta_date", "ETA Date"),
-      field<&navigation_data::bearing_origin_to_destination_rad>(
-          "bearing_origin_to_destination_rad", "Bearing, Origin to Destination Waypoint"),
-      field<&navigation_data::bearing_position_to_destination_rad>(
-          "bearing_position_to_destination_rad", "Bearing, Position to Destination Waypoint"),
-      field<&navigation_data::origin_waypoint_number>("origin_waypoint_number",
-                                                      "Origin Waypoint Number"),
-      field<&navigation_data::destination_waypoint_number>("destination_waypoint_number",
-                                                           "Destination Waypoint Number"),
-      field<&navigation_data::destination_latitude_deg>("destination_latitude_deg",
-                                                        "Destination Latitude"),
-      field<&navigation_data::destination_longitude_deg>("destination_longitude_deg",
-                                                         "Destination Longitude"),
-      field<&navigation_data::waypoint_closing_velocity_mps>("waypoint_closing_velocity_mps",
-                                                             "Waypoint Closing Velocity"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129284, "navigation_data", "Navigation Data", 3, framing::fast_packet, 1000},
+        field<&P::sid>("sid", "SID"),
+        field<&P::distance_to_waypoint_m>("distance_to_waypoint_m", "Distance to Waypoint"),
+        field<&P::course_bearing_reference>("course_bearing_reference", "Course/Bearing reference"),
+        field<&P::perpendicular_crossed>("perpendicular_crossed", "Perpendicular Crossed"),
+        field<&P::arrival_circle_entered>("arrival_circle_entered", "Arrival Circle Entered"),
+        field<&P::calculation_type>("calculation_type", "Calculation Type"),
+        field<&P::eta_time>("eta_time", "ETA Time"), field<&P::eta_date>("eta_date", "ETA Date"),
+        field<&P::bearing_origin_to_destination_rad>("bearing_origin_to_destination_rad",
+                                                     "Bearing, Origin to Destination Waypoint"),
+        field<&P::bearing_position_to_destination_rad>("bearing_position_to_destination_rad",
+                                                       "Bearing, Position to Destination Waypoint"),
+        field<&P::origin_waypoint_number>("origin_waypoint_number", "Origin Waypoint Number"),
+        field<&P::destination_waypoint_number>("destination_waypoint_number",
+                                               "Destination Waypoint Number"),
+        field<&P::destination_latitude_deg>("destination_latitude_deg", "Destination Latitude"),
+        field<&P::destination_longitude_deg>("destination_longitude_deg", "Destination Longitude"),
+        field<&P::waypoint_closing_velocity_mps>("waypoint_closing_velocity_mps",
+                                                 "Waypoint Closing Velocity"));
+  }
   [[nodiscard]] constexpr bool operator==(const navigation_data&) const noexcept = default;
 };
 
@@ -962,16 +1001,17 @@ struct direction_data {
   unsigned_number<16, res::radian> set_rad;
   unsigned_number<16, res::hundredth> drift_mps;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{130577, "direction_data", "Direction Data", 3, framing::fast_packet, 1000},
-      field<&direction_data::data_mode>("data_mode", "Data Mode"),
-      field<&direction_data::cog_reference>("cog_reference", "COG Reference"), reserved<2>,
-      field<&direction_data::sid>("sid", "SID"), field<&direction_data::cog_rad>("cog_rad", "COG"),
-      field<&direction_data::sog_mps>("sog_mps", "SOG"),
-      field<&direction_data::heading_rad>("heading_rad", "Heading"),
-      field<&direction_data::speed_water_mps>("speed_water_mps", "Speed through Water"),
-      field<&direction_data::set_rad>("set_rad", "Set"),
-      field<&direction_data::drift_mps>("drift_mps", "Drift"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{130577, "direction_data", "Direction Data", 3, framing::fast_packet, 1000},
+        field<&P::data_mode>("data_mode", "Data Mode"),
+        field<&P::cog_reference>("cog_reference", "COG Reference"), reserved<2>,
+        field<&P::sid>("sid", "SID"), field<&P::cog_rad>("cog_rad", "COG"),
+        field<&P::sog_mps>("sog_mps", "SOG"), field<&P::heading_rad>("heading_rad", "Heading"),
+        field<&P::speed_water_mps>("speed_water_mps", "Speed through Water"),
+        field<&P::set_rad>("set_rad", "Set"), field<&P::drift_mps>("drift_mps", "Drift"));
+  }
   [[nodiscard]] constexpr bool operator==(const direction_data&) const noexcept = default;
 };
 
@@ -981,9 +1021,11 @@ struct direction_data {
 struct iso_request {
   unsigned_number<24> requested_pgn;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{59904, "iso_request", "ISO Request", 6, framing::single_frame, 0},
-                   field<&iso_request::requested_pgn>("requested_pgn", "PGN"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{59904, "iso_request", "ISO Request", 6, framing::single_frame, 0},
+                        field<&P::requested_pgn>("requested_pgn", "PGN"));
+  }
   [[nodiscard]] constexpr bool operator==(const iso_request&) const noexcept = default;
 };
 
@@ -994,11 +1036,14 @@ struct iso_acknowledgement {
   unsigned_number<8> group_function;
   unsigned_number<24> acknowledged_pgn;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{59392, "iso_acknowledgement", "ISO Acknowledgement", 6, framing::single_frame, 0},
-      field<&iso_acknowledgement::control>("control", "Control"),
-      field<&iso_acknowledgement::group_function>("group_function", "Group Function"), reserved<24>,
-      field<&iso_acknowledgement::acknowledged_pgn>("acknowledged_pgn", "PGN"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{59392, "iso_acknowledgement", "ISO Acknowledgement", 6, framing::single_frame, 0},
+        field<&P::control>("control", "Control"),
+        field<&P::group_function>("group_function", "Group Function"), reserved<24>,
+        field<&P::acknowledged_pgn>("acknowledged_pgn", "PGN"));
+  }
   [[nodiscard]] constexpr bool operator==(const iso_acknowledgement&) const noexcept = default;
 };
 
@@ -1403,21 +1448,21 @@ struct iso_address_claim {
   lookup<nmea2000::industry_group, 3> industry_group;
   lookup<yes_no, 1> arbitrary_address_capable;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{60928, "iso_address_claim", "ISO Address Claim", 6, framing::single_frame, 0},
-      field<&iso_address_claim::unique_number>("unique_number", "Unique Number"),
-      field<&iso_address_claim::manufacturer_code>("manufacturer_code", "Manufacturer Code"),
-      field<&iso_address_claim::device_instance_lower>("device_instance_lower",
-                                                       "Device Instance Lower"),
-      field<&iso_address_claim::device_instance_upper>("device_instance_upper",
-                                                       "Device Instance Upper"),
-      keyed_field<&iso_address_claim::device_function, &iso_address_claim::device_class>(
-          "device_function", "Device Function"),
-      spare<1>, field<&iso_address_claim::device_class>("device_class", "Device Class"),
-      field<&iso_address_claim::system_instance>("system_instance", "System Instance"),
-      field<&iso_address_claim::industry_group>("industry_group", "Industry Group"),
-      field<&iso_address_claim::arbitrary_address_capable>("arbitrary_address_capable",
-                                                           "Arbitrary address capable"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{60928, "iso_address_claim", "ISO Address Claim", 6, framing::single_frame, 0},
+        field<&P::unique_number>("unique_number", "Unique Number"),
+        field<&P::manufacturer_code>("manufacturer_code", "Manufacturer Code"),
+        field<&P::device_instance_lower>("device_instance_lower", "Device Instance Lower"),
+        field<&P::device_instance_upper>("device_instance_upper", "Device Instance Upper"),
+        keyed_field<&P::device_function, &P::device_class>("device_function", "Device Function"),
+        spare<1>, field<&P::device_class>("device_class", "Device Class"),
+        field<&P::system_instance>("system_instance", "System Instance"),
+        field<&P::industry_group>("industry_group", "Industry Group"),
+        field<&P::arbitrary_address_capable>("arbitrary_address_capable",
+                                             "Arbitrary address capable"));
+  }
   [[nodiscard]] constexpr bool operator==(const iso_address_claim&) const noexcept = default;
 };
 
@@ -1430,13 +1475,16 @@ struct heartbeat {
   lookup<nmea2000::controller_state, 2> controller_2_state;
   lookup<nmea2000::equipment_status, 2> equipment_status;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{126993, "heartbeat", "Heartbeat", 7, framing::single_frame, 60000},
-      field<&heartbeat::data_transmit_offset_s>("data_transmit_offset_s", "Data transmit offset"),
-      field<&heartbeat::sequence_counter>("sequence_counter", "Sequence Counter"),
-      field<&heartbeat::controller_1_state>("controller_1_state", "Controller 1 State"),
-      field<&heartbeat::controller_2_state>("controller_2_state", "Controller 2 State"),
-      field<&heartbeat::equipment_status>("equipment_status", "Equipment Status"), reserved<34>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{126993, "heartbeat", "Heartbeat", 7, framing::single_frame, 60000},
+        field<&P::data_transmit_offset_s>("data_transmit_offset_s", "Data transmit offset"),
+        field<&P::sequence_counter>("sequence_counter", "Sequence Counter"),
+        field<&P::controller_1_state>("controller_1_state", "Controller 1 State"),
+        field<&P::controller_2_state>("controller_2_state", "Controller 2 State"),
+        field<&P::equipment_status>("equipment_status", "Equipment Status"), reserved<34>);
+  }
   [[nodiscard]] constexpr bool operator==(const heartbeat&) const noexcept = default;
 };
 
@@ -1462,36 +1510,32 @@ struct heading_track_control {
   signed_number<16> off_track_limit_m;
   unsigned_number<16, res::radian> vessel_heading_rad;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127237, "heading_track_control", "Heading/Track control", 2, framing::fast_packet,
-               250},
-      field<&heading_track_control::rudder_limit_exceeded>("rudder_limit_exceeded",
-                                                           "Rudder Limit Exceeded"),
-      field<&heading_track_control::off_heading_limit_exceeded>("off_heading_limit_exceeded",
-                                                                "Off-Heading Limit Exceeded"),
-      field<&heading_track_control::off_track_limit_exceeded>("off_track_limit_exceeded",
-                                                              "Off-Track Limit Exceeded"),
-      field<&heading_track_control::override>("override", "Override"),
-      field<&heading_track_control::steering_mode>("steering_mode", "Steering Mode"),
-      field<&heading_track_control::turn_mode>("turn_mode", "Turn Mode"),
-      field<&heading_track_control::heading_reference>("heading_reference", "Heading Reference"),
-      reserved<5>,
-      field<&heading_track_control::commanded_rudder_direction>("commanded_rudder_direction",
-                                                                "Commanded Rudder Direction"),
-      field<&heading_track_control::commanded_rudder_angle_rad>("commanded_rudder_angle_rad",
-                                                                "Commanded Rudder Angle"),
-      field<&heading_track_control::heading_to_steer_rad>("heading_to_steer_rad",
-                                                          "Heading-To-Steer (Course)"),
-      field<&heading_track_control::track_rad>("track_rad", "Track"),
-      field<&heading_track_control::rudder_limit_rad>("rudder_limit_rad", "Rudder Limit"),
-      field<&heading_track_control::off_heading_limit_rad>("off_heading_limit_rad",
-                                                           "Off-Heading Limit"),
-      field<&heading_track_control::radius_of_turn_order_m>("radius_of_turn_order_m",
-                                                            "Radius of Turn Order"),
-      field<&heading_track_control::rate_of_turn_order_radps>("rate_of_turn_order_radps",
-                                                              "Rate of Turn Order"),
-      field<&heading_track_control::off_track_limit_m>("off_track_limit_m", "Off-Track Limit"),
-      field<&heading_track_control::vessel_heading_rad>("vessel_heading_rad", "Vessel Heading"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{127237, "heading_track_control", "Heading/Track control", 2, framing::fast_packet,
+                 250},
+        field<&P::rudder_limit_exceeded>("rudder_limit_exceeded", "Rudder Limit Exceeded"),
+        field<&P::off_heading_limit_exceeded>("off_heading_limit_exceeded",
+                                              "Off-Heading Limit Exceeded"),
+        field<&P::off_track_limit_exceeded>("off_track_limit_exceeded", "Off-Track Limit Exceeded"),
+        field<&P::override>("override", "Override"),
+        field<&P::steering_mode>("steering_mode", "Steering Mode"),
+        field<&P::turn_mode>("turn_mode", "Turn Mode"),
+        field<&P::heading_reference>("heading_reference", "Heading Reference"), reserved<5>,
+        field<&P::commanded_rudder_direction>("commanded_rudder_direction",
+                                              "Commanded Rudder Direction"),
+        field<&P::commanded_rudder_angle_rad>("commanded_rudder_angle_rad",
+                                              "Commanded Rudder Angle"),
+        field<&P::heading_to_steer_rad>("heading_to_steer_rad", "Heading-To-Steer (Course)"),
+        field<&P::track_rad>("track_rad", "Track"),
+        field<&P::rudder_limit_rad>("rudder_limit_rad", "Rudder Limit"),
+        field<&P::off_heading_limit_rad>("off_heading_limit_rad", "Off-Heading Limit"),
+        field<&P::radius_of_turn_order_m>("radius_of_turn_order_m", "Radius of Turn Order"),
+        field<&P::rate_of_turn_order_radps>("rate_of_turn_order_radps", "Rate of Turn Order"),
+        field<&P::off_track_limit_m>("off_track_limit_m", "Off-Track Limit"),
+        field<&P::vessel_heading_rad>("vessel_heading_rad", "Vessel Heading"));
+  }
   [[nodiscard]] constexpr bool operator==(const heading_track_control&) const noexcept = default;
 };
 
@@ -1501,9 +1545,12 @@ struct heave {
   unsigned_number<8> sid;
   signed_number<16, res::hundredth> heave_m;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127252, "heave", "Heave", 3, framing::single_frame, 0},
-      field<&heave::sid>("sid", "SID"), field<&heave::heave_m>("heave_m", "Heave"), reserved<40>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{127252, "heave", "Heave", 3, framing::single_frame, 0},
+                        field<&P::sid>("sid", "SID"), field<&P::heave_m>("heave_m", "Heave"),
+                        reserved<40>);
+  }
   [[nodiscard]] constexpr bool operator==(const heave&) const noexcept = default;
 };
 
@@ -1516,22 +1563,42 @@ struct transmission_parameters_dynamic {
   unsigned_number<16, res::tenth> oil_temperature_k;
   flags<transmission_status, 8> discrete_status_1;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{127493, "transmission_parameters_dynamic", "Transmission Parameters, Dynamic", 2,
-               framing::single_frame, 100},
-      field<&transmission_parameters_dynamic::instance, engine_instance>("instance", "Instance"),
-      field<&transmission_parameters_dynamic::transmission_gear>("transmission_gear",
-                                                                 "Transmission Gear"),
-      reserved<6>,
-      field<&transmission_parameters_dynamic::oil_pressure_pa>("oil_pressure_pa", "Oil pressure"),
-      field<&transmission_parameters_dynamic::oil_temperature_k>("oil_temperature_k",
-                                                                 "Oil temperature"),
-      field<&transmission_parameters_dynamic::discrete_status_1>("discrete_status_1",
-                                                                 "Discrete Status 1"),
-      reserved<8>);
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{127493, "transmission_parameters_dynamic",
+                                 "Transmission Parameters, Dynamic", 2, framing::single_frame, 100},
+                        field<&P::instance, engine_instance>("instance", "Instance"),
+                        field<&P::transmission_gear>("transmission_gear", "Transmission Gear"),
+                        reserved<6>, field<&P::oil_pressure_pa>("oil_pressure_pa", "Oil pressure"),
+                        field<&P::oil_temperature_k>("oil_temperature_k", "Oil temperature"),
+                        field<&P::discrete_status_1>("discrete_status_1", "Discrete Status 1"),
+                        reserved<8>);
+  }
   [[nodiscard]] constexpr bool operator==(const transmission_parameters_dynamic&) const noexcept =
       default;
 };
+
+namespace detail {
+/// The table of an AIS position report (129038, 129039) of struct P: the rows both start with
+/// (AIS's message id, repeat indicator, MMSI, position, accuracy, RAIM, time stamp, course,
+/// speed, communication state, transceiver, heading), then `rest`.
+template <class P, class... Rest>
+[[nodiscard]] constexpr auto ais_position_table(pgn_info info, Rest... rest) noexcept {
+  return describe_pgn(
+      info, field<&P::message_id>("message_id", "Message ID"),
+      field<&P::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+      field<&P::user_id, raw_display::identifier>("user_id", "User ID"),
+      field<&P::longitude_deg>("longitude_deg", "Longitude"),
+      field<&P::latitude_deg>("latitude_deg", "Latitude"),
+      field<&P::position_accuracy>("position_accuracy", "Position Accuracy"),
+      field<&P::raim>("raim", "RAIM"), field<&P::time_stamp>("time_stamp", "Time Stamp"),
+      field<&P::cog_rad>("cog_rad", "COG"), field<&P::sog_mps>("sog_mps", "SOG"),
+      field<&P::communication_state, raw_display::bits>("communication_state",
+                                                        "Communication State"),
+      field<&P::transceiver_information>("transceiver_information", "AIS Transceiver information"),
+      field<&P::heading_rad>("heading_rad", "Heading"), rest...);
+}
+}  // namespace detail
 
 /// PGN 129038 AIS Class A Position Report: 28 bytes, fast packet, priority 4, as received. A
 /// class A vessel's AIS message 1, 2 or 3: its MMSI, position (1e-7 degree), course (rad) and
@@ -1556,29 +1623,16 @@ struct ais_class_a_position {
   lookup<ais_special_maneuver, 2> special_maneuver;
   unsigned_number<8> sid;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129038, "ais_class_a_position", "AIS Class A Position Report", 4,
-               framing::fast_packet, 0},
-      field<&ais_class_a_position::message_id>("message_id", "Message ID"),
-      field<&ais_class_a_position::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      field<&ais_class_a_position::user_id, raw_display::identifier>("user_id", "User ID"),
-      field<&ais_class_a_position::longitude_deg>("longitude_deg", "Longitude"),
-      field<&ais_class_a_position::latitude_deg>("latitude_deg", "Latitude"),
-      field<&ais_class_a_position::position_accuracy>("position_accuracy", "Position Accuracy"),
-      field<&ais_class_a_position::raim>("raim", "RAIM"),
-      field<&ais_class_a_position::time_stamp>("time_stamp", "Time Stamp"),
-      field<&ais_class_a_position::cog_rad>("cog_rad", "COG"),
-      field<&ais_class_a_position::sog_mps>("sog_mps", "SOG"),
-      field<&ais_class_a_position::communication_state, raw_display::bits>("communication_state",
-                                                                           "Communication State"),
-      field<&ais_class_a_position::transceiver_information>("transceiver_information",
-                                                            "AIS Transceiver information"),
-      field<&ais_class_a_position::heading_rad>("heading_rad", "Heading"),
-      field<&ais_class_a_position::rate_of_turn_radps>("rate_of_turn_radps", "Rate of Turn"),
-      field<&ais_class_a_position::nav_status>("nav_status", "Nav Status"),
-      field<&ais_class_a_position::special_maneuver>("special_maneuver",
-                                                     "Special Maneuver Indicator"),
-      reserved<2>, spare<3>, reserved<5>, field<&ais_class_a_position::sid>("sid", "Sequence ID"));
+  template <class P>
+  static constexpr auto n2k() {
+    return detail::ais_position_table<P>(
+        pgn_info{129038, "ais_class_a_position", "AIS Class A Position Report", 4,
+                 framing::fast_packet, 0},
+        field<&P::rate_of_turn_radps>("rate_of_turn_radps", "Rate of Turn"),
+        field<&P::nav_status>("nav_status", "Nav Status"),
+        field<&P::special_maneuver>("special_maneuver", "Special Maneuver Indicator"), reserved<2>,
+        spare<3>, reserved<5>, field<&P::sid>("sid", "Sequence ID"));
+  }
   [[nodiscard]] constexpr bool operator==(const ais_class_a_position&) const noexcept = default;
 };
 
@@ -1608,35 +1662,21 @@ struct ais_class_b_position {
   lookup<nmea2000::ais_communication_state, 1> ais_communication_state;
   unsigned_number<8> sid;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129039, "ais_class_b_position", "AIS Class B Position Report", 4,
-               framing::fast_packet, 0},
-      field<&ais_class_b_position::message_id>("message_id", "Message ID"),
-      field<&ais_class_b_position::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      field<&ais_class_b_position::user_id, raw_display::identifier>("user_id", "User ID"),
-      field<&ais_class_b_position::longitude_deg>("longitude_deg", "Longitude"),
-      field<&ais_class_b_position::latitude_deg>("latitude_deg", "Latitude"),
-      field<&ais_class_b_position::position_accuracy>("position_accuracy", "Position Accuracy"),
-      field<&ais_class_b_position::raim>("raim", "RAIM"),
-      field<&ais_class_b_position::time_stamp>("time_stamp", "Time Stamp"),
-      field<&ais_class_b_position::cog_rad>("cog_rad", "COG"),
-      field<&ais_class_b_position::sog_mps>("sog_mps", "SOG"),
-      field<&ais_class_b_position::communication_state, raw_display::bits>("communication_state",
-                                                                           "Communication State"),
-      field<&ais_class_b_position::transceiver_information>("transceiver_information",
-                                                            "AIS Transceiver information"),
-      field<&ais_class_b_position::heading_rad>("heading_rad", "Heading"),
-      spare_bits<8>{"regional_application", "Regional Application"},
-      spare_bits<2>{"regional_application_b", "Regional Application B"},
-      field<&ais_class_b_position::unit_type>("unit_type", "Unit type"),
-      field<&ais_class_b_position::integrated_display>("integrated_display", "Integrated Display"),
-      field<&ais_class_b_position::dsc>("dsc", "DSC"),
-      field<&ais_class_b_position::band>("band", "Band"),
-      field<&ais_class_b_position::can_handle_msg_22>("can_handle_msg_22", "Can handle Msg 22"),
-      field<&ais_class_b_position::ais_mode>("ais_mode", "AIS mode"),
-      field<&ais_class_b_position::ais_communication_state>("ais_communication_state",
-                                                            "AIS communication state"),
-      reserved<7>, field<&ais_class_b_position::sid>("sid", "Sequence ID"));
+  template <class P>
+  static constexpr auto n2k() {
+    return detail::ais_position_table<P>(
+        pgn_info{129039, "ais_class_b_position", "AIS Class B Position Report", 4,
+                 framing::fast_packet, 0},
+        spare_bits<8>{"regional_application", "Regional Application"},
+        spare_bits<2>{"regional_application_b", "Regional Application B"},
+        field<&P::unit_type>("unit_type", "Unit type"),
+        field<&P::integrated_display>("integrated_display", "Integrated Display"),
+        field<&P::dsc>("dsc", "DSC"), field<&P::band>("band", "Band"),
+        field<&P::can_handle_msg_22>("can_handle_msg_22", "Can handle Msg 22"),
+        field<&P::ais_mode>("ais_mode", "AIS mode"),
+        field<&P::ais_communication_state>("ais_communication_state", "AIS communication state"),
+        reserved<7>, field<&P::sid>("sid", "Sequence ID"));
+  }
   [[nodiscard]] constexpr bool operator==(const ais_class_b_position&) const noexcept = default;
 };
 
@@ -1755,11 +1795,13 @@ struct pgn_list_message {
   lookup<nmea2000::pgn_list_function, 8> function_code;
   group<entry, group_capacity<entry>(1)> pgns;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{126464, "pgn_list_message", "PGN List (Transmit and Receive)", 6,
-                            framing::fast_packet, 0},
-                   field<&pgn_list_message::function_code>("function_code", "Function Code"),
-                   repeating_to_end<&pgn_list_message::pgns>("pgns", "PGN"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{126464, "pgn_list_message", "PGN List (Transmit and Receive)", 6,
+                                 framing::fast_packet, 0},
+                        field<&P::function_code>("function_code", "Function Code"),
+                        repeating_to_end<&P::pgns>("pgns", "PGN"));
+  }
   [[nodiscard]] constexpr bool operator==(const pgn_list_message&) const noexcept = default;
 };
 
@@ -1792,13 +1834,15 @@ struct gnss_sats_in_view {
   unsigned_number<8> sats_in_view;
   group<satellite, group_capacity<satellite>(3)> satellites;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129540, "gnss_sats_in_view", "GNSS Sats in View", 6, framing::fast_packet, 1000},
-      field<&gnss_sats_in_view::sid>("sid", "SID"),
-      field<&gnss_sats_in_view::range_residual_mode>("range_residual_mode", "Range Residual Mode"),
-      reserved<6>, field<&gnss_sats_in_view::sats_in_view>("sats_in_view", "Sats in View"),
-      repeating<&gnss_sats_in_view::satellites, &gnss_sats_in_view::sats_in_view>("satellites",
-                                                                                  "Satellites"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129540, "gnss_sats_in_view", "GNSS Sats in View", 6, framing::fast_packet, 1000},
+        field<&P::sid>("sid", "SID"),
+        field<&P::range_residual_mode>("range_residual_mode", "Range Residual Mode"), reserved<6>,
+        field<&P::sats_in_view>("sats_in_view", "Sats in View"),
+        repeating<&P::satellites, &P::sats_in_view>("satellites", "Satellites"));
+  }
   [[nodiscard]] constexpr bool operator==(const gnss_sats_in_view&) const noexcept = default;
 };
 
@@ -1837,25 +1881,22 @@ struct gnss_position_data {
   unsigned_number<8> reference_stations;
   group<reference_station, group_capacity<reference_station>(43)> stations;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129029, "gnss_position_data", "GNSS Position Data", 3, framing::fast_packet, 1000},
-      field<&gnss_position_data::sid>("sid", "SID"),
-      field<&gnss_position_data::date>("date", "Date"),
-      field<&gnss_position_data::time>("time", "Time"),
-      field<&gnss_position_data::latitude_deg>("latitude_deg", "Latitude"),
-      field<&gnss_position_data::longitude_deg>("longitude_deg", "Longitude"),
-      field<&gnss_position_data::altitude_m>("altitude_m", "Altitude"),
-      field<&gnss_position_data::gnss_type>("gnss_type", "GNSS type"),
-      field<&gnss_position_data::method>("method", "Method"),
-      field<&gnss_position_data::integrity>("integrity", "Integrity"), reserved<6>,
-      field<&gnss_position_data::number_of_svs>("number_of_svs", "Number of SVs"),
-      field<&gnss_position_data::hdop>("hdop", "HDOP"),
-      field<&gnss_position_data::pdop>("pdop", "PDOP"),
-      field<&gnss_position_data::geoidal_separation_m>("geoidal_separation_m",
-                                                       "Geoidal Separation"),
-      field<&gnss_position_data::reference_stations>("reference_stations", "Reference Stations"),
-      repeating<&gnss_position_data::stations, &gnss_position_data::reference_stations>(
-          "stations", "Reference Station"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129029, "gnss_position_data", "GNSS Position Data", 3, framing::fast_packet, 1000},
+        field<&P::sid>("sid", "SID"), field<&P::date>("date", "Date"),
+        field<&P::time>("time", "Time"), field<&P::latitude_deg>("latitude_deg", "Latitude"),
+        field<&P::longitude_deg>("longitude_deg", "Longitude"),
+        field<&P::altitude_m>("altitude_m", "Altitude"),
+        field<&P::gnss_type>("gnss_type", "GNSS type"), field<&P::method>("method", "Method"),
+        field<&P::integrity>("integrity", "Integrity"), reserved<6>,
+        field<&P::number_of_svs>("number_of_svs", "Number of SVs"), field<&P::hdop>("hdop", "HDOP"),
+        field<&P::pdop>("pdop", "PDOP"),
+        field<&P::geoidal_separation_m>("geoidal_separation_m", "Geoidal Separation"),
+        field<&P::reference_stations>("reference_stations", "Reference Stations"),
+        repeating<&P::stations, &P::reference_stations>("stations", "Reference Station"));
+  }
   [[nodiscard]] constexpr bool operator==(const gnss_position_data&) const noexcept = default;
 };
 
@@ -2123,18 +2164,19 @@ struct product_information {
   lookup<nmea2000::certification_level, 8> certification_level;
   unsigned_number<8> load_equivalency;
 
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{126996, "product_information", "Product Information", 6, framing::fast_packet, 0},
-      field<&product_information::nmea2000_version>("nmea2000_version", "NMEA 2000 Version"),
-      field<&product_information::product_code>("product_code", "Product Code"),
-      field<&product_information::model_id>("model_id", "Model ID"),
-      field<&product_information::software_version_code>("software_version_code",
-                                                         "Software Version Code"),
-      field<&product_information::model_version>("model_version", "Model Version"),
-      field<&product_information::model_serial_code>("model_serial_code", "Model Serial Code"),
-      field<&product_information::certification_level>("certification_level",
-                                                       "Certification Level"),
-      field<&product_information::load_equivalency>("load_equivalency", "Load Equivalency"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{126996, "product_information", "Product Information", 6, framing::fast_packet, 0},
+        field<&P::nmea2000_version>("nmea2000_version", "NMEA 2000 Version"),
+        field<&P::product_code>("product_code", "Product Code"),
+        field<&P::model_id>("model_id", "Model ID"),
+        field<&P::software_version_code>("software_version_code", "Software Version Code"),
+        field<&P::model_version>("model_version", "Model Version"),
+        field<&P::model_serial_code>("model_serial_code", "Model Serial Code"),
+        field<&P::certification_level>("certification_level", "Certification Level"),
+        field<&P::load_equivalency>("load_equivalency", "Load Equivalency"));
+  }
   [[nodiscard]] constexpr bool operator==(const product_information&) const noexcept = default;
 };
 
@@ -2149,15 +2191,17 @@ struct configuration_information {
   counted_text<max_counted_text> installation_description_2;
   counted_text<max_counted_text> manufacturer_information;
 
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{126998, "configuration_information", "Configuration Information", 6,
-                            framing::fast_packet, 0},
-                   field<&configuration_information::installation_description_1>(
-                       "installation_description_1", "Installation Description #1"),
-                   field<&configuration_information::installation_description_2>(
-                       "installation_description_2", "Installation Description #2"),
-                   field<&configuration_information::manufacturer_information>(
-                       "manufacturer_information", "Manufacturer Information"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(pgn_info{126998, "configuration_information", "Configuration Information",
+                                 6, framing::fast_packet, 0},
+                        field<&P::installation_description_1>("installation_description_1",
+                                                              "Installation Description #1"),
+                        field<&P::installation_description_2>("installation_description_2",
+                                                              "Installation Description #2"),
+                        field<&P::manufacturer_information>("manufacturer_information",
+                                                            "Manufacturer Information"));
+  }
   [[nodiscard]] constexpr bool operator==(const configuration_information&) const noexcept =
       default;
 };
@@ -2191,30 +2235,31 @@ struct ais_class_a_static_data {
   lookup<nmea2000::ais_transceiver, 5> ais_transceiver_information;
   unsigned_number<8> sequence_id;
 
-  using self = ais_class_a_static_data;
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129794, "ais_class_a_static_data", "AIS Class A Static and Voyage Related Data", 6,
-               framing::fast_packet, 0},
-      field<&self::message_id>("message_id", "Message ID"),
-      field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
-      field<&self::imo_number>("imo_number", "IMO number"),
-      field<&self::callsign>("callsign", "Callsign"), field<&self::name>("name", "Name"),
-      field<&self::type_of_ship>("type_of_ship", "Type of ship"),
-      field<&self::length_m>("length_m", "Length"), field<&self::beam_m>("beam_m", "Beam"),
-      field<&self::position_reference_from_starboard_m>("position_reference_from_starboard_m",
-                                                        "Position reference from Starboard"),
-      field<&self::position_reference_from_bow_m>("position_reference_from_bow_m",
-                                                  "Position reference from Bow"),
-      field<&self::eta_date>("eta_date", "ETA Date"),
-      field<&self::eta_time>("eta_time", "ETA Time"), field<&self::draft_m>("draft_m", "Draft"),
-      field<&self::destination>("destination", "Destination"),
-      field<&self::ais_version_indicator>("ais_version_indicator", "AIS version indicator"),
-      field<&self::gnss_type>("gnss_type", "GNSS type"), field<&self::dte>("dte", "DTE"),
-      reserved<1>,
-      field<&self::ais_transceiver_information>("ais_transceiver_information",
-                                                "AIS Transceiver information"),
-      reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129794, "ais_class_a_static_data", "AIS Class A Static and Voyage Related Data", 6,
+                 framing::fast_packet, 0},
+        field<&P::message_id>("message_id", "Message ID"),
+        field<&P::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+        field<&P::user_id, raw_display::identifier>("user_id", "User ID"),
+        field<&P::imo_number>("imo_number", "IMO number"),
+        field<&P::callsign>("callsign", "Callsign"), field<&P::name>("name", "Name"),
+        field<&P::type_of_ship>("type_of_ship", "Type of ship"),
+        field<&P::length_m>("length_m", "Length"), field<&P::beam_m>("beam_m", "Beam"),
+        field<&P::position_reference_from_starboard_m>("position_reference_from_starboard_m",
+                                                       "Position reference from Starboard"),
+        field<&P::position_reference_from_bow_m>("position_reference_from_bow_m",
+                                                 "Position reference from Bow"),
+        field<&P::eta_date>("eta_date", "ETA Date"), field<&P::eta_time>("eta_time", "ETA Time"),
+        field<&P::draft_m>("draft_m", "Draft"),
+        field<&P::destination>("destination", "Destination"),
+        field<&P::ais_version_indicator>("ais_version_indicator", "AIS version indicator"),
+        field<&P::gnss_type>("gnss_type", "GNSS type"), field<&P::dte>("dte", "DTE"), reserved<1>,
+        field<&P::ais_transceiver_information>("ais_transceiver_information",
+                                               "AIS Transceiver information"),
+        reserved<3>, field<&P::sequence_id>("sequence_id", "Sequence ID"));
+  }
   [[nodiscard]] constexpr bool operator==(const ais_class_a_static_data&) const noexcept = default;
 };
 
@@ -2228,17 +2273,19 @@ struct ais_class_b_static_data_a {
   lookup<nmea2000::ais_transceiver, 5> ais_transceiver_information;
   unsigned_number<8> sequence_id;
 
-  using self = ais_class_b_static_data_a;
-  static constexpr auto n2k =
-      describe_pgn(pgn_info{129809, "ais_class_b_static_data_a",
-                            "AIS Class B static data (msg 24 Part A)", 6, framing::fast_packet, 0},
-                   field<&self::message_id>("message_id", "Message ID"),
-                   field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-                   field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
-                   field<&self::name>("name", "Name"),
-                   field<&self::ais_transceiver_information>("ais_transceiver_information",
-                                                             "AIS Transceiver information"),
-                   reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129809, "ais_class_b_static_data_a", "AIS Class B static data (msg 24 Part A)", 6,
+                 framing::fast_packet, 0},
+        field<&P::message_id>("message_id", "Message ID"),
+        field<&P::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+        field<&P::user_id, raw_display::identifier>("user_id", "User ID"),
+        field<&P::name>("name", "Name"),
+        field<&P::ais_transceiver_information>("ais_transceiver_information",
+                                               "AIS Transceiver information"),
+        reserved<3>, field<&P::sequence_id>("sequence_id", "Sequence ID"));
+  }
   [[nodiscard]] constexpr bool operator==(const ais_class_b_static_data_a&) const noexcept =
       default;
 };
@@ -2262,27 +2309,28 @@ struct ais_class_b_static_data_b {
   lookup<nmea2000::ais_transceiver, 5> ais_transceiver_information;
   unsigned_number<8> sequence_id;
 
-  using self = ais_class_b_static_data_b;
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{129810, "ais_class_b_static_data_b", "AIS Class B static data (msg 24 Part B)", 6,
-               framing::fast_packet, 0},
-      field<&self::message_id>("message_id", "Message ID"),
-      field<&self::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
-      field<&self::user_id, raw_display::identifier>("user_id", "User ID"),
-      field<&self::type_of_ship>("type_of_ship", "Type of ship"),
-      field<&self::vendor_id>("vendor_id", "Vendor ID"),
-      field<&self::callsign>("callsign", "Callsign"), field<&self::length_m>("length_m", "Length"),
-      field<&self::beam_m>("beam_m", "Beam"),
-      field<&self::position_reference_from_starboard_m>("position_reference_from_starboard_m",
-                                                        "Position reference from Starboard"),
-      field<&self::position_reference_from_bow_m>("position_reference_from_bow_m",
-                                                  "Position reference from Bow"),
-      field<&self::mothership_user_id, raw_display::identifier>("mothership_user_id",
-                                                                "Mothership User ID"),
-      reserved<2>, spare<2>, field<&self::gnss_type>("gnss_type", "GNSS type"),
-      field<&self::ais_transceiver_information>("ais_transceiver_information",
-                                                "AIS Transceiver information"),
-      reserved<3>, field<&self::sequence_id>("sequence_id", "Sequence ID"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{129810, "ais_class_b_static_data_b", "AIS Class B static data (msg 24 Part B)", 6,
+                 framing::fast_packet, 0},
+        field<&P::message_id>("message_id", "Message ID"),
+        field<&P::repeat_indicator>("repeat_indicator", "Repeat Indicator"),
+        field<&P::user_id, raw_display::identifier>("user_id", "User ID"),
+        field<&P::type_of_ship>("type_of_ship", "Type of ship"),
+        field<&P::vendor_id>("vendor_id", "Vendor ID"), field<&P::callsign>("callsign", "Callsign"),
+        field<&P::length_m>("length_m", "Length"), field<&P::beam_m>("beam_m", "Beam"),
+        field<&P::position_reference_from_starboard_m>("position_reference_from_starboard_m",
+                                                       "Position reference from Starboard"),
+        field<&P::position_reference_from_bow_m>("position_reference_from_bow_m",
+                                                 "Position reference from Bow"),
+        field<&P::mothership_user_id, raw_display::identifier>("mothership_user_id",
+                                                               "Mothership User ID"),
+        reserved<2>, spare<2>, field<&P::gnss_type>("gnss_type", "GNSS type"),
+        field<&P::ais_transceiver_information>("ais_transceiver_information",
+                                               "AIS Transceiver information"),
+        reserved<3>, field<&P::sequence_id>("sequence_id", "Sequence ID"));
+  }
   [[nodiscard]] constexpr bool operator==(const ais_class_b_static_data_b&) const noexcept =
       default;
 };
@@ -2409,19 +2457,21 @@ struct group_function_request {
   unsigned_number<8> number_of_parameters;
   opaque_bytes<212> parameters;
 
-  using self = group_function_request;
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{126208, "group_function_request", "NMEA - Request group function", 3,
-               framing::fast_packet, 0},
-      match<&self::function_code, nmea2000::group_function::request>("function_code",
-                                                                     "Function Code"),
-      field<&self::pgn>("pgn", "PGN"),
-      field<&self::transmission_interval_s>("transmission_interval_s", "Transmission interval"),
-      field<&self::transmission_interval_offset_s>("transmission_interval_offset_s",
-                                                   "Transmission interval offset"),
-      field<&self::number_of_parameters>("number_of_parameters", "Number of Parameters"),
-      parameter_pairs<&self::parameters, &self::pgn, &self::number_of_parameters>("parameters",
-                                                                                  "Parameters"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{126208, "group_function_request", "NMEA - Request group function", 3,
+                 framing::fast_packet, 0},
+        match<&P::function_code, nmea2000::group_function::request>("function_code",
+                                                                    "Function Code"),
+        field<&P::pgn>("pgn", "PGN"),
+        field<&P::transmission_interval_s>("transmission_interval_s", "Transmission interval"),
+        field<&P::transmission_interval_offset_s>("transmission_interval_offset_s",
+                                                  "Transmission interval offset"),
+        field<&P::number_of_parameters>("number_of_parameters", "Number of Parameters"),
+        parameter_pairs<&P::parameters, &P::pgn, &P::number_of_parameters>("parameters",
+                                                                           "Parameters"));
+  }
   [[nodiscard]] constexpr bool operator==(const group_function_request&) const noexcept = default;
 };
 
@@ -2436,16 +2486,18 @@ struct group_function_command {
   unsigned_number<8> number_of_parameters;
   opaque_bytes<217> parameters;
 
-  using self = group_function_command;
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{126208, "group_function_command", "NMEA - Command group function", 3,
-               framing::fast_packet, 0},
-      match<&self::function_code, nmea2000::group_function::command>("function_code",
-                                                                     "Function Code"),
-      field<&self::pgn>("pgn", "PGN"), field<&self::priority>("priority", "Priority"), reserved<4>,
-      field<&self::number_of_parameters>("number_of_parameters", "Number of Parameters"),
-      parameter_pairs<&self::parameters, &self::pgn, &self::number_of_parameters>("parameters",
-                                                                                  "Parameters"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{126208, "group_function_command", "NMEA - Command group function", 3,
+                 framing::fast_packet, 0},
+        match<&P::function_code, nmea2000::group_function::command>("function_code",
+                                                                    "Function Code"),
+        field<&P::pgn>("pgn", "PGN"), field<&P::priority>("priority", "Priority"), reserved<4>,
+        field<&P::number_of_parameters>("number_of_parameters", "Number of Parameters"),
+        parameter_pairs<&P::parameters, &P::pgn, &P::number_of_parameters>("parameters",
+                                                                           "Parameters"));
+  }
   [[nodiscard]] constexpr bool operator==(const group_function_command&) const noexcept = default;
 };
 
@@ -2470,18 +2522,20 @@ struct group_function_acknowledge {
   unsigned_number<8> number_of_parameters;
   group<parameter_answer, group_capacity<parameter_answer>(6)> parameters;
 
-  using self = group_function_acknowledge;
-  static constexpr auto n2k = describe_pgn(
-      pgn_info{126208, "group_function_acknowledge", "NMEA - Acknowledge group function", 3,
-               framing::fast_packet, 0},
-      match<&self::function_code, nmea2000::group_function::acknowledge>("function_code",
-                                                                         "Function Code"),
-      field<&self::pgn>("pgn", "PGN"),
-      field<&self::pgn_error_code>("pgn_error_code", "PGN error code"),
-      field<&self::transmission_interval_priority_error_code>(
-          "transmission_interval_priority_error_code", "Transmission interval/Priority error code"),
-      field<&self::number_of_parameters>("number_of_parameters", "Number of Parameters"),
-      repeating<&self::parameters, &self::number_of_parameters>("parameters", "Parameter"));
+  template <class P>
+  static constexpr auto n2k() {
+    return describe_pgn(
+        pgn_info{126208, "group_function_acknowledge", "NMEA - Acknowledge group function", 3,
+                 framing::fast_packet, 0},
+        match<&P::function_code, nmea2000::group_function::acknowledge>("function_code",
+                                                                        "Function Code"),
+        field<&P::pgn>("pgn", "PGN"), field<&P::pgn_error_code>("pgn_error_code", "PGN error code"),
+        field<&P::transmission_interval_priority_error_code>(
+            "transmission_interval_priority_error_code",
+            "Transmission interval/Priority error code"),
+        field<&P::number_of_parameters>("number_of_parameters", "Number of Parameters"),
+        repeating<&P::parameters, &P::number_of_parameters>("parameters", "Parameter"));
+  }
   [[nodiscard]] constexpr bool operator==(const group_function_acknowledge&) const noexcept =
       default;
 };
@@ -2490,29 +2544,30 @@ struct group_function_acknowledge {
 // sets of PGNs
 
 /// A set of PGN structs: what a receiver knows, looked up by PGN number.
-template <pgn_like... P>
+template <class... P>
 struct pgn_list {
+  static_assert((pgn_like<P> && ...), "a pgn_list holds PGN structs");
   static constexpr std::size_t size = sizeof...(P);
 
   [[nodiscard]] static constexpr bool knows(std::uint32_t pgn) noexcept {
-    return ((P::n2k.info.pgn == pgn) || ...);
+    return ((pgn_table<P>.info.pgn == pgn) || ...);
   }
   /// How many structs here have PGN `pgn`: more than one for a PGN whose layout a field picks
   /// (match<>, as 126208's function code does).
   [[nodiscard]] static constexpr std::size_t layouts(std::uint32_t pgn) noexcept {
-    return (std::size_t{0} + ... + (P::n2k.info.pgn == pgn ? 1U : 0U));
+    return (std::size_t{0} + ... + (pgn_table<P>.info.pgn == pgn ? 1U : 0U));
   }
   /// The description's facts for `pgn` (of the first of its layouts), or nullopt for a PGN of
   /// no struct here.
   [[nodiscard]] static constexpr std::optional<pgn_info> info(std::uint32_t pgn) noexcept {
     std::optional<pgn_info> out;
-    (void)((P::n2k.info.pgn == pgn ? (out = P::n2k.info, true) : false) || ...);
+    (void)((pgn_table<P>.info.pgn == pgn ? (out = pgn_table<P>.info, true) : false) || ...);
     return out;
   }
   /// The payload length of `pgn` in bytes (of its longest layout); 0 when unknown.
   [[nodiscard]] static constexpr std::size_t length(std::uint32_t pgn) noexcept {
     std::size_t out = 0;
-    ((out = P::n2k.info.pgn == pgn ? std::max(out, description_of<P>::length) : out), ...);
+    ((out = pgn_table<P>.info.pgn == pgn ? std::max(out, description_of<P>::length) : out), ...);
     return out;
   }
   /// Decodes `payload` as the struct for `pgn` (of a PGN with several layouts, the one the
@@ -2520,8 +2575,9 @@ struct pgn_list {
   /// here has that PGN and layout.
   template <class Fn>
   static constexpr bool visit(std::uint32_t pgn, std::span<const std::uint8_t> payload, Fn&& fn) {
-    return ((P::n2k.info.pgn == pgn && layout_matches<P>(payload) ? (fn(decode<P>(payload)), true)
-                                                                  : false) ||
+    return ((pgn_table<P>.info.pgn == pgn && layout_matches<P>(payload)
+                 ? (fn(decode<P>(payload)), true)
+                 : false) ||
             ...);
   }
   /// fn(tag) for every struct, tag being a default-constructed P.
