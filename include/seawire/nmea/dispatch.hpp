@@ -232,12 +232,7 @@ struct message_set {
 
   /// Whether some message of the set has this address.
   [[nodiscard]] static constexpr bool knows(std::string_view address) noexcept {
-    if constexpr (detail::use_dispatch_table<Ms...>()) {
-      return index_of(address) < size;
-    } else {
-      const detail::address_key k = detail::key_of(address);
-      return (detail::key_matches<Ms>(k, address) || ...);
-    }
+    return index_of(address) < size;
   }
 
   /// The declared name of wire field `n` of the message with this address ("" if unknown);
@@ -253,9 +248,7 @@ struct message_set {
       std::string_view address, std::size_t n,
       std::size_t field_count = static_cast<std::size_t>(-1)) noexcept {
     field_about a;
-    (void)((Ms::nmea.matches(address) ? (a = nmea::about_field<Ms>(n, field_count), true)
-                                      : false) ||
-           ...);
+    with_message(index_of(address), [&]<class M>() { a = nmea::about_field<M>(n, field_count); });
     return a;
   }
 
@@ -287,28 +280,14 @@ struct message_set {
     // Built holding unknown_sentence, not value-initialized: that would first zero the storage
     // of the largest message in the set.
     result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
-    const detail::address_key k = detail::key_of(s);
-    if constexpr (detail::use_dispatch_table<Ms...>()) {
-      const std::size_t i = detail::dispatch_table_of<Ms...>.find(k, s.address);
-      if (i < size) assign_thunks<>::fn[i](out, s, p);
-    } else {
-      (void)((detail::key_matches<Ms>(k, s.address) ? (assign<Ms>(out, s, p), true) : false) ||
-             ...);
-    }
+    with_message(find(detail::key_of(s), s.address), [&]<class M>() { assign<M>(out, s, p); });
     return out;
   }
 
   /// The index in the set of the message a sentence with this address decodes as (the first
   /// whose address it is), or size: what decode and visit dispatch on.
   [[nodiscard]] static constexpr std::size_t index_of(std::string_view address) noexcept {
-    const detail::address_key k = detail::key_of(address);
-    if constexpr (detail::use_dispatch_table<Ms...>()) {
-      return detail::dispatch_table_of<Ms...>.find(k, address);
-    } else {
-      std::size_t i = 0;
-      (void)((detail::key_matches<Ms>(k, address) || (++i, false)) || ...);
-      return i;
-    }
+    return find(detail::key_of(address), address);
   }
 
   /// Decode and call `on_message(const M&)` for the matching message, or
@@ -325,19 +304,9 @@ struct message_set {
       return told;
     } else {
       result<bool> out;
-      const detail::address_key k = detail::key_of(s);
-      bool found = false;
-      if constexpr (detail::use_dispatch_table<Ms...>()) {
-        const std::size_t i = detail::dispatch_table_of<Ms...>.find(k, s.address);
-        found = i < size;
-        if (found) visit_thunks<std::remove_reference_t<F>>::fn[i](out, s, p, on_message);
-      } else {
-        found =
-            ((detail::key_matches<Ms>(k, s.address) ? (visit_one<Ms>(out, s, p, on_message), true)
-                                                    : false) ||
-             ...);
-      }
-      if (!found) {
+      const std::size_t i = find(detail::key_of(s), s.address);
+      with_message(i, [&]<class M>() { visit_one<M>(out, s, p, on_message); });
+      if (i == size) {
         on_message(unknown_sentence{s});
         out.value = false;
       }
@@ -346,6 +315,45 @@ struct message_set {
   }
 
  private:
+  /// The index in the set of the first message whose address `a` is (k == key_of(a)), or size:
+  /// by the set's compile-time table (dispatch_table) when it has one, else by trying the
+  /// messages in the set's order.
+  [[nodiscard]] static constexpr std::size_t find(const detail::address_key& k,
+                                                  std::string_view a) noexcept {
+    if constexpr (detail::use_dispatch_table<Ms...>()) {
+      return detail::dispatch_table_of<Ms...>.find(k, a);
+    } else {
+      std::size_t i = 0;
+      (void)((detail::key_matches<Ms>(k, a) || (++i, false)) || ...);
+      return i;
+    }
+  }
+
+  /// f.template operator()<M>() for the i-th message M of the set; nothing for i == size. A
+  /// set with a table calls through an array of one function per message; a set tried in turn
+  /// compares i with each index, where the compiler can fold it into the search before.
+  template <class F>
+  static constexpr void with_message(std::size_t i, F&& f) {
+    if constexpr (detail::use_dispatch_table<Ms...>()) {
+      if (i < size) thunks<std::remove_reference_t<F>>::fn[i](f);
+    } else {
+      [&]<std::size_t... I>(std::index_sequence<I...>) {
+        (void)((i == I ? (f.template operator()<Ms>(), true) : false) || ...);
+      }
+      (std::index_sequence_for<Ms...>{});
+    }
+  }
+  template <class M, class F>
+  static constexpr void call_one(F& f) {
+    f.template operator()<M>();
+  }
+  // One function per message, by index in the set (defined once the set is).
+  template <class F>
+  struct thunks {
+    using fn_type = void (*)(F&);
+    static constexpr fn_type fn[] = {&message_set::template call_one<Ms, F>...};
+  };
+
   // Decodes straight into the variant's alternative: a message is never copied.
   template <class M>
   static constexpr void assign(result<variant>& out, const sentence_view& s,
@@ -374,18 +382,6 @@ struct message_set {
     M m;
     decode_and_call(m);
   }
-
-  // The decoders by index in the set, for the table's dispatch (defined once the set is).
-  template <int = 0>
-  struct assign_thunks {
-    using fn_type = void (*)(result<variant>&, const sentence_view&, const parse_policy&);
-    static constexpr fn_type fn[] = {&message_set::template assign<Ms>...};
-  };
-  template <class F>
-  struct visit_thunks {
-    using fn_type = void (*)(result<bool>&, const sentence_view&, const parse_policy&, F&);
-    static constexpr fn_type fn[] = {&message_set::template visit_one<Ms, F>...};
-  };
 };
 
 namespace detail {
