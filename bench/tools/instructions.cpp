@@ -74,18 +74,13 @@ void reference(const sb::corpus& c, sb::sink& s) {
   }
 }
 
-template <class Messages>
-void reference_encode(const Messages& messages) {
+/// `write(message, buffer)` for every message of the corpus, `rounds` times.
+template <class Messages, class Write>
+void encode_with(const Messages& messages, Write write) {
   char buffer[256];
   for (int r = 0; r < rounds; ++r) {
     for (const auto& m : messages) {
-      std::visit(
-          [&](const auto& one) {
-            using M = std::remove_cvref_t<decltype(one)>;
-            if constexpr (std::is_same_v<M, standard::rmc>) (void)hw::encode_rmc(one, buffer);
-            if constexpr (std::is_same_v<M, standard::gga>) (void)hw::encode_gga(one, buffer);
-          },
-          m);
+      std::visit([&](const auto& one) { write(one, buffer); }, m);
       benchmark::DoNotOptimize(buffer);
     }
   }
@@ -93,18 +88,19 @@ void reference_encode(const Messages& messages) {
 
 template <class Messages>
 void encode(const Messages& messages) {
-  char buffer[256];
-  for (int r = 0; r < rounds; ++r) {
-    for (const auto& m : messages) {
-      std::visit(
-          [&](const auto& one) {
-            if constexpr (nmea::message_like<std::remove_cvref_t<decltype(one)>>)
-              (void)nmea::encode_to(one, std::span<char>(buffer));
-          },
-          m);
-      benchmark::DoNotOptimize(buffer);
-    }
-  }
+  encode_with(messages, [](const auto& one, char* buffer) {
+    if constexpr (nmea::message_like<std::remove_cvref_t<decltype(one)>>)
+      (void)nmea::encode_to(one, std::span<char>(buffer, 256));
+  });
+}
+
+template <class Messages>
+void reference_encode(const Messages& messages) {
+  encode_with(messages, [](const auto& one, char* buffer) {
+    using M = std::remove_cvref_t<decltype(one)>;
+    if constexpr (std::is_same_v<M, standard::rmc>) (void)hw::encode_rmc(one, buffer);
+    if constexpr (std::is_same_v<M, standard::gga>) (void)hw::encode_gga(one, buffer);
+  });
 }
 
 }  // namespace

@@ -65,7 +65,9 @@ class writer {
   }
   /// Unsigned integer, zero-padded to at least `min_digits` digits (at most 20 are written).
   constexpr void put_uint(std::uint64_t v, unsigned min_digits = 1) noexcept {
-    if (min_digits == 2 && v < 100) {  // the parts of times and dates: one pair, no division
+    // The parts of times and dates: one digit pair, no division (append_uint's short way, written
+    // here: calling append_uint cost encode_to 5% more instructions).
+    if (min_digits == 2 && v < 100) {
       if (out_.size() - size_ < 2) {
         failed_ = true;
         return;
