@@ -18,6 +18,9 @@
 //  5. What encode writes is a sealed sentence of printable ASCII with upper-case hex, which the
 //     strict policy decodes, through S's dispatch, to the same message type and the same value
 //     (decode -> encode -> decode is the identity), and which encodes again to the same bytes.
+//  6. decode(line), which reads a line in the plain form in one pass (nmea/one_pass.hpp), and
+//     the general path (parse, then decode of the sentence_view) give the same message and
+//     value, or the same error with the same field and column, under every policy.
 // For encoders fed arbitrary values (check_encoder): when encode succeeds, property 5 holds.
 
 #include <algorithm>
@@ -526,7 +529,24 @@ bool same_variant(const Variant& a, const Variant& b, std::index_sequence<I...>)
   return same;
 }
 
-/// Properties 1-5 for one line under set S and each policy given (plus liberal and strict).
+/// Property 6 for `r`, what decode(line, policy) gave.
+template <class Set>
+void check_one_pass(std::string_view line, const nmea::parse_policy& policy,
+                    const result<typename Set::variant>& r) {
+  const result<nmea::sentence_view> s = nmea::parse(line, policy);
+  const result<typename Set::variant> general =
+      s ? Set::decode(s.value, policy) : nmea::detail::parse_failure<typename Set::variant>(s);
+  SEAWIRE_FUZZ_CHECK(r.ec == general.ec && r.field == general.field && r.column == general.column,
+                     "decode(line) and the general path disagree", line, name(r.ec),
+                     name(general.ec), number(r.field), number(general.field), number(r.column),
+                     number(general.column));
+  if (r) {
+    SEAWIRE_FUZZ_CHECK(same_variant(r.value, general.value, std::make_index_sequence<Set::size>{}),
+                       "decode(line) and the general path read different values", line);
+  }
+}
+
+/// Properties 1-6 for one line under set S and each policy given (plus liberal and strict).
 template <class Set>
 void check_line(std::string_view line, std::initializer_list<nmea::parse_policy> roles) {
   const result<nmea::sentence_view> parsed = nmea::parse(line, liberal_policy);
@@ -536,6 +556,7 @@ void check_line(std::string_view line, std::initializer_list<nmea::parse_policy>
   const result<typename Set::variant> liberal = Set::decode(line, liberal_policy);
   const auto check_one = [&](const nmea::parse_policy& policy,
                              const result<typename Set::variant>& r) {
+    check_one_pass<Set>(line, policy, r);
     if (!r) {
       check_error<Set>(r, line, address);
       return;

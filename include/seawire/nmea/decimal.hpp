@@ -229,6 +229,48 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
   for (unsigned d = 0; i < s.size() && (d = digit(s[i])) < 10; ++i) m = m * 10 + d;
 }
 
+/// The integer width of `written` digits at `digits` when they are zero-padded ("007.5", "00"):
+/// kept so the number is written back as it came; 0 when they are not.
+[[nodiscard]] constexpr std::uint8_t padded_width(const char* digits,
+                                                  std::size_t written) noexcept {
+  if (written <= 1 || digits[0] != '0') return 0;
+  std::size_t zeros = 1;
+  while (zeros < written && digits[zeros] == '0') ++zeros;
+  const std::size_t natural = written - zeros == 0 ? 1 : written - zeros;
+  return static_cast<std::uint8_t>(written > natural ? written : 0);
+}
+
+/// The one-pass form of parse_decimal (one_pass.hpp): [-] digits [. digits] at `p`, read up to
+/// the first byte that is no part of it, which the caller guarantees exists (the '*' of a
+/// framed sentence). nullptr where parse_decimal would refuse the text or needs a policy to
+/// accept it: a '+' sign, spaces, no digit, more than 19 digits. What it accepts, parse_decimal
+/// reads to the same value.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr const char* scan_decimal(const char* p,
+                                                                       decimal& out) noexcept {
+  const auto digit = [](char c) {
+    return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
+  };
+  const bool neg = *p == '-';
+  if (neg) ++p;
+  const char* const int_begin = p;
+  std::uint64_t m = 0;
+  for (unsigned d = 0; (d = digit(*p)) < 10; ++p) m = m * 10 + d;
+  const auto int_written = static_cast<std::size_t>(p - int_begin);
+  std::size_t places = 0;
+  if (*p == '.') {
+    const char* const frac_begin = ++p;
+    for (unsigned d = 0; (d = digit(*p)) < 10; ++p) m = m * 10 + d;
+    places = static_cast<std::size_t>(p - frac_begin);
+  }
+  if (int_written + places - 1 >= 19) [[unlikely]]  // none, or more than 19
+    return nullptr;
+  out.mantissa = m;
+  out.places = static_cast<std::uint8_t>(places);
+  out.negative = neg;
+  out.int_width = padded_width(int_begin, int_written);
+  return p;
+}
+
 [[nodiscard]] constexpr errc parse_decimal_spaced(std::string_view s, decimal& out) noexcept;
 
 /// Parse [sign] digits [. digits] with a receive policy's leniencies: '+' unless strict_values,
@@ -271,13 +313,7 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
   out.mantissa = m;
   out.places = static_cast<std::uint8_t>(places);
   out.negative = neg;
-  out.int_width = 0;
-  if (int_written > 1 && s[int_begin] == '0') {  // zero-padded ("007.5", "00"): keep the width
-    std::size_t zeros = 1;
-    while (zeros < int_written && s[int_begin + zeros] == '0') ++zeros;
-    const std::size_t natural = int_written - zeros == 0 ? 1 : int_written - zeros;
-    out.int_width = static_cast<std::uint8_t>(int_written > natural ? int_written : 0);
-  }
+  out.int_width = padded_width(s.data() + int_begin, int_written);
   return errc::ok;
 }
 
@@ -358,6 +394,12 @@ struct codec<decimal> {
     const std::string_view s = r.take().text;
     return detail::parse_decimal(s, r.policy(), v, r.end_of_field());
   }
+  /// The one-pass reader: the number at `p` (not a blank field), up to the byte after it;
+  /// nullptr for what read() refuses or reads only under a liberal policy.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char*,
+                                                          decimal& v) noexcept {
+    return detail::scan_decimal(p, v);
+  }
   static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
   static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
 };
@@ -373,6 +415,17 @@ struct codec<I> {
     const std::string_view s = r.take().text;
     const errc e = detail::parse_decimal(s, r.policy(), d, r.end_of_field());
     if (e != errc::ok) return e;
+    return from_decimal(d, v);
+  }
+  /// The one-pass reader (as codec<decimal>::scan); nullptr for what read() refuses.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char*,
+                                                          I& v) noexcept {
+    decimal d;
+    p = detail::scan_decimal(p, d);
+    return p != nullptr && from_decimal(d, v) == errc::ok ? p : nullptr;
+  }
+  /// A whole number of I's range, as read() takes it from its decimal.
+  SEAWIRE_ALWAYS_INLINE static constexpr errc from_decimal(const decimal& d, I& v) noexcept {
     if (d.places != 0) [[unlikely]]
       return errc::bad_number;
     if (d.negative && d.mantissa != 0) {
@@ -415,6 +468,14 @@ struct codec<bool> {
       return errc::bad_flag;
     v = t[0] == '1';
     return errc::ok;
+  }
+  /// The one-pass reader: one '0' or '1'.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char*,
+                                                          bool& v) noexcept {
+    if (*p != '0' && *p != '1') [[unlikely]]
+      return nullptr;
+    v = *p == '1';
+    return p + 1;
   }
   static constexpr errc check(const bool&) noexcept { return errc::ok; }
   static constexpr void write(writer& w, const bool& v) noexcept { w.put(v ? '1' : '0'); }

@@ -268,10 +268,31 @@ struct message_set {
     if constexpr (detail::compiled_set<message_set>) {
       return detail::compiled_set_decode_line<message_set>(line, p);
     } else {
-      const result<sentence_view> s = parse(line, p);
-      if (!s) return detail::parse_failure<variant>(s);
-      return decode_here(s.value, p);
+      return decode_line_here(line, p);
     }
+  }
+
+  /// decode(line) here, not in a separately compiled set: a line in the plain form of a
+  /// message that has one-pass readers is read in one pass (one_pass.hpp); any other line, and
+  /// any the one-pass path gives up on, through parse() and decode_here().
+  [[nodiscard]] static constexpr result<variant> decode_line_here(std::string_view line,
+                                                                  const parse_policy& p) noexcept {
+    if constexpr ((detail::plain_decodable<Ms> || ...)) {
+      detail::plain_line l;
+      if (detail::frame_plain(line, p, l)) {
+        result<variant> out;
+        bool done = false;
+        with_message(find(detail::address_key{l.head, l.address.size()}, l.address),
+                     [&]<class M>() {
+                       if constexpr (detail::plain_decodable<M>)
+                         done = detail::decode_plain(l, p, out.value.template emplace<M>());
+                     });
+        if (done) return out;
+      }
+    }
+    const result<sentence_view> s = parse(line, p);
+    if (!s) return detail::parse_failure<variant>(s);
+    return decode_here(s.value, p);
   }
 
   /// decode(s, p) compiled where it is called (what a set compiled once runs in that one place).
@@ -293,6 +314,32 @@ struct message_set {
   /// Decode and call `on_message(const M&)` for the matching message, or
   /// `on_message(const unknown_sentence&)`. Returns the decode error (visitor not called) or
   /// success.
+  /// visit() of a line: a line in the plain form of a message with one-pass readers is read in
+  /// one pass and handed over; any other through parse() and visit() of its sentence_view, and
+  /// a line parse() refuses is the error (on_message is not called).
+  template <class F>
+  static constexpr result<bool> visit(std::string_view line, const parse_policy& p,
+                                      F&& on_message) {
+    if constexpr (!detail::compiled_set<message_set> && (detail::plain_decodable<Ms> || ...)) {
+      detail::plain_line l;
+      if (detail::frame_plain(line, p, l)) {
+        bool done = false;
+        with_message(find(detail::address_key{l.head, l.address.size()}, l.address),
+                     [&]<class M>() {
+                       if constexpr (detail::plain_decodable<M>)
+                         with_storage<M>([&](M& m) {
+                           done = detail::decode_plain(l, p, m);
+                           if (done) on_message(static_cast<const M&>(m));
+                         });
+                     });
+        if (done) return result<bool>{true};
+      }
+    }
+    const result<sentence_view> s = parse(line, p);
+    if (!s) return detail::parse_failure<bool>(s);
+    return visit(s.value, p, on_message);
+  }
+
   template <class F>
   static constexpr result<bool> visit(const sentence_view& s, const parse_policy& p,
                                       F&& on_message) {
@@ -364,23 +411,27 @@ struct message_set {
   template <class M, class F>
   static constexpr void visit_one(result<bool>& out, const sentence_view& s, const parse_policy& p,
                                   F& on_message) {
-    const auto decode_and_call = [&](M& m) {
+    with_storage<M>([&](M& m) {
       detail::decode_into(s, p, m, out);
       out.value = true;
       if (out) on_message(static_cast<const M&>(m));
-    };
+    });
+  }
+  /// f(m) for a default-initialized M of its own. Where M is trivially destructible, in storage
+  /// of its own: GCC folds a local `M m;` into a clear of the whole message (a `rep stos` of
+  /// ~200 bytes) before the members' initializers; placement new writes only those, and
+  /// decoding writes every field.
+  template <class M, class F>
+  static constexpr void with_storage(F&& f) {
     if constexpr (std::is_trivially_destructible_v<M>) {
       if (!std::is_constant_evaluated()) {
-        // Default-initialized in storage of its own: GCC folds a local `M m;` into a clear of
-        // the whole message (a `rep stos` of ~200 bytes) before the members' initializers;
-        // placement new writes only those, and decode_into writes every field.
         alignas(M) unsigned char storage[sizeof(M)];
-        decode_and_call(*::new (static_cast<void*>(storage)) M);
+        f(*::new (static_cast<void*>(storage)) M);
         return;
       }
     }
     M m;
-    decode_and_call(m);
+    f(m);
   }
 };
 
@@ -393,9 +444,7 @@ result<typename Set::variant> compiled_set_decode(const sentence_view& s,
 template <class Set>
 result<typename Set::variant> compiled_set_decode_line(std::string_view line,
                                                        const parse_policy& p) noexcept {
-  const result<sentence_view> s = parse(line, p);
-  if (!s) return parse_failure<typename Set::variant>(s);
-  return compiled_set_decode<Set>(s.value, p);
+  return Set::decode_line_here(line, p);
 }
 
 // Appends each of Ms to Set unless it is already there.

@@ -187,6 +187,14 @@ struct codec<E> {
     v = static_cast<E>(s[0]);
     return errc::ok;
   }
+  /// The one-pass reader: one of E's letters (the caller checks that the field ends there).
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char*,
+                                                          E& v) noexcept {
+    if (!letters[static_cast<unsigned char>(*p)]) [[unlikely]]
+      return nullptr;
+    v = static_cast<E>(*p);
+    return p + 1;
+  }
   static constexpr errc check(const E& v) noexcept {
     return letters[static_cast<unsigned char>(static_cast<char>(v))] ? errc::ok : errc::bad_enum;
   }
@@ -203,7 +211,18 @@ struct codec<E> {
   }();
   static constexpr bool allows_blank = false;
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {
-    const std::string_view s = r.take().text;
+    return from_word(r.take().text, v);
+  }
+  /// The one-pass reader: the word at `p`, up to the next ',' or `end`.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          E& v) noexcept {
+    const char* q = p;
+    while (q != end && *q != ',') ++q;
+    return from_word(std::string_view(p, static_cast<std::size_t>(q - p)), v) == errc::ok ? q
+                                                                                          : nullptr;
+  }
+  /// E's value named `s`, by one of its words or aliases.
+  static constexpr errc from_word(std::string_view s, E& v) noexcept {
     constexpr auto words = enum_words(E{});
     if (const std::optional<std::size_t> i = seawire::detail::index_of_name(words, s)) {
       v = static_cast<E>(*i);

@@ -89,6 +89,14 @@ struct codec<integer<T>> {
     if (e == errc::ok) v = t;
     return e;
   }
+  /// The one-pass reader (as codec<T>::scan).
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          integer<T>& v) noexcept {
+    T t{};
+    p = codec<T>::scan(p, end, t);
+    if (p != nullptr) v = t;
+    return p;
+  }
   static constexpr errc check(const integer<T>& v) noexcept {
     return v.fits() ? errc::ok : errc::out_of_range;
   }

@@ -339,13 +339,6 @@ template <message_like T>
 }
 
 /// Parse and decode one line.
-template <message_like T>
-[[nodiscard]] constexpr result<T> decode(std::string_view line,
-                                         const parse_policy& policy = {}) noexcept {
-  const result<sentence_view> s = parse(line, policy);
-  if (!s) return detail::parse_failure<T>(s);
-  return decode<T>(s.value, policy);
-}
 
 // ---------------------------------------------------------------------------------------------
 // encode
@@ -581,3 +574,6 @@ template <message_like T>
 #else
 #define SEAWIRE_COMPILED_ENCODER(M)
 #endif
+
+// decode<T>(line): the plain form read in one pass, the general path for the rest.
+#include "seawire/nmea/one_pass.hpp"  // IWYU pragma: export

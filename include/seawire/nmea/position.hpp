@@ -275,6 +275,60 @@ struct codec<nmea_coordinate<Axis>> {
     v.minutes = minutes;
     return read_hemisphere<Axis>(r, v.hemi);
   }
+  /// The one-pass reader (one_pass.hpp): DDMM.m,H at `p`, up to the byte after the letter;
+  /// nullptr for what read() refuses, and for no fraction digit (read only by a liberal policy).
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          value_type& v) noexcept {
+    return scan_form<false>(p, end, v);
+  }
+  /// scan(), as read_unpadded() reads.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan_unpadded(const char* p, const char* end,
+                                                                   value_type& v) noexcept {
+    return scan_form<true>(p, end, v);
+  }
+  template <bool Unpadded>
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan_form(const char* p, const char* end,
+                                                               value_type& v) noexcept {
+    const auto digit = [](char c) {
+      return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
+    };
+    const char* const begin = p;
+    std::uint64_t ddmm = 0;
+    for (unsigned d = 0; (d = digit(*p)) < 10; ++p) ddmm = ddmm * 10 + d;
+    const auto point = static_cast<std::size_t>(p - begin);
+    const bool minutes_only = Unpadded && point >= 1 && point <= 2;
+    if ((point < 3 ? !minutes_only : point - 2 > Axis::width) || *p != '.') [[unlikely]]
+      return nullptr;
+    const char* const fraction_begin = ++p;
+    std::uint64_t fraction = 0;
+    for (unsigned d = 0; (d = digit(*p)) < 10; ++p) fraction = fraction * 10 + d;
+    const auto places = static_cast<std::size_t>(p - fraction_begin);
+    if (places - 1 >= 12) [[unlikely]]  // none, or more than 12
+      return nullptr;
+    const auto deg = static_cast<unsigned>(ddmm / 100);
+    const std::uint64_t whole_minutes = ddmm % 100;
+    const std::uint64_t minutes = whole_minutes * seawire::detail::pow10_table[places] + fraction;
+    if (whole_minutes >= 60 || deg > Axis::max_degrees ||
+        (deg == Axis::max_degrees && minutes != 0)) [[unlikely]]
+      return nullptr;
+    v.whole_degrees = static_cast<std::uint16_t>(deg);
+    v.degree_digits = static_cast<std::uint8_t>(minutes_only ? 0 : point - 2);
+    v.unpadded = minutes_only;
+    v.minutes = decimal{};
+    v.minutes.mantissa = minutes;
+    v.minutes.places = static_cast<std::uint8_t>(places);
+    if (minutes_only) v.minutes.int_width = static_cast<std::uint8_t>(point);
+    return scan_hemisphere<Axis>(p, end, v.hemi);
+  }
+  /// The one-pass reader of ",H" at `p` (the number's end): the comma, then A's letter.
+  template <class A>
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan_hemisphere(const char* p, const char* end,
+                                                                     hemisphere& h) noexcept {
+    if (p == end || *p != ',' || (p[1] != A::positive && p[1] != A::negative)) [[unlikely]]
+      return nullptr;
+    h = static_cast<hemisphere>(p[1]);
+    return p + 2;
+  }
   static constexpr errc check(const value_type& v) noexcept {
     if (v.minutes.negative || v.minutes.places > 12 ||
         v.minutes.mantissa >= 60 * seawire::detail::pow10_table[v.minutes.places])
@@ -382,6 +436,16 @@ struct codec<decimal_coordinate<Axis>> {
     if (v.value.compare(decimal(Axis::max_degrees)) > 0) [[unlikely]]
       return Axis::error;
     return nmea::template read_hemisphere<Axis>(r, v.hemi);
+  }
+  /// The one-pass reader: unsigned decimal degrees, then ",H".
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          value_type& v) noexcept {
+    if (*p == '-') [[unlikely]]
+      return nullptr;
+    p = detail::scan_decimal(p, v.value);
+    if (p == nullptr || v.value.compare(decimal(Axis::max_degrees)) > 0) [[unlikely]]
+      return nullptr;
+    return nmea::template scan_hemisphere<Axis>(p, end, v.hemi);
   }
   static constexpr errc check(const value_type& v) noexcept {
     if (const errc e = detail::check_decimal(v.value); e != errc::ok) return e;

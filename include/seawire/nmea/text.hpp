@@ -74,6 +74,16 @@ struct codec<text<N>> {
     }
     return v.assign(s) ? errc::ok : errc::text_too_long;
   }
+  /// The one-pass reader: the text at `p` up to the next ',' or `end`. nullptr for a byte no
+  /// policy takes in text (a character NMEA reserves, or no printable one), and past N bytes.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          text<N>& v) noexcept {
+    const char* q = p;
+    for (; q != end && *q != ','; ++q)
+      if (!seawire::detail::is_printable(*q) || seawire::detail::is_reserved(*q)) [[unlikely]]
+        return nullptr;
+    return v.assign(std::string_view(p, static_cast<std::size_t>(q - p))) ? q : nullptr;
+  }
   static constexpr errc check(const text<N>& v) noexcept { return check_chars(v.view()); }
   static constexpr errc check_chars(std::string_view s) noexcept {
     for (char c : s)

@@ -209,8 +209,41 @@ struct codec<time_of_day> {
     return check_form<RoundedSeconds>(v);
   }
 
+  /// The one-pass reader (one_pass.hpp): hhmmss[.f] at `p`, up to the byte after it; nullptr
+  /// for what read_form refuses. `end` is the body's end: six digits must fit before it.
+  template <bool RoundedSeconds>
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan_form(const char* p, const char* end,
+                                                               time_of_day& v) noexcept {
+    if (end - p < 6) [[unlikely]]
+      return nullptr;
+    unsigned two[3];  // hh, mm, ss
+    if (!detail::parse_digit_pairs(std::string_view(p, 6), two)) [[unlikely]]
+      return nullptr;
+    p += 6;
+    unsigned frac = 0;
+    std::size_t places = 0;
+    if (p != end && *p == '.') {
+      for (++p; places <= 9 && seawire::detail::is_digit(*p); ++p, ++places)
+        frac = frac * 10 + static_cast<unsigned>(*p - '0');
+      if (places == 0 || places > 9) [[unlikely]]
+        return nullptr;
+    }
+    v = {static_cast<std::uint8_t>(two[0]), static_cast<std::uint8_t>(two[1]),
+         static_cast<std::uint8_t>(two[2]), frac, static_cast<std::uint8_t>(places)};
+    return check_form<RoundedSeconds>(v) == errc::ok ? p : nullptr;
+  }
+
   SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
     return read_form<false>(r, v);
+  }
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          time_of_day& v) noexcept {
+    return scan_form<false>(p, end, v);
+  }
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan_rounded_seconds(const char* p,
+                                                                          const char* end,
+                                                                          time_of_day& v) noexcept {
+    return scan_form<true>(p, end, v);
   }
   /// read(), and second 60 with a fraction of zeros at any minute (number_forms::rounded_seconds).
   SEAWIRE_ALWAYS_INLINE static constexpr errc read_rounded_seconds(field_reader& r,
@@ -246,6 +279,16 @@ struct codec<date> {
     v = {static_cast<std::uint16_t>(two[2] < 80 ? 2000 + two[2] : 1900 + two[2]),
          static_cast<std::uint8_t>(two[1]), static_cast<std::uint8_t>(two[0])};
     return check(v);
+  }
+  /// The one-pass reader: ddmmyy at `p`, six digits before `end`.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          date& v) noexcept {
+    unsigned two[3];  // dd, mm, yy
+    if (end - p < 6 || !detail::parse_digit_pairs(std::string_view(p, 6), two)) [[unlikely]]
+      return nullptr;
+    v = {static_cast<std::uint16_t>(two[2] < 80 ? 2000 + two[2] : 1900 + two[2]),
+         static_cast<std::uint8_t>(two[1]), static_cast<std::uint8_t>(two[0])};
+    return check(v) == errc::ok ? p + 6 : nullptr;
   }
   SEAWIRE_ALWAYS_INLINE static constexpr errc check(const date& v) noexcept {
     if (v.year < 1980 || v.year > 2079) [[unlikely]]

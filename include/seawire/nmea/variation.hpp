@@ -102,6 +102,36 @@ struct codec<magnetic_variation> {
     return left_out ? 1 : 2;
   }
 
+  /// The one-pass reader (one_pass.hpp): "[number],E|W" at `p`, up to the byte after the
+  /// letter; nullptr for what read() refuses. The number may be blank (a letter without one).
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
+                                                          magnetic_variation& v) noexcept {
+    v.value.reset();
+    if (p != end && *p != ',') {
+      decimal d;
+      if (*p == '-' || (p = detail::scan_decimal(p, d)) == nullptr) [[unlikely]]
+        return nullptr;
+      if (d.compare(decimal{180}) <= 0) v.value = d;  // beyond: no variation, as read()
+    }
+    if (p == end || *p != ',' || (p[1] != 'E' && p[1] != 'W')) [[unlikely]]
+      return nullptr;
+    v.direction = static_cast<hemisphere>(p[1]);
+    return p + 2;
+  }
+  /// The one-pass form of nothing_span for its commonest cases: the end of the two wire fields
+  /// at `p` when they hold no variation (both blank, or a number without its letter); nullptr
+  /// when they hold one, or need the general path to tell.
+  SEAWIRE_ALWAYS_INLINE static constexpr const char* scan_nothing(const char* p,
+                                                                  const char* end) noexcept {
+    if (p == end) return nullptr;
+    if (*p != ',') {
+      decimal d;
+      if (*p == '-' || (p = detail::scan_decimal(p, d)) == nullptr || p == end || *p != ',')
+        return nullptr;
+    }
+    return p + 1 == end || p[1] == ',' ? p + 1 : nullptr;
+  }
+
   /// Unsigned on the wire: a sign would contradict (or duplicate) the letter.
   [[nodiscard]] static constexpr bool read_number(std::string_view s, const parse_policy& p,
                                                   decimal& d) noexcept {
