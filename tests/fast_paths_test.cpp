@@ -19,6 +19,7 @@
 
 #include "seawire/anello/gpsctrl.hpp"
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/copy.hpp"
 #include "seawire/detail/crc32.hpp"
 #include "seawire/nmea/checksum.hpp"
@@ -776,4 +777,37 @@ TEST_CASE("the address key read in one load is the key read byte by byte") {
     CHECK(fast.head == slow.head);
     CHECK(fast.size == slow.size);
   }
+}
+
+TEST_CASE("eight digits at a time: which bytes are digits, and the number the first k spell") {
+  using seawire::detail::digits_value;
+  using seawire::detail::load_le64;
+  using seawire::detail::non_digit_bytes;
+  // Every byte value at every position of a word of digits.
+  for (unsigned at = 0; at < 8; ++at) {
+    for (unsigned b = 0; b < 256; ++b) {
+      char bytes[8] = {'1', '2', '3', '4', '5', '6', '7', '8'};
+      bytes[at] = static_cast<char>(b);
+      const std::uint64_t other = non_digit_bytes(load_le64(bytes));
+      const bool digit = b >= '0' && b <= '9';
+      INFO(at << " " << b);
+      CHECK(other == (digit ? 0U : std::uint64_t{0x80} << (8U * at)));
+    }
+  }
+  // The value of every prefix of words of varied digits, against a loop.
+  std::uint64_t state = 0x9E3779B97F4A7C15U;
+  for (int round = 0; round < 2000; ++round) {
+    char bytes[8];
+    for (char& c : bytes) {
+      state = state * 6364136223846793005U + 1442695040888963407U;
+      c = static_cast<char>('0' + (state >> 60U) % 10);
+    }
+    std::uint64_t want = 0;
+    for (unsigned k = 1; k <= 8; ++k) {
+      want = want * 10 + static_cast<unsigned>(bytes[k - 1] - '0');
+      CHECK(digits_value(load_le64(bytes), k) == want);
+    }
+  }
+  static_assert(digits_value(load_le64("99999999"), 8) == 99999999);
+  static_assert(digits_value(load_le64("4807.038"), 4) == 4807);
 }

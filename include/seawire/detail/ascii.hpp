@@ -206,4 +206,24 @@ constexpr void put_fixed(Sink& s, std::uint64_t scaled, unsigned places, bool ne
   s.put(std::string_view(tmp, n));
 }
 
+// ---------------------------------------------------------------------------------------------
+// eight digits at a time: a little-endian word of 8 bytes, its first byte the lowest
+
+/// 0x80 in each byte of `w` that is no ASCII digit. XOR with '0' turns a digit into 0..9 and
+/// every other byte into something else; adding 0x76 to the low 7 bits sets bit 7 from 10 up,
+/// with no carry into the next byte.
+[[nodiscard]] constexpr std::uint64_t non_digit_bytes(std::uint64_t w) noexcept {
+  const std::uint64_t x = w ^ 0x3030303030303030U;
+  return (((x & 0x7F7F7F7F7F7F7F7FU) + 0x7676767676767676U) | x) & 0x8080808080808080U;
+}
+
+/// The number the first `k` (1 to 8) bytes of `w` spell, each a digit: moved to the top with
+/// zeros below, then pairs, fours and all eight combined by multiplications.
+[[nodiscard]] constexpr std::uint64_t digits_value(std::uint64_t w, unsigned k) noexcept {
+  std::uint64_t x = (w ^ 0x3030303030303030U) << (8U * (8U - k));
+  x = (x * 10 + (x >> 8U)) & 0x00FF00FF00FF00FFU;
+  x = (x * 100 + (x >> 16U)) & 0x0000FFFF0000FFFFU;
+  return (x * 10000 + (x >> 32U)) & 0xFFFFFFFFU;
+}
+
 }  // namespace seawire::detail

@@ -23,6 +23,7 @@
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/inline.hpp"
+#include "seawire/detail/simd.hpp"
 #include "seawire/nmea/codec.hpp"
 #include "seawire/nmea/description.hpp"
 #include "seawire/nmea/message.hpp"
@@ -73,13 +74,26 @@ struct plain_line {
   const char* b = line.data() + 1;
   const char* const e = line.data() + n - 3;
   std::uint64_t words = 0;
+#if SEAWIRE_SIMD
+  if (!std::is_constant_evaluated()) {
+    namespace simd = seawire::detail::simd;
+    simd::bytes16 x16 = simd::zero();
+    for (; e - b >= 16; b += 16) x16 = x16 ^ simd::load(b);
+    words = simd::xor_halves(x16);
+  }
+#endif
   for (; e - b >= 8; b += 8) words ^= seawire::detail::load_le64(b);
+  if (b != e && e - line.data() >= 8) {
+    // 1 to 7 bytes left: the word that ends with them, less the bytes before them
+    const auto left = static_cast<unsigned>(e - b);
+    words ^= seawire::detail::load_le64(e - 8) >> (8U * (8U - left));
+  } else {
+    for (; b != e; ++b) words ^= static_cast<unsigned char>(*b);
+  }
   words ^= words >> 32U;
   words ^= words >> 16U;
   words ^= words >> 8U;
-  auto x = static_cast<std::uint8_t>(words);
-  for (; b != e; ++b) x = static_cast<std::uint8_t>(x ^ static_cast<std::uint8_t>(*b));
-  if (x != hv * 16 + lv) [[unlikely]]
+  if (static_cast<std::uint8_t>(words) != hv * 16 + lv) [[unlikely]]
     return false;
 
   std::size_t address_end = address_end_word(line);  // 0: the first 8 bytes are all address

@@ -4,11 +4,13 @@
 // decimal point so unpadded degrees read right and are written back as they came, and decimal
 // degrees with a letter (nmea::decimal_latitude, nmea::decimal_longitude); their codecs.
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
 #include "seawire/detail/ascii.hpp"
+#include "seawire/detail/byte_order.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/codec.hpp"
@@ -292,19 +294,50 @@ struct codec<nmea_coordinate<Axis>> {
     const auto digit = [](char c) {
       return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
     };
-    const char* const begin = p;
+    const auto refused = [](std::size_t point) {
+      const bool minutes_only = Unpadded && point >= 1 && point <= 2;
+      return point < 3 ? !minutes_only : point - 2 > Axis::width;
+    };
     std::uint64_t ddmm = 0;
-    for (unsigned d = 0; (d = digit(*p)) < 10; ++p) ddmm = ddmm * 10 + d;
-    const auto point = static_cast<std::size_t>(p - begin);
-    const bool minutes_only = Unpadded && point >= 1 && point <= 2;
-    if ((point < 3 ? !minutes_only : point - 2 > Axis::width) || *p != '.') [[unlikely]]
-      return nullptr;
-    const char* const fraction_begin = ++p;
     std::uint64_t fraction = 0;
-    for (unsigned d = 0; (d = digit(*p)) < 10; ++p) fraction = fraction * 10 + d;
-    const auto places = static_cast<std::size_t>(p - fraction_begin);
-    if (places - 1 >= 12) [[unlikely]]  // none, or more than 12
-      return nullptr;
+    std::size_t point = 0;
+    std::size_t places = 0;
+    if (end - p >= 11) {  // both words below within the body and its "*hh"
+      // Eight bytes hold DDDMM and the point; eight more from the point's next the fraction,
+      // unless it has eight digits or more.
+      using seawire::detail::digits_value;
+      using seawire::detail::non_digit_bytes;
+      const std::uint64_t w = seawire::detail::load_le64(p);
+      point = static_cast<std::size_t>(std::countr_zero(non_digit_bytes(w) | (1ULL << 63U))) / 8;
+      if (refused(point) || p[point] != '.') [[unlikely]]
+        return nullptr;
+      ddmm = digits_value(w, static_cast<unsigned>(point));
+      p += point + 1;
+      const std::uint64_t other = non_digit_bytes(seawire::detail::load_le64(p));
+      if (other != 0) [[likely]] {
+        places = static_cast<std::size_t>(std::countr_zero(other)) / 8;
+        if (places == 0) [[unlikely]]
+          return nullptr;
+        fraction = digits_value(seawire::detail::load_le64(p), static_cast<unsigned>(places));
+        p += places;
+      }
+    }
+    if (places == 0) {  // near the end of the body, or eight fraction digits or more
+      const char* const begin = p - (point == 0 ? 0 : point + 1);
+      p = begin;
+      ddmm = 0;
+      for (unsigned d = 0; (d = digit(*p)) < 10; ++p) ddmm = ddmm * 10 + d;
+      point = static_cast<std::size_t>(p - begin);
+      if (refused(point) || *p != '.') [[unlikely]]
+        return nullptr;
+      const char* const fraction_begin = ++p;
+      fraction = 0;
+      for (unsigned d = 0; (d = digit(*p)) < 10; ++p) fraction = fraction * 10 + d;
+      places = static_cast<std::size_t>(p - fraction_begin);
+      if (places - 1 >= 12) [[unlikely]]  // none, or more than 12
+        return nullptr;
+    }
+    const bool minutes_only = Unpadded && point >= 1 && point <= 2;
     const auto deg = static_cast<unsigned>(ddmm / 100);
     const std::uint64_t whole_minutes = ddmm % 100;
     const std::uint64_t minutes = whole_minutes * seawire::detail::pow10_table[places] + fraction;
