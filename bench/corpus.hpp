@@ -7,7 +7,7 @@
 // and is checked to decode back before it joins the corpus.
 //
 //   auto c = seawire::bench::rmc_gga_corpus(1000);             // GPS at 1 Hz: RMC, GGA, ...
-//   auto k = seawire::bench::family_corpus_of<kingfisher::from_vehicle>(1000);
+//   auto k = seawire::bench::kingfisher_from_vehicle_corpus(1000);  // CP*, RMC, GGA
 //   auto r = seawire::bench::corpus_of<standard::rmc>(1000);   // one type, with the messages
 //   for (std::string_view line : c.lines) ...                  // each with its CR LF
 //

@@ -7,9 +7,11 @@
 //   callgrind_annotate cg.out | grep 'PROGRAM TOTALS'     # divide by 10,000 sentences
 //
 // Modes: baseline (frame + checksum + split), decode (message_set -> variant, every field read),
-// visit (message_set::visit, every field read), encode (encode_to into a stack buffer),
+// visit (message_set::visit of the line, every field read), encode (encode_to into a stack buffer),
 // reference and reference_encode (the hand-written one-pass RMC/GGA decoder and writer of
-// bench/reference/, every field read).
+// bench/reference/, every field read); kingfisher_baseline, kingfisher_decode and
+// kingfisher_visit: the same over 1,000 sentences of the Kingfisher's CP* stream (with its RMC
+// and GGA), under the payload's policy.
 
 #include <valgrind/callgrind.h>
 
@@ -41,21 +43,22 @@ void baseline(const sb::corpus& c) {
   }
 }
 
-void decode(const sb::corpus& c, sb::sink& s) {
+template <class Set>
+void decode(const sb::corpus& c, sb::sink& s, const nmea::parse_policy& policy = {}) {
   for (int r = 0; r < rounds; ++r) {
     sb::for_each_line(c.bytes, [&](std::string_view line) {
-      const auto d = sb::rmc_gga_set::decode(line);
+      const auto d = Set::decode(line, policy);
       if (d) std::visit([&s](const auto& m) { sb::read_all(s, m); }, d.value);
       benchmark::DoNotOptimize(s);
     });
   }
 }
 
-void visit(const sb::corpus& c, sb::sink& s) {
+template <class Set>
+void visit(const sb::corpus& c, sb::sink& s, const nmea::parse_policy& policy = {}) {
   for (int r = 0; r < rounds; ++r) {
     sb::for_each_line(c.bytes, [&](std::string_view line) {
-      const result<nmea::sentence_view> v = nmea::parse(line);
-      if (v) (void)sb::rmc_gga_set::visit(v.value, {}, [&s](const auto& m) { sb::read_all(s, m); });
+      (void)Set::visit(line, policy, [&s](const auto& m) { sb::read_all(s, m); });
       benchmark::DoNotOptimize(s);
     });
   }
@@ -108,14 +111,21 @@ void reference_encode(const Messages& messages) {
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "decode";
   const auto c = sb::rmc_gga_corpus(1000);  // built before collection starts
+  const auto k = sb::kingfisher_from_vehicle_corpus(1000);
   sb::sink s;
   CALLGRIND_TOGGLE_COLLECT;
   if (mode == "baseline") {
     baseline(c);
   } else if (mode == "decode") {
-    decode(c, s);
+    decode<sb::rmc_gga_set>(c, s);
   } else if (mode == "visit") {
-    visit(c, s);
+    visit<sb::rmc_gga_set>(c, s);
+  } else if (mode == "kingfisher_baseline") {
+    baseline(k);
+  } else if (mode == "kingfisher_decode") {
+    decode<kingfisher::from_vehicle>(k, s, kingfisher::payload_policy());
+  } else if (mode == "kingfisher_visit") {
+    visit<kingfisher::from_vehicle>(k, s, kingfisher::payload_policy());
   } else if (mode == "encode") {
     encode(c.messages);
   } else if (mode == "reference") {
@@ -124,7 +134,9 @@ int main(int argc, char** argv) {
     reference_encode(c.messages);
   } else {
     CALLGRIND_TOGGLE_COLLECT;
-    std::fprintf(stderr, "usage: %s baseline|decode|visit|encode|reference|reference_encode\n",
+    std::fprintf(stderr,
+                 "usage: %s baseline|decode|visit|encode|reference|reference_encode|"
+                 "kingfisher_baseline|kingfisher_decode|kingfisher_visit\n",
                  argv[0]);
     return 2;
   }
