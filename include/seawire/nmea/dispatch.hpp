@@ -311,9 +311,6 @@ struct message_set {
     return find(detail::key_of(address), address);
   }
 
-  /// Decode and call `on_message(const M&)` for the matching message, or
-  /// `on_message(const unknown_sentence&)`. Returns the decode error (visitor not called) or
-  /// success.
   /// visit() of a line: a line in the plain form of a message with one-pass readers is read in
   /// one pass and handed over; any other through parse() and visit() of its sentence_view, and
   /// a line parse() refuses is the error (on_message is not called).
@@ -340,6 +337,9 @@ struct message_set {
     return visit(s.value, p, on_message);
   }
 
+  /// Decode and call `on_message(const M&)` for the matching message, or
+  /// `on_message(const unknown_sentence&)`. Returns the decode error (visitor not called) or
+  /// success.
   template <class F>
   static constexpr result<bool> visit(const sentence_view& s, const parse_policy& p,
                                       F&& on_message) {

@@ -338,7 +338,7 @@ template <message_like T>
   return out;
 }
 
-/// Parse and decode one line.
+// decode<T>(std::string_view line) is in one_pass.hpp (included at the end of this header).
 
 // ---------------------------------------------------------------------------------------------
 // encode
