@@ -30,8 +30,8 @@ using namespace support;
 using namespace seawire::anello;
 using seawire::errc;
 
-constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using support::infinity;
+using support::not_a_number;
 constexpr sensor_frame_raw seed_frame = decode_frame(seed).value;
 
 constexpr time_ms utc(int y, unsigned mo, unsigned d, int h, int mi, int s, int ms) {

@@ -48,8 +48,8 @@ std::string reencode(const typename Set::variant& v) {
       v);
 }
 
-constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
-constexpr double infinity = std::numeric_limits<double>::infinity();
+using support::infinity;
+using support::not_a_number;
 
 // The verified ANELLO vectors, byte for byte, at compile time.
 static_assert(nmea::checksum("PAPGPSCTRL,1") == 0x11);

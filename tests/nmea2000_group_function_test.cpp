@@ -40,12 +40,7 @@ std::vector<std::uint8_t> bytes_of(std::string_view hex) {
   return out;
 }
 
-// The hand decode: `n` bytes at byte `at`, least significant first.
-std::uint64_t le(const std::vector<std::uint8_t>& p, std::size_t at, std::size_t n) {
-  std::uint64_t v = 0;
-  for (std::size_t k = 0; k < n; ++k) v |= std::uint64_t{p[at + k]} << (8 * k);
-  return v;
-}
+using support::le;
 
 using seawire::nmea::json_kind;
 

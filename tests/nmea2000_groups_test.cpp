@@ -37,12 +37,7 @@ namespace {
 using support::fake_json;
 using support::json_of;
 
-// The hand decode: `n` bytes at byte `at`, least significant first.
-std::uint64_t le(const std::vector<std::uint8_t>& p, std::size_t at, std::size_t n) {
-  std::uint64_t v = 0;
-  for (std::size_t k = 0; k < n; ++k) v |= std::uint64_t{p[at + k]} << (8 * k);
-  return v;
-}
+using support::le;
 std::int64_t le_signed(const std::vector<std::uint8_t>& p, std::size_t at, std::size_t n) {
   const std::uint64_t v = le(p, at, n);
   if (n == 8) return static_cast<std::int64_t>(v);

@@ -22,6 +22,17 @@
 
 namespace support {
 
+/// The doubles that no field may carry.
+inline constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+inline constexpr double infinity = std::numeric_limits<double>::infinity();
+
+/// A hand decode for checking binary payloads: `n` bytes at byte `at`, least significant first.
+inline std::uint64_t le(const std::vector<std::uint8_t>& p, std::size_t at, std::size_t n) {
+  std::uint64_t v = 0;
+  for (std::size_t k = 0; k < n; ++k) v |= std::uint64_t{p[at + k]} << (8 * k);
+  return v;
+}
+
 /// "$" body "*HH" CR LF with the right checksum, so that a table row can break one field only.
 /// The XOR is computed here rather than by nmea::checksum, so that a checksum broken in the
 /// library cannot agree with itself in the tests.
