@@ -277,10 +277,12 @@ struct message_set {
   /// any the one-pass path gives up on, through parse() and decode_here().
   [[nodiscard]] static constexpr result<variant> decode_line_here(std::string_view line,
                                                                   const parse_policy& p) noexcept {
+    // One result, returned on every path, so that it is built where the caller wants it (a
+    // result returned from a branch of its own is copied there: ~40 instructions a line).
+    result<variant> out;
     if constexpr ((detail::plain_decodable<Ms> || ...)) {
       detail::plain_line l;
       if (detail::frame_plain(line, p, l)) {
-        result<variant> out;
         bool done = false;
         with_message(find(detail::address_key{l.head, l.address.size()}, l.address),
                      [&]<class M>() {
@@ -291,8 +293,16 @@ struct message_set {
       }
     }
     const result<sentence_view> s = parse(line, p);
-    if (!s) return detail::parse_failure<variant>(s);
-    return decode_here(s.value, p);
+    if (!s) {
+      out.value.template emplace<unknown_sentence>();
+      out.ec = s.ec;
+      out.column = s.column;
+      return out;
+    }
+    out.value.template emplace<unknown_sentence>(unknown_sentence{s.value});
+    with_message(find(detail::key_of(s.value), s.value.address),
+                 [&]<class M>() { assign<M>(out, s.value, p); });
+    return out;
   }
 
   /// decode(s, p) compiled where it is called (what a set compiled once runs in that one place).
