@@ -83,7 +83,8 @@ bool same_variant(const all::variant& a, const all::variant& b, std::index_seque
   return same;
 }
 
-/// decode(line) against the general path; the count of disagreements (each reported).
+/// decode(line), visit(line) and decode<T>(line) against the general path; the count of
+/// disagreements (each reported).
 std::size_t disagreements(std::string_view line, const nmea::parse_policy& p) {
   const result<all::variant> one = all::decode(line, p);
   const result<nmea::sentence_view> s = nmea::parse(line, p);
@@ -101,11 +102,34 @@ std::size_t disagreements(std::string_view line, const nmea::parse_policy& p) {
       v.ec == general.ec && v.field == general.field && v.column == general.column &&
       visited.has_value() == (general.ok()) &&
       (!general || same_variant(*visited, general.value, std::make_index_sequence<all::size>{}));
-  if (same && same_visit) return 0;
+  // decode<M>(line), for the message M the address names, against decode<M>(sentence_view).
+  bool same_typed = true;
+  nmea::detail::plain_line l;
+  const std::size_t i = s                                       ? all::index_of(s.value.address)
+                        : nmea::detail::frame_plain(line, p, l) ? all::index_of(l.address)
+                                                                : all::size;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (void)((i == I ? (
+                         [&] {
+                           using M = std::variant_alternative_t<I + 1, all::variant>;
+                           const result<M> typed = nmea::decode<M>(line, p);
+                           const result<M> typed_general =
+                               s ? nmea::decode<M>(s.value, p) : nmea::detail::parse_failure<M>(s);
+                           same_typed = typed.ec == typed_general.ec &&
+                                        typed.field == typed_general.field &&
+                                        typed.column == typed_general.column &&
+                                        (!typed || typed.value == typed_general.value);
+                         }(),
+                         true)
+                   : false) ||
+           ...);
+  }
+  (std::make_index_sequence<all::size>{});
+  if (same && same_visit && same_typed) return 0;
   UNSCOPED_INFO(line << ": one pass " << name(one.ec) << " field " << one.field << " column "
                      << one.column << ", visit " << name(v.ec) << " field " << v.field << " column "
                      << v.column << ", general " << name(general.ec) << " field " << general.field
-                     << " column " << general.column);
+                     << " column " << general.column << (same_typed ? "" : ", decode<T> differs"));
   return 1;
 }
 

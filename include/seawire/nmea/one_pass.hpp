@@ -303,16 +303,22 @@ namespace seawire::nmea {
 template <message_like T>
 [[nodiscard]] constexpr result<T> decode(std::string_view line,
                                          const parse_policy& policy = {}) noexcept {
+  // One result, returned on every path: it is built where the caller wants it, not copied
+  // there from a result of the one-pass branch's own.
+  result<T> out;
   if constexpr (detail::plain_decodable<T>) {
     detail::plain_line l;
     if (detail::frame_plain(line, policy, l) && T::nmea.matches(l.address)) {
-      result<T> out;
       if (detail::decode_plain(l, policy, out.value)) return out;
     }
   }
   const result<sentence_view> s = parse(line, policy);
-  if (!s) return detail::parse_failure<T>(s);
-  return decode<T>(s.value, policy);
+  if (!s) {
+    out = detail::parse_failure<T>(s);
+  } else {
+    out = decode<T>(s.value, policy);
+  }
+  return out;
 }
 
 }  // namespace seawire::nmea
