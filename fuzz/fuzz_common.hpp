@@ -20,7 +20,8 @@
 //     (decode -> encode -> decode is the identity), and which encodes again to the same bytes.
 //  6. decode(line), which reads a line in the plain form in one pass (nmea/one_pass.hpp), and
 //     the general path (parse, then decode of the sentence_view) give the same message and
-//     value, or the same error with the same field and column, under every policy.
+//     value, or the same error with the same field and column, under every policy; so do
+//     decode<M>(line) and decode<M>(sentence_view) for the message M the address names.
 // For encoders fed arbitrary values (check_encoder): when encode succeeds, property 5 holds.
 
 #include <algorithm>
@@ -544,6 +545,25 @@ void check_one_pass(std::string_view line, const nmea::parse_policy& policy,
     SEAWIRE_FUZZ_CHECK(same_variant(r.value, general.value, std::make_index_sequence<Set::size>{}),
                        "decode(line) and the general path read different values", line);
   }
+  // decode<M>(line), for the message M the address names, against decode<M>(sentence_view).
+  nmea::detail::plain_line l;
+  const std::size_t i = s ? Set::index_of(s.value.address)
+                        : nmea::detail::frame_plain(line, policy, l) ? Set::index_of(l.address)
+                                                                     : Set::size;
+  (void)registry::visit_type<Set>(i, [&](auto tag) {
+    using M = typename decltype(tag)::type;
+    const result<M> typed = nmea::decode<M>(line, policy);
+    const result<M> typed_general =
+        s ? nmea::decode<M>(s.value, policy) : nmea::detail::parse_failure<M>(s);
+    SEAWIRE_FUZZ_CHECK(typed.ec == typed_general.ec && typed.field == typed_general.field &&
+                           typed.column == typed_general.column,
+                       "decode<T>(line) and the general path disagree", line, name(typed.ec),
+                       name(typed_general.ec));
+    if (typed) {
+      SEAWIRE_FUZZ_CHECK(same_message(typed.value, typed_general.value),
+                         "decode<T>(line) and the general path read different values", line);
+    }
+  });
 }
 
 /// Properties 1-6 for one line under set S and each policy given (plus liberal and strict).
