@@ -281,16 +281,10 @@ struct message_set {
     // result returned from a branch of its own is copied there: ~40 instructions a line).
     result<variant> out;
     if constexpr ((detail::plain_decodable<Ms> || ...)) {
-      detail::plain_line l;
-      if (detail::frame_plain(line, p, l)) {
-        bool done = false;
-        with_message(find(detail::address_key{l.head, l.address.size()}, l.address),
-                     [&]<class M>() {
-                       if constexpr (detail::plain_decodable<M>)
-                         done = detail::decode_plain(l, p, out.value.template emplace<M>());
-                     });
-        if (done) return out;
-      }
+      if (read_plain(line, p, [&]<class M>(const detail::plain_line& l) {
+            return detail::decode_plain(l, p, out.value.template emplace<M>());
+          }))
+        return out;
     }
     const result<sentence_view> s = parse(line, p);
     if (!s) {
@@ -328,19 +322,15 @@ struct message_set {
   static constexpr result<bool> visit(std::string_view line, const parse_policy& p,
                                       F&& on_message) {
     if constexpr (!detail::compiled_set<message_set> && (detail::plain_decodable<Ms> || ...)) {
-      detail::plain_line l;
-      if (detail::frame_plain(line, p, l)) {
-        bool done = false;
-        with_message(find(detail::address_key{l.head, l.address.size()}, l.address),
-                     [&]<class M>() {
-                       if constexpr (detail::plain_decodable<M>)
-                         with_storage<M>([&](M& m) {
-                           done = detail::decode_plain(l, p, m);
-                           if (done) on_message(static_cast<const M&>(m));
-                         });
-                     });
-        if (done) return result<bool>{true};
-      }
+      if (read_plain(line, p, [&]<class M>(const detail::plain_line& l) {
+            bool done = false;
+            with_storage<M>([&](M& m) {
+              done = detail::decode_plain(l, p, m);
+              if (done) on_message(static_cast<const M&>(m));
+            });
+            return done;
+          }))
+        return result<bool>{true};
     }
     const result<sentence_view> s = parse(line, p);
     if (!s) return detail::parse_failure<bool>(s);
@@ -410,6 +400,22 @@ struct message_set {
     using fn_type = void (*)(F&);
     static constexpr fn_type fn[] = {&message_set::template call_one<Ms, F>...};
   };
+
+  /// The one-pass path of decode(line) and visit(line): when the line is in its plain form and
+  /// the message its address names has one-pass readers, `read.template operator()<M>(l)` reads
+  /// it and says whether it did; false (not read) sends the line to the general path.
+  template <class Read>
+  SEAWIRE_ALWAYS_INLINE static constexpr bool read_plain(std::string_view line,
+                                                         const parse_policy& p, Read&& read) {
+    detail::plain_line l;
+    if (!detail::frame_plain(line, p, l)) return false;
+    bool done = false;
+    with_message(find(detail::address_key{l.head, l.address.size()}, l.address), [&]<class M>() {
+      if constexpr (detail::plain_decodable<M>)
+        done = read.template operator()<M>(static_cast<const detail::plain_line&>(l));
+    });
+    return done;
+  }
 
   // Decodes straight into the variant's alternative: a message is never copied.
   template <class M>
