@@ -20,8 +20,8 @@ struct civil_date {
 /// Days in `month` (1..12) of `year`.
 [[nodiscard]] constexpr unsigned days_in_month(unsigned month, std::int64_t year) noexcept {
   constexpr unsigned days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-  return month == 2 && leap ? 29 : days[month - 1];
+  if (month != 2) return days[month - 1];  // the leap year rule (divisions) only for February
+  return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0 ? 29 : 28;
 }
 
 /// Whether the month is 1..12 and the day one of that month's.
