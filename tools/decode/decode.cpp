@@ -382,7 +382,7 @@ class decoder {
         std::snprintf(type_buf, sizeof type_buf, "PGN%u", static_cast<unsigned>(h.id.pgn));
     const std::string_view type(type_buf, static_cast<std::size_t>(n));
     if (!wanted(type)) return;
-    const origin from{nullptr, nullptr, &h, payload};
+    const origin from{nullptr, {}, nullptr, &h, payload};
     const bool known = n2k_pgns::visit(h.id.pgn, payload,
                                        [&](const auto& msg) { deliver(type, type, msg, from); });
     if (!known) deliver(type, type, tools::raw_pgn{payload}, from);
@@ -440,21 +440,24 @@ class decoder {
              std::string(message(errc::bad_line_ending)) + ": " + ends, l.text);
       return;
     }
-    const nmea::parse_policy& policy = policy_for(l.text);
-    const result<nmea::sentence_view> s = nmea::parse(l.text, policy);
-    if (!s) {
-      parse_error(l, s, policy);
-      return;
+    std::string_view address;
+    const nmea::parse_policy& policy = policy_for(l.text, address);
+    // A line in its plain form is read in one pass; any other is parsed first. The two give the
+    // same message or the same error (column and field), which error_text tells alike.
+    const result<bool> r = all_messages::visit(
+        l.text, policy, [&](const auto& msg) { emit(l, address, policy, msg); });
+    if (!r) {
+      char why[512];
+      reject(l.line, r.ec, r.field, nmea::error_text<all_messages>(why, r, l.text, policy), l.text);
     }
-    const result<bool> r =
-        all_messages::visit(s.value, policy, [&](const auto& msg) { emit(l, s.value, msg); });
-    if (!r) decode_error(l, r, policy);
   }
 
   // The policy of the role that receives the sentence's address (tools::receiving_policy), or
   // the sending rules with --strict, with --checksum's rule. Kept per address in a small table:
   // a log repeats a few dozen addresses, and finding an address's role walks every role's set.
-  const nmea::parse_policy& policy_for(std::string_view text) {
+  // `address` is set to the text's address: what follows the start character up to the first
+  // ',' or '*' (a sentence's address, when the text is one).
+  const nmea::parse_policy& policy_for(std::string_view text, std::string_view& address) {
     // The address: up to the first ',' or '*' after the start character. One longer than a
     // table entry holds (no sentence has one) is looked up every time.
     const std::size_t most = policy_entry::address_capacity;
@@ -464,11 +467,11 @@ class decoder {
     std::uint32_t hash = 0;
     for (; n < limit && a[n] != ',' && a[n] != '*'; ++n)
       hash = hash * 31U + static_cast<unsigned char>(a[n]);
-    const std::string_view address(a, n);
+    address = std::string_view(a, n);
     if (n > most) {
-      std::string_view whole = text.substr(1);
-      whole = whole.substr(0, whole.find_first_of(",*"));
-      policy_slow_ = policy_of(whole);
+      address = text.substr(1);
+      address = address.substr(0, address.find_first_of(",*"));
+      policy_slow_ = policy_of(address);
       return policy_slow_;
     }
     // The hash's top bits (Fibonacci hashing) pick the first slot to look in; the next few are
@@ -500,24 +503,25 @@ class decoder {
     return p;
   }
 
-  // The JSON "type" of a message: its address, or talker + type for talker-agnostic ones.
+  // The JSON "type" of a message: talker + type for talker-agnostic ones, else its address.
   template <class M>
-  static std::string_view type_of(const nmea::sentence_view& s, const M& msg,
+  static std::string_view type_of(std::string_view address, const M& msg,
                                   nmea::json_buffer<16>& buf) {
     if constexpr (nmea::message_like<M>) {
       nmea::write_type(buf, msg);
       return buf.view();
     } else {
-      return s.address;
+      return address;
     }
   }
 
   template <class M>
-  void emit(const nmea::framed_line& l, const nmea::sentence_view& s, const M& msg) {
+  void emit(const nmea::framed_line& l, std::string_view address, const nmea::parse_policy& policy,
+            const M& msg) {
     nmea::json_buffer<16> type_buf;
-    const std::string_view type = type_of(s, msg, type_buf);
+    const std::string_view type = type_of(address, msg, type_buf);
     if (!wanted(type)) return;
-    deliver(type, s.address, msg, origin{&l, &s, nullptr, {}});
+    deliver(type, address, msg, origin{&l, address, &policy, nullptr, {}});
   }
 
   // ---- every message, of every wire ----
@@ -544,18 +548,6 @@ class decoder {
   }
 
   // ---- errors ----
-
-  void parse_error(const nmea::framed_line& l, const result<nmea::sentence_view>& s,
-                   const nmea::parse_policy& policy) {
-    char why[512];
-    reject(l.line, s.ec, 0, nmea::error_text<all_messages>(why, s, l.text, policy), l.text);
-  }
-
-  void decode_error(const nmea::framed_line& l, const result<bool>& r,
-                    const nmea::parse_policy& policy) {
-    char why[512];
-    reject(l.line, r.ec, r.field, nmea::error_text<all_messages>(why, r, l.text, policy), l.text);
-  }
 
   void reject(std::uint64_t line, errc e, std::uint16_t field, std::string_view detail,
               std::string_view input) {

@@ -292,12 +292,14 @@ inline void count_type(std::map<std::string, std::uint64_t, std::less<>>& counts
 // rejected and every run of bytes the stream reader dropped (rejected), and the end of the input
 // (finish). The decoder decides what is a message, and counts; the writer what goes out, where.
 
-// Where a message came from, for the writers that need more than the message: a sentence's line
-// and view (--format nmea re-encodes it), a PGN's CAN frame header (JSON and CSV write it) and
-// payload (--format canboat shows its reserved bits, and reads a short one as canboat does).
+// Where a message came from, for the writers that need more than the message: a sentence's line,
+// address and policy (--format nmea names it when it cannot re-encode it), a PGN's CAN frame header
+// (JSON and CSV write it) and payload (--format canboat shows its reserved bits, and reads a
+// short one as canboat does).
 struct origin {
   const nmea::framed_line* line = nullptr;
-  const nmea::sentence_view* sentence = nullptr;
+  std::string_view address;
+  const nmea::parse_policy* policy = nullptr;
   const nmea2000::message_header* head = nullptr;
   std::span<const std::uint8_t> payload;
 };
@@ -409,7 +411,7 @@ class nmea_writer : public stdio_writer {
       const anello::frame_bytes bytes = anello::encode_frame(msg);
       out_.put(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
     } else if constexpr (!nmea2000::pgn_like<M> && !std::is_same_v<M, raw_pgn>) {
-      if (std::optional<refusal> no = reencode(*from.sentence, msg)) return no;
+      if (std::optional<refusal> no = reencode(from, msg)) return no;
     }
     written();
     return std::nullopt;
@@ -417,12 +419,13 @@ class nmea_writer : public stdio_writer {
 
  private:
   template <class M>
-  std::optional<refusal> reencode(const nmea::sentence_view& s, const M& msg) {
+  std::optional<refusal> reencode(const origin& from, const M& msg) {
     std::array<char, 1100> buf;
     result<std::size_t> r;
     if constexpr (std::is_same_v<M, nmea::unknown_sentence>) {
       // Not ours to interpret: the same start ('$' or '!') and fields, sealed the way seawire
       // seals.
+      const nmea::sentence_view& s = msg.sentence;
       nmea::writer w(std::span<char>(buf.data(), buf.size()));
       w.begin(s.address, s.start);
       if (s.field_count > 0) {
@@ -434,9 +437,13 @@ class nmea_writer : public stdio_writer {
       r = nmea::encode_to(msg, std::span<char>(buf.data(), buf.size()));
     }
     if (!r) {
-      std::string detail = std::string(s.address) + " cannot be re-encoded";
+      std::string detail = std::string(from.address) + " cannot be re-encoded";
       if (r.field != 0) {
-        const nmea::field_about a = all_messages::about_field(s.address, r.field, s.field_count);
+        // The field named as the sentence has it (a message with a variable number of fields
+        // names them by their count): the line split again, by the rules it was decoded by.
+        const result<nmea::sentence_view> s = nmea::parse(from.line->text, *from.policy);
+        const nmea::field_about a =
+            all_messages::about_field(from.address, r.field, s ? s.value.field_count : 0);
         detail += ": field " + std::to_string(r.field) + " (" + std::string(a.name);
         if (!a.part.empty()) detail += "'s " + std::string(a.part);
         detail += ")";
