@@ -54,9 +54,47 @@ def case_of(scope, name):
     return fn
 
 
+def children():
+    """The processes this one started that are still running (not yet exited): from /proc, where
+    each process's stat gives its state and its parent."""
+    me = os.getpid()
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open("/proc/%s/stat" % entry, encoding="ascii", errors="replace") as f:
+                stat = f.read()
+        except OSError:
+            continue  # gone meanwhile
+        # pid (comm) state ppid ...: comm may hold spaces and parentheses, so split after the last.
+        state, ppid = stat[stat.rindex(")") + 2:].split()[:2]
+        if int(ppid) == me and state not in ("Z", "X"):
+            found.append(int(entry))
+    return found
+
+
+def kill_children():
+    """Kills what this run started and left running; returns their pids."""
+    left = children()
+    for pid in left:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    return left
+
+
 def run_case(scope, name):
-    """Runs the case `name` (the function case_<name> of `scope`), then finish()."""
-    case_of(scope, name)()
+    """Runs the case `name` (the function case_<name> of `scope`), then finish(). Whatever the
+    case started and left running is killed, however it ended, so that a case that fails
+    half-way (an exception, a program that never started) leaves no server or client behind;
+    a case that ends normally and leaves one fails."""
+    try:
+        case_of(scope, name)()
+    finally:
+        left = kill_children()
+    check(not left, "the case left %d program(s) running (killed)" % len(left))
     finish()
 
 
