@@ -12,7 +12,11 @@
 // reference and reference_encode (the hand-written one-pass RMC/GGA decoder and writer of
 // bench/reference/, every field read); kingfisher_baseline, kingfisher_decode and
 // kingfisher_visit: the same over 1,000 sentences of the Kingfisher's CP* stream (with its RMC
-// and GGA), under the payload's policy.
+// and GGA), under the payload's policy. The other families' modes (families.cpp):
+// kingfisher_encode, and FAMILY_baseline, FAMILY_decode, FAMILY_visit and FAMILY_encode for
+// FAMILY kingfisher_to (PY* commands), sandshark_from (BF*), sandshark_to (BP*), robotx (RobotX
+// reports) and anello (the ANELLO INS's NMEA inputs), each read by its role's set under its
+// role's policy, as seawire_bench's family rows are.
 
 #include <valgrind/callgrind.h>
 
@@ -26,37 +30,16 @@
 #include "../corpus.hpp"
 #include "../reference/one_pass_encode.hpp"
 #include "../support.hpp"
+#include "instruction_loops.hpp"
 
 namespace {
 
 using namespace seawire;
 namespace sb = seawire::bench;
-
-constexpr int rounds = 10;
-
-void baseline(const sb::corpus& c) {
-  sb::split_sentence split;
-  for (int r = 0; r < rounds; ++r) {
-    sb::for_each_line(c.bytes, [&](std::string_view line) {
-      (void)sb::baseline_split(line, split);
-      benchmark::DoNotOptimize(split);
-    });
-  }
-}
-
-template <class Set>
-void decode(const sb::corpus& c, sb::sink& s, const nmea::parse_policy& policy = {}) {
-  for (int r = 0; r < rounds; ++r) {
-    sb::for_each_line(c.bytes, [&](std::string_view line) {
-      const auto d = Set::decode(line, policy);
-      if (d) std::visit([&s](const auto& m) { sb::read_all(s, m); }, d.value);
-      benchmark::DoNotOptimize(s);
-    });
-  }
-}
+using namespace seawire::bench::instructions;
 
 /// decode<T>(line) for the one type the line's address names (RMC or GGA).
-void typed(const sb::corpus& c, sb::sink& s) {
+SEAWIRE_BENCH_LOOP void typed(const sb::corpus& c, sb::sink& s) {
   for (int r = 0; r < rounds; ++r) {
     sb::for_each_line(c.bytes, [&](std::string_view line) {
       if (line.substr(3, 3) == "RMC") {
@@ -71,17 +54,7 @@ void typed(const sb::corpus& c, sb::sink& s) {
   }
 }
 
-template <class Set>
-void visit(const sb::corpus& c, sb::sink& s, const nmea::parse_policy& policy = {}) {
-  for (int r = 0; r < rounds; ++r) {
-    sb::for_each_line(c.bytes, [&](std::string_view line) {
-      (void)Set::visit(line, policy, [&s](const auto& m) { sb::read_all(s, m); });
-      benchmark::DoNotOptimize(s);
-    });
-  }
-}
-
-void reference(const sb::corpus& c, sb::sink& s) {
+SEAWIRE_BENCH_LOOP void reference(const sb::corpus& c, sb::sink& s) {
   hw::out o;
   for (int r = 0; r < rounds; ++r) {
     sb::for_each_line(c.bytes, [&](std::string_view line) {
@@ -94,26 +67,6 @@ void reference(const sb::corpus& c, sb::sink& s) {
   }
 }
 
-/// `write(message, buffer)` for every message of the corpus, `rounds` times.
-template <class Messages, class Write>
-void encode_with(const Messages& messages, Write write) {
-  char buffer[256];
-  for (int r = 0; r < rounds; ++r) {
-    for (const auto& m : messages) {
-      std::visit([&](const auto& one) { write(one, buffer); }, m);
-      benchmark::DoNotOptimize(buffer);
-    }
-  }
-}
-
-template <class Messages>
-void encode(const Messages& messages) {
-  encode_with(messages, [](const auto& one, char* buffer) {
-    if constexpr (nmea::message_like<std::remove_cvref_t<decltype(one)>>)
-      (void)nmea::encode_to(one, std::span<char>(buffer, 256));
-  });
-}
-
 template <class Messages>
 void reference_encode(const Messages& messages) {
   encode_with(messages, [](const auto& one, char* buffer) {
@@ -123,10 +76,24 @@ void reference_encode(const Messages& messages) {
   });
 }
 
+int usage(const char* program) {
+  std::fprintf(stderr,
+               "usage: %s baseline|decode|visit|typed|encode|reference|reference_encode|"
+               "kingfisher_baseline|kingfisher_decode|kingfisher_visit|FAMILY_WHAT\n"
+               "  FAMILY_WHAT: kingfisher_encode, or FAMILY_baseline, FAMILY_decode, "
+               "FAMILY_visit or FAMILY_encode for FAMILY kingfisher_to, sandshark_from,\n"
+               "  sandshark_to, robotx or anello\n",
+               program);
+  return 2;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "decode";
+  const int family_status = run_family_mode(mode);
+  if (family_status == 0) return 0;
+  if (family_status == 2) return usage(argv[0]);
   const auto c = sb::rmc_gga_corpus(1000);  // built before collection starts
   const auto k = sb::kingfisher_from_vehicle_corpus(1000);
   sb::sink s;
@@ -142,9 +109,9 @@ int main(int argc, char** argv) {
   } else if (mode == "kingfisher_baseline") {
     baseline(k);
   } else if (mode == "kingfisher_decode") {
-    decode<kingfisher::from_vehicle>(k, s, kingfisher::payload_policy());
+    decode<kingfisher::from_vehicle, kingfisher::payload_policy()>(k, s);
   } else if (mode == "kingfisher_visit") {
-    visit<kingfisher::from_vehicle>(k, s, kingfisher::payload_policy());
+    visit<kingfisher::from_vehicle, kingfisher::payload_policy()>(k, s);
   } else if (mode == "encode") {
     encode(c.messages);
   } else if (mode == "reference") {
@@ -153,11 +120,7 @@ int main(int argc, char** argv) {
     reference_encode(c.messages);
   } else {
     CALLGRIND_TOGGLE_COLLECT;
-    std::fprintf(stderr,
-                 "usage: %s baseline|decode|visit|typed|encode|reference|reference_encode|"
-                 "kingfisher_baseline|kingfisher_decode|kingfisher_visit\n",
-                 argv[0]);
-    return 2;
+    return usage(argv[0]);
   }
   CALLGRIND_TOGGLE_COLLECT;
   std::printf("%s: %d sentences (%g)\n", mode.c_str(), rounds * 1000, s.sum);

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: BSL-1.0
+// seawire_bench_instructions' modes for the families other than RMC/GGA and the Kingfisher's CP*
+// stream (instructions.cpp says how to run them): 1,000 sentences of each, read by its role's set
+// under its role's policy. A translation unit of its own: see run_family_mode.
+
+#include <valgrind/callgrind.h>
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+#include "instruction_loops.hpp"
+
+namespace seawire::bench::instructions {
+namespace {
+
+/// `what` (baseline, decode, visit or encode) over `c`, read by `Set` under `Policy`, collected
+/// by callgrind; 2 for another word.
+template <class Set, nmea::parse_policy Policy>
+int run(std::string_view mode, std::string_view what, const sb::family_corpus<Set>& c) {
+  sb::sink s;
+  const bool known = what == "baseline" || what == "decode" || what == "visit" || what == "encode";
+  CALLGRIND_TOGGLE_COLLECT;
+  if (what == "baseline") {
+    baseline(c);
+  } else if (what == "decode") {
+    decode<Set, Policy>(c, s);
+  } else if (what == "visit") {
+    visit<Set, Policy>(c, s);
+  } else if (what == "encode") {
+    encode(c.messages);
+  }
+  CALLGRIND_TOGGLE_COLLECT;
+  if (!known) return 2;
+  std::printf("%.*s: %d sentences (%g)\n", static_cast<int>(mode.size()), mode.data(),
+              rounds * 1000, s.sum);
+  return 0;
+}
+
+}  // namespace
+
+int run_family_mode(std::string_view mode) {
+  // "sandshark_to_visit": family "sandshark_to", what "visit".
+  const std::size_t cut = mode.rfind('_');
+  if (cut == std::string_view::npos) return -1;
+  const std::string_view family = mode.substr(0, cut);
+  const std::string_view what = mode.substr(cut + 1);
+  // Each corpus is built before collection starts.
+  if (mode == "kingfisher_encode") {
+    return run<kingfisher::from_vehicle, kingfisher::payload_policy()>(
+        mode, what, sb::kingfisher_from_vehicle_corpus(1000));
+  }
+  if (family == "kingfisher_to") {
+    return run<kingfisher::to_vehicle, kingfisher::vehicle_policy()>(
+        mode, what, sb::kingfisher_to_vehicle_corpus(1000));
+  }
+  if (family == "sandshark_from") {
+    return run<sandshark::from_vehicle, sandshark::from_vehicle_policy>(
+        mode, what, sb::sandshark_from_vehicle_corpus(1000));
+  }
+  if (family == "sandshark_to") {
+    return run<sandshark::to_vehicle, sandshark::to_vehicle_policy>(
+        mode, what, sb::sandshark_to_vehicle_corpus(1000));
+  }
+  if (family == "robotx") {
+    return run<robotx::reports, robotx::judge_policy>(mode, what, sb::robotx_corpus(1000));
+  }
+  if (family == "anello") {
+    return run<anello::nmea_inputs, anello::input_policy>(mode, what,
+                                                          sb::anello_inputs_corpus(1000));
+  }
+  return -1;
+}
+
+}  // namespace seawire::bench::instructions
