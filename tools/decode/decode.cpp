@@ -515,9 +515,12 @@ class decoder {
     }
   }
 
+  // `address`: the line's, as policy_for found it; a sentence no message describes has its own,
+  // as parse() split it.
   template <class M>
   void emit(const nmea::framed_line& l, std::string_view address, const nmea::parse_policy& policy,
             const M& msg) {
+    if constexpr (std::is_same_v<M, nmea::unknown_sentence>) address = msg.sentence.address;
     nmea::json_buffer<16> type_buf;
     const std::string_view type = type_of(address, msg, type_buf);
     if (!wanted(type)) return;
