@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 // seawire_bench_instructions' modes for the families other than RMC/GGA and the Kingfisher's CP*
 // stream (instructions.cpp says how to run them): 1,000 sentences of each, read by its role's set
-// under its role's policy. A translation unit of its own: see run_family_mode.
+// under its role's policy.
 
 #include <valgrind/callgrind.h>
 
@@ -14,22 +14,12 @@
 namespace seawire::bench::instructions {
 namespace {
 
-/// `what` (baseline, decode, visit or encode) over `c`, read by `Set` under `Policy`, collected
-/// by callgrind; 2 for another word.
+/// run_loop of `what`, collected by callgrind; 2 for a word that is no loop.
 template <class Set, nmea::parse_policy Policy>
 int run(std::string_view mode, std::string_view what, const sb::family_corpus<Set>& c) {
   sb::sink s;
-  const bool known = what == "baseline" || what == "decode" || what == "visit" || what == "encode";
   CALLGRIND_TOGGLE_COLLECT;
-  if (what == "baseline") {
-    baseline(c);
-  } else if (what == "decode") {
-    decode<Set, Policy>(c, s);
-  } else if (what == "visit") {
-    visit<Set, Policy>(c, s);
-  } else if (what == "encode") {
-    encode(c.messages);
-  }
+  const bool known = run_loop<Set, Policy>(what, c, s);
   CALLGRIND_TOGGLE_COLLECT;
   if (!known) return 2;
   std::printf("%.*s: %d sentences (%g)\n", static_cast<int>(mode.size()), mode.data(),
@@ -46,10 +36,6 @@ int run_family_mode(std::string_view mode) {
   const std::string_view family = mode.substr(0, cut);
   const std::string_view what = mode.substr(cut + 1);
   // Each corpus is built before collection starts.
-  if (mode == "kingfisher_encode") {
-    return run<kingfisher::from_vehicle, kingfisher::payload_policy()>(
-        mode, what, sb::kingfisher_from_vehicle_corpus(1000));
-  }
   if (family == "kingfisher_to") {
     return run<kingfisher::to_vehicle, kingfisher::vehicle_policy()>(
         mode, what, sb::kingfisher_to_vehicle_corpus(1000));

@@ -80,12 +80,29 @@ void encode(const Messages& messages) {
   });
 }
 
+/// The loop `what` names (baseline, decode, visit or encode) over `c`, read by `Set` under
+/// `Policy`; false, and nothing run, for another word.
+template <class Set, nmea::parse_policy Policy = nmea::parse_policy{}>
+bool run_loop(std::string_view what, const sb::family_corpus<Set>& c, sb::sink& s) {
+  if (what == "baseline") {
+    baseline(c);
+  } else if (what == "decode") {
+    decode<Set, Policy>(c, s);
+  } else if (what == "visit") {
+    visit<Set, Policy>(c, s);
+  } else if (what == "encode") {
+    encode(c.messages);
+  } else {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
-/// A mode of another family's stream, counted in families.cpp (a translation unit of its own, so
-/// that instantiating those sets does not change how the compiler builds the RMC/GGA and
-/// Kingfisher loops of instructions.cpp): 0 when it ran, 2 for a word that is no such mode, -1
-/// when `mode` names none of its families.
+/// A mode of another family's stream, counted in families.cpp (a file of its own: each of the
+/// two compiles only its own sets): 0 when it ran, 2 for a word that is no such mode, -1 when
+/// `mode` names none of its families.
 int run_family_mode(std::string_view mode);
 
 }  // namespace seawire::bench::instructions

@@ -10,13 +10,13 @@
 // visit (message_set::visit of the line, every field read), typed (decode<T>(line) of the type
 // the address names, every field read), encode (encode_to into a stack buffer),
 // reference and reference_encode (the hand-written one-pass RMC/GGA decoder and writer of
-// bench/reference/, every field read); kingfisher_baseline, kingfisher_decode and
-// kingfisher_visit: the same over 1,000 sentences of the Kingfisher's CP* stream (with its RMC
-// and GGA), under the payload's policy. The other families' modes (families.cpp):
-// kingfisher_encode, and FAMILY_baseline, FAMILY_decode, FAMILY_visit and FAMILY_encode for
-// FAMILY kingfisher_to (PY* commands), sandshark_from (BF*), sandshark_to (BP*), robotx (RobotX
-// reports) and anello (the ANELLO INS's NMEA inputs), each read by its role's set under its
-// role's policy, as seawire_bench's family rows are.
+// bench/reference/, every field read); kingfisher_baseline, kingfisher_decode, kingfisher_visit
+// and kingfisher_encode: the same over 1,000 sentences of the Kingfisher's CP* stream (with its
+// RMC and GGA), under the payload's policy. The other families' modes (families.cpp):
+// FAMILY_baseline, FAMILY_decode, FAMILY_visit and FAMILY_encode for FAMILY kingfisher_to (PY*
+// commands), sandshark_from (BF*), sandshark_to (BP*), robotx (RobotX reports) and anello (the
+// ANELLO INS's NMEA inputs), each read by its role's set under its role's policy, as
+// seawire_bench's family rows are.
 
 #include <valgrind/callgrind.h>
 
@@ -79,10 +79,9 @@ void reference_encode(const Messages& messages) {
 int usage(const char* program) {
   std::fprintf(stderr,
                "usage: %s baseline|decode|visit|typed|encode|reference|reference_encode|"
-               "kingfisher_baseline|kingfisher_decode|kingfisher_visit|FAMILY_WHAT\n"
-               "  FAMILY_WHAT: kingfisher_encode, or FAMILY_baseline, FAMILY_decode, "
-               "FAMILY_visit or FAMILY_encode for FAMILY kingfisher_to, sandshark_from,\n"
-               "  sandshark_to, robotx or anello\n",
+               "kingfisher_baseline|kingfisher_decode|kingfisher_visit|kingfisher_encode|"
+               "FAMILY_baseline|FAMILY_decode|FAMILY_visit|FAMILY_encode\n"
+               "  FAMILY: kingfisher_to, sandshark_from, sandshark_to, robotx or anello\n",
                program);
   return 2;
 }
@@ -97,32 +96,22 @@ int main(int argc, char** argv) {
   const auto c = sb::rmc_gga_corpus(1000);  // built before collection starts
   const auto k = sb::kingfisher_from_vehicle_corpus(1000);
   sb::sink s;
+  bool known = true;
   CALLGRIND_TOGGLE_COLLECT;
-  if (mode == "baseline") {
-    baseline(c);
-  } else if (mode == "decode") {
-    decode<sb::rmc_gga_set>(c, s);
-  } else if (mode == "visit") {
-    visit<sb::rmc_gga_set>(c, s);
-  } else if (mode == "typed") {
+  if (mode == "typed") {
     typed(c, s);
-  } else if (mode == "kingfisher_baseline") {
-    baseline(k);
-  } else if (mode == "kingfisher_decode") {
-    decode<kingfisher::from_vehicle, kingfisher::payload_policy()>(k, s);
-  } else if (mode == "kingfisher_visit") {
-    visit<kingfisher::from_vehicle, kingfisher::payload_policy()>(k, s);
-  } else if (mode == "encode") {
-    encode(c.messages);
   } else if (mode == "reference") {
     reference(c, s);
   } else if (mode == "reference_encode") {
     reference_encode(c.messages);
+  } else if (mode.starts_with("kingfisher_")) {
+    known = run_loop<kingfisher::from_vehicle, kingfisher::payload_policy()>(
+        std::string_view(mode).substr(11), k, s);
   } else {
-    CALLGRIND_TOGGLE_COLLECT;
-    return usage(argv[0]);
+    known = run_loop<sb::rmc_gga_set>(mode, c, s);
   }
   CALLGRIND_TOGGLE_COLLECT;
+  if (!known) return usage(argv[0]);
   std::printf("%s: %d sentences (%g)\n", mode.c_str(), rounds * 1000, s.sum);
   return 0;
 }
