@@ -42,35 +42,48 @@ def comparable(obj, fmt):
     return o, t
 
 
+# Each vector decoded on its own (a log's format is the stream's); then all of them, one after the
+# other, through each format at once (two programs a format, not two a vector and format), cut back
+# into the vectors by their message counts.
+first_out = {}  # vector -> (seawire-decode's output, its messages)
 for path in sorted(glob.glob(os.path.join(DATA, "*.in"))):
     name = os.path.basename(path)
     first = run(DECODE, [], open(path, "rb").read())
     check(first.returncode == 0, f"{name}: decode exit {first.returncode}: {first.stderr[:300]}")
     msgs = [json.loads(l) for l in first.stdout.decode().splitlines()]
     check(len(msgs) > 0, f"{name}: no messages")
-    for fmt in FORMATS:
-        enc = run(ENCODE, ["--output", fmt], first.stdout)
-        check(enc.returncode == 0, f"{name} -> {fmt}: encode exit {enc.returncode}: {enc.stderr[:300]}")
-        second = run(DECODE, [], enc.stdout)
-        check(second.returncode == 0, f"{name} -> {fmt}: decode again exit {second.returncode}")
-        again = [json.loads(l) for l in second.stdout.decode().splitlines()]
-        check(len(again) == len(msgs), f"{name} -> {fmt}: {len(again)} messages, not {len(msgs)}")
-        for i, (a, b) in enumerate(zip(msgs, again)):
+    first_out[name] = (first.stdout, msgs)
+every = b"".join(out for out, _ in first_out.values())
+for fmt in FORMATS:
+    enc = run(ENCODE, ["--output", fmt], every)
+    check(enc.returncode == 0, f"vectors -> {fmt}: encode exit {enc.returncode}: {enc.stderr[:300]}")
+    second = run(DECODE, [], enc.stdout)
+    check(second.returncode == 0, f"vectors -> {fmt}: decode again exit {second.returncode}")
+    again = [json.loads(l) for l in second.stdout.decode().splitlines()]
+    total = sum(len(msgs) for _, msgs in first_out.values())
+    check(len(again) == total, f"vectors -> {fmt}: {len(again)} messages, not {total}")
+    at = 0
+    for name, (_, msgs) in first_out.items():
+        for i, (a, b) in enumerate(zip(msgs, again[at:at + len(msgs)])):
             (va, ta), (vb, tb) = comparable(a, fmt), comparable(b, "")
             check(va == vb, f"{name} -> {fmt} message {i + 1}: {va} != {vb}")
             if ta is not None:
                 check(tb is not None and abs(ta - tb) < 5e-4,
                       f"{name} -> {fmt} message {i + 1}: time {ta} != {tb}")
-    # Same format in and out: every message, interface and time included, is identical.
-    fmt = {"01": "canboat", "02": "candump_log", "03": "candump_log", "04": "yd_raw",
-           "08": "canboat", "09": "candump_log", "10": "yd_raw",
-           "40": "actisense_n2k_ascii",
-           **{str(n): "canboat" for n in range(41, 48)}}.get(name[:2])  # strings
-    if fmt:
-        enc = run(ENCODE, ["--output", fmt], first.stdout)
-        second = run(DECODE, [], enc.stdout)
-        again = [json.loads(l) for l in second.stdout.decode().splitlines()]
-        check(again == msgs, f"{name} -> {fmt} -> decode: not identical")
+        at += len(msgs)
+
+# Same format in and out: every message, interface and time included, is identical (the vectors
+# of one format at once).
+same = {"01": "canboat", "02": "candump_log", "03": "candump_log", "04": "yd_raw",
+        "08": "canboat", "09": "candump_log", "10": "yd_raw", "40": "actisense_n2k_ascii",
+        **{str(n): "canboat" for n in range(41, 48)}}  # strings
+for fmt in sorted(set(same.values())):
+    names = [name for name in first_out if same.get(name[:2]) == fmt]
+    msgs = [m for name in names for m in first_out[name][1]]
+    enc = run(ENCODE, ["--output", fmt], b"".join(first_out[name][0] for name in names))
+    second = run(DECODE, [], enc.stdout)
+    again = [json.loads(l) for l in second.stdout.decode().splitlines()]
+    check(again == msgs, f"{', '.join(names)} -> {fmt} -> decode: not identical")
 
 # Strings (vectors 41-47): the bytes. decode -> encode -> decode -> encode writes the same bytes
 # as the first encode (a text encodes one way), and those are the sender's own bytes where it
