@@ -53,13 +53,13 @@ inline constexpr nmea::parse_policy output_policy = input_policy;
 /// Decode one line as the INS would. Sentences it does not take come back as unknown_sentence,
 /// not as an error.
 template <int N = 0>
-[[nodiscard]] constexpr result<nmea_inputs::variant> decode_input(
+[[nodiscard]] constexpr result<typename nmea::lazy<nmea_inputs, N>::variant> decode_input(
     std::string_view line, const nmea::parse_policy& policy = input_policy) noexcept {
   return nmea::lazy<nmea_inputs, N>::decode(line, policy);
 }
 /// Decode one line of the INS's output.
 template <int N = 0>
-[[nodiscard]] constexpr result<nmea_outputs::variant> decode_output(
+[[nodiscard]] constexpr result<typename nmea::lazy<nmea_outputs, N>::variant> decode_output(
     std::string_view line, const nmea::parse_policy& policy = output_policy) noexcept {
   return nmea::lazy<nmea_outputs, N>::decode(line, policy);
 }

@@ -314,7 +314,7 @@ using to_vehicle = nmea::message_set<pydep, pydev, pydir, pyclt>;
 /// Payload side: one line from the vehicle. Addresses outside `from_vehicle` (PY*, other
 /// GPS sentences) give unknown_sentence, which views into `line`.
 template <int N = 0>
-[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
+[[nodiscard]] constexpr result<typename nmea::lazy<from_vehicle, N>::variant> decode_from_vehicle(
     std::string_view line, const nmea::parse_policy& policy = payload_policy()) noexcept {
   return nmea::lazy<from_vehicle, N>::decode(line, policy);
 }
@@ -322,7 +322,7 @@ template <int N = 0>
 /// Vehicle side: one command line from a payload. Addresses outside `to_vehicle` give
 /// unknown_sentence, which views into `line`.
 template <int N = 0>
-[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
+[[nodiscard]] constexpr result<typename nmea::lazy<to_vehicle, N>::variant> decode_to_vehicle(
     std::string_view line, const nmea::parse_policy& policy = vehicle_policy()) noexcept {
   return nmea::lazy<to_vehicle, N>::decode(line, policy);
 }

@@ -281,7 +281,7 @@ inline constexpr report_type report_type_of = report_traits<M>::type;
 /// Decode one line into whichever report it is, under the judges' policy by default. A
 /// well-formed sentence with another address gives unknown_sentence (not an error).
 template <int N = 0>
-[[nodiscard]] constexpr result<reports::variant> decode_report(
+[[nodiscard]] constexpr result<typename nmea::lazy<reports, N>::variant> decode_report(
     std::string_view line, const nmea::parse_policy& policy = judge_policy) noexcept {
   return nmea::lazy<reports, N>::decode(line, policy);
 }

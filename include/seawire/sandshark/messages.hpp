@@ -346,23 +346,23 @@ inline constexpr nmea::parse_policy to_vehicle_policy{
 // The role decoders are templates of nothing so that only a caller compiles them (nmea::lazy).
 /// Decode a line the vehicle sent; an address the set does not know is unknown_sentence.
 template <int N = 0>
-[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
+[[nodiscard]] constexpr result<typename nmea::lazy<from_vehicle, N>::variant> decode_from_vehicle(
     std::string_view line) noexcept {
   return nmea::lazy<from_vehicle, N>::decode(line, from_vehicle_policy);
 }
 template <int N = 0>
-[[nodiscard]] constexpr result<from_vehicle::variant> decode_from_vehicle(
+[[nodiscard]] constexpr result<typename nmea::lazy<from_vehicle, N>::variant> decode_from_vehicle(
     const nmea::sentence_view& s) noexcept {
   return nmea::lazy<from_vehicle, N>::decode(s, from_vehicle_policy);
 }
 /// Decode a line the payload sent.
 template <int N = 0>
-[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
+[[nodiscard]] constexpr result<typename nmea::lazy<to_vehicle, N>::variant> decode_to_vehicle(
     std::string_view line) noexcept {
   return nmea::lazy<to_vehicle, N>::decode(line, to_vehicle_policy);
 }
 template <int N = 0>
-[[nodiscard]] constexpr result<to_vehicle::variant> decode_to_vehicle(
+[[nodiscard]] constexpr result<typename nmea::lazy<to_vehicle, N>::variant> decode_to_vehicle(
     const nmea::sentence_view& s) noexcept {
   return nmea::lazy<to_vehicle, N>::decode(s, to_vehicle_policy);
 }
