@@ -478,9 +478,11 @@ struct append_unique<message_set<A...>, M, Rest...> {
 
 /// `lazy<T, N>` is `T` (a message set, a message, an enum), named so that it depends on `N`. A
 /// role decoder is a function template of nothing (`template <int N = 0>`) whose body calls
-/// `lazy<Set, N>::decode`: the set's decoder is then compiled only where the role decoder is
-/// called. (A call that does not depend on a template parameter is compiled where the header is
-/// read: Clang instantiates the constexpr functions a template definition names at once.) The
+/// `lazy<Set, N>::decode` and whose return type is `result<typename lazy<Set, N>::variant>`: the
+/// set's decoder and variant are then compiled only where the role decoder is called. (What does
+/// not depend on a template parameter is compiled where the header is read: Clang instantiates
+/// the constexpr functions a template definition names, and the types its signature names, at
+/// once.) The
 /// RobotX scheduler and validator and the Sandshark sessions name their messages the same way.
 template <class Set, int>
 struct lazy_set {
