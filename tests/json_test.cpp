@@ -311,6 +311,113 @@ TEST_CASE("json_buffer reports overflow") {
   CHECK(b.view() == "{}");
 }
 
+namespace {
+// A sink that lends its own storage (room/commit) when `lend` is set and refuses when not, so that
+// numbers written in place can be held to the same text as numbers put through a copy.
+struct lending_sink {
+  std::string s;
+  bool lend = true;
+  std::size_t lent_at = 0;
+  std::size_t lent = 0;
+  char* room(std::size_t n) {
+    if (!lend) return nullptr;
+    lent_at = s.size();
+    lent = n;
+    s.resize(lent_at + n, '#');
+    return s.data() + lent_at;
+  }
+  void commit(std::size_t k) {
+    REQUIRE(k <= lent);
+    s.resize(lent_at + k);
+    lent = 0;
+  }
+  void put(char c) { s += c; }
+  void put(std::string_view v) { s += v; }
+};
+static_assert(seawire::detail::sink_with_room<lending_sink>);
+static_assert(seawire::detail::sink_with_room<json_buffer<8>>);
+static_assert(!seawire::detail::sink_with_room<string_sink>);
+
+// v's JSON written into a sink that lends its storage, one that refuses to, one that has none,
+// and a json_buffer: the four must be the same text, which is returned.
+template <class T>
+std::string json_every_way(const T& v) {
+  lending_sink lends;
+  lending_sink refuses;
+  refuses.lend = false;
+  string_sink plain;
+  json_buffer<256> buffer;
+  write_json_value(lends, v);
+  write_json_value(refuses, v);
+  write_json_value(plain, v);
+  write_json_value(buffer, v);
+  CHECK(lends.s == plain.s);
+  CHECK(refuses.s == plain.s);
+  CHECK(buffer.view() == plain.s);
+  CHECK_FALSE(buffer.overflow());
+  return plain.s;
+}
+
+constexpr std::string_view decimal_in_buffer() {
+  json_buffer<64> b;
+  decimal d;
+  d.mantissa = 123456;
+  d.places = 3;
+  d.negative = true;
+  write_json_value(b, d);
+  write_json_value(b, time_of_day{16, 49, 59, 980, 3});
+  return b.view() == R"(-123.456"16:49:59.980")" ? "ok" : "differs";
+}
+}  // namespace
+
+TEST_CASE("numbers, times and dates are the same text written in a sink's storage or copied") {
+  static_assert(decimal_in_buffer() == "ok");  // in place, at compile time too
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 3000; ++i) {
+    decimal d;
+    const unsigned digits = static_cast<unsigned>(rng() % 21);
+    d.mantissa = digits == 20 ? rng() : rng() % seawire::detail::pow10_table[digits];
+    d.places = static_cast<std::uint8_t>(rng() % 21);  // 20: past the most, null
+    d.negative = rng() % 2 == 0;
+    const std::string text = json_every_way(d);
+    if (d.places > seawire::detail::max_fraction_digits) {
+      CHECK(text == "null");
+    } else {
+      CHECK(text.size() <= seawire::detail::max_fixed_chars);
+    }
+    const auto whole = static_cast<std::int64_t>(rng());
+    std::string expected = std::to_string(whole);
+    CHECK(json_every_way(whole) == expected);
+  }
+  CHECK(json_every_way(decimal{}) == "0");
+  CHECK(json_every_way(std::numeric_limits<std::uint64_t>::max()) == "18446744073709551615");
+  CHECK(json_every_way(std::numeric_limits<std::int64_t>::min()) == "-9223372036854775808");
+  CHECK(json_every_way(time_of_day{16, 49, 59, 980, 3}) == R"("16:49:59.980")");
+  CHECK(json_every_way(time_of_day{0, 0, 0}) == R"("00:00:00")");
+  CHECK(json_every_way(time_of_day{23, 59, 60, 5, 2}) == R"("23:59:60.05")");
+  // Parts no decoder makes (a struct filled by hand) are written whole, not cut to two digits.
+  CHECK(json_every_way(time_of_day{200, 7, 100, 12345, 2}) == R"("200:07:100.12345")");
+  CHECK(json_every_way(time_of_day{1, 2, 3, 7, 19}) == R"("01:02:03.0000000000000000007")");
+  CHECK(json_every_way(date{2014, 12, 31}) == R"("2014-12-31")");
+  CHECK(json_every_way(date{7, 1, 2}) == R"("0007-01-02")");
+  CHECK(json_every_way(date{12345, 123, 200}) == R"("12345-123-200")");
+}
+
+TEST_CASE("json_buffer near its end: numbers that do not fit are cut and the overflow kept") {
+  decimal d;
+  d.mantissa = 123456789;
+  d.places = 4;  // "12345.6789", 10 characters
+  json_buffer<50> b;
+  for (int i = 0; i < 4; ++i) {
+    write_json_value(b, d);
+    b.put(',');
+  }
+  CHECK_FALSE(b.overflow());  // 44 of 50: the next number no longer has a whole lent block
+  write_json_value(b, d);
+  CHECK(b.overflow());
+  CHECK(b.view() == "12345.6789,12345.6789,12345.6789,12345.6789,12345.");
+}
+
 TEST_CASE("from_decimal_degrees inverts to_decimal_degrees exactly") {
   std::mt19937_64 rng(7);
   for (unsigned p = 1; p <= 12; ++p) {

@@ -4,11 +4,14 @@
 
 #include <array>
 #include <bit>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <string_view>
 #include <type_traits>
+
+#include "seawire/detail/inline.hpp"
 
 namespace seawire::detail {
 
@@ -180,11 +183,37 @@ constexpr std::size_t append_uint(char* out, std::size_t at, std::uint64_t v,
   return append_fixed(out, at, v, 0, integer_digits(v, 0, min_digits, max_padded_digits));
 }
 
+/// A sink that lends its own storage: `room(n)` is where n bytes may be written (nullptr when it
+/// has not that much), `commit(k)` keeps the first k of them. Numbers are then written where
+/// they go, not built on the stack and copied.
+template <class Sink>
+concept sink_with_room = requires(Sink& s, std::size_t n) {
+  { s.room(n) } -> std::same_as<char*>;
+  s.commit(n);
+};
+
+/// The text `make(out)` writes at `out` (at most Most bytes; it returns how many) into `s`: in
+/// the sink's own storage when it lends it, through a buffer on the stack otherwise.
+template <std::size_t Most, class Sink, class Make>
+SEAWIRE_ALWAYS_INLINE constexpr void put_made(Sink& s, Make&& make) noexcept {
+  char tmp[Most];
+  char* out = tmp;
+  if constexpr (sink_with_room<Sink>) {
+    if (char* const room = s.room(Most)) out = room;
+  }
+  const std::size_t n = make(out);  // one call, so that `make` is inlined
+  if (out != tmp) {
+    if constexpr (sink_with_room<Sink>) s.commit(n);
+  } else {
+    s.put(std::string_view(tmp, n));
+  }
+}
+
 /// The same into any sink with put(std::string_view).
 template <class Sink>
 constexpr void put_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noexcept {
-  char tmp[max_padded_digits];
-  s.put(std::string_view(tmp, append_uint(tmp, 0, v, min_digits)));
+  put_made<max_padded_digits>(
+      s, [&](char* out) SEAWIRE_INLINE_LAMBDA { return append_uint(out, 0, v, min_digits); });
 }
 
 /// Most integer digits a fixed-point number is written with: a 64-bit value's 20, which is also
@@ -199,11 +228,12 @@ inline constexpr std::size_t max_fixed_chars = 1 + max_integer_digits + 1 + max_
 /// put(std::string_view), as append_fixed writes it with no padding, `-` first when `negative`.
 template <class Sink>
 constexpr void put_fixed(Sink& s, std::uint64_t scaled, unsigned places, bool negative) noexcept {
-  char tmp[max_fixed_chars];
-  std::size_t n = 0;
-  if (negative) tmp[n++] = '-';
-  n = append_fixed(tmp, n, scaled, places, integer_digits(scaled, places, 1, max_integer_digits));
-  s.put(std::string_view(tmp, n));
+  put_made<max_fixed_chars>(s, [&](char* out) SEAWIRE_INLINE_LAMBDA {
+    std::size_t n = 0;
+    if (negative) out[n++] = '-';
+    return append_fixed(out, n, scaled, places,
+                        integer_digits(scaled, places, 1, max_integer_digits));
+  });
 }
 
 // ---------------------------------------------------------------------------------------------

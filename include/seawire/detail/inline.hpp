@@ -4,6 +4,8 @@
 // must be inlined where a field table is walked, so options are constants, absent checks compile
 // away and the reader stays in registers (GCC -O2 keeps them out of line otherwise).
 // SEAWIRE_NOINLINE keeps rare paths out; SEAWIRE_FLATTEN inlines the framer's next() whole.
+// SEAWIRE_INLINE_LAMBDA, after a lambda's parameter list, inlines the lambda where it is called
+// (GCC leaves a lambda of some size out of line even when it has one caller).
 
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE__)
 // Unoptimized builds (debug, sanitizers): forced inlining there only makes huge functions that
@@ -11,16 +13,20 @@
 #define SEAWIRE_ALWAYS_INLINE inline
 #define SEAWIRE_NOINLINE __attribute__((noinline))
 #define SEAWIRE_FLATTEN
+#define SEAWIRE_INLINE_LAMBDA
 #elif defined(__GNUC__) || defined(__clang__)
 #define SEAWIRE_ALWAYS_INLINE __attribute__((always_inline)) inline
 #define SEAWIRE_NOINLINE __attribute__((noinline))
 #define SEAWIRE_FLATTEN __attribute__((flatten))
+#define SEAWIRE_INLINE_LAMBDA __attribute__((always_inline))
 #elif defined(_MSC_VER)
 #define SEAWIRE_ALWAYS_INLINE __forceinline
 #define SEAWIRE_NOINLINE __declspec(noinline)
 #define SEAWIRE_FLATTEN
+#define SEAWIRE_INLINE_LAMBDA
 #else
 #define SEAWIRE_ALWAYS_INLINE inline
 #define SEAWIRE_NOINLINE
 #define SEAWIRE_FLATTEN
+#define SEAWIRE_INLINE_LAMBDA
 #endif

@@ -60,6 +60,12 @@ class json_buffer {
     size_ += n;
     if (n < s.size()) overflow_ = true;
   }
+  /// Where `n` more bytes may be written, or nullptr when fewer are left; commit(k) keeps k of
+  /// them. (Numbers are written there in place; see seawire::detail::sink_with_room.)
+  [[nodiscard]] constexpr char* room(std::size_t n) noexcept {
+    return N - size_ >= n ? data_ + size_ : nullptr;
+  }
+  constexpr void commit(std::size_t k) noexcept { size_ += k; }
   constexpr void clear() noexcept {
     size_ = 0;
     overflow_ = false;
@@ -90,13 +96,19 @@ constexpr void json_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noex
 
 /// A JSON string's content: '"' and '\' escaped, every byte outside printable ASCII as
 /// \u00XX (so a stray byte >= 0x80 in rejected input still makes valid JSON, read as Latin-1).
+inline constexpr std::array<bool, 256> json_escaped = [] {
+  std::array<bool, 256> t{};
+  for (std::size_t c = 0; c < t.size(); ++c) t[c] = c < 0x20 || c >= 0x7F || c == '"' || c == '\\';
+  return t;
+}();
+
 template <json_sink Sink>
 constexpr void json_escape(Sink& s, std::string_view text) noexcept {
   std::size_t run = 0;  // start of the current run of plain characters
   for (std::size_t i = 0; i < text.size(); ++i) {
     const auto c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7F && c != '"' && c != '\\') continue;
-    s.put(text.substr(run, i - run));
+    if (!json_escaped[c]) continue;
+    s.put(std::string_view(text.data() + run, i - run));
     run = i + 1;
     switch (c) {
       case '"': s.put("\\\""); break;
@@ -110,7 +122,7 @@ constexpr void json_escape(Sink& s, std::string_view text) noexcept {
         s.put(seawire::detail::hex_digit_upper(c));
     }
   }
-  s.put(text.substr(run));
+  s.put(std::string_view(text.data() + run, text.size() - run));
 }
 
 template <json_style Style, json_sink Sink>
@@ -144,22 +156,46 @@ struct padded {
 // A date ("2014-12-31") or time ("16:49:59.980"), written at once: three numbers joined by `sep`,
 // then a point and `fraction` when its width is not 0, quoted when `Quoted`.
 template <bool Quoted, json_sink Sink>
-constexpr void json_joined(Sink& s, const std::array<padded, 3>& parts, char sep,
-                           padded fraction = {}) noexcept {
+SEAWIRE_ALWAYS_INLINE constexpr void json_joined(Sink& s, const std::array<padded, 3>& parts,
+                                                 char sep, padded fraction = {}) noexcept {
   constexpr std::size_t most = seawire::detail::max_padded_digits;
-  char tmp[1 + 3 * (most + 1) + 1 + most + 1];
-  std::size_t n = 0;
-  if constexpr (Quoted) tmp[n++] = '"';
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    if (i != 0) tmp[n++] = sep;
-    n = seawire::detail::append_uint(tmp, n, parts[i].value, parts[i].width);
-  }
-  if (fraction.width != 0) {
-    tmp[n++] = '.';
-    n = seawire::detail::append_uint(tmp, n, fraction.value, fraction.width);
-  }
-  if constexpr (Quoted) tmp[n++] = '"';
-  s.put(std::string_view(tmp, n));
+  seawire::detail::put_made<1 + 3 * (most + 1) + 1 + most + 1>(
+      s, [&](char* out) SEAWIRE_INLINE_LAMBDA {
+        std::size_t n = 0;
+        if constexpr (Quoted) out[n++] = '"';
+        // Two digits (a month, an hour) as one pair, four (a year) as two; no loop, so that the
+        // widths, constants where this is inlined, pick the code.
+        const auto part = [&](const padded& p) {
+          if (p.width == 2 && p.value < 100) {
+            seawire::detail::copy_pair(out + n, static_cast<std::size_t>(p.value) * 2);
+            n += 2;
+          } else if (p.width == 4 && p.value < 10'000) {
+            seawire::detail::copy_pair(out + n, static_cast<std::size_t>(p.value / 100) * 2);
+            seawire::detail::copy_pair(out + n + 2, static_cast<std::size_t>(p.value % 100) * 2);
+            n += 4;
+          } else {
+            n = seawire::detail::append_uint(out, n, p.value, p.width);
+          }
+        };
+        part(parts[0]);
+        out[n++] = sep;
+        part(parts[1]);
+        out[n++] = sep;
+        part(parts[2]);
+        if (fraction.width != 0) {
+          out[n++] = '.';
+          if (fraction.width < std::size(seawire::detail::pow10_table) &&
+              fraction.value < seawire::detail::pow10_table[fraction.width]) {  // its own width
+            (void)seawire::detail::write_digits(out + n + fraction.width, fraction.value,
+                                                fraction.width);
+            n += fraction.width;
+          } else {
+            n = seawire::detail::append_uint(out, n, fraction.value, fraction.width);
+          }
+        }
+        if constexpr (Quoted) out[n++] = '"';
+        return n;
+      });
 }
 
 template <class T>
