@@ -156,31 +156,50 @@ inline std::string quote_prefix(std::string_view s, std::size_t n = 64) {
 }
 
 /// A large output buffer in front of a FILE*. put() never fails; flush() reports write errors.
+/// It keeps where the next byte goes and where the buffer ends as pointers, and each put reads
+/// them once: a short piece costs a comparison and its copy.
 class output {
  public:
-  explicit output(std::FILE* f, std::size_t capacity = 1 << 20) : f_(f), buf_(capacity) {}
+  explicit output(std::FILE* f, std::size_t capacity = 1 << 20)
+      : f_(f), buf_(capacity), at_(buf_.data()), end_(buf_.data() + buf_.size()) {}
   output(const output&) = delete;
   output& operator=(const output&) = delete;
   ~output() { flush(); }
 
-  void put(char c) {
-    if (size_ == buf_.size()) flush();
-    buf_[size_++] = c;
+  [[gnu::always_inline]] void put(char c) {
+    char* const at = at_;
+    if (at == end_) [[unlikely]] {
+      put_long(std::string_view(&c, 1));
+      return;
+    }
+    *at = c;
+    at_ = at + 1;
   }
   // Inline for the short pieces JSON is made of (at most 32 bytes, while 32 are free; memcpy of
   // them measured as fast as a hand-made copy); the rest, and every piece near the end of the
   // buffer, goes out of line.
   [[gnu::always_inline]] void put(std::string_view s) {
-    if (s.size() <= 32 && buf_.size() - size_ >= 32) [[likely]] {
-      std::memcpy(buf_.data() + size_, s.data(), s.size());
-      size_ += s.size();
+    char* const at = at_;
+    if (s.size() <= 32 && end_ - at >= 32) [[likely]] {
+      std::memcpy(at, s.data(), s.size());
+      at_ = at + s.size();
       return;
     }
     put_long(s);
   }
+  /// Where `n` more bytes may be written (flushed first if need be; nullptr past the capacity),
+  /// and commit(k) to keep k of them: numbers are written in place (seawire::detail::put_made).
+  [[gnu::always_inline]] char* room(std::size_t n) {
+    if (static_cast<std::size_t>(end_ - at_) < n) [[unlikely]] {
+      flush();
+      if (buf_.size() < n) return nullptr;
+    }
+    return at_;
+  }
+  [[gnu::always_inline]] void commit(std::size_t k) { at_ += k; }
   void flush() {
-    if (size_ > 0) write(buf_.data(), size_);
-    size_ = 0;
+    if (at_ != buf_.data()) write(buf_.data(), static_cast<std::size_t>(at_ - buf_.data()));
+    at_ = buf_.data();
     if (std::fflush(f_) != 0) fail();
   }
   [[nodiscard]] bool failed() const { return failed_; }
@@ -190,15 +209,15 @@ class output {
  private:
   [[gnu::noinline]] void put_long(std::string_view s) {
     if (s.empty()) return;
-    if (s.size() > buf_.size() - size_) {
+    if (s.size() > static_cast<std::size_t>(end_ - at_)) {
       flush();
       if (s.size() > buf_.size()) {
         write(s.data(), s.size());
         return;
       }
     }
-    std::memcpy(buf_.data() + size_, s.data(), s.size());
-    size_ += s.size();
+    std::memcpy(at_, s.data(), s.size());
+    at_ += s.size();
   }
   void write(const char* p, std::size_t n) {
     if (!failed_ && std::fwrite(p, 1, n, f_) != n) fail();
@@ -210,7 +229,8 @@ class output {
 
   std::FILE* f_;
   std::vector<char> buf_;
-  std::size_t size_ = 0;
+  char* at_;   // where the next byte goes
+  char* end_;  // the end of buf_
   bool failed_ = false;
   int error_ = 0;
 };
