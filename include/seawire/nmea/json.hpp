@@ -94,14 +94,15 @@ constexpr void json_uint(Sink& s, std::uint64_t v, unsigned min_digits = 1) noex
   seawire::detail::put_uint(s, v, min_digits);
 }
 
-/// A JSON string's content: '"' and '\' escaped, every byte outside printable ASCII as
-/// \u00XX (so a stray byte >= 0x80 in rejected input still makes valid JSON, read as Latin-1).
+/// json_escaped[c]: whether byte c is escaped in a JSON string.
 inline constexpr std::array<bool, 256> json_escaped = [] {
   std::array<bool, 256> t{};
   for (std::size_t c = 0; c < t.size(); ++c) t[c] = c < 0x20 || c >= 0x7F || c == '"' || c == '\\';
   return t;
 }();
 
+/// A JSON string's content: '"' and '\' escaped, every byte outside printable ASCII as
+/// \u00XX (so a stray byte >= 0x80 in rejected input still makes valid JSON, read as Latin-1).
 template <json_sink Sink>
 constexpr void json_escape(Sink& s, std::string_view text) noexcept {
   std::size_t run = 0;  // start of the current run of plain characters
