@@ -188,7 +188,7 @@ class output {
     put_long(s);
   }
   /// Where `n` more bytes may be written (flushed first if need be; nullptr past the capacity),
-  /// and commit(k) to keep k of them: numbers are written in place (seawire::detail::put_made).
+  /// and commit(k) to keep k of them: the JSON and CSV writers write numbers there in place.
   [[gnu::always_inline]] char* room(std::size_t n) {
     if (static_cast<std::size_t>(end_ - at_) < n) [[unlikely]] {
       flush();
