@@ -320,6 +320,40 @@ TEST_CASE("small padded numbers: writer::put_uint and append_uint against std::t
   }());
 }
 
+// A number that fits its width is written at that width with no digit count; one that does not
+// fit, or a width past 19 digits, takes the counting way. Both against std::to_string padded to
+// the width (at most max_padded_digits), at every width and around every power of ten, and
+// nothing written past the digits.
+TEST_CASE("append_uint at every width and around every power of ten against std::to_string") {
+  constexpr unsigned most = seawire::detail::max_padded_digits;
+  std::vector<std::uint64_t> values = {0, std::numeric_limits<std::uint64_t>::max()};
+  for (std::uint64_t p = 1; p <= 10'000'000'000'000'000'000ULL; p *= 10) {
+    values.insert(values.end(), {p - 1, p, p + 1});
+    if (p > std::numeric_limits<std::uint64_t>::max() / 10) break;
+  }
+  prng g{20261128};
+  for (int i = 0; i < 2000; ++i) values.push_back(g.next() >> g.below(64));
+  for (const std::uint64_t v : values) {
+    for (unsigned width = 0; width <= most + 2; ++width) {
+      std::string want = std::to_string(v);
+      while (want.size() < std::min(width, most)) want.insert(want.begin(), '0');
+      INFO(v << " width " << width);
+      char out[40];
+      std::fill(std::begin(out), std::end(out), 'x');
+      const std::size_t end = seawire::detail::append_uint(out, 3, v, width);
+      REQUIRE(std::string_view(out + 3, end - 3) == want);
+      REQUIRE(std::all_of(out, out + 3, [](char c) { return c == 'x'; }));
+      REQUIRE(std::all_of(out + end, std::end(out), [](char c) { return c == 'x'; }));
+    }
+  }
+  static_assert([] {
+    char out[24]{};
+    const std::size_t end = seawire::detail::append_uint(out, 0, 2026, 4);
+    const std::size_t frac = seawire::detail::append_uint(out, end, 5, 3);
+    return frac == 7 && std::string_view(out, frac) == "2026005";
+  }());
+}
+
 #if SEAWIRE_SIMD
 // The sixteen-lane operations the scans are written in, each against what it means for one
 // byte: every byte value in every lane, with other lanes around it.

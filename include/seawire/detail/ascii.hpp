@@ -174,11 +174,15 @@ inline constexpr unsigned max_padded_digits = 24;
 
 /// The decimal digits of `v` at out + at, at least `min_digits` of them (zero-padded on the
 /// left; at most max_padded_digits); returns where they end.
-constexpr std::size_t append_uint(char* out, std::size_t at, std::uint64_t v,
-                                  unsigned min_digits = 1) noexcept {
-  if (min_digits == 2 && v < 100) {  // the parts of times and dates: one pair, no division
-    copy_pair(out + at, static_cast<std::size_t>(v) * 2);
-    return at + 2;
+///
+/// A number that fits its width (a month in 2 digits, a year in 4, a fraction in its places) is
+/// written at that width with no digit count, as digit pairs: where `min_digits` is a constant
+/// the pairs are unrolled (an hour is one 16-bit store). Inlined, so that the width is one.
+SEAWIRE_ALWAYS_INLINE constexpr std::size_t append_uint(char* out, std::size_t at, std::uint64_t v,
+                                                        unsigned min_digits = 1) noexcept {
+  if (min_digits != 0 && min_digits < std::size(pow10_table) && v < pow10_table[min_digits]) {
+    (void)write_digits(out + at + min_digits, v, min_digits);
+    return at + min_digits;
   }
   return append_fixed(out, at, v, 0, integer_digits(v, 0, min_digits, max_padded_digits));
 }

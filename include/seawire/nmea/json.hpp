@@ -164,35 +164,14 @@ SEAWIRE_ALWAYS_INLINE constexpr void json_joined(Sink& s, const std::array<padde
       s, [&](char* out) SEAWIRE_INLINE_LAMBDA {
         std::size_t n = 0;
         if constexpr (Quoted) out[n++] = '"';
-        // Two digits (a month, an hour) as one pair, four (a year) as two; no loop, so that the
-        // widths, constants where this is inlined, pick the code.
-        const auto part = [&](const padded& p) {
-          if (p.width == 2 && p.value < 100) {
-            seawire::detail::copy_pair(out + n, static_cast<std::size_t>(p.value) * 2);
-            n += 2;
-          } else if (p.width == 4 && p.value < 10'000) {
-            seawire::detail::copy_pair(out + n, static_cast<std::size_t>(p.value / 100) * 2);
-            seawire::detail::copy_pair(out + n + 2, static_cast<std::size_t>(p.value % 100) * 2);
-            n += 4;
-          } else {
-            n = seawire::detail::append_uint(out, n, p.value, p.width);
-          }
-        };
-        part(parts[0]);
+        n = seawire::detail::append_uint(out, n, parts[0].value, parts[0].width);
         out[n++] = sep;
-        part(parts[1]);
+        n = seawire::detail::append_uint(out, n, parts[1].value, parts[1].width);
         out[n++] = sep;
-        part(parts[2]);
+        n = seawire::detail::append_uint(out, n, parts[2].value, parts[2].width);
         if (fraction.width != 0) {
           out[n++] = '.';
-          if (fraction.width < std::size(seawire::detail::pow10_table) &&
-              fraction.value < seawire::detail::pow10_table[fraction.width]) {  // its own width
-            (void)seawire::detail::write_digits(out + n + fraction.width, fraction.value,
-                                                fraction.width);
-            n += fraction.width;
-          } else {
-            n = seawire::detail::append_uint(out, n, fraction.value, fraction.width);
-          }
+          n = seawire::detail::append_uint(out, n, fraction.value, fraction.width);
         }
         if constexpr (Quoted) out[n++] = '"';
         return n;
