@@ -177,7 +177,8 @@ inline constexpr unsigned max_padded_digits = 24;
 ///
 /// A number that fits its width (a month in 2 digits, a year in 4, a fraction in its places) is
 /// written at that width with no digit count, as digit pairs: where `min_digits` is a constant
-/// the pairs are unrolled (an hour is one 16-bit store). Inlined, so that the width is one.
+/// the pairs are unrolled (an hour is one 16-bit store). Forced inline, so that the compiler
+/// sees the width where it is a constant.
 SEAWIRE_ALWAYS_INLINE constexpr std::size_t append_uint(char* out, std::size_t at, std::uint64_t v,
                                                         unsigned min_digits = 1) noexcept {
   if (min_digits != 0 && min_digits < std::size(pow10_table) && v < pow10_table[min_digits]) {
