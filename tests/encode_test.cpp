@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/fields.hpp"
@@ -286,4 +287,21 @@ TEST_CASE("a BFMIS that decodes also encodes: its texts need more than 256 bytes
   // Other messages keep the 256-byte buffer; an explicit size still works.
   static_assert(sizeof(encode(sandshark::bpsts{}).data) == 256);
   CHECK(encode<128>(m).ec == errc::buffer_too_small);
+}
+
+// A program's own function named encode, called without qualification from its namespace on
+// something that names seawire's types: argument-dependent lookup finds nmea::encode too, which
+// must then be no candidate (not a compile error) for what is not a message.
+namespace payload {
+using queue = std::vector<std::variant<unknown_sentence, kingfisher::pydep>>;
+int encode(const queue& q) { return static_cast<int>(q.size()); }
+int send_all(const queue& q) { return encode(q); }  // payload::encode, nmea::encode beside it
+int send_one(const kingfisher::pydep& m) { return static_cast<int>(nmea::encode(m).size); }
+}  // namespace payload
+
+TEST_CASE("a program's own encode beside nmea::encode: what is no message is the program's") {
+  CHECK(payload::send_all(payload::queue(3)) == 3);
+  const kingfisher::pydep m{};
+  CHECK(payload::send_one(m) == static_cast<int>(encode(m).view().size()));
+  CHECK(payload::send_one(m) > 0);
 }

@@ -513,7 +513,7 @@ namespace detail {
 /// The longest sentence encode_to can write for T: '$', the address, a comma and the longest
 /// text of each field (codec max_chars, wider zero padding, ",X" for a unit letter), "*hh\r\n".
 /// 0 when a field's codec does not say how long it can be.
-template <class T>
+template <message_like T>
 [[nodiscard]] consteval std::size_t longest_sentence() noexcept {
   std::size_t n = 1 + T::nmea.address.size() + 5;
   bool known = true;
@@ -537,7 +537,10 @@ template <class T>
 
 /// The buffer encode() gives a message: 256 bytes, or more when its longest sentence needs more
 /// (or its description's buffer_size_at_least says so), so that whatever decodes also encodes.
-template <class T>
+/// Constrained, so that encode(x) for an x that is no message is no candidate (not an error in
+/// this body) wherever a call named encode finds seawire::nmea by argument-dependent lookup:
+/// Clang 14 forms encode's return type before it checks encode's own constraint.
+template <message_like T>
 [[nodiscard]] consteval std::size_t sentence_size() noexcept {
   std::size_t n = longest_sentence<T>() > 256 ? longest_sentence<T>() : 256;
   if (T::nmea.buffer_size > n) n = T::nmea.buffer_size;
