@@ -30,28 +30,31 @@ int run(std::string_view mode, std::string_view what, const sb::family_corpus<Se
 }  // namespace
 
 int run_family_mode(std::string_view mode) {
-  // "sandshark_to_visit": family "sandshark_to", what "visit".
-  const std::size_t cut = mode.rfind('_');
-  if (cut == std::string_view::npos) return -1;
-  const std::string_view family = mode.substr(0, cut);
-  const std::string_view what = mode.substr(cut + 1);
+  // "sandshark_to_split_decode": family "sandshark_to", what "split_decode".
+  std::string_view what;
+  const auto is = [&](std::string_view family) {
+    if (!mode.starts_with(family) || mode.size() <= family.size() + 1 || mode[family.size()] != '_')
+      return false;
+    what = mode.substr(family.size() + 1);
+    return true;
+  };
   // Each corpus is built before collection starts.
-  if (family == "kingfisher_to") {
+  if (is("kingfisher_to")) {
     return run<kingfisher::to_vehicle, kingfisher::vehicle_policy()>(
         mode, what, sb::kingfisher_to_vehicle_corpus(1000));
   }
-  if (family == "sandshark_from") {
+  if (is("sandshark_from")) {
     return run<sandshark::from_vehicle, sandshark::from_vehicle_policy>(
         mode, what, sb::sandshark_from_vehicle_corpus(1000));
   }
-  if (family == "sandshark_to") {
+  if (is("sandshark_to")) {
     return run<sandshark::to_vehicle, sandshark::to_vehicle_policy>(
         mode, what, sb::sandshark_to_vehicle_corpus(1000));
   }
-  if (family == "robotx") {
+  if (is("robotx")) {
     return run<robotx::reports, robotx::judge_policy>(mode, what, sb::robotx_corpus(1000));
   }
-  if (family == "anello") {
+  if (is("anello")) {
     return run<anello::nmea_inputs, anello::input_policy>(mode, what,
                                                           sb::anello_inputs_corpus(1000));
   }

@@ -60,6 +60,22 @@ SEAWIRE_BENCH_LOOP void visit(const sb::corpus& c, sb::sink& s) {
   }
 }
 
+/// parse() of every line, then Set::decode of the sentence it gives, under `Policy`: the general
+/// path, which reads a sentence already split (and any line the one-pass path leaves to it).
+template <class Set, nmea::parse_policy Policy = nmea::parse_policy{}>
+SEAWIRE_BENCH_LOOP void split_decode(const sb::corpus& c, sb::sink& s) {
+  for (int r = 0; r < rounds; ++r) {
+    sb::for_each_line(c.bytes, [&](std::string_view line) {
+      const auto split = nmea::parse(line, Policy);
+      if (split) {
+        const auto d = Set::decode(split.value, Policy);
+        if (d) std::visit([&s](const auto& m) { sb::read_all(s, m); }, d.value);
+      }
+      benchmark::DoNotOptimize(s);
+    });
+  }
+}
+
 /// `write(message, buffer)` for every message of the corpus, `rounds` times.
 template <class Messages, class Write>
 SEAWIRE_BENCH_LOOP void encode_with(const Messages& messages, Write write) {
@@ -80,8 +96,8 @@ void encode(const Messages& messages) {
   });
 }
 
-/// The loop `what` names (baseline, decode, visit or encode) over `c`, read by `Set` under
-/// `Policy`; false, and nothing run, for another word.
+/// The loop `what` names (baseline, decode, visit, split_decode or encode) over `c`, read by `Set`
+/// under `Policy`; false, and nothing run, for another word.
 template <class Set, nmea::parse_policy Policy = nmea::parse_policy{}>
 bool run_loop(std::string_view what, const sb::family_corpus<Set>& c, sb::sink& s) {
   if (what == "baseline") {
@@ -90,6 +106,8 @@ bool run_loop(std::string_view what, const sb::family_corpus<Set>& c, sb::sink& 
     decode<Set, Policy>(c, s);
   } else if (what == "visit") {
     visit<Set, Policy>(c, s);
+  } else if (what == "split_decode") {
+    split_decode<Set, Policy>(c, s);
   } else if (what == "encode") {
     encode(c.messages);
   } else {

@@ -7,16 +7,17 @@
 //   callgrind_annotate cg.out | grep 'PROGRAM TOTALS'     # divide by 10,000 sentences
 //
 // Modes: baseline (frame + checksum + split), decode (message_set -> variant, every field read),
-// visit (message_set::visit of the line, every field read), typed (decode<T>(line) of the type
-// the address names, every field read), encode (encode_to into a stack buffer),
-// reference and reference_encode (the hand-written one-pass RMC/GGA decoder and writer of
-// bench/reference/, every field read); kingfisher_baseline, kingfisher_decode, kingfisher_visit
-// and kingfisher_encode: the same over 1,000 sentences of the Kingfisher's CP* stream (with its
-// RMC and GGA), under the payload's policy. The other families' modes (families.cpp):
-// FAMILY_baseline, FAMILY_decode, FAMILY_visit and FAMILY_encode for FAMILY kingfisher_to (PY*
-// commands), sandshark_from (BF*), sandshark_to (BP*), robotx (RobotX reports) and anello (the
-// ANELLO INS's NMEA inputs), each read by its role's set under its role's policy, as
-// seawire_bench's family rows are.
+// visit (message_set::visit of the line, every field read), split_decode (parse() of the line,
+// then message_set::decode of the sentence_view: the general path, every field read), typed
+// (decode<T>(line) of the type the address names, every field read), encode (encode_to into a stack
+// buffer), reference and reference_encode (the hand-written one-pass RMC/GGA decoder and writer of
+// bench/reference/, every field read); kingfisher_baseline, kingfisher_decode, kingfisher_visit,
+// kingfisher_split_decode and kingfisher_encode: the same over 1,000 sentences of the Kingfisher's
+// CP* stream (with its RMC and GGA), under the payload's policy. The other families' modes
+// (families.cpp): FAMILY_baseline, FAMILY_decode, FAMILY_visit, FAMILY_split_decode and
+// FAMILY_encode for FAMILY kingfisher_to (PY* commands), sandshark_from (BF*), sandshark_to (BP*),
+// robotx (RobotX reports) and anello (the ANELLO INS's NMEA inputs), each read by its role's set
+// under its role's policy, as seawire_bench's family rows are.
 
 #include <valgrind/callgrind.h>
 
@@ -78,9 +79,9 @@ void reference_encode(const Messages& messages) {
 
 int usage(const char* program) {
   std::fprintf(stderr,
-               "usage: %s baseline|decode|visit|typed|encode|reference|reference_encode|"
-               "kingfisher_baseline|kingfisher_decode|kingfisher_visit|kingfisher_encode|"
-               "FAMILY_baseline|FAMILY_decode|FAMILY_visit|FAMILY_encode\n"
+               "usage: %s baseline|decode|visit|split_decode|typed|encode|reference|"
+               "reference_encode|kingfisher_{baseline,decode,visit,split_decode,encode}|"
+               "FAMILY_{baseline,decode,visit,split_decode,encode}\n"
                "  FAMILY: kingfisher_to, sandshark_from, sandshark_to, robotx or anello\n",
                program);
   return 2;

@@ -215,9 +215,8 @@ namespace detail {
 /// caller, which sees the count, does not use it) and moves i past it. With field_end::comma the
 /// byte just past s may be read and is no digit (the ',' after a field in its sentence): that
 /// byte then ends the run, and no digit needs a length test.
-SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t& i,
-                                                 std::uint64_t& m,
-                                                 field_end end = field_end::unknown) noexcept {
+constexpr void read_digits(std::string_view s, std::size_t& i, std::uint64_t& m,
+                           field_end end = field_end::unknown) noexcept {
   const auto digit = [](char c) {
     return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
   };
@@ -276,9 +275,8 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
 /// Parse [sign] digits [. digits] with a receive policy's leniencies: '+' unless strict_values,
 /// spaces around the number with spaced_numbers. No exponent. The policy is consulted only for a
 /// sign or a bad byte. `end`: as for read_digits.
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(
-    std::string_view s, const parse_policy& p, decimal& out,
-    field_end end = field_end::unknown) noexcept {
+[[nodiscard]] constexpr errc parse_decimal(std::string_view s, const parse_policy& p, decimal& out,
+                                           field_end end = field_end::unknown) noexcept {
   std::size_t i = 0;
   const std::size_t n = s.size();
   bool neg = false;
@@ -319,9 +317,8 @@ SEAWIRE_ALWAYS_INLINE constexpr void read_digits(std::string_view s, std::size_t
 
 /// The same with the two leniencies as flags: a '+' only when `liberal`, spaces around the
 /// number only when `spaced` too.
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc parse_decimal(std::string_view s, bool liberal,
-                                                                 decimal& out,
-                                                                 bool spaced = false) noexcept {
+[[nodiscard]] constexpr errc parse_decimal(std::string_view s, bool liberal, decimal& out,
+                                           bool spaced = false) noexcept {
   parse_policy p;
   p.strict_values = !liberal;
   p.spaced_numbers = spaced;
@@ -390,7 +387,7 @@ struct codec<decimal> {
   /// Longest text written: sign, 20 integer digits (padding), point, 19 fraction digits.
   static constexpr std::size_t max_chars = seawire::detail::max_fixed_chars;
   static constexpr bool allows_blank = false;
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, decimal& v) noexcept {
+  static constexpr errc read(field_reader& r, decimal& v) noexcept {
     const std::string_view s = r.take().text;
     return detail::parse_decimal(s, r.policy(), v, r.end_of_field());
   }
@@ -410,7 +407,7 @@ struct codec<I> {
   static constexpr std::size_t max_chars =
       std::numeric_limits<I>::digits10 + 1 + (std::is_signed_v<I> ? 1 : 0);
   static constexpr bool allows_blank = false;
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, I& v) noexcept {
+  static constexpr errc read(field_reader& r, I& v) noexcept {
     decimal d;
     const std::string_view s = r.take().text;
     const errc e = detail::parse_decimal(s, r.policy(), d, r.end_of_field());
@@ -462,7 +459,7 @@ struct codec<bool> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 1;
   static constexpr bool allows_blank = false;
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, bool& v) noexcept {
+  static constexpr errc read(field_reader& r, bool& v) noexcept {
     const std::string_view t = r.take().text;
     if (t.size() != 1 || (t[0] != '0' && t[0] != '1')) [[unlikely]]
       return errc::bad_flag;

@@ -180,7 +180,7 @@ struct codec<E> {
     for (const char c : enum_letters<E>) t[static_cast<unsigned char>(c)] = true;
     return t;
   }();
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {
+  static constexpr errc read(field_reader& r, E& v) noexcept {
     const std::string_view s = r.take().text;
     if (s.size() != 1 || !letters[static_cast<unsigned char>(s[0])]) [[unlikely]]
       return errc::bad_enum;
@@ -210,9 +210,7 @@ struct codec<E> {
     return n;
   }();
   static constexpr bool allows_blank = false;
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, E& v) noexcept {
-    return from_word(r.take().text, v);
-  }
+  static constexpr errc read(field_reader& r, E& v) noexcept { return from_word(r.take().text, v); }
   /// The one-pass reader: the word at `p`, up to the next ',' or `end`.
   SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
                                                           E& v) noexcept {

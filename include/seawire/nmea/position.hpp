@@ -210,20 +210,19 @@ struct codec<nmea_coordinate<Axis>> {
   static constexpr std::size_t max_chars = Axis::width + 2 + 1 + 12 + 2;
   static constexpr bool allows_blank = false;
 
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, value_type& v) noexcept {
+  static constexpr errc read(field_reader& r, value_type& v) noexcept {
     return read_form<false>(r, v);
   }
   /// read(), and also the unpadded form of a sender that prints degrees * 100 + minutes as a
   /// number (number_forms::unpadded_positions): one or two digits before the point are minutes
   /// of zero degrees ("22.2" is 0 deg 22.2 min), kept as written (unpadded set, the minutes'
   /// int_width the digits they had).
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read_unpadded(field_reader& r,
-                                                            value_type& v) noexcept {
+  static constexpr errc read_unpadded(field_reader& r, value_type& v) noexcept {
     return read_form<true>(r, v);
   }
 
   template <bool Unpadded>
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read_form(field_reader& r, value_type& v) noexcept {
+  static constexpr errc read_form(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;
     // One pass. The digits before the point are DDMM: one to Axis::width degree digits and
     // exactly two minute digits. Those after it are the fraction of the minute.
@@ -459,7 +458,7 @@ struct codec<decimal_coordinate<Axis>> {
   static constexpr std::size_t max_chars = codec<decimal>::max_chars + 2;
   static constexpr bool allows_blank = false;
 
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, value_type& v) noexcept {
+  static constexpr errc read(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;
     // Unsigned on the wire: a sign would contradict (or duplicate) the hemisphere letter.
     if (s.empty() || s[0] == '-' || s[0] == '+') [[unlikely]]

@@ -188,7 +188,7 @@ struct codec<time_of_day> {
     return errc::ok;
   }
   template <bool RoundedSeconds>
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read_form(field_reader& r, time_of_day& v) noexcept {
+  static constexpr errc read_form(field_reader& r, time_of_day& v) noexcept {
     const std::string_view s = r.take().text;
     if (s.size() < 6) [[unlikely]]
       return errc::bad_time;
@@ -233,7 +233,7 @@ struct codec<time_of_day> {
     return check_form<RoundedSeconds>(v) == errc::ok ? p : nullptr;
   }
 
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
+  static constexpr errc read(field_reader& r, time_of_day& v) noexcept {
     return read_form<false>(r, v);
   }
   SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
@@ -246,8 +246,7 @@ struct codec<time_of_day> {
     return scan_form<true>(p, end, v);
   }
   /// read(), and second 60 with a fraction of zeros at any minute (number_forms::rounded_seconds).
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read_rounded_seconds(field_reader& r,
-                                                                   time_of_day& v) noexcept {
+  static constexpr errc read_rounded_seconds(field_reader& r, time_of_day& v) noexcept {
     return read_form<true>(r, v);
   }
   SEAWIRE_ALWAYS_INLINE static constexpr errc check(const time_of_day& v) noexcept {
@@ -269,7 +268,7 @@ struct codec<date> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 6;
   static constexpr bool allows_blank = false;
-  SEAWIRE_ALWAYS_INLINE static constexpr errc read(field_reader& r, date& v) noexcept {
+  static constexpr errc read(field_reader& r, date& v) noexcept {
     const std::string_view s = r.take().text;
     if (s.size() != 6) [[unlikely]]
       return errc::bad_date;
