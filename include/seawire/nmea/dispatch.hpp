@@ -421,14 +421,14 @@ struct message_set {
   template <class M>
   static constexpr void assign(result<variant>& out, const sentence_view& s,
                                const parse_policy& p) noexcept {
-    detail::decode_into(s, p, out.value.template emplace<M>(), out);
+    detail::decode_into(s, p, out.value.template emplace<M>()).copy_to(out);
     if (!out) out.value.template emplace<unknown_sentence>(unknown_sentence{s});
   }
   template <class M, class F>
   static constexpr void visit_one(result<bool>& out, const sentence_view& s, const parse_policy& p,
                                   F& on_message) {
     with_storage<M>([&](M& m) {
-      detail::decode_into(s, p, m, out);
+      detail::decode_into(s, p, m).copy_to(out);
       out.value = true;
       if (out) on_message(static_cast<const M&>(m));
     });

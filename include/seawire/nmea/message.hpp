@@ -281,23 +281,35 @@ template <message_like T>
   }
 }
 
+/// How decoding into a message went: the errc, and the field and column it names (as result<>
+/// has them). One type for every caller, so that decode_into is one function per message, not
+/// one per message and result type (decode<T>, each message_set's decode, visit).
+struct decode_status {
+  errc ec = errc::ok;
+  std::uint16_t field = 0;
+  std::uint16_t column = 0;
+
+  [[nodiscard]] constexpr explicit operator bool() const noexcept { return ec == errc::ok; }
+  /// The errc, field and column into a result<> of any value type.
+  template <class R>
+  constexpr void copy_to(R& r) const noexcept {
+    r.ec = ec;
+    r.field = field;
+    r.column = column;
+  }
+};
+
 /// decode<T>() into `msg`, a default-constructed T the caller owns (the value of a result, the
-/// alternative of a variant), so that no finished message is ever copied; the errc, field and
-/// column go to `status` (any result<>). On error `msg` holds what was read before it.
-template <message_like T, class Status>
-constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T& msg,
-                           Status& status) noexcept {
+/// alternative of a variant), so that no finished message is ever copied. On error `msg` holds
+/// what was read before it.
+template <message_like T>
+[[nodiscard]] constexpr decode_status decode_into(const sentence_view& s,
+                                                  const parse_policy& policy, T& msg) noexcept {
   static_assert(!keeps_wire_fields<T> || !has_both_optional_kinds<T>(),
                 "wire_fields_in: fields of only the longer form and fields left out at the end in "
                 "one message are not supported");
-  status.ec = errc::ok;
-  status.field = 0;
-  status.column = 0;
   // Messages are '$' sentences: a '!' one (!AIVDM) is not the message, whatever its address.
-  if (s.start != '$' || !T::nmea.matches(s.address)) {
-    status.ec = errc::wrong_address;
-    return;
-  }
+  if (s.start != '$' || !T::nmea.matches(s.address)) return {errc::wrong_address, 0, 0};
   if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
     (void)talker_of(msg).assign(std::string_view(s.address.data(), 2));  // matched "--XXX"
   }
@@ -308,21 +320,16 @@ constexpr void decode_into(const sentence_view& s, const parse_policy& policy, T
     (void)r.take();
     e = errc::too_many_fields;
   }
-  if (e != errc::ok) {
-    status.ec = e;
-    status.field = r.index();
-    status.column = r.column();
-    return;
-  }
+  if (e != errc::ok) return {e, r.index(), r.column()};
   if constexpr (lists_field_counts<T>) {
     // Strict: a count between the standard forms is a sentence cut short; the first field
     // missing is named.
     if (policy.strict_values && !listed_field_count<T>(s.field_count)) [[unlikely]] {
-      status.ec = errc::too_few_fields;
-      status.field = static_cast<decltype(status.field)>(s.field_count + 1);
-      status.column = static_cast<decltype(status.column)>(s.body_column() + s.body.size());
+      return {errc::too_few_fields, static_cast<std::uint16_t>(s.field_count + 1),
+              static_cast<std::uint16_t>(s.body_column() + s.body.size())};
     }
   }
+  return {};
 }
 
 }  // namespace detail
@@ -333,7 +340,7 @@ template <message_like T>
 [[nodiscard]] constexpr result<T> decode(const sentence_view& s,
                                          const parse_policy& policy = {}) noexcept {
   result<T> out;
-  detail::decode_into(s, policy, out.value, out);
+  detail::decode_into(s, policy, out.value).copy_to(out);
   if (!out) out.value = T{};
   return out;
 }
