@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -268,6 +269,25 @@ TEST_CASE("encode() holds every sentence that decodes") {
   CHECK(sizeof e.data >= 297);  // the longest CPIMU: 6 numbers of 41 characters, 2 times of 16
   // Messages that cannot be long keep the 256-byte buffer.
   CHECK(sizeof encode(kingfisher::pydir{}).data == 256);
+}
+
+TEST_CASE("encode_to fits the sentence into a buffer of its size, and into none smaller") {
+  // Every size from empty to a few bytes past the sentence, the trailer ("*hh\r\n") cut at each
+  // of its bytes among them: below the sentence's length nothing is reported written.
+  const std::string line = "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
+  const auto r = decode<standard::gga>(line);
+  REQUIRE(r);
+  for (std::size_t n = 0; n <= line.size() + 3; ++n) {
+    std::vector<char> out(n, '#');
+    const auto w = encode_to(r.value, std::span<char>(out));
+    INFO("buffer of " << n << " bytes");
+    if (n < line.size()) {
+      CHECK(w.ec == errc::buffer_too_small);
+    } else {
+      REQUIRE(w);
+      CHECK(std::string_view(out.data(), w.value) == line);
+    }
+  }
 }
 
 TEST_CASE("a BFMIS that decodes also encodes: its texts need more than 256 bytes") {

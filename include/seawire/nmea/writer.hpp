@@ -97,11 +97,18 @@ class writer {
   constexpr result<std::size_t> seal() noexcept {
     const std::uint8_t x =
         failed_ || size_ == 0 ? 0 : checksum(std::string_view(out_.data() + 1, size_ - 1));
-    put('*');
-    put(seawire::detail::hex_digit_upper(x >> 4u));
-    put(seawire::detail::hex_digit_upper(x));
-    put('\r');
-    put('\n');
+    // "*hh\r\n" after one check of the room left.
+    if (out_.size() - size_ >= 5) {
+      char* const p = out_.data() + size_;
+      p[0] = '*';
+      p[1] = seawire::detail::hex_digit_upper(x >> 4u);
+      p[2] = seawire::detail::hex_digit_upper(x);
+      p[3] = '\r';
+      p[4] = '\n';
+      size_ += 5;
+    } else {
+      failed_ = true;
+    }
     result<std::size_t> r;
     if (failed_) {
       r.ec = errc::buffer_too_small;
