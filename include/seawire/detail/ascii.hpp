@@ -124,8 +124,21 @@ constexpr void copy_pair(char* out, std::size_t pair) noexcept {
 }
 
 /// Writes the last `count` decimal digits of `v` (zero-padded) ending just before `end`, two at a
-/// time, dividing only by constants; returns what is left of v (v / 10^count).
+/// time, dividing only by constants; returns what is left of v (v / 10^count). One or two digits
+/// (most fractions and integer parts written) without the loop, whose set-up costs more than
+/// they do.
 constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count) noexcept {
+  if (count <= 2) {
+    if (count == 2) {
+      copy_pair(end - 2, static_cast<std::size_t>(v % 100) * 2);
+      return v / 100;
+    }
+    if (count == 1) {
+      end[-1] = static_cast<char>('0' + v % 10);
+      return v / 10;
+    }
+    return v;
+  }
   for (; count >= 2; count -= 2) {
     const auto pair = static_cast<std::size_t>(v % 100) * 2;
     v /= 100;
