@@ -289,7 +289,6 @@ struct decode_status {
   std::uint16_t field = 0;
   std::uint16_t column = 0;
 
-  [[nodiscard]] constexpr explicit operator bool() const noexcept { return ec == errc::ok; }
   /// The errc, field and column into a result<> of any value type.
   template <class R>
   constexpr void copy_to(R& r) const noexcept {
