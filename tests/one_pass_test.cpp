@@ -296,3 +296,29 @@ TEST_CASE("one pass: the plain form is read in constant evaluation too") {
   REQUIRE(at_run_time.ok());
   CHECK(at_run_time.value == r.value);
 }
+
+TEST_CASE("one pass: a field is scanned first where its scanner refuses a blank one") {
+  using nmea::detail::scans_no_blank;
+  static_assert(scans_no_blank<standard::rmc, nmea::time_of_day>);
+  static_assert(scans_no_blank<standard::rmc, nmea::date>);
+  static_assert(scans_no_blank<standard::rmc, nmea::decimal>);
+  static_assert(scans_no_blank<standard::gga, nmea::latitude>);
+  static_assert(scans_no_blank<standard::gga, nmea::longitude>);
+  static_assert(scans_no_blank<standard::gga, std::uint8_t>);
+  // A variation's scanner reads a letter without its number; text's blank is the empty text.
+  static_assert(!scans_no_blank<standard::rmc, nmea::magnetic_variation>);
+  static_assert(!scans_no_blank<standard::rmc, nmea::text<8>>);
+  // Blank fields of those types, at the body's end and before others, read in one pass.
+  for (const std::string_view text : {
+           "$GPRMC,,V,,,,,,,,,,N",
+           "$GPRMC,123519,A,4807.038,N,01131.000,E,,,230394,,",
+           "$GPRMC,123519,A,4807.038,N,01131.000,E,022.4,084.4,,003.1,W",
+           "$GPGGA,123519,,,,,0,,,,,,,,",
+           "$GPGGA,123519,4807.038,N,01131.000,E,1,08,0.9,,M,,M,,",
+       }) {
+    const std::string line = sealed(text);
+    INFO(line);
+    CHECK(read_in_one_pass(line));
+    for (const nmea::parse_policy& p : policies()) CHECK(disagreements(line, p) == 0);
+  }
+}

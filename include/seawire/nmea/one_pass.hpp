@@ -13,6 +13,7 @@
 // field the general path would pass over without reading), so what it accepts the general path
 // reads to the same value under any parse_policy. Tests and a fuzzer hold the two paths to that.
 
+#include <array>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -32,7 +33,8 @@
 namespace seawire::nmea::detail {
 
 /// A codec with a one-pass reader: `scan(p, end, v)` reads the value whose first wire field
-/// starts at `p` (not blank) and returns the byte after its last one, or nullptr to give up.
+/// starts at `p` and returns the byte after its last one, or nullptr to give up. `p` is at a
+/// blank field only where the scanner refuses one (scans_no_blank).
 /// `end` is the body's end, the '*' of "*hh": the three bytes from it may be read, nothing after.
 template <class V>
 concept one_pass_codec = requires(const char* p, V& v) {
@@ -126,12 +128,13 @@ struct plain_cursor {
 /// `q` is not a field's end.
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr bool next_plain_field(plain_cursor& c,
                                                                     const char* q) noexcept {
-  if (q == c.end) {
-    c.done = true;
+  // `end` is the '*' of "*hh", no ','; the commoner case first.
+  if (*q == ',') [[likely]] {
+    c.p = q + 1;
     return true;
   }
-  c.p = q + 1;
-  return *q == ',';
+  c.done = q == c.end;
+  return c.done;
 }
 
 /// The unit letter's field after a value: blank or the letter; absent only after no value.
@@ -197,6 +200,49 @@ template <class V>
   }
 }
 
+/// Whether T's scanner of V refuses a field that holds nothing at its first byte, whatever
+/// follows: then a field is scanned first, and tested for a blank only where the scanner refuses
+/// it (most fields hold a value). Checked by running the scanner on a blank field at the body's
+/// end and before each of the fields a more lenient scanner would take (a letter, digits, a
+/// position); false for a codec whose blank is a value (text) or whose scanner takes a blank
+/// first field (a variation: a letter without its number).
+template <class T, class V>
+inline constexpr bool scans_no_blank = [] {
+  if constexpr (!one_pass_codec<V> || codec<V>::allows_blank) {
+    return false;
+  } else {
+    // What follows the blank field, one case per line: each is tried up to its "*hh".
+    constexpr std::string_view cases =
+        "\n,\n,0\n,1\n,A\n,E\n,N\n,S\n,W\n,V,\n,1.5\n,0,N,\n,12345\n,123456.00,010203\n"
+        ",1234.5678,N,12345.6789,E,123456.00\n";
+    for (std::size_t at = 0; at < cases.size();) {
+      const std::size_t eol = cases.find('\n', at);
+      std::array<char, 48> line{};  // the blank field, what follows it, then "*00"
+      std::size_t n = 0;
+      for (const char ch : cases.substr(at, eol - at)) line[n++] = ch;
+      const char* const end = line.data() + n;
+      line[n] = '*';
+      line[n + 1] = line[n + 2] = '0';
+      V v{};
+      if (scan_value<T>(line.data(), end, v, parse_policy{}) != nullptr) return false;
+      at = eol + 1;
+    }
+    return true;
+  }
+}();
+
+/// An optional field's value, scanned up to `q`: the field's rules checked, then on past its
+/// unit letter.
+template <class T, class V>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr bool plain_value(plain_cursor& c, const char* q,
+                                                               T& msg, const V& v,
+                                                               const field_options& o) noexcept {
+  if constexpr (keeps_wire_fields<T>) {
+    if (o.may_be_absent) msg.*T::nmea.wire_fields_member = 0;
+  }
+  return check_options(v, o) == errc::ok && next_plain_field(c, q) && plain_unit(c, o, true);
+}
+
 /// Field I of the description, as read_field() reads it, for the plain form only.
 template <std::size_t I, class F, class T>
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr bool plain_field(
@@ -214,7 +260,13 @@ template <std::size_t I, class F, class T>
       clear_optional(m);
       return true;
     }
-    if (const char* q = plain_nothing<V>(c); q != nullptr) {
+    const char* q = nullptr;
+    if constexpr (scans_no_blank<T, V>) {
+      q = scan_value<T>(c.p, c.end, m.emplace(), policy);
+      if (q != nullptr) [[likely]]
+        return plain_value(c, q, msg, *m, o);
+    }
+    if (q = plain_nothing<V>(c); q != nullptr) {
       if constexpr (keeps_wire_fields<T>) {
         if (o.may_be_absent) return false;  // the blank's field count is kept: general path
         if (o.only_with_field_count != 0)
@@ -231,16 +283,18 @@ template <std::size_t I, class F, class T>
       }
       return plain_unit(c, o, false);
     }
-    if constexpr (keeps_wire_fields<T>) {
-      if (o.may_be_absent) msg.*T::nmea.wire_fields_member = 0;
+    if constexpr (scans_no_blank<T, V>) {
+      return false;  // neither a value nor nothing: the general path says what it is
+    } else {
+      q = scan_value<T>(c.p, c.end, m.emplace(), policy);
+      return q != nullptr && plain_value(c, q, msg, *m, o);
     }
-    const char* const q = scan_value<T>(c.p, c.end, m.emplace(), policy);
-    return q != nullptr && check_options(*m, o) == errc::ok && next_plain_field(c, q) &&
-           plain_unit(c, o, true);
   } else {
     if (c.done) return false;
-    if (!codec<V>::allows_blank || o.min_length > 0) {
-      if (c.p == c.end || *c.p == ',') return false;
+    if constexpr (!scans_no_blank<T, V>) {
+      if (!codec<V>::allows_blank || o.min_length > 0) {
+        if (c.p == c.end || *c.p == ',') return false;
+      }
     }
     const char* const q = scan_value<T>(c.p, c.end, m, policy);
     return q != nullptr && check_options(m, o) == errc::ok && next_plain_field(c, q) &&
@@ -278,7 +332,8 @@ template <class T>
     if (policy.strict_values) return false;  // the count is checked against the list: general
   }
   if constexpr (std::remove_cvref_t<decltype(T::nmea)>::any_talker) {
-    (void)talker_of(msg).assign(l.address.substr(0, 2));
+    // The address is T's, "--XXX": two bytes, a copy of constant size.
+    (void)talker_of(msg).assign(std::string_view(l.address.data(), 2));
   }
   plain_cursor c{l.body, l.end};
   if constexpr (counts_plain_fields<T>) {
@@ -287,7 +342,7 @@ template <class T>
     c.fields = static_cast<std::uint16_t>(commas + 1);
   }
   constexpr std::size_t n = std::remove_cvref_t<decltype(T::nmea.fields)>::size;
-  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) SEAWIRE_INLINE_LAMBDA {
     return (plain_field<I>(field_at<I>(T::nmea.fields), c, msg, policy) && ...);
   }
   (std::make_index_sequence<n>{}) && c.done;
