@@ -105,8 +105,9 @@ void check_set(std::string_view name, support::prng& g) {
   }
 }
 
-// Eight messages or more, so that the table is used; addresses that only differ past their
-// eighth byte, and an exact address that an any-talker one also matches.
+// Sixteen messages or more, so that the table is used (nmea::detail::dispatch_by_table_from);
+// addresses that only differ past their eighth byte, and an exact address that an any-talker
+// one also matches.
 template <seawire::detail::fixed_string A>
 struct msg {
   std::uint16_t n = 0;
@@ -120,13 +121,18 @@ struct any_talker_msg {
       sentence<A>(field<&any_talker_msg::n>("n")).template talker_in<&any_talker_msg::talker>();
 };
 
-using exact_first = message_set<msg<"GPXYZ">, any_talker_msg<"--XYZ">, msg<"AAAAA">, msg<"AAAAB">,
-                                msg<"AAAAC">, msg<"AAAAD">, msg<"AAAAE">, msg<"AAAAF">>;
-using talker_first = message_set<any_talker_msg<"--XYZ">, msg<"GPXYZ">, msg<"AAAAA">, msg<"AAAAB">,
-                                 msg<"AAAAC">, msg<"AAAAD">, msg<"AAAAE">, msg<"AAAAF">>;
-using long_alike =
-    message_set<msg<"PLONGADDR1">, msg<"PLONGADDR2">, msg<"PLONGADDRX">, msg<"AAAAA">, msg<"AAAAB">,
-                msg<"AAAAC">, msg<"AAAAD">, msg<"AAAAE">, msg<"PLONGADDRESS">>;
+// The two messages given, then fourteen more (a long address, and an any-talker one among them).
+template <class... First>
+using with_fourteen_more =
+    message_set<First..., msg<"AAAAA">, msg<"AAAAB">, msg<"AAAAC">, msg<"AAAAD">, msg<"AAAAE">,
+                msg<"AAAAF">, msg<"AAAAG">, msg<"AAAAH">, msg<"AAAAI">, msg<"AAAAJ">, msg<"AAAAK">,
+                msg<"AAAAL">, any_talker_msg<"--AAM">, msg<"PLONGADDRESS">>;
+using exact_first = with_fourteen_more<msg<"GPXYZ">, any_talker_msg<"--XYZ">>;
+using talker_first = with_fourteen_more<any_talker_msg<"--XYZ">, msg<"GPXYZ">>;
+using long_alike = with_fourteen_more<msg<"PLONGADDR1">, msg<"PLONGADDR2">, msg<"PLONGADDRX">>;
+static_assert(exact_first::size >= seawire::nmea::detail::dispatch_by_table_from &&
+              talker_first::size >= seawire::nmea::detail::dispatch_by_table_from &&
+              long_alike::size >= seawire::nmea::detail::dispatch_by_table_from);
 
 }  // namespace
 
