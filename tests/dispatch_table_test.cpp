@@ -121,12 +121,13 @@ struct any_talker_msg {
       sentence<A>(field<&any_talker_msg::n>("n")).template talker_in<&any_talker_msg::talker>();
 };
 
-// The two messages given, then fourteen more (a long address, and an any-talker one among them).
+// The two messages given, then fourteen more (among them any-talker addresses, one of them longer
+// than eight bytes, and a long exact one).
 template <class... First>
 using with_fourteen_more =
     message_set<First..., msg<"AAAAA">, msg<"AAAAB">, msg<"AAAAC">, msg<"AAAAD">, msg<"AAAAE">,
                 msg<"AAAAF">, msg<"AAAAG">, msg<"AAAAH">, msg<"AAAAI">, msg<"AAAAJ">, msg<"AAAAK">,
-                msg<"AAAAL">, any_talker_msg<"--AAM">, msg<"PLONGADDRESS">>;
+                any_talker_msg<"--LONGADDR">, any_talker_msg<"--AAM">, msg<"PLONGADDRESS">>;
 using exact_first = with_fourteen_more<msg<"GPXYZ">, any_talker_msg<"--XYZ">>;
 using talker_first = with_fourteen_more<any_talker_msg<"--XYZ">, msg<"GPXYZ">>;
 using long_alike = with_fourteen_more<msg<"PLONGADDR1">, msg<"PLONGADDR2">, msg<"PLONGADDRX">>;
@@ -136,17 +137,22 @@ static_assert(exact_first::size >= seawire::nmea::detail::dispatch_by_table_from
 
 }  // namespace
 
-// The library's sets are found by their tables (none has two keys alike).
-static_assert(seawire::nmea::detail::dispatch_table_of<msg<"AAAAA">, msg<"AAAAB">, msg<"AAAAC">,
-                                                       msg<"AAAAD">, msg<"AAAAE">, msg<"AAAAF">,
-                                                       msg<"AAAAG">, msg<"AAAAH">>
-                  .usable);
 // Long addresses alike in their first eight bytes and their length cannot be told apart by
 // key: that set is tried in turn, and still finds each.
 template <class... Ms>
 constexpr bool table_usable(message_set<Ms...>*) {
   return seawire::nmea::detail::dispatch_table_of<Ms...>.usable;
 }
+template <class... Ms>
+constexpr bool uses_table(message_set<Ms...>*) {
+  return seawire::nmea::detail::use_dispatch_table<Ms...>();
+}
+// The set of every sentence is found by its table (no two of its keys alike), as are the test's
+// sets but long_alike.
+static_assert(uses_table(static_cast<registry::sentences*>(nullptr)));
+static_assert(uses_table(static_cast<exact_first*>(nullptr)) &&
+              uses_table(static_cast<talker_first*>(nullptr)) &&
+              !uses_table(static_cast<long_alike*>(nullptr)));
 static_assert(!table_usable(static_cast<long_alike*>(nullptr)));
 static_assert(table_usable(static_cast<registry::sentences*>(nullptr)));
 static_assert(table_usable(static_cast<exact_first*>(nullptr)));

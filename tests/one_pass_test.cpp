@@ -304,7 +304,8 @@ TEST_CASE("one pass: a field is scanned first where its scanner refuses a blank 
   static_assert(scans_no_blank<standard::rmc, nmea::decimal>);
   static_assert(scans_no_blank<standard::gga, nmea::latitude>);
   static_assert(scans_no_blank<standard::gga, nmea::longitude>);
-  static_assert(scans_no_blank<standard::gga, std::uint8_t>);
+  static_assert(scans_no_blank<standard::gga, nmea::integer<std::uint8_t>>);
+  static_assert(scans_no_blank<standard::gga, nmea::integer<std::uint16_t>>);
   // A variation's scanner reads a letter without its number; text's blank is the empty text.
   static_assert(!scans_no_blank<standard::rmc, nmea::magnetic_variation>);
   static_assert(!scans_no_blank<standard::rmc, nmea::text<8>>);
@@ -321,4 +322,103 @@ TEST_CASE("one pass: a field is scanned first where its scanner refuses a blank 
     CHECK(read_in_one_pass(line));
     for (const nmea::parse_policy& p : policies()) CHECK(disagreements(line, p) == 0);
   }
+}
+
+// A codec of the user's own, whose scan() takes a blank number before its letter and is no
+// constexpr function (neither is asked of a codec): it does not say scan_refuses_blank, so its
+// fields are tested for a blank first, and lines read in one pass read as the general path
+// reads them.
+namespace own_codec {
+struct bearing {
+  std::optional<nmea::decimal> degrees;
+  char reference = 'T';
+  friend constexpr bool operator==(const bearing&, const bearing&) noexcept = default;
+};
+}  // namespace own_codec
+
+template <>
+struct seawire::nmea::codec<own_codec::bearing> {
+  static constexpr unsigned width = 2;
+  static constexpr std::size_t max_chars = 24;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, own_codec::bearing& v) noexcept {
+    const field_token number = r.take();
+    const field_token letter = r.take();
+    if (!letter.present) return errc::too_few_fields;
+    if (letter.text != "T" && letter.text != "M") return errc::bad_unit;
+    v.reference = letter.text[0];
+    v.degrees.reset();
+    if (!number.text.empty()) {
+      decimal d;
+      if (const errc e = detail::parse_decimal(number.text, r.policy(), d); e != errc::ok) return e;
+      v.degrees = d;
+    }
+    return errc::ok;
+  }
+  static constexpr errc check(const own_codec::bearing&) noexcept { return errc::ok; }
+  static constexpr void write(writer& w, const own_codec::bearing& v) noexcept {
+    if (v.degrees) detail::write_decimal(w, *v.degrees);
+    w.next_field();
+    w.put(v.reference);
+  }
+  static const char* scan(const char* p, const char* end, own_codec::bearing& v) noexcept {
+    v.degrees.reset();
+    if (p != end && *p != ',') {
+      decimal d;
+      p = detail::scan_decimal(p, d);
+      if (p == nullptr) return nullptr;
+      v.degrees = d;
+    }
+    if (p == end || *p != ',' || (p[1] != 'T' && p[1] != 'M')) return nullptr;
+    v.reference = p[1];
+    return p + 2;
+  }
+};
+
+namespace own_codec {
+struct course {
+  bearing required;
+  std::optional<bearing> optional;
+  std::uint16_t n = 0;
+  static constexpr auto nmea = nmea::sentence<"PXYZB">(nmea::field<&course::required>("required"),
+                                                       nmea::field<&course::optional>("optional"),
+                                                       nmea::field<&course::n>("n"));
+};
+}  // namespace own_codec
+
+TEST_CASE("one pass: a codec that does not say its scanner refuses a blank is tested first") {
+  static_assert(!nmea::detail::scans_no_blank<own_codec::course, own_codec::bearing>);
+  for (const std::string_view text : {
+           "$PXYZB,12.5,T,3.5,M,5",
+           "$PXYZB,,T,3.5,M,5",  // the required value blank: missing, though scan() takes it
+           "$PXYZB,12.5,T,,M,5",
+           "$PXYZB,12.5,T,,,5",
+           "$PXYZB,,,,,5",
+       }) {
+    const std::string line = sealed(text);
+    INFO(line);
+    const auto one = nmea::decode<own_codec::course>(line);
+    const auto s = nmea::parse(line);
+    REQUIRE(s);
+    const auto general = nmea::decode<own_codec::course>(s.value);
+    CHECK(one.ec == general.ec);
+    CHECK(one.field == general.field);
+    if (one && general) {
+      CHECK(one.value.required == general.value.required);
+      CHECK(one.value.optional == general.value.optional);
+      CHECK(one.value.n == general.value.n);
+    }
+  }
+  const auto blank_required = nmea::decode<own_codec::course>(sealed("$PXYZB,,T,3.5,M,5"));
+  CHECK(blank_required.ec == errc::missing_field);
+  CHECK(blank_required.field == 1);
+  // The first is read in one pass; the blank required value is left to the general path.
+  const auto one_pass = [](const std::string& line) {
+    nmea::detail::plain_line l;
+    REQUIRE(nmea::detail::frame_plain(line, {}, l));
+    own_codec::course m{};
+    return nmea::detail::decode_plain(l, {}, m);
+  };
+  CHECK(one_pass(sealed("$PXYZB,12.5,T,3.5,M,5")));
+  CHECK(!one_pass(sealed("$PXYZB,,T,3.5,M,5")));
 }

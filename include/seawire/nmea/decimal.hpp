@@ -387,6 +387,8 @@ struct codec<decimal> {
   /// Longest text written: sign, 20 integer digits (padding), point, 19 fraction digits.
   static constexpr std::size_t max_chars = seawire::detail::max_fixed_chars;
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
   static constexpr errc read(field_reader& r, decimal& v) noexcept {
     const std::string_view s = r.take().text;
     return detail::parse_decimal(s, r.policy(), v, r.end_of_field());
@@ -407,6 +409,8 @@ struct codec<I> {
   static constexpr std::size_t max_chars =
       std::numeric_limits<I>::digits10 + 1 + (std::is_signed_v<I> ? 1 : 0);
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
   static constexpr errc read(field_reader& r, I& v) noexcept {
     decimal d;
     const std::string_view s = r.take().text;
@@ -459,6 +463,8 @@ struct codec<bool> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 1;
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
   static constexpr errc read(field_reader& r, bool& v) noexcept {
     const std::string_view t = r.take().text;
     if (t.size() != 1 || (t[0] != '0' && t[0] != '1')) [[unlikely]]

@@ -174,6 +174,8 @@ struct codec<E> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 1;
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
   // Which bytes are letters of E: one lookup instead of a search through enum_letters.
   static constexpr std::array<bool, 256> letters = [] {
     std::array<bool, 256> t{};
@@ -210,6 +212,8 @@ struct codec<E> {
     return n;
   }();
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
   static constexpr errc read(field_reader& r, E& v) noexcept { return from_word(r.take().text, v); }
   /// The one-pass reader: the word at `p`, up to the next ',' or `end`.
   SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,

@@ -83,6 +83,7 @@ struct codec<integer<T>> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = codec<T>::max_chars;
   static constexpr bool allows_blank = false;
+  static constexpr bool scan_refuses_blank = codec<T>::scan_refuses_blank;
   static constexpr errc read(field_reader& r, integer<T>& v) noexcept {
     T t{};
     const errc e = codec<T>::read(r, t);

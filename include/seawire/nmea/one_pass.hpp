@@ -34,7 +34,8 @@ namespace seawire::nmea::detail {
 
 /// A codec with a one-pass reader: `scan(p, end, v)` reads the value whose first wire field
 /// starts at `p` and returns the byte after its last one, or nullptr to give up. `p` is at a
-/// blank field only where the scanner refuses one (scans_no_blank).
+/// blank field (at a ',' or at `end`) only where the codec says its scanner refuses one
+/// (scan_refuses_blank; see scans_no_blank).
 /// `end` is the body's end, the '*' of "*hh": the three bytes from it may be read, nothing after.
 template <class V>
 concept one_pass_codec = requires(const char* p, V& v) {
@@ -201,32 +202,40 @@ template <class V>
 }
 
 /// Whether T's scanner of V refuses a field that holds nothing at its first byte, whatever
-/// follows: then a field is scanned first, and tested for a blank only where the scanner refuses
-/// it (most fields hold a value). Checked by running the scanner on a blank field at the body's
-/// end and before each of the fields a more lenient scanner would take (a letter, digits, a
-/// position); false for a codec whose blank is a value (text) or whose scanner takes a blank
-/// first field (a variation: a letter without its number).
+/// follows, on the codec's word (`static constexpr bool scan_refuses_blank = true;`): then a
+/// field is scanned first, and tested for a blank only where the scanner refuses it (most fields
+/// hold a value). A codec that does not say so (a variation's, whose scanner reads a letter
+/// without its number; text's, whose blank is a value; a codec of your own) is tested first.
+/// Where a codec says so, its scanner is also run here, at compile time, on a blank field at
+/// the body's end and before each of the fields a more lenient scanner would take (a letter,
+/// digits, a position): a claim those contradict does not compile.
 template <class T, class V>
 inline constexpr bool scans_no_blank = [] {
   if constexpr (!one_pass_codec<V> || codec<V>::allows_blank) {
     return false;
+  } else if constexpr (!requires { requires codec<V>::scan_refuses_blank; }) {
+    return false;
   } else {
-    // What follows the blank field, one case per line: each is tried up to its "*hh".
-    constexpr std::string_view cases =
-        "\n,\n,0\n,1\n,A\n,E\n,N\n,S\n,W\n,V,\n,1.5\n,0,N,\n,12345\n,123456.00,010203\n"
-        ",1234.5678,N,12345.6789,E,123456.00\n";
-    for (std::size_t at = 0; at < cases.size();) {
-      const std::size_t eol = cases.find('\n', at);
-      std::array<char, 48> line{};  // the blank field, what follows it, then "*00"
-      std::size_t n = 0;
-      for (const char ch : cases.substr(at, eol - at)) line[n++] = ch;
-      const char* const end = line.data() + n;
-      line[n] = '*';
-      line[n + 1] = line[n + 2] = '0';
-      V v{};
-      if (scan_value<T>(line.data(), end, v, parse_policy{}) != nullptr) return false;
-      at = eol + 1;
-    }
+    constexpr bool refused = [] {
+      // What follows the blank field, one case per line: each is tried up to its "*hh".
+      constexpr std::string_view cases =
+          "\n,\n,0\n,1\n,A\n,E\n,N\n,S\n,T\n,M\n,W\n,V,\n,1.5\n,0,N,\n,12345\n,123456.00,"
+          "010203\n,1234.5678,N,12345.6789,E,123456.00\n";
+      for (std::size_t at = 0; at < cases.size();) {
+        const std::size_t eol = cases.find('\n', at);
+        std::array<char, 48> line{};  // the blank field, what follows it, then "*00"
+        std::size_t n = 0;
+        for (const char ch : cases.substr(at, eol - at)) line[n++] = ch;
+        const char* const end = line.data() + n;
+        line[n] = '*';
+        line[n + 1] = line[n + 2] = '0';
+        V v{};
+        if (scan_value<T>(line.data(), end, v, parse_policy{}) != nullptr) return false;
+        at = eol + 1;
+      }
+      return true;
+    }();
+    static_assert(refused, "scan_refuses_blank, but the codec's scan() takes a blank field");
     return true;
   }
 }();
@@ -286,6 +295,11 @@ template <std::size_t I, class F, class T>
     if constexpr (scans_no_blank<T, V>) {
       return false;  // neither a value nor nothing: the general path says what it is
     } else {
+      if constexpr (!codec<V>::allows_blank && codec<V>::width > 1) {
+        // A blank first field with more after it: the general path passes over the value's
+        // fields whole, whatever the others hold (read_field); its to say, not the scanner's.
+        if (c.p == c.end || *c.p == ',') return false;
+      }
       q = scan_value<T>(c.p, c.end, m.emplace(), policy);
       return q != nullptr && plain_value(c, q, msg, *m, o);
     }

@@ -209,6 +209,8 @@ struct codec<nmea_coordinate<Axis>> {
   /// DDDMM, point, 12 fraction digits (check's limit), comma, letter.
   static constexpr std::size_t max_chars = Axis::width + 2 + 1 + 12 + 2;
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
 
   static constexpr errc read(field_reader& r, value_type& v) noexcept {
     return read_form<false>(r, v);
@@ -457,6 +459,8 @@ struct codec<decimal_coordinate<Axis>> {
   static constexpr unsigned width = 2;
   static constexpr std::size_t max_chars = codec<decimal>::max_chars + 2;
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
 
   static constexpr errc read(field_reader& r, value_type& v) noexcept {
     const std::string_view s = r.take().text;

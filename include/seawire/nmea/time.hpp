@@ -169,6 +169,8 @@ struct codec<time_of_day> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 16;  // hhmmss.fffffffff
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
 
   // The templates come first: clang (14) cannot evaluate, in a constant expression, a member
   // template of this explicit specialization that is defined after the function calling it.
@@ -268,6 +270,8 @@ struct codec<date> {
   static constexpr unsigned width = 1;
   static constexpr std::size_t max_chars = 6;
   static constexpr bool allows_blank = false;
+  /// scan() refuses a blank field at its first byte (one_pass.hpp: scans_no_blank).
+  static constexpr bool scan_refuses_blank = true;
   static constexpr errc read(field_reader& r, date& v) noexcept {
     const std::string_view s = r.take().text;
     if (s.size() != 6) [[unlikely]]
