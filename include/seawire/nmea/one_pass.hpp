@@ -201,6 +201,12 @@ template <class V>
   }
 }
 
+/// Whether V's codec says its scanner refuses a blank field (scan_refuses_blank).
+template <class V>
+concept claims_scan_refuses_blank = requires {
+  requires codec<V>::scan_refuses_blank;
+};
+
 /// Whether T's scanner of V refuses a field that holds nothing at its first byte, whatever
 /// follows, on the codec's word (`static constexpr bool scan_refuses_blank = true;`): then a
 /// field is scanned first, and tested for a blank only where the scanner refuses it (most fields
@@ -211,9 +217,7 @@ template <class V>
 /// digits, a position): a claim those contradict does not compile.
 template <class T, class V>
 inline constexpr bool scans_no_blank = [] {
-  if constexpr (!one_pass_codec<V> || codec<V>::allows_blank) {
-    return false;
-  } else if constexpr (!requires { requires codec<V>::scan_refuses_blank; }) {
+  if constexpr (!one_pass_codec<V> || codec<V>::allows_blank || !claims_scan_refuses_blank<V>) {
     return false;
   } else {
     constexpr bool refused = [] {
