@@ -237,7 +237,7 @@ template <std::size_t N, unsigned Bits>
 /// Sets this large or larger find a message by the tables; smaller ones try each in turn, which
 /// costs less there: a few instructions a message tried, and the message's decoder inlined
 /// where it is found, against a fixed ~40 (callgrind: 8 messages tried in turn take 22 fewer
-/// instructions a sentence to visit and 44 fewer to decode; 40 messages, 38 more to visit).
+/// instructions a sentence to visit and 44 fewer to decode; 36, 38 more to visit).
 inline constexpr std::size_t dispatch_by_table_from = 16;
 
 template <class... Ms>

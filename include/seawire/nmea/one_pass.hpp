@@ -244,8 +244,8 @@ inline constexpr bool scans_no_blank = [] {
   }
 }();
 
-/// An optional field's value, scanned up to `q`: the field's rules checked, then on past its
-/// unit letter.
+/// A field's value, scanned up to `q`: the field's rules checked, then on past its unit letter.
+/// (may_be_absent is an optional member's option only.)
 template <class T, class V>
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr bool plain_value(plain_cursor& c, const char* q,
                                                                T& msg, const V& v,
@@ -315,8 +315,7 @@ template <std::size_t I, class F, class T>
       }
     }
     const char* const q = scan_value<T>(c.p, c.end, m, policy);
-    return q != nullptr && check_options(m, o) == errc::ok && next_plain_field(c, q) &&
-           plain_unit(c, o, true);
+    return q != nullptr && plain_value(c, q, msg, m, o);
   }
 }
 
