@@ -2,12 +2,16 @@
 // merge_sets: the union of message sets, each message once; which sentence is which message.
 
 #include <catch2/catch.hpp>
+#include <concepts>
+#include <cstring>
+#include <new>
 #include <string_view>
 #include <type_traits>
 #include <variant>
 
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/dispatch.hpp"
+#include "seawire/registry.hpp"
 #include "seawire/standard/gga.hpp"
 #include "seawire/standard/rmc.hpp"
 #include "seawire/standard/vhw.hpp"
@@ -93,4 +97,93 @@ TEST_CASE("a proprietary sentence is not a standard one from a talker named P.")
   CHECK(encode(m));
   m.talker = "PG";
   CHECK(encode(m).ec == errc::bad_address);
+}
+
+namespace {
+/// Whether M default-initialized over storage full of 0xA5 bytes equals M{}.
+template <class M>
+bool whole_when_default_initialized() {
+  static_assert(std::equality_comparable<M>);
+  alignas(M) unsigned char storage[sizeof(M)];
+  // Volatile stores, which the compiler may not drop as dead before the object's construction.
+  volatile unsigned char* bytes = storage;
+  for (std::size_t i = 0; i < sizeof storage; ++i) bytes[i] = 0xA5;
+  const M* m = ::new (static_cast<void*>(storage)) M;
+  const bool whole = *m == M{};
+  m->~M();
+  return whole;
+}
+/// M default-initialized and copied, at compile time: Clang refuses to copy a member left
+/// indeterminate there, so this is a constant only where every member has an initializer.
+template <class M>
+constexpr bool copies_whole() {
+  M m;
+  const M copy = m;
+  (void)copy;
+  return true;
+}
+template <class M>
+concept whole_by_default = requires {
+  typename std::bool_constant<copies_whole<M>()>;
+};
+
+template <class... Ms>
+void check_whole(message_set<Ms...>*) {
+#if defined(__clang__)
+  static_assert((whole_by_default<Ms> && ...));
+#endif
+  const auto check = [](std::string_view address, bool whole) {
+    INFO(address);
+    CHECK(whole);
+  };
+  (check(std::remove_cvref_t<decltype(Ms::nmea)>::address, whole_when_default_initialized<Ms>()),
+   ...);
+}
+// A message like those users write, with one member left without an initializer: what the
+// checks above exist to catch.
+struct partly_initialized {
+  std::uint16_t n = 0;
+  double left;  // NOLINT(cppcoreguidelines-pro-type-member-init): on purpose
+  static constexpr auto nmea = sentence<"XXPRT">(field<&partly_initialized::n>("n"));
+};
+#if defined(__clang__)
+static_assert(!whole_by_default<partly_initialized>);
+static_assert(whole_by_default<ping>);
+#endif
+}  // namespace
+
+// decode() and visit() build a message default-initialized, then write each field its
+// description names: the same message as value-initializing it first wherever every member has
+// an initializer, as every message of the library does.
+TEST_CASE("every message of the library is whole when default-initialized") {
+  check_whole(static_cast<registry::sentences*>(nullptr));
+}
+
+TEST_CASE("decode gives the message it read, or unknown_sentence with the error, on every path") {
+  using set = message_set<rmc, gga, ping>;
+  // One pass.
+  auto r = set::decode("$XXPNG,42*73");
+  REQUIRE(r);
+  REQUIRE(std::holds_alternative<ping>(r.value));
+  CHECK(std::get<ping>(r.value).n == 42);
+  // The general path (the checksum left out, which the one-pass reader does not take).
+  r = set::decode("$XXPNG,7");
+  REQUIRE(r);
+  CHECK(std::get<ping>(r.value).n == 7);
+  // A field the message refuses: unknown_sentence, the field and its column.
+  r = set::decode("$XXPNG,x*0D");
+  CHECK(r.ec == errc::bad_number);
+  CHECK(r.field == 1);
+  CHECK(r.column == 7);
+  REQUIRE(std::holds_alternative<unknown_sentence>(r.value));
+  CHECK(std::get<unknown_sentence>(r.value).sentence.address == "XXPNG");
+  // A sentence no message of the set describes.
+  r = set::decode("$GPXYZ,1*51");
+  REQUIRE(r);
+  CHECK(std::get<unknown_sentence>(r.value).sentence.address == "GPXYZ");
+  // A line that is no sentence: the error, and an empty unknown_sentence.
+  r = set::decode("GPXYZ,1");
+  CHECK_FALSE(r);
+  REQUIRE(std::holds_alternative<unknown_sentence>(r.value));
+  CHECK(std::get<unknown_sentence>(r.value).sentence.line.empty());
 }

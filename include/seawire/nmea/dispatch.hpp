@@ -13,6 +13,7 @@
 #include <new>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "seawire/detail/byte_order.hpp"
@@ -337,36 +338,30 @@ struct message_set {
   /// any the one-pass path gives up on, through parse() and decode_here().
   [[nodiscard]] static constexpr result<variant> decode_line_here(std::string_view line,
                                                                   const parse_policy& p) noexcept {
-    // One result, returned on every path, so that it is built where the caller wants it (a
-    // result returned from a branch of its own is copied there: ~40 instructions a line).
-    result<variant> out;
+    // Every path returns a result it builds in its return statement, so that the result is
+    // built where the caller wants it, never copied there and never cleared first (GCC clears
+    // a result<variant> it builds from a constant, or emplaces a message into: a `rep stos`
+    // over the largest message, ~15 ns a sentence).
     if constexpr ((detail::plain_decodable<Ms> || ...)) {
-      if (read_plain(line, p, [&]<class M>(const detail::plain_line& l) {
-            return detail::decode_plain(l, p, out.value.template emplace<M>());
-          }))
-        return out;
+      detail::plain_line l;
+      if (detail::frame_plain(line, p, l)) {
+        auto read = [&]<class M>() SEAWIRE_INLINE_LAMBDA { return read_plain_one<M>(l, line, p); };
+        auto otherwise = [&]() SEAWIRE_INLINE_LAMBDA { return decode_general(line, p); };
+        return decode_at(find(detail::address_key{l.head, l.address.size()}, l.address), read,
+                         otherwise);
+      }
     }
-    const result<sentence_view> s = parse(line, p);
-    if (!s) {
-      out.value.template emplace<unknown_sentence>();
-      out.ec = s.ec;
-      out.column = s.column;
-      return out;
-    }
-    out.value.template emplace<unknown_sentence>(unknown_sentence{s.value});
-    with_message(find(detail::key_of(s.value), s.value.address),
-                 [&]<class M>() { assign<M>(out, s.value, p); });
-    return out;
+    return decode_general(line, p);
   }
 
   /// decode(s, p) compiled where it is called (what a set compiled once runs in that one place).
   [[nodiscard]] static constexpr result<variant> decode_here(const sentence_view& s,
                                                              const parse_policy& p) noexcept {
-    // Built holding unknown_sentence, not value-initialized: that would first zero the storage
-    // of the largest message in the set.
-    result<variant> out{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
-    with_message(find(detail::key_of(s), s.address), [&]<class M>() { assign<M>(out, s, p); });
-    return out;
+    auto read = [&]<class M>() SEAWIRE_INLINE_LAMBDA { return decode_one<M>(s, p); };
+    auto otherwise = [&]() SEAWIRE_INLINE_LAMBDA {
+      return result<variant>{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
+    };
+    return decode_at(find(detail::key_of(s), s.address), read, otherwise);
   }
 
   /// The index in the set of the message a sentence with this address decodes as (the first
@@ -384,7 +379,7 @@ struct message_set {
     if constexpr (!detail::compiled_set<message_set> && (detail::plain_decodable<Ms> || ...)) {
       if (read_plain(line, p, [&]<class M>(const detail::plain_line& l) {
             bool done = false;
-            with_storage<M>([&](M& m) {
+            detail::with_default_initialized<M>([&](M& m) {
               done = detail::decode_plain(l, p, m);
               if (done) on_message(static_cast<const M&>(m));
             });
@@ -461,6 +456,68 @@ struct message_set {
     static constexpr fn_type fn[] = {&message_set::template call_one<Ms, F>...};
   };
 
+  /// read.template operator()<M>() for the i-th message M of the set, otherwise() for
+  /// i == size: the result<variant> each returns, built where the caller of decode wants it. A
+  /// set with a table calls through an array of one function per message; a set tried in turn
+  /// compares i with each index, where the compiler can fold it into the search before.
+  template <class Read, class Otherwise>
+  SEAWIRE_ALWAYS_INLINE static constexpr result<variant> decode_at(std::size_t i, Read& read,
+                                                                   Otherwise& otherwise) {
+    if constexpr (detail::use_dispatch_table<Ms...>()) {
+      if (i < size) return decoders<Read>::fn[i](read);
+      return otherwise();
+    } else {
+      return decode_from<0, Ms...>(i, read, otherwise);
+    }
+  }
+  template <std::size_t I, class M, class... Rest, class Read, class Otherwise>
+  SEAWIRE_ALWAYS_INLINE static constexpr result<variant> decode_from(std::size_t i, Read& read,
+                                                                     Otherwise& otherwise) {
+    if (i == I) return read.template operator()<M>();
+    if constexpr (sizeof...(Rest) > 0) {
+      return decode_from<I + 1, Rest...>(i, read, otherwise);
+    } else {
+      return otherwise();
+    }
+  }
+  template <class M, class Read>
+  static constexpr result<variant> decode_with(Read& read) {
+    return read.template operator()<M>();
+  }
+  // decode_with<M> of each message, by index in the set (defined once the set is).
+  template <class Read>
+  struct decoders {
+    using fn_type = result<variant> (*)(Read&);
+    static constexpr fn_type fn[] = {&message_set::template decode_with<Ms, Read>...};
+  };
+
+  /// M read in one pass from l into a default-initialized M of its own (not into the result:
+  /// emplacing a message into a variant clears it whole first), then copied into the result it
+  /// returns; the general path when M has no one-pass reader or its reader gives the line up.
+  template <class M>
+  [[nodiscard]] static constexpr result<variant> read_plain_one(const detail::plain_line& l,
+                                                                std::string_view line,
+                                                                const parse_policy& p) noexcept {
+    if constexpr (detail::plain_decodable<M>) {
+      return detail::with_default_initialized<M>([&](M& m) SEAWIRE_INLINE_LAMBDA {
+        if (detail::decode_plain(l, p, m))
+          return result<variant>{variant(std::in_place_type<M>, std::as_const(m))};
+        return decode_general(line, p);
+      });
+    } else {
+      return decode_general(line, p);
+    }
+  }
+
+  /// decode(line) through parse() and decode_here(): a line not in its plain form, or one the
+  /// one-pass path gave up on.
+  [[nodiscard]] static constexpr result<variant> decode_general(std::string_view line,
+                                                                const parse_policy& p) noexcept {
+    const result<sentence_view> s = parse(line, p);
+    if (!s) return result<variant>{variant{}, s.ec, 0, s.column};
+    return decode_here(s.value, p);
+  }
+
   /// The one-pass path of decode(line) and visit(line): when the line is in its plain form and
   /// the message its address names has one-pass readers, `read.template operator()<M>(l)` reads
   /// it and says whether it did; false (not read) sends the line to the general path.
@@ -477,37 +534,27 @@ struct message_set {
     return done;
   }
 
-  // Decodes straight into the variant's alternative: a message is never copied.
+  /// M decoded from a split sentence into a default-initialized M of its own, then copied into
+  /// the result it returns; on an error, unknown_sentence with the error's field and column.
   template <class M>
-  static constexpr void assign(result<variant>& out, const sentence_view& s,
-                               const parse_policy& p) noexcept {
-    detail::decode_into(s, p, out.value.template emplace<M>()).copy_to(out);
-    if (!out) out.value.template emplace<unknown_sentence>(unknown_sentence{s});
+  [[nodiscard]] static constexpr result<variant> decode_one(const sentence_view& s,
+                                                            const parse_policy& p) noexcept {
+    return detail::with_default_initialized<M>([&](M& m) SEAWIRE_INLINE_LAMBDA {
+      const detail::decode_status d = detail::decode_into(s, p, m);
+      if (d.ec == errc::ok)
+        return result<variant>{variant(std::in_place_type<M>, std::as_const(m))};
+      return result<variant>{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s}),
+                             d.ec, d.field, d.column};
+    });
   }
   template <class M, class F>
   static constexpr void visit_one(result<bool>& out, const sentence_view& s, const parse_policy& p,
                                   F& on_message) {
-    with_storage<M>([&](M& m) {
+    detail::with_default_initialized<M>([&](M& m) {
       detail::decode_into(s, p, m).copy_to(out);
       out.value = true;
       if (out) on_message(static_cast<const M&>(m));
     });
-  }
-  /// f(m) for a default-initialized M of its own. Where M is trivially destructible, in storage
-  /// of its own: GCC folds a local `M m;` into a clear of the whole message (a `rep stos` of
-  /// ~200 bytes) before the members' initializers; placement new writes only those, and
-  /// decoding writes every field.
-  template <class M, class F>
-  static constexpr void with_storage(F&& f) {
-    if constexpr (std::is_trivially_destructible_v<M>) {
-      if (!std::is_constant_evaluated()) {
-        alignas(M) unsigned char storage[sizeof(M)];
-        f(*::new (static_cast<void*>(storage)) M);
-        return;
-      }
-    }
-    M m;
-    f(m);
   }
 };
 

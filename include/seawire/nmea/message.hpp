@@ -8,6 +8,7 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <new>
 #include <optional>
 // std::construct_at and std::destroy_at: <memory> declares them, and costs a translation unit
 // about a third of what <variant>, <optional>, <string_view> and <chrono> cost together;
@@ -331,6 +332,22 @@ template <message_like T>
   return {};
 }
 
+/// f(m) for a default-initialized M of its own, returning what f returns. Where M is trivially
+/// destructible, in storage of its own: GCC folds a local `M m;`, and a message built in a
+/// variant or a result, into a clear of the whole message (a `rep stos` of ~200 bytes, ~15 ns a
+/// sentence) before the members' initializers; placement new writes only those, and decoding
+/// writes every field.
+template <class M, class F>
+SEAWIRE_ALWAYS_INLINE constexpr decltype(auto) with_default_initialized(F&& f) {
+  if constexpr (std::is_trivially_destructible_v<M>) {
+    if (!std::is_constant_evaluated()) {
+      alignas(M) unsigned char storage[sizeof(M)];
+      return f(*::new (static_cast<void*>(storage)) M);
+    }
+  }
+  M m;
+  return f(m);
+}
 }  // namespace detail
 
 /// Decode a message from a sentence already split by parse(). A '!' sentence is never T
@@ -338,10 +355,13 @@ template <message_like T>
 template <message_like T>
 [[nodiscard]] constexpr result<T> decode(const sentence_view& s,
                                          const parse_policy& policy = {}) noexcept {
-  result<T> out;
-  detail::decode_into(s, policy, out.value).copy_to(out);
-  if (!out) out.value = T{};
-  return out;
+  // Into a T of its own, default-initialized, then copied into the result: a T built in the
+  // result would be cleared whole first.
+  return detail::with_default_initialized<T>([&](T& m) SEAWIRE_INLINE_LAMBDA {
+    const detail::decode_status d = detail::decode_into(s, policy, m);
+    if (d.ec == errc::ok) return result<T>{std::as_const(m)};
+    return result<T>{T{}, d.ec, d.field, d.column};
+  });
 }
 
 // decode<T>(std::string_view line) is in one_pass.hpp (included at the end of this header).

@@ -375,22 +375,25 @@ namespace seawire::nmea {
 template <message_like T>
 [[nodiscard]] constexpr result<T> decode(std::string_view line,
                                          const parse_policy& policy = {}) noexcept {
-  // One result, returned on every path: it is built where the caller wants it, not copied
-  // there from a result of the one-pass branch's own.
-  result<T> out;
+  // Each path returns the result it builds in its return statement: built where the caller
+  // wants it, never copied there. The one-pass path reads into a T of its own, default-
+  // initialized (detail::with_default_initialized: a T built in the result is cleared whole
+  // first), and copies it into the result.
+  const auto split = [&]() -> result<T> {
+    const result<sentence_view> s = parse(line, policy);
+    if (!s) return detail::parse_failure<T>(s);
+    return decode<T>(s.value, policy);
+  };
   if constexpr (detail::plain_decodable<T>) {
     detail::plain_line l;
     if (detail::frame_plain(line, policy, l) && T::nmea.matches(l.address)) {
-      if (detail::decode_plain(l, policy, out.value)) return out;
+      return detail::with_default_initialized<T>([&](T& m) SEAWIRE_INLINE_LAMBDA {
+        if (detail::decode_plain(l, policy, m)) return result<T>{std::as_const(m)};
+        return split();
+      });
     }
   }
-  const result<sentence_view> s = parse(line, policy);
-  if (!s) {
-    out = detail::parse_failure<T>(s);
-  } else {
-    out = decode<T>(s.value, policy);
-  }
-  return out;
+  return split();
 }
 
 }  // namespace seawire::nmea
