@@ -845,3 +845,78 @@ TEST_CASE("eight digits at a time: which bytes are digits, and the number the fi
   static_assert(digits_value(load_le64("99999999"), 8) == 99999999);
   static_assert(digits_value(load_le64("4807.038"), 4) == 4807);
 }
+
+TEST_CASE("eight_digits: numbers below 10^8 as their eight digits") {
+  using seawire::detail::eight_digits;
+  // Each half of the number is split in a lane of its own by the same arithmetic: every value of
+  // each half, beside a few of the other, against std::to_string.
+  const auto check = [](std::uint64_t v) {
+    std::string want = std::to_string(v);
+    want.insert(want.begin(), 8 - want.size(), '0');
+    const std::uint64_t w = eight_digits(v);
+    std::string got(8, ' ');
+    for (unsigned i = 0; i < 8; ++i) got[i] = static_cast<char>((w >> (8U * i)) & 0xFFU);
+    return got == want;
+  };
+  bool all = true;
+  for (std::uint64_t a = 0; a < 10000; ++a) {
+    for (const std::uint64_t b :
+         {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{9}, std::uint64_t{10},
+          std::uint64_t{99}, std::uint64_t{100}, std::uint64_t{4321}, std::uint64_t{9999}, a}) {
+      all = all && check(a * 10000 + b) && check(b * 10000 + a);
+    }
+  }
+  CHECK(all);
+  static_assert(eight_digits(12345678) == 0x3837363534333231U);
+  static_assert(eight_digits(0) == 0x3030303030303030U);
+  static_assert(eight_digits(99999999) == 0x3939393939393939U);
+}
+
+// append_fixed_wide writes what append_fixed writes, for every count of digits, fraction places
+// and zero padding, and nothing before where the number starts.
+TEST_CASE("append_fixed_wide writes the digits append_fixed writes") {
+  using seawire::detail::append_fixed;
+  using seawire::detail::append_fixed_wide;
+  using seawire::detail::fixed_word_room;
+  using seawire::detail::integer_digits;
+  prng g{20261129};
+  const auto check = [](std::uint64_t v, unsigned places, unsigned int_digits) {
+    char a[80];
+    char b[80];
+    std::fill(std::begin(a), std::end(a), 'x');
+    std::fill(std::begin(b), std::end(b), 'x');
+    const std::size_t end_a = append_fixed(a, 3, v, places, int_digits);
+    const std::size_t end_b = append_fixed_wide(b, 3, v, places, int_digits);
+    INFO(v << " places " << places << " integer digits " << int_digits);
+    REQUIRE(end_b == end_a);
+    REQUIRE(std::string_view(b, end_b) == std::string_view(a, end_a));
+    // Nothing past the number and the room it may use, nothing before it.
+    const std::size_t used = std::max(end_b, std::size_t{3} + fixed_word_room);
+    REQUIRE(std::all_of(b + used, std::end(b), [](char c) { return c == 'x'; }));
+    REQUIRE(std::string_view(b, 3) == "xxx");
+  };
+  for (int k = 0; k < 200000; ++k) {
+    const unsigned digits = 1 + static_cast<unsigned>(g.below(20));
+    const std::uint64_t v =
+        digits == 20 ? g.next() : g.next() % seawire::detail::pow10_table[digits];
+    const unsigned places = static_cast<unsigned>(g.below(20));
+    const unsigned min = static_cast<unsigned>(g.below(22));
+    check(v, places, integer_digits(v, places, min, seawire::detail::max_integer_digits));
+  }
+  // Around 16 digits, where the word path ends, and 8, where its second word begins.
+  for (unsigned places = 0; places <= 17; ++places) {
+    for (const std::uint64_t v :
+         {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{99999999}, std::uint64_t{100000000},
+          std::uint64_t{9999999999999999}, std::uint64_t{10000000000000000}, ~std::uint64_t{0}}) {
+      for (unsigned min = 1; min <= 18; ++min) {
+        check(v, places, integer_digits(v, places, min, seawire::detail::max_integer_digits));
+      }
+    }
+  }
+  // At compile time, the digit-pair path.
+  static_assert([] {
+    char out[40]{};
+    const std::size_t end = append_fixed_wide(out, 0, 4807038, 3, 4);
+    return std::string_view(out, end) == "4807.038";
+  }());
+}

@@ -182,6 +182,54 @@ constexpr std::size_t append_fixed(char* out, std::size_t at, std::uint64_t scal
   return at + fixed_size(places, int_digits);
 }
 
+/// The eight decimal digits of v (below 10^8; zero-padded) as the eight bytes of a word whose
+/// lowest byte is the first digit: the two halves, their digit pairs and then their digits split
+/// off in every lane at once by a multiplication and a shift, no division and no loop.
+[[nodiscard]] constexpr std::uint64_t eight_digits(std::uint64_t v) noexcept {
+  const std::uint64_t high = v / 10000;
+  std::uint64_t x = high | ((v - high * 10000) << 32U);                // 4 digits a 32-bit lane
+  const std::uint64_t h = ((x * 10486) >> 20U) & 0x0000007F0000007FU;  // / 100 (exact below 10^4)
+  x = h | ((x - h * 100) << 16U);                                      // 2 digits a 16-bit lane
+  const std::uint64_t t = ((x * 103) >> 10U) & 0x000F000F000F000FU;    // / 10 (exact below 100)
+  x = t | ((x - t * 10) << 8U);                                        // 1 digit a byte
+  return x | 0x3030303030303030U;
+}
+
+/// The bytes append_fixed_wide may write from where the number starts: it writes 16-byte words,
+/// past the number's end.
+inline constexpr std::size_t fixed_word_room = 33;
+
+/// append_fixed, for a number of at most 16 digits on a little-endian host, a word at a time:
+/// all its digits made at once (eight_digits), then the integer digits and the fraction digits
+/// put in place by two 16-byte copies. Precondition: out[at, at + fixed_word_room) may be
+/// written (what follows the number there is left undefined). Other numbers, and constant
+/// evaluation, go digit pair by digit pair (append_fixed).
+constexpr std::size_t append_fixed_wide(char* out, std::size_t at, std::uint64_t scaled,
+                                        unsigned places, unsigned int_digits) noexcept {
+  const unsigned digits = int_digits + places;
+  if (std::is_constant_evaluated() || std::endian::native != std::endian::little || digits > 16)
+    return append_fixed(out, at, scaled, places, int_digits);
+  // scaled < 10^digits: its 16 digits, zero-padded, in text[0, 16); zeros after them, which the
+  // 16-byte copies read past the last digit.
+  char text[32] = {};
+  std::uint64_t low = scaled;
+  if (digits > 8) {
+    const std::uint64_t high = scaled / 100000000;
+    low = scaled - high * 100000000;
+    const std::uint64_t word = eight_digits(high);
+    std::memcpy(text, &word, 8);
+  }
+  const std::uint64_t word = eight_digits(low);
+  std::memcpy(text + 8, &word, 8);
+  const char* const first = text + (16 - digits);
+  std::memcpy(out + at, first, 16);
+  if (places != 0) {
+    std::memcpy(out + at + int_digits + 1, first + int_digits, 16);
+    out[at + int_digits] = '.';
+  }
+  return at + fixed_size(places, int_digits);
+}
+
 /// Most digits append_uint and put_uint write for a zero-padded number (a 64-bit one has 20).
 inline constexpr unsigned max_padded_digits = 24;
 
@@ -246,11 +294,13 @@ inline constexpr std::size_t max_fixed_chars = 1 + max_integer_digits + 1 + max_
 /// put(std::string_view), as append_fixed writes it with no padding, `-` first when `negative`.
 template <class Sink>
 constexpr void put_fixed(Sink& s, std::uint64_t scaled, unsigned places, bool negative) noexcept {
+  // 1 + fixed_word_room bytes (the sign, then append_fixed_wide's) fit in max_fixed_chars.
+  static_assert(1 + fixed_word_room <= max_fixed_chars);
   put_made<max_fixed_chars>(s, [&](char* out) SEAWIRE_INLINE_LAMBDA {
     std::size_t n = 0;
     if (negative) out[n++] = '-';
-    return append_fixed(out, n, scaled, places,
-                        integer_digits(scaled, places, 1, max_integer_digits));
+    return append_fixed_wide(out, n, scaled, places,
+                             integer_digits(scaled, places, 1, max_integer_digits));
   });
 }
 
