@@ -144,7 +144,8 @@ void check_whole(message_set<Ms...>*) {
 struct partly_initialized {
   std::uint16_t n = 0;
   double left;  // NOLINT(cppcoreguidelines-pro-type-member-init): on purpose
-  static constexpr auto nmea = sentence<"XXPRT">(field<&partly_initialized::n>("n"));
+  [[maybe_unused]] static constexpr auto nmea =
+      sentence<"XXPRT">(field<&partly_initialized::n>("n"));
 };
 #if defined(__clang__)
 static_assert(!whole_by_default<partly_initialized>);
@@ -170,6 +171,20 @@ TEST_CASE("decode gives the message it read, or unknown_sentence with the error,
   r = set::decode("$XXPNG,7");
   REQUIRE(r);
   CHECK(std::get<ping>(r.value).n == 7);
+  // Lines the one-pass reader takes up and gives back (a field past the message's last, a '+'
+  // sign), which the general path then reads.
+  for (const std::string_view line :
+       {std::string_view("$XXPNG,7,9*57"), std::string_view("$XXPNG,+7*69")}) {
+    INFO(line);
+    seawire::nmea::detail::plain_line l;
+    REQUIRE(seawire::nmea::detail::frame_plain(line, parse_policy{}, l));
+    ping read_in_one_pass;
+    CHECK_FALSE(seawire::nmea::detail::decode_plain(l, parse_policy{}, read_in_one_pass));
+    r = set::decode(line);
+    REQUIRE(r);
+    REQUIRE(std::holds_alternative<ping>(r.value));
+    CHECK(std::get<ping>(r.value).n == 7);
+  }
   // A field the message refuses: unknown_sentence, the field and its column.
   r = set::decode("$XXPNG,x*0D");
   CHECK(r.ec == errc::bad_number);
@@ -181,9 +196,37 @@ TEST_CASE("decode gives the message it read, or unknown_sentence with the error,
   r = set::decode("$GPXYZ,1*51");
   REQUIRE(r);
   CHECK(std::get<unknown_sentence>(r.value).sentence.address == "GPXYZ");
-  // A line that is no sentence: the error, and an empty unknown_sentence.
+  // A line that is no sentence: the error and its column, and an empty unknown_sentence.
   r = set::decode("GPXYZ,1");
-  CHECK_FALSE(r);
+  CHECK(r.ec == parse("GPXYZ,1").ec);
+  CHECK(r.ec != errc::ok);
+  CHECK(r.column == 0);
   REQUIRE(std::holds_alternative<unknown_sentence>(r.value));
   CHECK(std::get<unknown_sentence>(r.value).sentence.line.empty());
+}
+
+// The same through a set of 16 messages or more, which finds a sentence's message by its table
+// and decodes through a function of that message; at compile time too.
+TEST_CASE("decode through a set's table gives the message, the error or unknown_sentence") {
+  using set = registry::sentences;
+  constexpr std::string_view rmc_line =
+      "$GPRMC,164959.00,A,4221.71114,N,07105.44878,W,0.145,156.78,311214,,,A*70";
+  auto r = set::decode(rmc_line);
+  REQUIRE(r);
+  REQUIRE(std::holds_alternative<rmc>(r.value));
+  CHECK(std::get<rmc>(r.value) == decode<rmc>(rmc_line).value);
+  CHECK(std::get<rmc>(r.value).speed_knots == decimal::parse("0.145").value);
+  // A field the message refuses (the hemisphere).
+  r = set::decode("$GPRMC,164959.00,A,4221.71114,Q,07105.44878,W,0.145,156.78,311214,,,A*6F");
+  CHECK(r.ec == errc::bad_hemisphere);
+  CHECK(r.field == 4);
+  REQUIRE(std::holds_alternative<unknown_sentence>(r.value));
+  CHECK(std::get<unknown_sentence>(r.value).sentence.address == "GPRMC");
+  r = set::decode("$GPXYZ,1*51");
+  REQUIRE(r);
+  CHECK(std::holds_alternative<unknown_sentence>(r.value));
+  static_assert(std::holds_alternative<rmc>(set::decode(rmc_line).value));
+  static_assert(std::get<rmc>(set::decode(rmc_line).value).status == standard::rmc_status::active);
+  static_assert(
+      std::holds_alternative<unknown_sentence>(set::decode(std::string_view("$GPXYZ,1*51")).value));
 }

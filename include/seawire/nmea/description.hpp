@@ -314,7 +314,9 @@ template <std::uint8_t... C>
 }  // namespace detail
 
 /// A message's wire layout: its address, its fields in wire order, and the forms it comes in,
-/// declared after the fields (`sentence<"--VBW">(...).talker_in<&vbw::talker>()`).
+/// declared after the fields (`sentence<"--VBW">(...).talker_in<&vbw::talker>()`). Every member
+/// of the message has an initializer or a type that sets itself: decoding default-initializes a
+/// message, then writes each field the layout names.
 template <seawire::detail::fixed_string Address, class Forms, class... Fields>
 struct sentence_desc {
   static constexpr std::string_view address = Address.view();

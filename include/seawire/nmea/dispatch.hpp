@@ -453,7 +453,9 @@ struct message_set {
   template <class F>
   struct thunks {
     using fn_type = void (*)(F&);
-    static constexpr fn_type fn[] = {&message_set::template call_one<Ms, F>...};
+    // With its bound: Clang 14 refuses, in a constant expression, the first read of an array
+    // whose bound it has not yet deduced.
+    static constexpr fn_type fn[sizeof...(Ms)] = {&message_set::template call_one<Ms, F>...};
   };
 
   /// read.template operator()<M>() for the i-th message M of the set, otherwise() for
@@ -488,7 +490,7 @@ struct message_set {
   template <class Read>
   struct decoders {
     using fn_type = result<variant> (*)(Read&);
-    static constexpr fn_type fn[] = {&message_set::template decode_with<Ms, Read>...};
+    static constexpr fn_type fn[sizeof...(Ms)] = {&message_set::template decode_with<Ms, Read>...};
   };
 
   /// M read in one pass from l into a default-initialized M of its own (not into the result:

@@ -336,17 +336,21 @@ template <message_like T>
 /// destructible, in storage of its own: GCC folds a local `M m;`, and a message built in a
 /// variant or a result, into a clear of the whole message (a `rep stos` of ~200 bytes, ~15 ns a
 /// sentence) before the members' initializers; placement new writes only those, and decoding
-/// writes every field.
+/// writes every field. A message's members all have initializers (docs/adding-a-message.md);
+/// in a constant expression, where nothing may be left indeterminate, M is value-initialized.
 template <class M, class F>
 SEAWIRE_ALWAYS_INLINE constexpr decltype(auto) with_default_initialized(F&& f) {
-  if constexpr (std::is_trivially_destructible_v<M>) {
-    if (!std::is_constant_evaluated()) {
-      alignas(M) unsigned char storage[sizeof(M)];
-      return f(*::new (static_cast<void*>(storage)) M);
-    }
+  if (std::is_constant_evaluated()) {
+    M m{};
+    return f(m);
   }
-  M m;
-  return f(m);
+  if constexpr (std::is_trivially_destructible_v<M>) {
+    alignas(M) unsigned char storage[sizeof(M)];
+    return f(*::new (static_cast<void*>(storage)) M);
+  } else {
+    M m;
+    return f(m);
+  }
 }
 }  // namespace detail
 
