@@ -516,7 +516,7 @@ struct message_set {
   [[nodiscard]] static constexpr result<variant> decode_general(std::string_view line,
                                                                 const parse_policy& p) noexcept {
     const result<sentence_view> s = parse(line, p);
-    if (!s) return result<variant>{variant{}, s.ec, 0, s.column};
+    if (!s) return detail::parse_failure<variant>(s);
     return decode_here(s.value, p);
   }
 
