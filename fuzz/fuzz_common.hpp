@@ -42,6 +42,7 @@
 #include <type_traits>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "../tests/hex_of.hpp"
 #include "seawire/detail/ascii.hpp"
@@ -443,6 +444,29 @@ void check_encoded(const M& m, std::string_view sentence, std::string_view origi
   const auto held = nmea::encode(m);
   SEAWIRE_FUZZ_CHECK(held.ec == errc::ok && held.view() == s, "encode() disagrees with encode_to()",
                      s, name(held.ec), number(sizeof held.data));
+
+  // The room encode counts on. A message whose codecs say how long they write is written without
+  // a check of the room when the buffer holds its longest sentence (exactly that much here, on
+  // the heap, where the address sanitizer sees a byte written past it), and into a shorter
+  // buffer through storage of encode's own: a buffer of the sentence's size takes the same
+  // bytes, one byte less none.
+  constexpr std::size_t longest = nmea::detail::longest_sentence<M>();
+  if constexpr (nmea::detail::writes_unchecked<M>()) {
+    SEAWIRE_FUZZ_CHECK(s.size() <= longest, "a sentence longer than its message's longest", s,
+                       number(longest));
+    std::vector<char> room(longest, '#');
+    const result<std::size_t> in_room = nmea::encode_to(m, std::span<char>(room));
+    SEAWIRE_FUZZ_CHECK(in_room.ok() && std::string_view(room.data(), in_room.value) == s,
+                       "encode_to into the longest sentence's room disagrees", s);
+  }
+  std::vector<char> exact(s.size(), '#');
+  const result<std::size_t> in_exact = nmea::encode_to(m, std::span<char>(exact));
+  SEAWIRE_FUZZ_CHECK(in_exact.ok() && std::string_view(exact.data(), in_exact.value) == s,
+                     "encode_to into a buffer of the sentence's size disagrees", s);
+  std::vector<char> short_by_one(s.size() - 1, '#');
+  const result<std::size_t> in_short = nmea::encode_to(m, std::span<char>(short_by_one));
+  SEAWIRE_FUZZ_CHECK(in_short.ec == errc::buffer_too_small,
+                     "encode_to into a buffer a byte short of the sentence", s, name(in_short.ec));
 }
 
 /// Properties 4 and 5 for a decoded message.

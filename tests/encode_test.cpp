@@ -3,17 +3,21 @@
 // refused, naming the field decode would name), equality as the written form, positions with a
 // fraction of the minute, and a buffer that holds every sentence that decodes.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "seawire/kingfisher/messages.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/message.hpp"
+#include "seawire/registry.hpp"
 #include "seawire/robotx/messages.hpp"
 #include "seawire/sandshark/messages.hpp"
 #include "seawire/standard/gga.hpp"
@@ -288,6 +292,119 @@ TEST_CASE("encode_to fits the sentence into a buffer of its size, and into none 
       CHECK(std::string_view(out.data(), w.value) == line);
     }
   }
+}
+
+// Every message of the library is written with one check of the room: each field's codec says
+// how long it writes and takes encode's unchecked writer.
+static_assert([]<class... M>(std::type_identity<message_set<M...>>) {
+  return ((nmea::detail::writes_unchecked<M>() && nmea::detail::longest_sentence<M>() != 0) && ...);
+}(std::type_identity<registry::sentences>{}));
+
+// encode_to at compile time: into a buffer that holds the message's longest sentence (written in
+// place) and into one that holds only this sentence (written in encode's own storage, copied).
+template <std::size_t N>
+constexpr bool encodes_at_compile_time(std::string_view expected) {
+  standard::gga m{};
+  m.talker = talker_id("GP");
+  m.time = time_of_day{12, 35, 19};
+  m.quality = standard::gps_quality::gps;
+  char out[N]{};
+  const result<std::size_t> r = encode_to(m, std::span<char>(out, N));
+  if (N < expected.size()) return r.ec == errc::buffer_too_small;
+  return r && std::string_view(out, r.value) == expected;
+}
+constexpr std::string_view short_gga = "$GPGGA,123519,,,,,1,,,,M,,M,,*6A\r\n";
+static_assert(nmea::detail::longest_sentence<standard::gga>() > 64);
+static_assert(encodes_at_compile_time<256>(short_gga));
+static_assert(encodes_at_compile_time<34>(short_gga));
+static_assert(encodes_at_compile_time<33>(short_gga));
+
+// Two codecs of a user's own, for a letter pair: one whose write() takes only `writer&` (its
+// message is written with the room checked at each write), one whose write() takes any
+// sentence_writer and says how long it writes (one check a sentence, as the library's).
+namespace user {
+struct pair_checked {
+  char a = 'A', b = 'B';
+  friend constexpr bool operator==(const pair_checked&, const pair_checked&) = default;
+};
+struct pair_any {
+  char a = 'A', b = 'B';
+  friend constexpr bool operator==(const pair_any&, const pair_any&) = default;
+};
+}  // namespace user
+
+template <class P>
+struct user_pair_codec {
+  static constexpr unsigned width = 1;
+  static constexpr std::size_t max_chars = 2;
+  static constexpr bool allows_blank = false;
+  static constexpr errc read(field_reader& r, P& v) noexcept {
+    const std::string_view t = r.take().text;
+    if (t.size() != 2) return errc::bad_enum;
+    v.a = t[0];
+    v.b = t[1];
+    return errc::ok;
+  }
+  static constexpr errc check(const P& v) noexcept {
+    return seawire::detail::is_upper(v.a) && seawire::detail::is_upper(v.b) ? errc::ok
+                                                                            : errc::bad_enum;
+  }
+};
+template <>
+struct seawire::nmea::codec<user::pair_checked> : user_pair_codec<user::pair_checked> {
+  static constexpr void write(writer& w, const user::pair_checked& v) noexcept {
+    w.put(v.a);
+    w.put(v.b);
+  }
+};
+template <>
+struct seawire::nmea::codec<user::pair_any> : user_pair_codec<user::pair_any> {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const user::pair_any& v) noexcept {
+    w.put(v.a);
+    w.put(v.b);
+  }
+};
+
+namespace user {
+struct checked_msg {
+  pair_checked p;
+  std::uint16_t n = 0;
+  static constexpr auto nmea =
+      nmea::sentence<"PUSRC">(nmea::field<&checked_msg::p>("p"), nmea::field<&checked_msg::n>("n"));
+};
+struct any_msg {
+  pair_any p;
+  std::uint16_t n = 0;
+  static constexpr auto nmea =
+      nmea::sentence<"PUSRA">(nmea::field<&any_msg::p>("p"), nmea::field<&any_msg::n>("n"));
+};
+}  // namespace user
+
+static_assert(!nmea::detail::writes_unchecked<user::checked_msg>());
+static_assert(nmea::detail::writes_unchecked<user::any_msg>());
+
+TEST_CASE("a codec of a user's own that takes writer& is written with the room checked") {
+  const auto each_size = [](const auto& m, std::string_view expected) {
+    for (std::size_t n = 0; n <= expected.size() + 2; ++n) {
+      std::vector<char> out(n, '#');
+      const auto w = encode_to(m, std::span<char>(out));
+      INFO(expected << " into " << n << " bytes");
+      if (n < expected.size()) {
+        CHECK(w.ec == errc::buffer_too_small);
+      } else {
+        REQUIRE(w);
+        CHECK(std::string_view(out.data(), w.value) == expected);
+        CHECK(std::all_of(out.begin() + static_cast<std::ptrdiff_t>(w.value), out.end(),
+                          [](char c) { return c == '#'; }));
+      }
+    }
+  };
+  each_size(user::checked_msg{{'X', 'Y'}, 7}, resealed("$PUSRC,XY,7"));
+  each_size(user::any_msg{{'X', 'Y'}, 65535}, resealed("$PUSRA,XY,65535"));
+  CHECK(encode_to(user::any_msg{{'x', 'Y'}, 1}, std::span<char>()).ec == errc::bad_enum);
+  // The longest PUSRA: '$', the address, a comma and each field at its longest, "*hh\r\n".
+  CHECK(nmea::detail::longest_sentence<user::any_msg>() == 1 + 5 + 1 + 2 + 1 + 5 + 5);
 }
 
 TEST_CASE("a BFMIS that decodes also encodes: its texts need more than 256 bytes") {

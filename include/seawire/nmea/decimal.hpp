@@ -347,7 +347,8 @@ constexpr void read_digits(std::string_view s, std::size_t& i, std::uint64_t& m,
              : errc::ok;
 }
 
-constexpr void write_decimal(writer& w, const decimal& d) noexcept {
+template <sentence_writer W>
+constexpr void write_decimal(W& w, const decimal& d) noexcept {
   if (d.negative) w.put('-');
   w.put_fixed(d.mantissa, d.places, d.int_width);
 }
@@ -400,7 +401,10 @@ struct codec<decimal> {
     return detail::scan_decimal(p, v);
   }
   static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
-  static constexpr void write(writer& w, const decimal& v) noexcept { detail::write_decimal(w, v); }
+  template <sentence_writer W>
+  static constexpr void write(W& w, const decimal& v) noexcept {
+    detail::write_decimal(w, v);
+  }
 };
 
 template <whole_number I>
@@ -445,7 +449,8 @@ struct codec<I> {
     return errc::ok;
   }
   static constexpr errc check(const I&) noexcept { return errc::ok; }
-  static constexpr void write(writer& w, const I& v) noexcept {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const I& v) noexcept {
     if constexpr (std::is_signed_v<I>) {
       if (v < 0) {
         w.put('-');
@@ -481,7 +486,10 @@ struct codec<bool> {
     return p + 1;
   }
   static constexpr errc check(const bool&) noexcept { return errc::ok; }
-  static constexpr void write(writer& w, const bool& v) noexcept { w.put(v ? '1' : '0'); }
+  template <sentence_writer W>
+  static constexpr void write(W& w, const bool& v) noexcept {
+    w.put(v ? '1' : '0');
+  }
 };
 
 }  // namespace seawire::nmea

@@ -200,7 +200,10 @@ struct codec<E> {
   static constexpr errc check(const E& v) noexcept {
     return letters[static_cast<unsigned char>(static_cast<char>(v))] ? errc::ok : errc::bad_enum;
   }
-  static constexpr void write(writer& w, const E& v) noexcept { w.put(static_cast<char>(v)); }
+  template <sentence_writer W>
+  static constexpr void write(W& w, const E& v) noexcept {
+    w.put(static_cast<char>(v));
+  }
 };
 
 template <word_enum_like E>
@@ -243,7 +246,10 @@ struct codec<E> {
   static constexpr errc check(const E& v) noexcept {
     return to_string(v).empty() ? errc::bad_enum : errc::ok;
   }
-  static constexpr void write(writer& w, const E& v) noexcept { w.put(to_string(v)); }
+  template <sentence_writer W>
+  static constexpr void write(W& w, const E& v) noexcept {
+    w.put(to_string(v));
+  }
 };
 
 }  // namespace seawire::nmea

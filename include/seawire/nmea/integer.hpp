@@ -101,7 +101,8 @@ struct codec<integer<T>> {
   static constexpr errc check(const integer<T>& v) noexcept {
     return v.fits() ? errc::ok : errc::out_of_range;
   }
-  static constexpr void write(writer& w, const integer<T>& v) noexcept {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const integer<T>& v) noexcept {
     codec<T>::write(w, static_cast<T>(v));
   }
 };

@@ -386,8 +386,8 @@ template <class V>
   }
 }
 
-template <class F, class T>
-[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc write_field(const F& f, writer& w, const T& msg,
+template <class F, class W, class T>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr errc write_field(const F& f, W& w, const T& msg,
                                                                bool& skip_rest,
                                                                std::uint16_t first_wire) noexcept {
   using V = typename F::value_type;
@@ -461,11 +461,38 @@ template <class F, class T>
 }  // namespace detail
 
 namespace detail {
-/// encode_to's work (below).
+/// The longest sentence encode_to can write for T: '$', the address, a comma and the longest
+/// text of each field (codec max_chars, wider zero padding, ",X" for a unit letter), "*hh\r\n".
+/// 0 when a field's codec does not say how long it can be.
 template <message_like T>
-[[nodiscard]] constexpr result<std::size_t> encode_sentence(const T& msg,
-                                                            std::span<char> out) noexcept {
-  writer w(out);
+[[nodiscard]] consteval std::size_t longest_sentence() noexcept {
+  std::size_t n = 1 + T::nmea.address.size() + 5;
+  bool known = true;
+  const auto add = [&](const auto& f) {
+    using V = typename std::remove_cvref_t<decltype(f)>::value_type;
+    if constexpr (requires { codec<V>::max_chars; }) {
+      std::size_t chars = codec<V>::max_chars;
+      if constexpr (is_integer_field<V>) {
+        constexpr unsigned most = seawire::detail::max_integer_digits;
+        const std::size_t pad = f.opts.zero_pad < most ? f.opts.zero_pad : most;
+        if (pad > chars) chars = pad;
+      }
+      n += 1 + chars + (f.opts.unit != 0 ? 2 : 0);
+    } else {
+      known = false;
+    }
+  };
+  T::nmea.fields.apply([&](const auto&... f) { (add(f), ...); });
+  return known ? n : 0;
+}
+
+/// encode_sentence's walk over the fields, through the writer W. Inlined where it is called (the
+/// one place): left to GCC 12, the walk's lambdas went out of line and encode cost 2-7% more
+/// instructions than with the room checked at each write.
+template <class W, message_like T>
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr result<std::size_t> write_sentence(
+    const T& msg, std::span<char> out) noexcept {
+  W w(out);
   constexpr auto& desc = T::nmea;
   if constexpr (std::remove_cvref_t<decltype(desc)>::any_talker) {
     const std::string_view t = detail::talker_of(msg).view();
@@ -516,6 +543,47 @@ template <message_like T>
   return w.seal();
 }
 
+/// Whether encode can write T with its unchecked writer: every field's codec takes any
+/// sentence_writer, and says how long its text gets (longest_sentence is not 0).
+template <message_like T>
+[[nodiscard]] consteval bool writes_unchecked() noexcept {
+  if constexpr (longest_sentence<T>() == 0) {
+    return false;
+  } else {
+    return T::nmea.fields.apply([](const auto&... f) {
+      return (requires(basic_writer<false> & w,
+                       const typename std::remove_cvref_t<decltype(f)>::value_type& v) {
+        codec<typename std::remove_cvref_t<decltype(f)>::value_type>::write(w, v);
+      } && ...);
+    });
+  }
+}
+
+/// encode_to's work (below). With one check of the room, where T's codecs say how long they
+/// write: a buffer that holds T's longest sentence is written without looking at the room left;
+/// into a shorter one, the sentence is written in storage of its own and copied when it fits.
+template <message_like T>
+[[nodiscard]] constexpr result<std::size_t> encode_sentence(const T& msg,
+                                                            std::span<char> out) noexcept {
+  if constexpr (writes_unchecked<T>()) {
+    constexpr std::size_t longest = longest_sentence<T>();
+    const bool direct = out.size() >= longest;
+    char own[longest];  // written only when `out` is shorter, read only where written
+    result<std::size_t> r =
+        write_sentence<basic_writer<false>>(msg, direct ? out : std::span<char>(own, longest));
+    if (direct || !r) return r;
+    if (r.value > out.size()) {
+      result<std::size_t> small;
+      small.ec = errc::buffer_too_small;
+      return small;
+    }
+    for (std::size_t i = 0; i < r.value; ++i) out[i] = own[i];
+    return r;
+  } else {
+    return write_sentence<writer>(msg, out);
+  }
+}
+
 /// Whether T's encoder is compiled once, by <seawire/impl/src.hpp> (SEAWIRE_SEPARATE_COMPILATION;
 /// a family header says so for each of its messages with SEAWIRE_COMPILED_ENCODER).
 template <class T>
@@ -540,31 +608,6 @@ template <message_like T>
 }
 
 namespace detail {
-/// The longest sentence encode_to can write for T: '$', the address, a comma and the longest
-/// text of each field (codec max_chars, wider zero padding, ",X" for a unit letter), "*hh\r\n".
-/// 0 when a field's codec does not say how long it can be.
-template <message_like T>
-[[nodiscard]] consteval std::size_t longest_sentence() noexcept {
-  std::size_t n = 1 + T::nmea.address.size() + 5;
-  bool known = true;
-  const auto add = [&](const auto& f) {
-    using V = typename std::remove_cvref_t<decltype(f)>::value_type;
-    if constexpr (requires { codec<V>::max_chars; }) {
-      std::size_t chars = codec<V>::max_chars;
-      if constexpr (is_integer_field<V>) {
-        constexpr unsigned most = seawire::detail::max_integer_digits;
-        const std::size_t pad = f.opts.zero_pad < most ? f.opts.zero_pad : most;
-        if (pad > chars) chars = pad;
-      }
-      n += 1 + chars + (f.opts.unit != 0 ? 2 : 0);
-    } else {
-      known = false;
-    }
-  };
-  T::nmea.fields.apply([&](const auto&... f) { (add(f), ...); });
-  return known ? n : 0;
-}
-
 /// The buffer encode() gives a message: 256 bytes, or more when its longest sentence needs more
 /// (or its description's buffer_size_at_least says so), so that whatever decodes also encodes.
 /// Constrained, so that encode(x) for an x that is no message is no candidate (not an error in

@@ -373,7 +373,8 @@ struct codec<nmea_coordinate<Axis>> {
       return Axis::error;
     return check_hemisphere<Axis>(v.hemi);
   }
-  static constexpr void write(writer& w, const value_type& v) noexcept {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const value_type& v) noexcept {
     const decimal m = v.written_minutes();
     if (v.unpadded) {
       w.put_fixed(m.mantissa, m.places, v.written_minute_digits());
@@ -505,7 +506,8 @@ struct codec<decimal_coordinate<Axis>> {
     if (d.compare(decimal(Axis::max_degrees)) > 0) return detail::beyond_degrees<Axis>();
     return "";
   }
-  static constexpr void write(writer& w, const value_type& v) noexcept {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const value_type& v) noexcept {
     detail::write_decimal(w, v.value);
     w.next_field();
     w.put(static_cast<char>(v.hemi));

@@ -100,7 +100,10 @@ struct codec<text<N>> {
         return errc::bad_text;
     return errc::ok;
   }
-  static constexpr void write(writer& w, const text<N>& v) noexcept { w.put(v.view()); }
+  template <sentence_writer W>
+  static constexpr void write(W& w, const text<N>& v) noexcept {
+    w.put(v.view());
+  }
 };
 
 }  // namespace seawire::nmea

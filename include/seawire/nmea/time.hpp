@@ -254,7 +254,8 @@ struct codec<time_of_day> {
   SEAWIRE_ALWAYS_INLINE static constexpr errc check(const time_of_day& v) noexcept {
     return check_form<false>(v);
   }
-  static constexpr void write(writer& w, const time_of_day& v) noexcept {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const time_of_day& v) noexcept {
     w.put_uint(v.hour, 2);
     w.put_uint(v.minute, 2);
     w.put_uint(v.second, 2);
@@ -302,7 +303,8 @@ struct codec<date> {
       return errc::day_out_of_range;
     return errc::ok;
   }
-  static constexpr void write(writer& w, const date& v) noexcept {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const date& v) noexcept {
     w.put_uint(v.day, 2);
     w.put_uint(v.month, 2);
     w.put_uint(v.year % 100u, 2);

@@ -167,7 +167,8 @@ struct codec<magnetic_variation> {
       return "a sign is not allowed: the E/W letter carries it";
     return "";
   }
-  static constexpr void write(writer& w, const magnetic_variation& v) noexcept {
+  template <sentence_writer W>
+  static constexpr void write(W& w, const magnetic_variation& v) noexcept {
     if (v.value) detail::write_decimal(w, *v.value);
     w.next_field();
     w.put(static_cast<char>(v.direction));

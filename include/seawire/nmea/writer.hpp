@@ -4,6 +4,8 @@
 // sentence with '*', two upper-case hex digits and CR LF. Never allocates; running out of room is
 // an error the caller sees, never a truncated sentence.
 
+#include <cassert>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -32,11 +34,18 @@ namespace seawire::nmea {
   return true;
 }
 
-/// Writes one sentence into a caller's buffer: begin(), next_field() and put() per field,
-/// seal(). Checks nothing of what it is given (is_address, is_field_text say what is valid).
-class writer {
+namespace detail {
+
+/// The sentence writer, checked or not. `writer` (below) is the checked one, the only one a
+/// caller makes: it refuses, once at seal(), a sentence that did not fit. The unchecked one
+/// (Checked = false) is encode's own: it writes without looking at the room left, into a buffer
+/// that encode knows holds the longest sentence the message's codecs can write (longest_sentence
+/// in message.hpp, from each codec's max_chars), so that a sentence costs one room check instead
+/// of one a character or number.
+template <bool Checked>
+class basic_writer {
  public:
-  constexpr explicit writer(std::span<char> out) noexcept : out_(out) {}
+  constexpr explicit basic_writer(std::span<char> out) noexcept : out_(out) {}
 
   /// Start a sentence: the start character and the address. `start` is '$' but to write an
   /// encapsulation sentence back ('!', sentence_view::start).
@@ -50,17 +59,11 @@ class writer {
   constexpr void next_field() noexcept { put(','); }
 
   constexpr void put(char c) noexcept {
-    if (size_ < out_.size()) {
-      out_[size_++] = c;
-    } else {
-      failed_ = true;
-    }
+    if (!has_room(1)) return;
+    out_[size_++] = c;
   }
   constexpr void put(std::string_view s) noexcept {
-    if (s.size() > out_.size() - size_) {
-      failed_ = true;
-      return;
-    }
+    if (!has_room(s.size())) return;
     for (char c : s) out_[size_++] = c;
   }
   /// Unsigned integer, zero-padded to at least `min_digits` digits (at most 20 are written).
@@ -69,10 +72,7 @@ class writer {
     // append_uint (one room check for the widest number, then append_uint): that made put_uint
     // too large to inline, and encode_to cost 16-35% more instructions; forced inline, up to 5%.
     if (min_digits == 2 && v < 100) {
-      if (out_.size() - size_ < 2) {
-        failed_ = true;
-        return;
-      }
+      if (!has_room(2)) return;
       seawire::detail::copy_pair(out_.data() + size_, static_cast<std::size_t>(v) * 2);
       size_ += 2;
       return;
@@ -86,10 +86,7 @@ class writer {
                            unsigned min_int_digits = 1) noexcept {
     const unsigned int_digits = seawire::detail::integer_digits(
         scaled, places, min_int_digits, seawire::detail::max_integer_digits);
-    if (seawire::detail::fixed_size(places, int_digits) > out_.size() - size_) {
-      failed_ = true;
-      return;
-    }
+    if (!has_room(seawire::detail::fixed_size(places, int_digits))) return;
     size_ = seawire::detail::append_fixed(out_.data(), size_, scaled, places, int_digits);
   }
 
@@ -98,7 +95,7 @@ class writer {
     const std::uint8_t x =
         failed_ || size_ == 0 ? 0 : checksum(std::string_view(out_.data() + 1, size_ - 1));
     // "*hh\r\n" after one check of the room left.
-    if (out_.size() - size_ >= 5) {
+    if (has_room(5)) {
       char* const p = out_.data() + size_;
       p[0] = '*';
       p[1] = seawire::detail::hex_digit_upper(x >> 4u);
@@ -106,8 +103,6 @@ class writer {
       p[3] = '\r';
       p[4] = '\n';
       size_ += 5;
-    } else {
-      failed_ = true;
     }
     result<std::size_t> r;
     if (failed_) {
@@ -123,10 +118,42 @@ class writer {
   [[nodiscard]] constexpr std::string_view view() const noexcept { return {out_.data(), size_}; }
 
  private:
+  /// Whether `n` more bytes fit; when they do not, the writer has failed. The unchecked writer
+  /// is only given a buffer its codecs cannot overrun (max_chars): there a build with assertions
+  /// says which write broke that promise, and one without does not look.
+  constexpr bool has_room(std::size_t n) noexcept {
+    if constexpr (Checked) {
+      if (n > out_.size() - size_) {
+        failed_ = true;
+        return false;
+      }
+    } else {
+      assert(n <= out_.size() - size_ && "a codec wrote more than its max_chars said");
+    }
+    return true;
+  }
+
   std::span<char> out_;
   std::size_t size_ = 0;
   bool failed_ = false;
 };
+
+}  // namespace detail
+
+/// Writes one sentence into a caller's buffer: begin(), next_field() and put() per field,
+/// seal(). Checks nothing of what it is given (is_address, is_field_text say what is valid), but
+/// the room: what does not fit is not written, and seal() says buffer_too_small.
+///
+/// A codec's write() takes it as a template parameter (`template <class W> static constexpr void
+/// write(W& w, const T& v)`), so that encode can also hand it its unchecked writer; such a
+/// codec's `max_chars` must bound what it writes for every value its check() accepts (encode
+/// trusts it for the room). A codec whose write() takes `writer&` is always given this one.
+using writer = detail::basic_writer<true>;
+
+/// The writers a codec's write() may be given: `writer`, and encode's unchecked one.
+template <class W>
+concept sentence_writer =
+    std::same_as<W, detail::basic_writer<true>> || std::same_as<W, detail::basic_writer<false>>;
 
 /// A sentence held by value: what encode() returns. encode() picks N per message: 256 bytes, or
 /// the longest sentence the message can have when that is more (BFMIS with its three texts;

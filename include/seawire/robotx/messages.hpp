@@ -128,7 +128,8 @@ struct seawire::nmea::codec<seawire::robotx::light_pattern> {
         return errc::bad_enum;
     return errc::ok;
   }
-  static constexpr void write(nmea::writer& w, const value_type& v) noexcept {
+  template <nmea::sentence_writer W>
+  static constexpr void write(W& w, const value_type& v) noexcept {
     for (const auto c : v.colors) w.put(static_cast<char>(c));
   }
 };
