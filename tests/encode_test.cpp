@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -214,6 +215,61 @@ TEST_CASE("position equality is the text form: degree digits the degrees need an
 
 // ---------------------------------------------------------------------------------------------
 // positions
+
+// The text a DDMM position is written as, built here digit by digit: the degrees zero-padded to
+// their digits (at least one), the minutes' two integer digits, a point and every fraction digit
+// (at least one).
+template <class C>
+std::string ddmm_text(const C& c) {
+  std::string deg = std::to_string(c.whole_degrees);
+  const std::size_t deg_width = c.degree_digits > 0 ? c.degree_digits : 1;
+  if (deg.size() < deg_width) deg.insert(0, deg_width - deg.size(), '0');
+  const unsigned places = c.minutes.places > 0 ? c.minutes.places : 1;
+  std::string digits = std::to_string(c.minutes.mantissa * (c.minutes.places > 0 ? 1 : 10));
+  if (digits.size() < places + 2) digits.insert(0, places + 2 - digits.size(), '0');
+  return deg + digits.substr(0, 2) + "." + digits.substr(2);
+}
+
+TEST_CASE("a DDMM position is written as its degrees' digits, two minute digits and the fraction") {
+  // Every degree width, degrees at their edges, minutes with 0 to 12 fraction digits at theirs.
+  std::size_t written = 0;
+  for (std::uint8_t width = 0; width <= 3; ++width) {
+    for (const std::uint16_t degrees :
+         std::initializer_list<std::uint16_t>{0, 1, 9, 10, 89, 90, 99, 100, 179, 180}) {
+      for (std::uint8_t places = 0; places <= 12; ++places) {
+        const std::uint64_t one = seawire::detail::pow10_table[places];
+        for (const std::uint64_t mantissa : {std::uint64_t{0}, std::uint64_t{1}, 9 * one / 10,
+                                             10 * one - 1, 10 * one, 60 * one - 1}) {
+          standard::rmc m{};
+          m.talker = talker_id("GP");
+          m.lat = latitude(degrees, decimal::scaled(static_cast<std::int64_t>(mantissa), places),
+                           hemisphere::north, width);
+          m.lon = longitude(degrees, decimal::scaled(static_cast<std::int64_t>(mantissa), places),
+                            hemisphere::west, width);
+          const auto e = encode(m);
+          const bool lat_ok = width <= 2 && (degrees < 90 || (degrees == 90 && mantissa == 0));
+          const bool lon_ok = degrees < 180 || mantissa == 0;
+          INFO("width " << int{width} << ", " << degrees << " degrees, " << mantissa << " / 10^"
+                        << int{places} << " minutes");
+          if (!lat_ok) {
+            CHECK(e.ec == errc::bad_latitude);
+            continue;
+          }
+          if (!lon_ok) {
+            CHECK(e.ec == errc::bad_longitude);
+            continue;
+          }
+          REQUIRE(e);
+          const std::string expected =
+              ",A," + ddmm_text(*m.lat) + ",N," + ddmm_text(*m.lon) + ",W,";
+          CHECK(std::string(e.view()).find(expected) == 7);  // after "$GPRMC,," (no time)
+          ++written;
+        }
+      }
+    }
+  }
+  CHECK(written > 1000);
+}
 
 TEST_CASE("positions built from degrees always carry a fraction of the minute") {
   // Every spec writes DDMM.m (Kingfisher: "minimum of one digit to the right of the decimal

@@ -379,8 +379,12 @@ struct codec<nmea_coordinate<Axis>> {
     if (v.unpadded) {
       w.put_fixed(m.mantissa, m.places, v.written_minute_digits());
     } else {
-      w.put_uint(v.whole_degrees, v.degree_digits);
-      w.put_fixed(m.mantissa, m.places, 2);
+      // Degrees and minutes as one number (dddmm.mmmm), the degrees' digits (at least one) and
+      // the minutes' two: one conversion instead of two. check() keeps it below 10^17.
+      const unsigned degree_digits = v.degree_digits > 0 ? v.degree_digits : 1U;
+      w.put_fixed(std::uint64_t{v.whole_degrees} * 100 * seawire::detail::pow10_table[m.places] +
+                      m.mantissa,
+                  m.places, degree_digits + 2);
     }
     w.next_field();
     w.put(static_cast<char>(v.hemi));
