@@ -287,6 +287,38 @@ TEST_CASE("writer::put_uint and put_fixed write what std::to_string would") {
   }
 }
 
+// Numbers below 2^32 are written in 32-bit arithmetic, larger ones in 64-bit: at the edge, and
+// where the integer part left after the fraction crosses it, with every fraction length and
+// padding, by the checked writer and by encode's unchecked one, as std::to_string would.
+TEST_CASE("put_fixed at the 32-bit edge: both arithmetics write the digits std::to_string does") {
+  std::vector<std::uint64_t> values;
+  for (const std::uint64_t edge : {std::uint64_t{0xFFFFFFFF}, std::uint64_t{0x100000000}}) {
+    for (std::uint64_t p = 1; p <= 10'000'000'000ULL; p *= 10) {
+      values.insert(values.end(), {edge - 1, edge, edge + 1, edge * p - 1, edge * p, edge * p + 1});
+    }
+  }
+  for (const std::uint64_t v : values) {
+    for (unsigned places = 0; places <= 19; ++places) {
+      for (unsigned min = 0; min <= 21; ++min) {
+        const std::uint64_t p = seawire::detail::pow10_table[places];
+        std::string whole = std::to_string(v / p);
+        while (whole.size() < min && whole.size() < 20) whole.insert(whole.begin(), '0');
+        std::string fraction = std::to_string(v % p);
+        while (fraction.size() < places) fraction.insert(fraction.begin(), '0');
+        const std::string want = places == 0 ? whole : whole + "." + fraction;
+        INFO(v << " places " << places << " min " << min);
+        char buf[64];
+        writer checked(buf);
+        checked.put_fixed(v, places, min);
+        REQUIRE(checked.view() == want);
+        seawire::nmea::detail::basic_writer<false> unchecked(buf);
+        unchecked.put_fixed(v, places, min);
+        REQUIRE(unchecked.view() == want);
+      }
+    }
+  }
+}
+
 // Times, dates and positions write small numbers padded to two digits by a shorter way: every
 // such number, with the widths around it, as std::to_string would, and out of room at the margin.
 TEST_CASE("small padded numbers: writer::put_uint and append_uint against std::to_string") {

@@ -139,6 +139,22 @@ constexpr std::uint64_t write_digits(char* end, std::uint64_t v, unsigned count)
     }
     return v;
   }
+  if (v <= 0xFFFFFFFFU) {
+    // In 32 bits (nearly every number a sentence carries): a division by 100 is then one
+    // multiplication and a shift, where a 64-bit one takes a 128-bit product and five more.
+    auto w = static_cast<std::uint32_t>(v);
+    for (; count >= 2; count -= 2) {
+      const std::uint32_t q = w / 100;
+      end -= 2;
+      copy_pair(end, std::size_t{w - q * 100} * 2);
+      w = q;
+    }
+    if (count == 1) {
+      *--end = static_cast<char>('0' + w % 10);
+      w /= 10;
+    }
+    return w;
+  }
   for (; count >= 2; count -= 2) {
     const auto pair = static_cast<std::size_t>(v % 100) * 2;
     v /= 100;
