@@ -261,6 +261,12 @@ template <class... Ms>
   }
 }
 
+/// The first of a list of types.
+template <class First, class...>
+struct first_type {
+  using type = First;
+};
+
 }  // namespace detail
 
 /// A well-formed sentence that no message of the set describes: an address the set does not
@@ -347,8 +353,8 @@ struct message_set {
       if (detail::frame_plain(line, p, l)) {
         auto read = [&]<class M>() SEAWIRE_INLINE_LAMBDA { return read_plain_one<M>(l, line, p); };
         auto otherwise = [&]() SEAWIRE_INLINE_LAMBDA { return decode_general(line, p); };
-        return decode_at(find(detail::address_key{l.head, l.address.size()}, l.address), read,
-                         otherwise);
+        return dispatch(find(detail::address_key{l.head, l.address.size()}, l.address), read,
+                        otherwise);
       }
     }
     return decode_general(line, p);
@@ -361,7 +367,7 @@ struct message_set {
     auto otherwise = [&]() SEAWIRE_INLINE_LAMBDA {
       return result<variant>{variant(std::in_place_type<unknown_sentence>, unknown_sentence{s})};
     };
-    return decode_at(find(detail::key_of(s), s.address), read, otherwise);
+    return dispatch(find(detail::key_of(s), s.address), read, otherwise);
   }
 
   /// The index in the set of the message a sentence with this address decodes as (the first
@@ -431,67 +437,50 @@ struct message_set {
     }
   }
 
-  /// f.template operator()<M>() for the i-th message M of the set; nothing for i == size. A
-  /// set with a table calls through an array of one function per message; a set tried in turn
-  /// compares i with each index, where the compiler can fold it into the search before.
-  template <class F>
-  static constexpr void with_message(std::size_t i, F&& f) {
+  /// f.template operator()<M>() for the i-th message M of the set, otherwise() for i == size:
+  /// whatever they return (the same type, void included), built where the caller wants it (a
+  /// decode's result<variant>). A set with a table calls through an array of one function per
+  /// message; a set tried in turn compares i with each index, where the compiler can fold it
+  /// into the search before.
+  template <class F, class Otherwise>
+  SEAWIRE_ALWAYS_INLINE static constexpr decltype(auto) dispatch(std::size_t i, F& f,
+                                                                 Otherwise&& otherwise) {
     if constexpr (detail::use_dispatch_table<Ms...>()) {
-      if (i < size) thunks<std::remove_reference_t<F>>::fn[i](f);
+      if (i < size) return by_index<F>::fn[i](f);
+      return otherwise();
     } else {
-      [&]<std::size_t... I>(std::index_sequence<I...>) {
-        (void)((i == I ? (f.template operator()<Ms>(), true) : false) || ...);
-      }
-      (std::index_sequence_for<Ms...>{});
+      return dispatch_from<0, Ms...>(i, f, otherwise);
     }
   }
-  template <class M, class F>
-  static constexpr void call_one(F& f) {
-    f.template operator()<M>();
+  template <std::size_t I, class M, class... Rest, class F, class Otherwise>
+  SEAWIRE_ALWAYS_INLINE static constexpr decltype(auto) dispatch_from(std::size_t i, F& f,
+                                                                      Otherwise& otherwise) {
+    if (i == I) return f.template operator()<M>();
+    if constexpr (sizeof...(Rest) > 0) {
+      return dispatch_from<I + 1, Rest...>(i, f, otherwise);
+    } else {
+      return otherwise();
+    }
   }
-  // One function per message, by index in the set (defined once the set is).
+  /// f.template operator()<M>() where the table calls it (one function per message).
+  template <class M, class F>
+  static constexpr decltype(auto) call_one(F& f) {
+    return f.template operator()<M>();
+  }
+  // call_one<M> of each message, by index in the set (defined once the set is).
   template <class F>
-  struct thunks {
-    using fn_type = void (*)(F&);
+  struct by_index {
+    using fn_type =
+        decltype(&message_set::template call_one<typename detail::first_type<Ms...>::type, F>);
     // With its bound: Clang 14 refuses, in a constant expression, the first read of an array
     // whose bound it has not yet deduced.
     static constexpr fn_type fn[sizeof...(Ms)] = {&message_set::template call_one<Ms, F>...};
   };
-
-  /// read.template operator()<M>() for the i-th message M of the set, otherwise() for
-  /// i == size: the result<variant> each returns, built where the caller of decode wants it. A
-  /// set with a table calls through an array of one function per message; a set tried in turn
-  /// compares i with each index, where the compiler can fold it into the search before.
-  template <class Read, class Otherwise>
-  SEAWIRE_ALWAYS_INLINE static constexpr result<variant> decode_at(std::size_t i, Read& read,
-                                                                   Otherwise& otherwise) {
-    if constexpr (detail::use_dispatch_table<Ms...>()) {
-      if (i < size) return decoders<Read>::fn[i](read);
-      return otherwise();
-    } else {
-      return decode_from<0, Ms...>(i, read, otherwise);
-    }
+  /// dispatch() of a callable that returns nothing, nothing done for an unknown index.
+  template <class F>
+  static constexpr void with_message(std::size_t i, F&& f) {
+    dispatch(i, f, [] {});
   }
-  template <std::size_t I, class M, class... Rest, class Read, class Otherwise>
-  SEAWIRE_ALWAYS_INLINE static constexpr result<variant> decode_from(std::size_t i, Read& read,
-                                                                     Otherwise& otherwise) {
-    if (i == I) return read.template operator()<M>();
-    if constexpr (sizeof...(Rest) > 0) {
-      return decode_from<I + 1, Rest...>(i, read, otherwise);
-    } else {
-      return otherwise();
-    }
-  }
-  template <class M, class Read>
-  static constexpr result<variant> decode_with(Read& read) {
-    return read.template operator()<M>();
-  }
-  // decode_with<M> of each message, by index in the set (defined once the set is).
-  template <class Read>
-  struct decoders {
-    using fn_type = result<variant> (*)(Read&);
-    static constexpr fn_type fn[sizeof...(Ms)] = {&message_set::template decode_with<Ms, Read>...};
-  };
 
   /// M read in one pass from l into a default-initialized M of its own (not into the result:
   /// emplacing a message into a variant clears it whole first), then copied into the result it
