@@ -480,6 +480,15 @@ TEST_CASE("a BFMIS that decodes also encodes: its texts need more than 256 bytes
   // Other messages keep the 256-byte buffer; an explicit size still works.
   static_assert(sizeof(encode(sandshark::bpsts{}).data) == 256);
   CHECK(encode<128>(m).ec == errc::buffer_too_small);
+  // Its longest sentence is longer than encode_to takes storage of its own for: a buffer shorter
+  // than that is written with the room checked at each write, to the same bytes or none.
+  static_assert(nmea::detail::longest_sentence<sandshark::bfmis>() >
+                nmea::detail::own_sentence_room);
+  std::vector<char> exact(e.view().size());
+  const auto w = encode_to(m, std::span<char>(exact));
+  REQUIRE(w);
+  CHECK(std::string_view(exact.data(), w.value) == e.view());
+  CHECK(encode_to(m, std::span<char>(exact.data(), exact.size() - 1)).ec == errc::buffer_too_small);
 }
 
 // A program's own function named encode, called without qualification from its namespace on

@@ -16,7 +16,10 @@ namespace seawire::nmea {
 /// present and non-blank unless `allows_blank`), check() applies the value's own domain before
 /// writing, write() writes them (the message layer writes the comma before the first).
 /// `max_chars` is the longest text write() produces for a value check() accepts (the commas
-/// between its own wire fields included): encode() sizes its buffer from it.
+/// between its own wire fields included): encode() sizes its buffer from it, and encode_to
+/// trusts it, writing a message whose codecs' write() take any sentence_writer into a buffer
+/// that holds the longest sentence they add up to without checking the room (writer.hpp).
+/// write() is only ever given values check() accepted.
 template <class T>
 struct codec;
 

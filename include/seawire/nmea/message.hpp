@@ -559,14 +559,34 @@ template <message_like T>
   }
 }
 
+/// The most stack encode_to takes for a sentence of its own (below): a message whose longest
+/// sentence is longer (BFMIS, or a user's long text field) is written into a shorter buffer with
+/// the room checked at each write instead.
+inline constexpr std::size_t own_sentence_room = 512;
+
+/// encode_sentence into a buffer shorter than T's longest sentence, for a T whose longest is
+/// longer than own_sentence_room: with the room checked at each write. Out of line: the rare
+/// case, kept out of the common one's code.
+template <message_like T>
+[[nodiscard]] SEAWIRE_NOINLINE constexpr result<std::size_t> encode_checked(
+    const T& msg, std::span<char> out) noexcept {
+  return write_sentence<writer>(msg, out);
+}
+
 /// encode_to's work (below). With one check of the room, where T's codecs say how long they
 /// write: a buffer that holds T's longest sentence is written without looking at the room left;
-/// into a shorter one, the sentence is written in storage of its own and copied when it fits.
+/// a shorter one through storage of encode's own (copied when the sentence fits), or, for a T
+/// whose longest sentence is longer than own_sentence_room, with the room checked at each write.
 template <message_like T>
 [[nodiscard]] constexpr result<std::size_t> encode_sentence(const T& msg,
                                                             std::span<char> out) noexcept {
-  if constexpr (writes_unchecked<T>()) {
-    constexpr std::size_t longest = longest_sentence<T>();
+  constexpr std::size_t longest = longest_sentence<T>();
+  if constexpr (!writes_unchecked<T>()) {
+    return write_sentence<writer>(msg, out);
+  } else if constexpr (longest > own_sentence_room) {
+    if (out.size() >= longest) return write_sentence<basic_writer<false>>(msg, out);
+    return encode_checked(msg, out);
+  } else {
     const bool direct = out.size() >= longest;
     char own[longest];  // written only when `out` is shorter, read only where written
     result<std::size_t> r =
@@ -579,8 +599,6 @@ template <message_like T>
     }
     for (std::size_t i = 0; i < r.value; ++i) out[i] = own[i];
     return r;
-  } else {
-    return write_sentence<writer>(msg, out);
   }
 }
 

@@ -380,7 +380,8 @@ struct codec<nmea_coordinate<Axis>> {
       w.put_fixed(m.mantissa, m.places, v.written_minute_digits());
     } else {
       // Degrees and minutes as one number (dddmm.mmmm), the degrees' digits (at least one) and
-      // the minutes' two: one conversion instead of two. check() keeps it below 10^17.
+      // the minutes' two: one conversion instead of two. check() keeps it below 10^17 (and the
+      // places within pow10_table): write() is only given values check() accepts.
       const unsigned degree_digits = v.degree_digits > 0 ? v.degree_digits : 1U;
       w.put_fixed(std::uint64_t{v.whole_degrees} * 100 * seawire::detail::pow10_table[m.places] +
                       m.mantissa,

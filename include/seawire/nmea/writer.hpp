@@ -144,8 +144,9 @@ class basic_writer {
 /// seal(). Checks nothing of what it is given (is_address, is_field_text say what is valid), but
 /// the room: what does not fit is not written, and seal() says buffer_too_small.
 ///
-/// A codec's write() takes it as a template parameter (`template <class W> static constexpr void
-/// write(W& w, const T& v)`), so that encode can also hand it its unchecked writer; such a
+/// A codec's write() takes it as a template parameter (`template <sentence_writer W> static
+/// constexpr void write(W& w, const T& v)`), so that encode can also hand it its unchecked
+/// writer; such a
 /// codec's `max_chars` must bound what it writes for every value its check() accepts (encode
 /// trusts it for the room). A codec whose write() takes `writer&` is always given this one.
 using writer = detail::basic_writer<true>;
