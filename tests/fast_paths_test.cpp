@@ -250,6 +250,19 @@ TEST_CASE("digit_count: exact at every power of ten and either side of it") {
   static_assert(seawire::detail::digit_count(99) == 2 && seawire::detail::digit_count(100) == 3);
 }
 
+// v / 10^places as put_fixed writes it, built from std::to_string: the integer part zero-padded to
+// `min` digits (at most 20), then a point and all `places` fraction digits.
+namespace {
+std::string fixed_text(std::uint64_t v, unsigned places, unsigned min) {
+  const std::uint64_t p = seawire::detail::pow10_table[places];
+  std::string whole = std::to_string(v / p);
+  while (whole.size() < min && whole.size() < 20) whole.insert(whole.begin(), '0');
+  std::string fraction = std::to_string(v % p);
+  while (fraction.size() < places) fraction.insert(fraction.begin(), '0');
+  return places == 0 ? whole : whole + "." + fraction;
+}
+}  // namespace
+
 TEST_CASE("writer::put_uint and put_fixed write what std::to_string would") {
   prng g{99};
   for (int k = 0; k < 100000; ++k) {
@@ -268,12 +281,7 @@ TEST_CASE("writer::put_uint and put_fixed write what std::to_string would") {
     REQUIRE(w.view() == want);
 
     // put_fixed: the integer part then the `places` fraction digits.
-    const std::uint64_t p = seawire::detail::pow10_table[places];
-    std::string whole = std::to_string(v / p);
-    while (whole.size() < min && whole.size() < 20) whole.insert(whole.begin(), '0');
-    std::string fraction = std::to_string(v % p);
-    while (fraction.size() < places) fraction.insert(fraction.begin(), '0');
-    const std::string fixed = places == 0 ? whole : whole + "." + fraction;
+    const std::string fixed = fixed_text(v, places, min);
     writer f(buf);
     f.put_fixed(v, places, min);
     INFO("places " << places);
@@ -300,12 +308,7 @@ TEST_CASE("put_fixed at the 32-bit edge: both arithmetics write the digits std::
   for (const std::uint64_t v : values) {
     for (unsigned places = 0; places <= 19; ++places) {
       for (unsigned min = 0; min <= 21; ++min) {
-        const std::uint64_t p = seawire::detail::pow10_table[places];
-        std::string whole = std::to_string(v / p);
-        while (whole.size() < min && whole.size() < 20) whole.insert(whole.begin(), '0');
-        std::string fraction = std::to_string(v % p);
-        while (fraction.size() < places) fraction.insert(fraction.begin(), '0');
-        const std::string want = places == 0 ? whole : whole + "." + fraction;
+        const std::string want = fixed_text(v, places, min);
         INFO(v << " places " << places << " min " << min);
         char buf[64];
         writer checked(buf);
