@@ -448,9 +448,8 @@ void check_encoded(const M& m, std::string_view sentence, std::string_view origi
   // The room encode counts on. A message whose codecs say how long they write is written without
   // a check of the room when the buffer holds its longest sentence (exactly that much here, on
   // the heap, where the address sanitizer sees a byte written past it), and a shorter buffer
-  // through storage of encode's own (or with the room checked at each write, for a message
-  // whose longest sentence is long): a buffer of the sentence's size takes the same bytes, one
-  // byte less none.
+  // with the room checked at each write: a buffer of the sentence's size takes the same bytes,
+  // one byte less none.
   constexpr std::size_t longest = nmea::detail::longest_sentence<M>();
   if constexpr (nmea::detail::writes_unchecked<M>()) {
     SEAWIRE_FUZZ_CHECK(s.size() <= longest, "a sentence longer than its message's longest", s,

@@ -559,14 +559,11 @@ template <message_like T>
   }
 }
 
-/// The most stack encode_to takes for a sentence of its own (below): a message whose longest
-/// sentence is longer (BFMIS, or a user's long text field) is written into a shorter buffer with
-/// the room checked at each write instead.
-inline constexpr std::size_t own_sentence_room = 512;
-
-/// encode_sentence into a buffer shorter than T's longest sentence, for a T whose longest is
-/// longer than own_sentence_room: with the room checked at each write. Out of line: the rare
-/// case, kept out of the common one's code.
+/// encode_sentence into a buffer shorter than T's longest sentence: with the room checked at each
+/// write (a sentence that does not fit is buffer_too_small). Out of line: kept out of the common
+/// case's code. (Written in storage of encode's own and copied instead, such a sentence took
+/// 20-35% more time on the benchmark's 256-byte buffer, for CPIMU, BFNVG or BFACK, whose
+/// longest sentences are longer.)
 template <message_like T>
 [[nodiscard]] SEAWIRE_NOINLINE constexpr result<std::size_t> encode_checked(
     const T& msg, std::span<char> out) noexcept {
@@ -574,31 +571,16 @@ template <message_like T>
 }
 
 /// encode_to's work (below). With one check of the room, where T's codecs say how long they
-/// write: a buffer that holds T's longest sentence is written without looking at the room left;
-/// a shorter one through storage of encode's own (copied when the sentence fits), or, for a T
-/// whose longest sentence is longer than own_sentence_room, with the room checked at each write.
+/// write: a buffer that holds T's longest sentence is written without looking at the room left,
+/// a shorter one with the room checked at each write.
 template <message_like T>
 [[nodiscard]] constexpr result<std::size_t> encode_sentence(const T& msg,
                                                             std::span<char> out) noexcept {
-  constexpr std::size_t longest = longest_sentence<T>();
-  if constexpr (!writes_unchecked<T>()) {
-    return write_sentence<writer>(msg, out);
-  } else if constexpr (longest > own_sentence_room) {
-    if (out.size() >= longest) return write_sentence<basic_writer<false>>(msg, out);
+  if constexpr (writes_unchecked<T>()) {
+    if (out.size() >= longest_sentence<T>()) return write_sentence<basic_writer<false>>(msg, out);
     return encode_checked(msg, out);
   } else {
-    const bool direct = out.size() >= longest;
-    char own[longest];  // written only when `out` is shorter, read only where written
-    result<std::size_t> r =
-        write_sentence<basic_writer<false>>(msg, direct ? out : std::span<char>(own, longest));
-    if (direct || !r) return r;
-    if (r.value > out.size()) {
-      result<std::size_t> small;
-      small.ec = errc::buffer_too_small;
-      return small;
-    }
-    for (std::size_t i = 0; i < r.value; ++i) out[i] = own[i];
-    return r;
+    return write_sentence<writer>(msg, out);
   }
 }
 
