@@ -26,6 +26,7 @@
 #include "seawire/nmea/dispatch.hpp"
 #include "seawire/nmea/fields.hpp"
 #include "seawire/nmea/sentence.hpp"
+#include "seawire/nmea/time.hpp"
 #include "seawire/nmea/writer.hpp"
 #include "seawire/standard/gga.hpp"
 #include "seawire/standard/rmc.hpp"
@@ -774,6 +775,82 @@ TEST_CASE("the time reader agrees with three fixed-digit reads") {
     REQUIRE(ef == es);
     if (es == errc::ok) REQUIRE(fast == slow);
   }
+}
+
+TEST_CASE("six digits as three pairs in one word: every byte at every place, as byte by byte") {
+  // Bytes 6 and 7 are read with the six and must not matter; a byte below '0' or above '9' at
+  // any of the six must refuse the whole.
+  for (const std::string_view background :
+       {"12345678", "00000000", "99999999", "235960*0", "010280,A"}) {
+    for (std::size_t at = 0; at < 8; ++at) {
+      for (unsigned b = 0; b < 256; ++b) {
+        std::string word(background);
+        word[at] = static_cast<char>(b);
+        INFO(background << " with byte " << b << " at " << at);
+        unsigned fast[3] = {};
+        unsigned slow[3] = {};
+        const bool f = nmea::detail::scan_digit_pairs(word.data(), fast);
+        const bool s = nmea::detail::parse_digit_pairs(word, slow);
+        REQUIRE(f == s);
+        REQUIRE(f == (at >= 6 || (b >= '0' && b <= '9')));
+        if (f) {
+          for (std::size_t k = 0; k < 3; ++k) REQUIRE(fast[k] == slow[k]);
+        }
+      }
+    }
+  }
+  static_assert([] {
+    unsigned two[3] = {};
+    return nmea::detail::scan_digit_pairs("235960*5", two) && two[0] == 23 && two[1] == 59 &&
+           two[2] == 60 && !nmea::detail::scan_digit_pairs("2359 0*5", two);
+  }());
+}
+
+namespace {
+// What a one-pass scanner of V makes of `text` as the last field of a framed body: the value
+// and the byte it stopped at, or nullptr. The line ends "*00", the only bytes past the body.
+template <class V>
+const char* scan_at_end(std::string& line, std::string_view text, V& v) {
+  line = "$XXABC," + std::string(text) + "*00";
+  const char* const body = line.data() + 7;
+  return codec<V>::scan(body, body + text.size(), v);
+}
+}  // namespace
+
+TEST_CASE("the one-pass time and date readers accept what read() accepts, to the same value") {
+  prng g{19};
+  std::string line;
+  std::size_t accepted = 0;
+  for (int k = 0; k < 300000; ++k) {
+    const std::string s = random_text(g, "01234567890123456789012345.,:", 17);
+    if (s.empty() || s.front() == ',' || s.find('*') != std::string::npos) continue;
+    INFO(s);
+    const std::string_view field = std::string_view(s).substr(0, s.find(','));
+    time_of_day slow_time;
+    time_of_day fast_time;
+    const bool time_ok = through_codec(field, slow_time) == errc::ok;
+    // The scan may stop inside the field ("123456" of "1234567"): the one-pass reader then
+    // finds no ',' there and gives the line up. Stopped at the field's end, it has the value
+    // read() gives; read() accepts nothing else.
+    const char* q = scan_at_end(line, s, fast_time);
+    const char* field_end = line.data() + 7 + field.size();
+    REQUIRE((q == field_end) == time_ok);
+    if (q == field_end) {
+      REQUIRE(fast_time == slow_time);
+      ++accepted;
+    }
+    date slow_date;
+    date fast_date;
+    const bool date_ok = through_codec(field, slow_date) == errc::ok;
+    q = scan_at_end(line, s, fast_date);
+    field_end = line.data() + 7 + field.size();  // a new line, perhaps elsewhere
+    REQUIRE((q == field_end) == date_ok);
+    if (q == field_end) {
+      REQUIRE(fast_date == slow_date);
+      ++accepted;
+    }
+  }
+  CHECK(accepted > 1000);
 }
 
 TEST_CASE("CRC-32 eight bytes at a time equals the byte-at-a-time register") {

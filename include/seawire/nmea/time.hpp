@@ -159,6 +159,22 @@ namespace detail {
                            static_cast<unsigned>(d4 < 10) & static_cast<unsigned>(d5 < 10));
 }
 
+/// parse_digit_pairs of the six bytes at `p`, read as one little-endian word: p[0, 8) must be
+/// readable (six bytes of a framed sentence's body are: its "*hh" follows). Each byte made
+/// 0..9, then each byte plus ten times the one before it: the pairs are bytes 0, 2 and 4.
+[[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr bool scan_digit_pairs(const char* p,
+                                                                    unsigned (&two)[3]) noexcept {
+  const std::uint64_t w = seawire::detail::load_le64(p);
+  if ((seawire::detail::non_digit_bytes(w) & 0x0000808080808080U) != 0) [[unlikely]]
+    return false;
+  const std::uint64_t x = w ^ 0x3030303030303030U;
+  const std::uint64_t y = x * 10 + (x >> 8U);  // bytes 0 to 5 hold 0..99: no carry between them
+  two[0] = static_cast<unsigned>(y & 0xFFU);
+  two[1] = static_cast<unsigned>((y >> 16U) & 0xFFU);
+  two[2] = static_cast<unsigned>((y >> 32U) & 0xFFU);
+  return true;
+}
+
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
@@ -219,15 +235,19 @@ struct codec<time_of_day> {
     if (end - p < 6) [[unlikely]]
       return nullptr;
     unsigned two[3];  // hh, mm, ss
-    if (!detail::parse_digit_pairs(std::string_view(p, 6), two)) [[unlikely]]
+    if (!detail::scan_digit_pairs(p, two)) [[unlikely]]
       return nullptr;
     p += 6;
     unsigned frac = 0;
     std::size_t places = 0;
     if (p != end && *p == '.') {
-      for (++p; places <= 9 && seawire::detail::is_digit(*p); ++p, ++places)
-        frac = frac * 10 + static_cast<unsigned>(*p - '0');
-      if (places == 0 || places > 9) [[unlikely]]
+      // Up to the first byte no digit (there is one: the '*' at `end`); more than nine digits
+      // wrap `frac` and are refused below.
+      const char* const first = ++p;
+      for (unsigned d = 0; (d = static_cast<unsigned char>(*p) - unsigned{'0'}) < 10; ++p)
+        frac = frac * 10 + d;
+      places = static_cast<std::size_t>(p - first);
+      if (places - 1 >= 9) [[unlikely]]  // none, or more than nine
         return nullptr;
     }
     v = {static_cast<std::uint8_t>(two[0]), static_cast<std::uint8_t>(two[1]),
@@ -288,7 +308,7 @@ struct codec<date> {
   SEAWIRE_ALWAYS_INLINE static constexpr const char* scan(const char* p, const char* end,
                                                           date& v) noexcept {
     unsigned two[3];  // dd, mm, yy
-    if (end - p < 6 || !detail::parse_digit_pairs(std::string_view(p, 6), two)) [[unlikely]]
+    if (end - p < 6 || !detail::scan_digit_pairs(p, two)) [[unlikely]]
       return nullptr;
     v = {static_cast<std::uint16_t>(two[2] < 80 ? 2000 + two[2] : 1900 + two[2]),
          static_cast<std::uint8_t>(two[1]), static_cast<std::uint8_t>(two[0])};
