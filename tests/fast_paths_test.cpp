@@ -356,6 +356,55 @@ TEST_CASE("small padded numbers: writer::put_uint and append_uint against std::t
   }());
 }
 
+// Times and dates are written as three two-digit numbers at once: as put_uint(v, 2) three
+// times, a number of 100 or more included, and out of room at the margin.
+TEST_CASE("writer::put_pairs writes what put_uint(v, 2) writes three times") {
+  const auto check = [](std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    INFO(a << " " << b << " " << c);
+    char want_buf[80];
+    writer want(want_buf);
+    want.put_uint(a, 2);
+    want.put_uint(b, 2);
+    want.put_uint(c, 2);
+    REQUIRE_FALSE(want.failed());
+    char buf[80];
+    writer w(buf);
+    w.put('x');
+    w.put_pairs(a, b, c);
+    REQUIRE(w.view().substr(1) == want.view());
+    writer exact(std::span<char>(buf, want.size()));
+    exact.put_pairs(a, b, c);
+    REQUIRE_FALSE(exact.failed());
+    REQUIRE(exact.view() == want.view());
+    writer tight(std::span<char>(buf, want.size() - 1));
+    tight.put_pairs(a, b, c);
+    REQUIRE(tight.failed());
+    // The unchecked writer, given the room, writes the same bytes and nothing past them.
+    char raw[80];
+    std::fill(std::begin(raw), std::end(raw), '#');
+    seawire::nmea::detail::basic_writer<false> u(std::span<char>(raw, want.size()));
+    u.put_pairs(a, b, c);
+    REQUIRE(std::string_view(raw, want.size()) == want.view());
+    REQUIRE(raw[want.size()] == '#');
+  };
+  for (std::uint64_t v = 0; v < 100; ++v) {
+    check(v, 0, 99);
+    check(99, v, 0);
+    check(0, 99, v);
+  }
+  for (const std::uint64_t big : {100ULL, 255ULL, 999ULL, 2026ULL, 18446744073709551615ULL}) {
+    check(big, 7, 8);
+    check(7, big, 8);
+    check(7, 8, big);
+  }
+  static_assert([] {
+    char out[6]{};
+    writer w(out);
+    w.put_pairs(23, 5, 60);
+    return w.view() == "230560";
+  }());
+}
+
 // A number that fits its width is written at that width with no digit count; one that does not
 // fit, or a width past 19 digits, takes the counting way. Both against std::to_string padded to
 // the width (at most max_padded_digits), at every width and around every power of ten, and

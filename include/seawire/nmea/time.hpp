@@ -276,9 +276,7 @@ struct codec<time_of_day> {
   }
   template <sentence_writer W>
   static constexpr void write(W& w, const time_of_day& v) noexcept {
-    w.put_uint(v.hour, 2);
-    w.put_uint(v.minute, 2);
-    w.put_uint(v.second, 2);
+    w.put_pairs(v.hour, v.minute, v.second);
     if (v.places > 0) {
       w.put('.');
       w.put_uint(v.fraction, v.places);
@@ -325,9 +323,7 @@ struct codec<date> {
   }
   template <sentence_writer W>
   static constexpr void write(W& w, const date& v) noexcept {
-    w.put_uint(v.day, 2);
-    w.put_uint(v.month, 2);
-    w.put_uint(v.year % 100u, 2);
+    w.put_pairs(v.day, v.month, v.year % 100U);
   }
 };
 

@@ -79,6 +79,22 @@ class basic_writer {
     }
     put_fixed(v, 0, min_digits);
   }
+  /// Three numbers of two digits each, one after the other ("hhmmss", "ddmmyy") with one room
+  /// check. A number of 100 or more is written whole, as put_uint(v, 2) writes it.
+  constexpr void put_pairs(std::uint64_t a, std::uint64_t b, std::uint64_t c) noexcept {
+    if (a < 100 && b < 100 && c < 100) [[likely]] {
+      if (!has_room(6)) return;
+      char* const p = out_.data() + size_;
+      seawire::detail::copy_pair(p, static_cast<std::size_t>(a) * 2);
+      seawire::detail::copy_pair(p + 2, static_cast<std::size_t>(b) * 2);
+      seawire::detail::copy_pair(p + 4, static_cast<std::size_t>(c) * 2);
+      size_ += 6;
+      return;
+    }
+    put_uint(a, 2);
+    put_uint(b, 2);
+    put_uint(c, 2);
+  }
   /// The fixed-point number scaled / 10^places, e.g. "4.50" from 450 and 2: all `places` fraction
   /// digits, and the integer part zero-padded to at least `min_int_digits` digits (at most 20).
   /// Nothing is written, and the writer fails, if it does not all fit.
