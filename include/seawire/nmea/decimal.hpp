@@ -347,10 +347,8 @@ constexpr void read_digits(std::string_view s, std::size_t& i, std::uint64_t& m,
              : errc::ok;
 }
 
-/// A decimal as written: its sign, then its digits. Inlined into the field walk (as is the
-/// codec's write()): a sentence of several decimals otherwise made one call more for each.
 template <sentence_writer W>
-SEAWIRE_ALWAYS_INLINE constexpr void write_decimal(W& w, const decimal& d) noexcept {
+constexpr void write_decimal(W& w, const decimal& d) noexcept {
   if (d.negative) w.put('-');
   w.put_fixed(d.mantissa, d.places, d.int_width);
 }
@@ -404,7 +402,7 @@ struct codec<decimal> {
   }
   static constexpr errc check(const decimal& v) noexcept { return detail::check_decimal(v); }
   template <sentence_writer W>
-  SEAWIRE_ALWAYS_INLINE static constexpr void write(W& w, const decimal& v) noexcept {
+  static constexpr void write(W& w, const decimal& v) noexcept {
     detail::write_decimal(w, v);
   }
 };

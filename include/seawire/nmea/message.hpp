@@ -487,9 +487,8 @@ template <message_like T>
 }
 
 /// encode_sentence's walk over the fields, through the writer W. Inlined where it is called (the
-/// one place), and its two lambdas into it: left to GCC 12, whether they were inlined changed from
-/// message to message and with -O3, and the calls between them cost up to 20% of a sentence
-/// (RMC/GGA at -O3, PY* at -O2).
+/// one place): left to GCC 12, the walk's lambdas went out of line and encode cost 2-7% more
+/// instructions than with the room checked at each write.
 template <class W, message_like T>
 [[nodiscard]] SEAWIRE_ALWAYS_INLINE constexpr result<std::size_t> write_sentence(
     const T& msg, std::span<char> out) noexcept {
@@ -519,20 +518,19 @@ template <class W, message_like T>
   bool skip_rest = false;
   // Each descriptor named by its place in the constant table (as in decode_into), so that its
   // options are constants in the code written for it.
-  const auto one =
-      [&]<std::size_t I>(std::integral_constant<std::size_t, I>) SEAWIRE_INLINE_LAMBDA {
-        constexpr const auto& f = field_at<I>(T::nmea.fields);
-        if (index++ >= keep) skip_rest = true;
-        // A field of the longer form that this message does not have takes no number.
-        if (f.opts.only_with_field_count != 0 && detail::skipped(f, msg)) return true;
-        ++wire_field;
-        e = detail::write_field(f, w, msg, skip_rest, wire_field);
-        using V = typename std::remove_cvref_t<decltype(f)>::value_type;
-        wire_field = static_cast<std::uint16_t>(
-            wire_field + (e == errc::ok ? f.width() - 1 : detail::error_offset<V>(e)));
-        return e == errc::ok;
-      };
-  [&]<std::size_t... I>(std::index_sequence<I...>) SEAWIRE_INLINE_LAMBDA {
+  const auto one = [&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    constexpr const auto& f = field_at<I>(T::nmea.fields);
+    if (index++ >= keep) skip_rest = true;
+    // A field of the longer form that this message does not have takes no number.
+    if (f.opts.only_with_field_count != 0 && detail::skipped(f, msg)) return true;
+    ++wire_field;
+    e = detail::write_field(f, w, msg, skip_rest, wire_field);
+    using V = typename std::remove_cvref_t<decltype(f)>::value_type;
+    wire_field = static_cast<std::uint16_t>(
+        wire_field + (e == errc::ok ? f.width() - 1 : detail::error_offset<V>(e)));
+    return e == errc::ok;
+  };
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
     (void)(one(std::integral_constant<std::size_t, I>{}) && ...);
   }
   (std::make_index_sequence<n>{});
