@@ -5,7 +5,6 @@
 // dropped byte accounted for. The rules (what starts, ends, interrupts and drops an item), the
 // byte accounting and the memory used: docs/streams.md.
 
-#include <algorithm>
 #include <array>
 #include <cassert>
 #include <concepts>
@@ -17,6 +16,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "seawire/detail/algorithm.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/enum_names.hpp"
 #include "seawire/detail/inline.hpp"
@@ -118,6 +118,8 @@ enum class drop_reason : std::uint8_t {
 };
 
 /// "noise", "invalid_byte", ...: the enumerator's name.
+// (A template of nothing, so that only a caller reads the enumerators' names.)
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(drop_reason r) noexcept {
   return seawire::detail::enumerator_name_of<7>(r);
 }

@@ -50,6 +50,8 @@ enum class rule : std::uint8_t {
 inline constexpr std::size_t rule_count = 15;
 
 /// The identifier of a rule as text ("checksum_lowercase").
+// (A template of nothing, so that only a caller reads the enumerators' names.)
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(rule r) noexcept {
   return seawire::detail::enumerator_name_of<rule_count>(r, "unknown_rule");
 }

@@ -69,6 +69,8 @@ enum class vehicle_event_kind : std::uint8_t {
 };
 
 /// The identifier of a vehicle_event_kind as text ("request_expired"), for logs.
+// (A template of nothing, so that only a caller reads the enumerators' names.)
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(vehicle_event_kind k) noexcept {
   return seawire::detail::enumerator_name_of<8>(k, "unknown_event");
 }
