@@ -9,7 +9,6 @@
 //   NMEA 2000 PGNs (nmea2000/field.hpp)   bit_order::lsb_first, fields of any width at any bit
 //   ANELLO's 0xAB00 frame (anello/frame.hpp)  bit_order::msb_first, fields of whole bytes
 
-#include <algorithm>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -17,6 +16,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "seawire/detail/algorithm.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/detail/row_list.hpp"
 

@@ -7,7 +7,6 @@
 // anello/frame_json.hpp). The conventions, value type by value type (also fmt.hpp's):
 // tools/decode/README.md (writing) and tools/encode/README.md (reading).
 
-#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstddef>
@@ -19,6 +18,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "seawire/detail/algorithm.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/inline.hpp"
 #include "seawire/error.hpp"

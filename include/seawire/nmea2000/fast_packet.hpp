@@ -8,7 +8,6 @@
 // others, and accounts for every frame: frames_in() == frames_assembled() + frames_dropped() +
 // frames_pending(). Drop reasons and the ordering rule: docs/nmea2000.md.
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include <span>
 #include <string_view>
 
+#include "seawire/detail/algorithm.hpp"
 #include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea2000/can_id.hpp"

@@ -22,9 +22,10 @@
 // PGNs of one manufacturer share the framing of their range. Lookup: a binary search of the
 // sorted table, O(log n), constexpr.
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
+
+#include "seawire/detail/algorithm.hpp"
 
 namespace seawire::nmea2000 {
 

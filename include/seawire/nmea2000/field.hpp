@@ -7,7 +7,6 @@
 // of a field are sentinels (not available, out of range, reserved), reserved bits are sent as
 // ones. The full rules, sentinel counts by width and kind: docs/nmea2000.md.
 
-#include <algorithm>
 #include <array>
 #include <chrono>
 #include <concepts>
@@ -21,6 +20,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "seawire/detail/algorithm.hpp"
 #include "seawire/detail/ascii.hpp"
 #include "seawire/detail/bit_layout.hpp"
 #include "seawire/detail/enum_names.hpp"
@@ -930,8 +930,8 @@ class keyed_lookup {
   [[nodiscard]] static constexpr const auto& entries() noexcept {
     static_assert(detail::keyed_table_valid(T::entries),
                   "a keyed table must be sorted by (key, value), each pair and name once");
-    static_assert(std::ranges::all_of(T::entries,
-                                      [](const keyed_name& e) { return e.value <= max_valid_raw; }),
+    static_assert(std::all_of(T::entries.begin(), T::entries.end(),
+                              [](const keyed_name& e) { return e.value <= max_valid_raw; }),
                   "a keyed table names a sentinel");
     return T::entries;
   }

@@ -8,7 +8,6 @@
 // direction, 130311's source lookups, 127489's reserved byte), these follow the wire:
 // docs/nmea2000.md.
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include <span>
 #include <string_view>
 
+#include "seawire/detail/algorithm.hpp"
 #include "seawire/nmea2000/device_names.hpp"
 #include "seawire/nmea2000/field.hpp"
 
