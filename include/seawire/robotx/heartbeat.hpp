@@ -11,7 +11,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <tuple>
 #include <type_traits>
 
 #include "seawire/error.hpp"
@@ -120,10 +119,10 @@ class scheduler {
     if (best == report_type_count) return std::nullopt;
     slot_[best].waiting = false;
     switch (static_cast<report_type>(best)) {
-      case report_type::gates: return release<nmea::lazy<rxgat, N>>(*std::get<0>(held_), now);
-      case report_type::scan_code: return release<nmea::lazy<rxcod, N>>(*std::get<1>(held_), now);
-      case report_type::dock: return release<nmea::lazy<rxdok, N>>(*std::get<2>(held_), now);
-      case report_type::deliver: return release<nmea::lazy<rxdel, N>>(*std::get<3>(held_), now);
+      case report_type::gates: return release<nmea::lazy<rxgat, N>>(*held_.gates, now);
+      case report_type::scan_code: return release<nmea::lazy<rxcod, N>>(*held_.scan_code, now);
+      case report_type::dock: return release<nmea::lazy<rxdok, N>>(*held_.dock, now);
+      case report_type::deliver: return release<nmea::lazy<rxdel, N>>(*held_.deliver, now);
       case report_type::heartbeat: break;
     }
     return std::nullopt;
@@ -167,6 +166,29 @@ class scheduler {
     std::uint64_t order = 0;
   };
 
+  // The report of each type waiting to go: a struct rather than a std::tuple, whose constructors'
+  // constraints every translation unit including this header would compile.
+  struct held_reports {
+    std::optional<rxgat> gates;
+    std::optional<rxcod> scan_code;
+    std::optional<rxdok> dock;
+    std::optional<rxdel> deliver;
+
+    template <class M>
+    [[nodiscard]] constexpr std::optional<M>& of() noexcept {
+      if constexpr (std::is_same_v<M, rxgat>) {
+        return gates;
+      } else if constexpr (std::is_same_v<M, rxcod>) {
+        return scan_code;
+      } else if constexpr (std::is_same_v<M, rxdok>) {
+        return dock;
+      } else {
+        static_assert(std::is_same_v<M, rxdel>);
+        return deliver;
+      }
+    }
+  };
+
   template <class M>
   [[nodiscard]] static constexpr nmea::sentence_buffer<> trial_encode(const M& m) noexcept {
     return nmea::encode(m);
@@ -196,7 +218,7 @@ class scheduler {
     r.status = s.waiting       ? submit_status::replaced
                : allowed > now ? submit_status::held
                                : submit_status::ready;
-    std::get<std::optional<M>>(held_) = m;
+    held_.of<M>() = m;
     s.waiting = true;
     s.release_at = allowed;
     s.order = next_order_++;
@@ -224,8 +246,7 @@ class scheduler {
   scheduler_config config_;
   std::optional<rxhrb> heartbeat_;
   std::optional<instant> next_heartbeat_;
-  std::tuple<std::optional<rxgat>, std::optional<rxcod>, std::optional<rxdok>, std::optional<rxdel>>
-      held_;
+  held_reports held_;
   std::array<slot, report_type_count> slot_{};  // [0] (the heartbeat) unused
   std::array<std::optional<instant>, report_type_count> last_sent_{};
   std::uint64_t next_order_ = 0;

@@ -5,7 +5,6 @@
 // next_deadline() says when. Handshake, acks matched by name and timestamp, resends, heartbeat,
 // BPRMB keep-alive and control: docs/sessions.md.
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +14,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "seawire/detail/algorithm.hpp"
 #include "seawire/detail/enum_names.hpp"
 #include "seawire/error.hpp"
 #include "seawire/nmea/message.hpp"
@@ -63,6 +63,8 @@ enum class payload_event_kind : std::uint8_t {
 };
 
 /// The identifier of a payload_event_kind as text ("ack_ok"), for logs.
+// (A template of nothing, so that only a caller reads the enumerators' names.)
+template <int = 0>
 [[nodiscard]] constexpr std::string_view name(payload_event_kind k) noexcept {
   return seawire::detail::enumerator_name_of<13>(k, "unknown_event");
 }
@@ -88,10 +90,14 @@ struct payload_event {
 };
 
 /// The address of a payload message ("BPRMB").
+// (This and timestamp_of are templates of nothing: a visit over the variant is compiled where one
+// is called.)
+template <int = 0>
 [[nodiscard]] constexpr std::string_view address_of(const payload_message& m) noexcept {
   return std::visit([](const auto& x) { return decltype(x.nmea)::address; }, m);
 }
 /// Field 1 of a payload message; BPLOG has none.
+template <int = 0>
 [[nodiscard]] constexpr std::optional<nmea::time_of_day> timestamp_of(
     const payload_message& m) noexcept {
   return std::visit(
@@ -117,7 +123,11 @@ struct payload_in_flight {
   std::optional<time_point> pending_since;  ///< when a pending (3) ack came
   bool active = false;
 
-  [[nodiscard]] constexpr std::string_view address() const noexcept { return address_of(message); }
+  template <int = 0>
+  [[nodiscard]] constexpr std::string_view address() const noexcept {
+    return address_of(message);
+  }
+  template <int = 0>
   [[nodiscard]] constexpr std::optional<nmea::time_of_day> timestamp() const noexcept {
     return timestamp_of(message);
   }
