@@ -177,7 +177,8 @@ using pgns = detail::append_pgns<
 using frames = type_list<anello::sensor_frame_raw>;
 
 /// The policy of the first role whose set has this address; the default policy for an address
-/// that no set has. (A template of nothing: the walk over the roles is compiled where it is called.)
+/// that no set has. (A template of nothing: the walk over the roles is compiled where it is
+/// called.)
 template <int = 0>
 [[nodiscard]] constexpr nmea::parse_policy receiving_policy(std::string_view address) noexcept {
   nmea::parse_policy p;
