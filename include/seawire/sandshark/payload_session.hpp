@@ -136,6 +136,10 @@ struct payload_in_flight {
 template <std::size_t QueueCapacity = 16, std::size_t OutboxCapacity = 16,
           std::size_t EventCapacity = 32>
 class payload_session {
+  // The vehicle's messages, named so that they depend on the class's parameters: a header that
+  // merely defines the class does not compile their set.
+  using vehicle_set = nmea::lazy<from_vehicle, static_cast<int>(QueueCapacity * 0)>;
+
  public:
   /// Messages sent and awaiting an ack at the same time: the command, aborts, and the
   /// heartbeats and requests of the last resend_after.
@@ -279,11 +283,11 @@ class payload_session {
 
   /// Decode one line from the vehicle (from_vehicle_policy) and act on it. The result is the
   /// decoded message for the caller's own use (an unknown_sentence views into `line`).
-  [[nodiscard]] constexpr result<from_vehicle::variant> receive(std::string_view line,
-                                                                time_point now) noexcept {
+  [[nodiscard]] constexpr result<typename vehicle_set::variant> receive(std::string_view line,
+                                                                        time_point now) noexcept {
     // The decoder named through a template parameter: compiled where receive() is, not where
     // this header is read.
-    result<from_vehicle::variant> r =
+    result<typename vehicle_set::variant> r =
         decode_from_vehicle<static_cast<int>(QueueCapacity * 0)>(line);
     if (r) {
       handle(r.value, now);
@@ -294,7 +298,7 @@ class payload_session {
   }
 
   /// Act on a decoded vehicle message.
-  constexpr void handle(const from_vehicle::variant& v, time_point now) noexcept {
+  constexpr void handle(const typename vehicle_set::variant& v, time_point now) noexcept {
     std::visit([&](const auto& m) { handle(m, now); }, v);
   }
 

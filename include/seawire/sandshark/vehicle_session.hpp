@@ -89,6 +89,10 @@ struct vehicle_event {
 template <std::size_t MaxClients = 4, std::size_t OutboxCapacity = 32,
           std::size_t EventCapacity = 32>
 class vehicle_session {
+  // The payload's messages, named so that they depend on the class's parameters: a header that
+  // merely defines the class does not compile their set.
+  using payload_set = nmea::lazy<to_vehicle, static_cast<int>(MaxClients * 0)>;
+
  public:
   static constexpr std::size_t max_pending = 8;
 
@@ -132,13 +136,15 @@ class vehicle_session {
 
   /// Decode one line from client `c` (to_vehicle_policy), act on it and acknowledge it. The
   /// result is the decode, for the caller's own use. A client that is not connected is ignored.
-  [[nodiscard]] constexpr result<to_vehicle::variant> receive(client_id c, std::string_view line,
-                                                              time_point now) noexcept {
+  [[nodiscard]] constexpr result<typename payload_set::variant> receive(client_id c,
+                                                                        std::string_view line,
+                                                                        time_point now) noexcept {
     advance(now);
     pump(now);  // a request that expired at `now` expires before this line is read
     // The decoder named through a template parameter: compiled where receive() is, not where
     // this header is read.
-    result<to_vehicle::variant> r = decode_to_vehicle<static_cast<int>(MaxClients * 0)>(line);
+    result<typename payload_set::variant> r =
+        decode_to_vehicle<static_cast<int>(MaxClients * 0)>(line);
     if (!connected(c)) return r;
     const std::uint32_t ticket = next_ticket_++;
     if (!r) {
@@ -445,7 +451,7 @@ class vehicle_session {
           nmea::codec<nmea::time_of_day>::read(r, t) == errc::ok)
         e.command_timestamp = t;
       const nmea::text<96> why =
-          explain(error, field, to_vehicle::field_name(s.value.address, field));
+          explain(error, field, payload_set::field_name(s.value.address, field));
       ack(c, s.value.address, e.command_timestamp, ack_status::invalid, why.view(), now);
     }
     events_.push(e);
