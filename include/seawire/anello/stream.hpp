@@ -23,8 +23,11 @@ struct frame_recognizer {
   static constexpr std::array<std::uint8_t, 4> header{0xAB, 0x00, 0x00,
                                                       static_cast<std::uint8_t>(payload_size)};
   static constexpr std::size_t size = frame_size;
+  // A template of nothing, as decode_frame: the frame's decoder and the CRC tables are compiled
+  // where a frame is decoded, not wherever this header is read.
+  template <int N = 0>
   [[nodiscard]] static constexpr result<sensor_frame_raw> decode(const frame_bytes& b) noexcept {
-    return decode_frame(b);
+    return decode_frame<N>(b);
   }
 };
 static_assert(nmea::frame_recognizer<frame_recognizer>);

@@ -4,11 +4,11 @@
 // final XOR 0xFFFFFFFF ("123456789" -> 0xCBF43926). It is the check of the ANELLO binary frame.
 // The table is built by the compiler, so the CRC also works in constant expressions.
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 namespace seawire {
 
@@ -41,8 +41,8 @@ inline constexpr crc32_tables crc32_slices = [] {
 }();
 
 // Works on the inverted register; crc32_update hides the inversion. (The functions that read the
-// tables are templates, each naming the tables through its parameter, so that nothing is built
-// before a call.)
+// tables are templates, each naming the tables through its parameter, so that GCC builds nothing
+// before a call; Clang builds the tables where this header is read.)
 template <class V = void>
 [[nodiscard]] constexpr std::uint32_t crc32_step(std::uint32_t reg, std::uint8_t byte) noexcept {
   return crc32_slices<V>.slice[0][(reg ^ byte) & 0xFFU] ^ (reg >> 8U);
@@ -73,7 +73,7 @@ template <class Byte>
 }  // namespace detail
 
 // The four functions below are templates of nothing, called as any function (crc32(bytes)): a
-// translation unit that does not call one builds no table.
+// translation unit that does not call one builds no table (with GCC: above).
 
 /// Continues a CRC-32 over more bytes. Like zlib's crc32(crc, buf, len): `crc` is the finished
 /// CRC of the bytes so far (0 before any), so crc32_update(crc32(a), b) == crc32(a followed by b).

@@ -41,7 +41,8 @@ template <int = 0>
   return seawire::detail::enumerator_name_of<log_format_count>(f);
 }
 
-/// The format called `text` (as name() spells it), or nullopt.
+/// The format called `text` (as name() spells it), or nullopt. (A template of nothing, as name().)
+template <int = 0>
 [[nodiscard]] constexpr std::optional<log_format> log_format_named(std::string_view text) noexcept {
   for (std::size_t i = 0; i < log_format_count; ++i)
     if (name(static_cast<log_format>(i)) == text) return static_cast<log_format>(i);
