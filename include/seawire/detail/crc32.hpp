@@ -48,9 +48,9 @@ template <class V = void>
   return crc32_slices<V>.slice[0][(reg ^ byte) & 0xFFU] ^ (reg >> 8U);
 }
 
-// Slicing-by-8: eight bytes cost eight independent lookups instead of eight dependent steps
-// (about 4x faster).
-// The register after `n` bytes from `p` (bytes or chars, each taken as its byte value).
+// The register after `n` bytes from `p` (bytes or chars, each taken as its byte value). Slicing-
+// by-8: eight bytes cost eight independent lookups instead of eight dependent steps (about 4x
+// faster).
 template <class Byte>
 [[nodiscard]] constexpr std::uint32_t crc32_run(std::uint32_t reg, const Byte* p,
                                                 std::size_t n) noexcept {
